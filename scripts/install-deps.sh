@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs the system packages the build, the tests and the benchmarks need, when missing.
+# Safe to run again; does nothing when everything is there. Needs root (or sudo) to install.
+set -euo pipefail
+
+need=()
+command -v mvn >/dev/null || need+=(maven)
+command -v javac >/dev/null || need+=(openjdk-17-jdk-headless)
+command -v gcc >/dev/null || need+=(gcc)
+command -v make >/dev/null || need+=(make)
+command -v python3 >/dev/null || need+=(python3)
+command -v cyclictest >/dev/null || need+=(rt-tests)
+command -v stress-ng >/dev/null || need+=(stress-ng)
+command -v chrt >/dev/null || need+=(util-linux)
+command -v chromium >/dev/null || need+=(chromium)
+command -v chromedriver >/dev/null || need+=(chromium-driver)
+
+if [ ${#need[@]} -eq 0 ]; then
+    exit 0
+fi
+echo "jmclbench: installing system packages: ${need[*]}" >&2
+sudo=
+if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "jmclbench: need root to install: ${need[*]}" >&2; exit 1; }
+    sudo=sudo
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null

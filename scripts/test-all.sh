@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Every test of the project: the native baseline (normal and sanitizer builds), then the
+# Java modules (unit, conformance, end-to-end and browser tests) with Maven.
+set -euo pipefail
+home=$(cd "$(dirname "$0")/.." && pwd)
+cd "$home"
+
+"$home/scripts/install-deps.sh"
+
+if [ -f native/Makefile ]; then
+    echo "== native tests (C, with AddressSanitizer and UndefinedBehaviorSanitizer) =="
+    make -s -C native test
+fi
+
+echo "== Java tests (Maven) =="
+java17=/usr/lib/jvm/java-17-openjdk-amd64
+if [ -z "${JAVA_HOME:-}" ] && [ -d "$java17" ]; then export JAVA_HOME=$java17; fi
+mvn -B -ntp verify "$@"

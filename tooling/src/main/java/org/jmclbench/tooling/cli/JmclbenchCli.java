@@ -1,0 +1,63 @@
+package org.jmclbench.tooling.cli;
+
+import java.util.concurrent.Callable;
+
+import org.jmclbench.tooling.doctor.DoctorCommand;
+import org.jmclbench.tooling.generator.GenerateCommand;
+import org.jmclbench.tooling.report.CompareCommand;
+import org.jmclbench.tooling.report.ReportCommand;
+import org.jmclbench.tooling.runner.MatrixCommand;
+import org.jmclbench.tooling.runner.QuickCommand;
+import org.jmclbench.tooling.runtime.JvmCommand;
+import org.jmclbench.tooling.runtime.JvmsCommand;
+import org.jmclbench.tooling.store.MergeCommand;
+import org.jmclbench.workload.BadInputException;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/**
+ * The {@code ./jmclbench} command line. {@code run} (one test) is executed by the workload
+ * itself on the runtime under test (see the launcher script); everything else lives here.
+ */
+@Command(name = "jmclbench", mixinStandardHelpOptions = true, version = "jmclbench 0.1.0",
+        description = "Real-time Java benchmark: Monte-Carlo Localization replayed on its real timeline.",
+        footer = {"", "One test on the current JVM: ./jmclbench run --help",
+                "Exit codes: 0 success, 2 bad usage or bad input, 1 a failure of the benchmark."},
+        subcommands = {GenerateCommand.class, QuickCommand.class, MatrixCommand.class,
+                JvmsCommand.class, JvmCommand.class, DoctorCommand.class, ReportCommand.class,
+                CompareCommand.class, MergeCommand.class})
+public final class JmclbenchCli implements Callable<Integer> {
+
+    /** Exit code for bad usage or bad input. */
+    public static final int EXIT_BAD_INPUT = 2;
+    /** Exit code for a failure of the benchmark itself. */
+    public static final int EXIT_FAILURE = 1;
+
+    @Override
+    public Integer call() {
+        CommandLine.usage(this, System.out);
+        return 0;
+    }
+
+    public static void main(String[] args) {
+        System.exit(execute(args));
+    }
+
+    /** Runs the command line and returns the exit code (tests call this instead of main). */
+    public static int execute(String... args) {
+        CommandLine cli = new CommandLine(new JmclbenchCli());
+        cli.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("jmclbench: " + ex.getMessage());
+            return EXIT_BAD_INPUT;
+        });
+        cli.setExecutionExceptionHandler((ex, cmd, parsed) -> {
+            if (ex instanceof BadInputException) {
+                System.err.println("jmclbench: " + ex.getMessage());
+                return EXIT_BAD_INPUT;
+            }
+            throw ex;
+        });
+        return cli.execute(args);
+    }
+}

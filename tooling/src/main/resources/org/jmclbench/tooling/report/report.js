@@ -35,6 +35,7 @@
   function clear(e) { while (e.firstChild) { e.removeChild(e.firstChild); } }
   function fmt(v, digits) {
     if (v === null || v === undefined || !isFinite(v)) { return '\u2013'; }
+    if (v === 0) { return '0'; }
     var a = Math.abs(v);
     if (digits === undefined) { digits = a >= 100 ? 1 : a >= 1 ? 2 : a >= 0.01 ? 3 : 4; }
     return v.toFixed(digits);
@@ -147,8 +148,8 @@
     { key: 'config', label: 'runtime/profile', text: true },
     { key: 'version', label: 'version', text: true },
     { key: 'runs', label: 'ok/runs', text: true },
-    { key: 'miss', label: 'missCount (95% CI)', metric: 'MISS_COUNT', ci: true, best: 'min' },
-    { key: 'late', label: 'late', metric: 'LATE', best: 'min' },
+    { key: 'miss', label: 'misses/run (95% CI)', metric: 'MISS_COUNT', ci: true, best: 'min' },
+    { key: 'late', label: 'late/run', metric: 'LATE', best: 'min' },
     { key: 'latMean', label: 'latency mean', metric: 'LATENCY_MEAN', ci: true, best: 'min' },
     { key: 'latP99', label: 'latency p99', metric: 'LATENCY_P99', best: 'min' },
     { key: 'latMax', label: 'latency max', metric: 'LATENCY_MAX', stat: 'max', best: 'min' },
@@ -156,7 +157,7 @@
     { key: 'jitP99', label: 'jitter p99', metric: 'JITTER_P99', best: 'min' },
     { key: 'jitMax', label: 'jitter max', metric: 'JITTER_MAX', stat: 'max', best: 'min' },
     { key: 'dev', label: 'deviation', metric: 'DEVIATION', ci: true, best: 'min' },
-    { key: 'vsNative', label: 'latency \u00d7 native', best: 'min' },
+    { key: 'vsNative', label: 'lat. \u00d7 native', best: 'min' },
     { key: 'failures', label: 'failures', best: 'min' },
     { key: 'unsupported', label: 'not supported', text: true }
   ];
@@ -389,7 +390,7 @@
     var fig = document.getElementById('figure-' + id);
     var f = FIGURES.filter(function (x) { return x.id === id; })[0];
     fig.querySelectorAll('a[data-ext]').forEach(function (a) {
-      a.setAttribute('href', 'charts/' + stem(id === 'misses' ? 'misses' : id, f.particles) + '.' + a.getAttribute('data-ext'));
+      a.setAttribute('href', 'charts/' + stem(id, f.particles) + '.' + a.getAttribute('data-ext'));
     });
   }
   function where(withParticles) {
@@ -417,6 +418,7 @@
           })
         };
       });
+      datasets = datasets.filter(function (d) { return d.data.some(function (v) { return v !== null; }); });
       draw(id, {
         type: 'bar', data: { labels: particles.map(String), datasets: datasets },
         options: {

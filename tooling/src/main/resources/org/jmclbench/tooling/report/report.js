@@ -146,7 +146,6 @@
   // ---- table -----------------------------------------------------------------------------
   var COLUMNS = [
     { key: 'config', label: 'runtime/profile', text: true },
-    { key: 'version', label: 'version', text: true },
     { key: 'runs', label: 'ok/runs', text: true },
     { key: 'miss', label: 'misses/run (95% CI)', metric: 'MISS_COUNT', ci: true, best: 'min' },
     { key: 'late', label: 'late/run', metric: 'LATE', best: 'min' },
@@ -229,7 +228,6 @@
           sw.style.background = colorOf[r.cell.config];
           td.insertBefore(sw, td.firstChild);
         }
-        if (col.key === 'version') { td.className = 'name'; }
         if (best[col.key] !== undefined && r.values[col.key] === best[col.key]) { td.classList.add('best'); td.title = 'best of this column'; }
         if ((col.key === 'failures' && r.values.failures > 0) || (col.key === 'unsupported' && r.values.unsupported > 0)) { td.classList.add('bad'); }
         row.appendChild(td);
@@ -495,6 +493,10 @@
     draw('jitter-cdf', { type: 'scatter', data: { datasets: cdf },
       options: xyOptions('CDF of release jitter (' + where(true) + ')', 'release jitter (ms, log)', 'fraction of jobs', function (o) {
         o.scales.x.type = 'logarithmic'; o.scales.y.min = 0; o.scales.y.max = 1;
+        o.scales.x.ticks = { autoSkip: true, maxRotation: 0, callback: function (v) {
+          var m = v / Math.pow(10, Math.floor(Math.log10(v) + 1e-9));
+          return [1, 2, 5].some(function (k) { return Math.abs(m - k) < 1e-6; }) ? String(Number(v.toPrecision(3))) : null;
+        } };
       }) });
   }
 

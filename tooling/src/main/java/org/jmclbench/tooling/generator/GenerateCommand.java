@@ -18,7 +18,7 @@ import picocli.CommandLine.Option;
                 "  match-short  the first 20 s of the match route (the default dataset)",
                 "  stay         30 s standing still in the middle (the thesis's stay case)",
                 "  figure8      60 s figure-eight around the middle",
-                "  kidnap       60 s match route; at 30 s the robot is carried away with no odometry", ""},
+                "  kidnap       60 s match route, carried away at 30 s with no odometry", ""},
         footer = {"", "Example: ./jmclbench generate --scenario match --seed 1 --out datasets/match"})
 public final class GenerateCommand implements Callable<Integer> {
     /** Longest accepted duration, seconds (one hour of data is about 15 MB). */

@@ -46,7 +46,7 @@ public final class GenerateCommand implements Callable<Integer> {
     boolean noNoise;
 
     @Override
-    public Integer call() throws BadInputException, IOException {
+    public Integer call() throws BadInputException {
         Scenario s = Scenario.byName(scenario);
         if (s == null) {
             throw BadInputException.ofOption("--scenario",
@@ -55,7 +55,13 @@ public final class GenerateCommand implements Callable<Integer> {
         int odometryCount = odometryCount(duration == null ? s.defaultDuration() : duration);
         SensorNoise noise = noNoise ? SensorNoise.NONE : SensorNoise.DEFAULT;
         SimulatedRun run = new Simulator(Playground.thesis(), noise).run(s, seed, odometryCount);
-        DatasetWriter.write(run, out, force);
+        try {
+            DatasetWriter.write(run, out, force);
+        } catch (IOException e) {
+            // Nothing half-written is left under the name; say what the file system refused.
+            throw BadInputException.ofOption("--out", "cannot write " + out + ": " + e.getClass().getSimpleName()
+                    + " " + e.getMessage());
+        }
         System.out.printf("jmclbench: wrote %s: %s, seed %d, %.2f s, %d odometry and %d laser events%n", out,
                 s.name(), seed, run.duration(), run.odometry().length, run.laser().length);
         return 0;

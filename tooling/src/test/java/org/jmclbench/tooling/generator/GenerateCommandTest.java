@@ -112,6 +112,14 @@ class GenerateCommandTest {
     }
 
     @Test
+    void unwritablePlaceIsOneLineAndExitCode2() throws Exception {
+        Path file = tmp.resolve("plain-file");
+        Files.writeString(file, "x");
+        assertBadUsage(generate("--scenario", "stay", "--duration", "1", "--out", file.resolve("sub").toString()), "--out");
+        assertBadUsage(generate("--scenario", "stay", "--duration", "1", "--out", file.toString()), "--out");
+    }
+
+    @Test
     void writesIntoAnEmptyExistingFolder() throws Exception {
         Path dir = tmp.resolve("empty");
         Files.createDirectories(dir);

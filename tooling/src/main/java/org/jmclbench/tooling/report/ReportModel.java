@@ -32,6 +32,8 @@ public final class ReportModel {
     static final int MAX_REPETITION_SERIES = 5;
     /** Points per series after down-sampling (the store keeps up to 2000). */
     static final int MAX_POINTS = 400;
+    /** Points of a task latency series: each bucket keeps its slowest job. */
+    static final int MAX_LATENCY_POINTS = 1000;
 
     public String schema = "jmclbench-report/1";
     public String generatedAt;
@@ -235,11 +237,11 @@ public final class ReportModel {
         int index = t.column("index", "i", "job");
         int ns = t.column("latencyNs", "taskLatencyNs", "latency", "taskLatency");
         if (ns >= 0) {
-            return t.points(index, 1, ns, 1e-6, MAX_POINTS);
+            return t.peakPoints(index, 1, ns, 1e-6, MAX_LATENCY_POINTS);
         }
         int ms = t.column("latencyMs", "taskLatencyMs");
         if (ms >= 0) {
-            return t.points(index, 1, ms, 1, MAX_POINTS);
+            return t.peakPoints(index, 1, ms, 1, MAX_LATENCY_POINTS);
         }
         int start = t.column("startNs", "start");
         int end = t.column("endNs", "end");
@@ -247,7 +249,7 @@ public final class ReportModel {
         if (index < 0 || start < 0 || end < 0) {
             return out;
         }
-        double step = Math.max(1.0, (double) t.size() / MAX_POINTS);
+        double step = Math.max(1.0, (double) t.size() / MAX_LATENCY_POINTS);
         for (double d = 0; d < t.size(); d += step) {
             int i = (int) d;
             double s = t.value(i, start);

@@ -90,6 +90,35 @@ final class SeriesTable {
         return out;
     }
 
+    /**
+     * Points like {@link #points} but each of at most {@code maxPoints} buckets keeps its
+     * largest y, so that the latency peaks (what a real-time chart is about) survive.
+     */
+    List<double[]> peakPoints(int xCol, double xScale, int yCol, double yScale, int maxPoints) {
+        List<double[]> out = new ArrayList<>();
+        if (xCol < 0 || yCol < 0) {
+            return out;
+        }
+        int n = size();
+        int bucket = Math.max(1, (n + maxPoints - 1) / maxPoints);
+        for (int i = 0; i < n; i += bucket) {
+            double bx = Double.NaN;
+            double by = Double.NEGATIVE_INFINITY;
+            for (int k = i; k < Math.min(n, i + bucket); k++) {
+                double x = value(k, xCol);
+                double y = value(k, yCol);
+                if (Double.isFinite(x) && Double.isFinite(y) && y > by) {
+                    bx = x;
+                    by = y;
+                }
+            }
+            if (Double.isFinite(bx)) {
+                out.add(new double[] {round(bx * xScale), round(by * yScale)});
+            }
+        }
+        return out;
+    }
+
     /** Six significant digits are plenty for a chart and keep the inlined data small. */
     static double round(double v) {
         if (v == 0 || !Double.isFinite(v)) {

@@ -232,10 +232,12 @@ public final class FixtureDb {
             addHistogram(hist, key, t, "releaseJitterNs", jobs, false);
         }
 
-        addSeries(series, key, "taskLatency.predict", List.of("index", "latencyNs"), predict.length,
-                i -> new double[] {i, predict[i].latencyNs});
-        addSeries(series, key, "taskLatency.update", List.of("index", "latencyNs"), update.length,
-                i -> new double[] {i, update[i].latencyNs});
+        // Columns as the runner's ingest writes them (the outcome column is text there; a number here).
+        List<String> latencyColumns = List.of("index", "releaseS", "taskLatencyNs", "responseTimeNs", "outcome");
+        addSeries(series, key, "taskLatency.predict", latencyColumns, predict.length,
+                i -> new double[] {i, i * 0.05, predict[i].latencyNs, predict[i].latencyNs + predict[i].jitterNs, 0});
+        addSeries(series, key, "taskLatency.update", latencyColumns, update.length,
+                i -> new double[] {i, i / 3.6, update[i].latencyNs, update[i].latencyNs + update[i].jitterNs, 0});
         double phase = rng.nextDouble();
         addSeries(series, key, "deviation", List.of("time", "dx", "dy", "dxy", "dtheta"), predictJobs, i -> {
             double d = deviation * (1 + 0.8 * Math.sin(i * 0.02 + phase * 6));

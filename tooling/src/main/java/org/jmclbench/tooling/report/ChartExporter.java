@@ -96,7 +96,8 @@ final class ChartExporter {
             }
         }
         int[] done = {0};
-        long[] last = {System.nanoTime()};
+        long start = System.nanoTime();
+        long[] last = {start};
         jobs.parallelStream().forEach(job -> {
             try {
                 job.run();
@@ -108,7 +109,7 @@ final class ChartExporter {
             synchronized (done) {
                 done[0]++;
                 if (System.nanoTime() - last[0] > 1_000_000_000L || done[0] == jobs.size()) {
-                    progress.accept("charts " + done[0] + "/" + jobs.size());
+                    progress.accept("charts " + ReportCommand.eta(done[0], jobs.size(), start));
                     last[0] = System.nanoTime();
                 }
             }

@@ -20,8 +20,8 @@ public final class ReportCommand implements Callable<Integer> {
     @Option(names = "--db", paramLabel = "FILE", description = "results database (default: ${DEFAULT-VALUE})")
     Path db = Path.of("results", "results.db");
 
-    @Option(names = "--out", paramLabel = "DIR", description = "report folder (default: ${DEFAULT-VALUE})")
-    Path out = Path.of("results", "report");
+    @Option(names = "--out", paramLabel = "DIR", description = "report folder (default: report/ beside the database, results/report)")
+    Path out;
 
     @Option(names = "--no-export", description = "skip the SVG/PNG export of the charts (the page alone)")
     boolean noExport;
@@ -30,6 +30,10 @@ public final class ReportCommand implements Callable<Integer> {
     public Integer call() throws BadInputException, IOException {
         System.setProperty("java.awt.headless", "true");
         long t0 = System.nanoTime();
+        if (out == null) {
+            Path parent = db.toAbsolutePath().getParent();
+            out = parent == null ? Path.of("report") : parent.resolve("report");
+        }
         if (Files.exists(out) && !Files.isDirectory(out)) {
             throw new BadInputException("--out: " + out + ": not a folder");
         }
@@ -52,6 +56,14 @@ public final class ReportCommand implements Callable<Integer> {
 
     private static void progress(String line) {
         System.err.println("report: " + line);
+    }
+
+    /** "done/total" with the time left, estimated from the pace so far. */
+    static String eta(int done, int total, long startNanos) {
+        double elapsed = (System.nanoTime() - startNanos) / 1e9;
+        double left = done == 0 ? Double.NaN : elapsed / done * (total - done);
+        return done + "/" + total + (done < total && Double.isFinite(left)
+                ? String.format(java.util.Locale.ROOT, ", about %.0f s left", Math.ceil(left)) : "");
     }
 
     /** Exit code of a failure of the report itself (not of the input). */

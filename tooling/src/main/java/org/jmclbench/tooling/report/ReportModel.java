@@ -147,12 +147,13 @@ public final class ReportModel {
         }
 
         int done = 0;
-        long last = System.nanoTime();
+        long start = System.nanoTime();
+        long last = start;
         for (List<ResultsStore.Run> group : byCell.values()) {
             m.cells.add(cell(store, group));
             done++;
             if (System.nanoTime() - last > 1_000_000_000L || done == byCell.size()) {
-                progress.accept("aggregated " + done + "/" + byCell.size() + " configurations");
+                progress.accept("aggregated configurations " + ReportCommand.eta(done, byCell.size(), start));
                 last = System.nanoTime();
             }
         }

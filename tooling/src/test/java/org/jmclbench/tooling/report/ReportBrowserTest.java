@@ -53,6 +53,8 @@ class ReportBrowserTest {
 
     static WebDriver driver;
     static ChromeDriverService service;
+    /** Held so that the level sticks: Selenium's warning that it has no CDP binding for this Chromium is noise here. */
+    static final java.util.logging.Logger SELENIUM_LOG = java.util.logging.Logger.getLogger("org.openqa.selenium");
 
     @BeforeAll
     static void openReport() throws Exception {
@@ -60,6 +62,7 @@ class ReportBrowserTest {
             fail("headless Chromium is needed for the report's browser test: " + CHROMIUM + " and " + CHROMEDRIVER
                     + " must exist (Debian packages chromium and chromium-driver; run scripts/install-deps.sh)");
         }
+        SELENIUM_LOG.setLevel(Level.SEVERE);
         Files.createDirectories(ARTIFACTS);
         Path db = ReportFixtures.write(ReportFixtures.mixed(), ARTIFACTS, "results.db");
         Path out = ARTIFACTS.resolve("report");

@@ -136,6 +136,15 @@ class ReportCommandTest {
     }
 
     @Test
+    void defaultFolderIsBesideTheDatabase() throws Exception {
+        Path other = Files.createDirectories(dir.resolve("elsewhere"));
+        Path copy = Files.copy(db, other.resolve("results.db"));
+        assertEquals(0, JmclbenchCli.execute("report", "--db", copy.toString(), "--no-export"));
+        assertTrue(Files.isRegularFile(other.resolve("report/index.html")));
+        assertFalse(Files.exists(other.resolve("report/charts")), "--no-export writes the page alone");
+    }
+
+    @Test
     void missingDatabaseIsOneLineAndExitTwo() {
         String err = stderrOf(() -> assertEquals(2, JmclbenchCli.execute("report", "--db", dir.resolve("nope.db").toString(),
                 "--out", dir.resolve("r2").toString())));

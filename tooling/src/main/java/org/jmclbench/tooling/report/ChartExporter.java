@@ -39,6 +39,11 @@ import org.jfree.svg.SVGUtils;
 final class ChartExporter {
 
     static final int WIDTH = 900;
+    /** The page's palette, so that a runtime has the same colour in the page and the files. */
+    static final Color[] PALETTE = {new Color(0x1f77b4), new Color(0xd62728), new Color(0x2ca02c), new Color(0xff7f0e),
+        new Color(0x9467bd), new Color(0x8c564b), new Color(0xe377c2), new Color(0x17becf), new Color(0xbcbd22),
+        new Color(0x7f7f7f), new Color(0x393b79), new Color(0xad494a), new Color(0x637939), new Color(0x8c6d31),
+        new Color(0x843c39), new Color(0x7b4173)};
     static final int HEIGHT = 520;
 
     private final ReportModel model;
@@ -131,6 +136,59 @@ final class ChartExporter {
         }
     }
 
+    /** The colour of the runtime a series belongs to (longest matching name), or null. */
+    private Color colorOf(String series) {
+        int best = -1;
+        int bestLength = -1;
+        for (int i = 0; i < model.configs.size(); i++) {
+            String id = model.configs.get(i).id();
+            if ((series.equals(id) || series.startsWith(id + " ")) && id.length() > bestLength) {
+                best = i;
+                bestLength = id.length();
+            }
+        }
+        return best < 0 ? null : PALETTE[best % PALETTE.length];
+    }
+
+    private void colour(org.jfree.chart.renderer.AbstractRenderer r, List<String> names) {
+        for (int i = 0; i < names.size(); i++) {
+            Color c = colorOf(names.get(i));
+            if (c != null) {
+                r.setSeriesPaint(i, c);
+            }
+        }
+    }
+
+    /** Log axis ticks at powers of ten, printed as plain numbers. */
+    static LogAxis logAxis(String label, java.text.NumberFormat format) {
+        LogAxis a = new LogAxis(label);
+        a.setStandardTickUnits(NumberAxis.createIntegerTickUnits());
+        a.setNumberFormatOverride(format);
+        return a;
+    }
+
+    /** 1/(1-p) printed as the percentile p: 10 -> 90%, 1000 -> 99.9%. */
+    static final class PercentileFormat extends java.text.NumberFormat {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        public StringBuffer format(double v, StringBuffer to, java.text.FieldPosition pos) {
+            double p = 100 - 100 / v;
+            int decimals = Math.max(0, (int) Math.round(Math.log10(v)) - 2);
+            return to.append(String.format(java.util.Locale.ROOT, "%." + decimals + "f%%", Math.max(0, p)));
+        }
+
+        @Override
+        public StringBuffer format(long v, StringBuffer to, java.text.FieldPosition pos) {
+            return format((double) v, to, pos);
+        }
+
+        @Override
+        public Number parse(String source, java.text.ParsePosition pos) {
+            throw new UnsupportedOperationException();
+        }
+    }
+
     private JFreeChart vsParticles(String title, String yLabel, List<ReportModel.Cell> cells, Metric metric) {
         DefaultStatisticalCategoryDataset data = new DefaultStatisticalCategoryDataset();
         for (ReportModel.Cell c : sortByParticles(cells)) {
@@ -139,8 +197,20 @@ final class ChartExporter {
                 data.add(a.mean().doubleValue(), a.half() == null ? 0.0 : a.half().doubleValue(), c.config, Integer.valueOf(c.particles));
             }
         }
-        CategoryPlot plot = new CategoryPlot(data, new CategoryAxis("particles"), new NumberAxis(yLabel), new StatisticalBarRenderer());
-        ((StatisticalBarRenderer) plot.getRenderer()).setErrorIndicatorPaint(Color.BLACK);
+        StatisticalBarRenderer renderer = new StatisticalBarRenderer();
+        renderer.setErrorIndicatorPaint(Color.BLACK);
+        renderer.setShadowVisible(false);
+        renderer.setBarPainter(new org.jfree.chart.renderer.category.StandardBarPainter());
+        List<String> names = new ArrayList<>();
+        for (int i = 0; i < data.getRowCount(); i++) {
+            names.add(String.valueOf(data.getRowKey(i)));
+        }
+        colour(renderer, names);
+        NumberAxis y = new NumberAxis(yLabel);
+        CategoryPlot plot = new CategoryPlot(data, new CategoryAxis("particles"), y, renderer);
+        if (y.getLowerBound() < 0) {
+            y.setLowerBound(0); // a count or a distance is never negative: the interval is cut at zero
+        }
         return finish(new JFreeChart(title, JFreeChart.DEFAULT_TITLE_FONT, plot, true));
     }
 
@@ -150,8 +220,16 @@ final class ChartExporter {
             add(series, c.config + " task latency", c.particles, c.metrics.get(Metric.LATENCY_MEAN.name()).mean());
             add(series, c.config + " release jitter", c.particles, c.metrics.get(Metric.JITTER_MEAN.name()).mean());
         }
-        return xy("Average task latency and release jitter vs particles (" + where + ")", "particles",
-                new NumberAxis("time (ms, mean over repetitions)"), series, true, true);
+        JFreeChart chart = xy("Average task latency and release jitter vs particles (" + where + ")", "particles",
+                new NumberAxis("time (ms, mean over repetitions; dashed: release jitter)"), series, true, true);
+        List<String> names = new ArrayList<>(series.keySet());
+        for (int i = 0; i < names.size(); i++) {
+            if (names.get(i).endsWith(" release jitter")) {
+                chart.getXYPlot().getRenderer().setSeriesStroke(i, new BasicStroke(1.5f, BasicStroke.CAP_BUTT,
+                        BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f));
+            }
+        }
+        return chart;
     }
 
     private JFreeChart latencyIndex(String at, List<ReportModel.Cell> cells) {
@@ -215,10 +293,9 @@ final class ChartExporter {
         for (ReportModel.Cell c : cells) {
             c.latencySpectrum.forEach(p -> add(series, c.config, p[0], Math.max(p[1], 1e-4)));
         }
-        LogAxis x = new LogAxis("percentile as 1/(1-p): 10 = 90%, 100 = 99%, 1000 = 99.9%");
-        x.setBase(10);
+        LogAxis x = logAxis("percentile (log scale of 1/(1-p))", new PercentileFormat());
         x.setSmallestValue(1);
-        LogAxis y = new LogAxis("task latency (ms)");
+        LogAxis y = logAxis("task latency (ms, log)", new java.text.DecimalFormat("0.####"));
         y.setSmallestValue(1e-4);
         JFreeChart chart = xy("Task latency by percentile, all jobs of all repetitions (" + at + ")", null, y, series, true, false);
         chart.getXYPlot().setDomainAxis(x);
@@ -230,7 +307,7 @@ final class ChartExporter {
         for (ReportModel.Cell c : cells) {
             c.jitterCdf.forEach(p -> add(series, c.config, p[0], p[1]));
         }
-        LogAxis x = new LogAxis("release jitter (ms)");
+        LogAxis x = logAxis("release jitter (ms, log)", new java.text.DecimalFormat("0.####"));
         x.setSmallestValue(1e-4);
         NumberAxis y = new NumberAxis("fraction of jobs");
         y.setRange(0, 1.02);
@@ -249,7 +326,7 @@ final class ChartExporter {
         return cells.stream().sorted(java.util.Comparator.comparingInt((ReportModel.Cell c) -> c.particles)).toList();
     }
 
-    private static JFreeChart xy(String title, String xLabel, ValueAxis yAxis, Map<String, XYSeries> series,
+    private JFreeChart xy(String title, String xLabel, ValueAxis yAxis, Map<String, XYSeries> series,
                                  boolean lines, boolean shapes) {
         XYSeriesCollection data = new XYSeriesCollection();
         series.values().forEach(data::addSeries);
@@ -257,6 +334,7 @@ final class ChartExporter {
         for (int i = 0; i < series.size(); i++) {
             renderer.setSeriesShape(i, new Ellipse2D.Double(-2, -2, 4, 4));
         }
+        colour(renderer, new ArrayList<>(series.keySet()));
         XYPlot plot = new XYPlot(data, new NumberAxis(xLabel == null ? "" : xLabel), yAxis, renderer);
         ((NumberAxis) plot.getDomainAxis()).setAutoRangeIncludesZero(false);
         return finish(new JFreeChart(title, JFreeChart.DEFAULT_TITLE_FONT, plot, true));

@@ -117,9 +117,15 @@ public final class Stats {
         return sorted[lo] + (pos - lo) * (sorted[hi] - sorted[lo]);
     }
 
+    /** Below this many samples in all, without ties, the p-value is exact (as R's wilcox.test does). */
+    public static final int EXACT_BELOW = 50;
+
     /**
      * Two-sided Mann-Whitney U p-value, or NaN below {@link #MIN_SAMPLES_FOR_TEST} samples on
-     * either side (the caller says "n too small"). Identical samples give p = 1.
+     * either side (the caller says "n too small"). Small samples without ties get the exact
+     * distribution of U (the normal approximation would call 3 runs against 3 significant, which
+     * the exact test never can: its smallest p is 0.1); others commons-math's normal
+     * approximation. Identical samples give p = 1.
      */
     public static double mannWhitneyP(double[] a, double[] b) {
         if (a.length < MIN_SAMPLES_FOR_TEST || b.length < MIN_SAMPLES_FOR_TEST) {
@@ -128,7 +134,80 @@ public final class Stats {
         if (allEqual(a, b)) {
             return 1.0; // every rank tied: no difference (commons-math would divide by zero)
         }
+        if (a.length + b.length < EXACT_BELOW && !hasTies(a, b)) {
+            return exactMannWhitneyP(a, b);
+        }
         return new MannWhitneyUTest().mannWhitneyUTest(a, b);
+    }
+
+    /** U of a: the number of pairs (x in a, y in b) with x > y (no ties). */
+    static long u(double[] a, double[] b) {
+        long u = 0;
+        for (double x : a) {
+            for (double y : b) {
+                if (x > y) {
+                    u++;
+                }
+            }
+        }
+        return u;
+    }
+
+    /** Exact two-sided p: 2 P(U <= min(U, mn - U)) under H0, from the counts of rank arrangements. */
+    static double exactMannWhitneyP(double[] a, double[] b) {
+        int m = a.length;
+        int n = b.length;
+        long ua = u(a, b);
+        long umin = Math.min(ua, (long) m * n - ua);
+        // count[i][j][u]: arrangements of i a's and j b's with U = u; f(u; i, j) = f(u - j; i-1, j) + f(u; i, j-1)
+        double[][] prev = new double[n + 1][];
+        for (int j = 0; j <= n; j++) {
+            prev[j] = new double[] {1}; // i = 0: U is 0 in one way
+        }
+        for (int i = 1; i <= m; i++) {
+            double[][] cur = new double[n + 1][];
+            cur[0] = new double[] {1};
+            for (int j = 1; j <= n; j++) {
+                double[] f = new double[i * j + 1];
+                double[] left = prev[j];      // i-1, j: shifted by j (the new a beats all j b's)
+                double[] down = cur[j - 1];   // i, j-1
+                for (int u = 0; u < f.length; u++) {
+                    double v = 0;
+                    if (u - j >= 0 && u - j < left.length) {
+                        v += left[u - j];
+                    }
+                    if (u < down.length) {
+                        v += down[u];
+                    }
+                    f[u] = v;
+                }
+                cur[j] = f;
+            }
+            prev = cur;
+        }
+        double[] dist = prev[n];
+        double total = 0;
+        double tail = 0;
+        for (int u = 0; u < dist.length; u++) {
+            total += dist[u];
+            if (u <= umin) {
+                tail += dist[u];
+            }
+        }
+        return Math.min(1.0, 2 * tail / total);
+    }
+
+    private static boolean hasTies(double[] a, double[] b) {
+        double[] all = new double[a.length + b.length];
+        System.arraycopy(a, 0, all, 0, a.length);
+        System.arraycopy(b, 0, all, a.length, b.length);
+        Arrays.sort(all);
+        for (int i = 1; i < all.length; i++) {
+            if (all[i] == all[i - 1]) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static boolean allEqual(double[] a, double[] b) {

@@ -412,7 +412,7 @@
           data: particles.map(function (p) { return byP[p] && byP[p].mean !== null ? byP[p].mean : null; }),
           errorBars: particles.map(function (p) {
             var a = byP[p];
-            return a && a.mean !== null && a.half !== null ? [Math.max(id === 'misses' ? 0 : -Infinity, a.mean - a.half), a.mean + a.half] : null;
+            return a && a.mean !== null && a.half !== null ? [Math.max(0, a.mean - a.half), a.mean + a.half] : null; // counts and distances are never negative
           })
         };
       });

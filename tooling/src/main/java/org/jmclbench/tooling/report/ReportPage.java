@@ -5,6 +5,9 @@ import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
@@ -22,16 +25,30 @@ final class ReportPage {
     }
 
     static void write(ReportModel model, Path file) throws IOException {
-        String template = resource("report.html");
-        String page = template
-                .replace("/*CSS*/", resource("report.css"))
-                .replace("/*DB*/", escapeHtml(model.database))
-                .replace("/*RUNS*/", Integer.toString(model.runCount))
-                .replace("/*GENERATED*/", escapeHtml(model.generatedAt))
-                .replace("/*DATA*/", json(model))
-                .replace("/*CHARTJS*/", inlineScript(chartJs()))
-                .replace("/*APP*/", inlineScript(resource("report.js")));
-        Files.writeString(file, page, StandardCharsets.UTF_8);
+        Map<String, String> parts = Map.of(
+                "CSS", resource("report.css"),
+                "DB", escapeHtml(model.database),
+                "RUNS", Integer.toString(model.runCount),
+                "GENERATED", escapeHtml(model.generatedAt),
+                "DATA", json(model),
+                "CHARTJS", inlineScript(chartJs()),
+                "APP", inlineScript(resource("report.js")));
+        Files.writeString(file, fill(resource("report.html"), parts), StandardCharsets.UTF_8);
+    }
+
+    /**
+     * Replaces each {@code /*NAME*}{@code /} of the template in one pass, so that text put in
+     * (a database name, the data) is never searched for placeholders itself.
+     */
+    static String fill(String template, Map<String, String> parts) {
+        Matcher m = Pattern.compile("/\\*([A-Z]+)\\*/").matcher(template);
+        StringBuilder out = new StringBuilder(template.length() + parts.values().stream().mapToInt(String::length).sum());
+        while (m.find()) {
+            String part = parts.get(m.group(1));
+            m.appendReplacement(out, Matcher.quoteReplacement(part == null ? m.group() : part));
+        }
+        m.appendTail(out);
+        return out.toString();
     }
 
     /** The model as JSON that is safe inside a script element: no '<', '>' or '&' outside escapes. */

@@ -136,6 +136,12 @@ class ReportCommandTest {
     }
 
     @Test
+    void placeholdersAreFilledOnceSoInsertedTextIsNeverRescanned() {
+        assertEquals("a/*Y*/b1/*Z*/", ReportPage.fill("a/*X*/b/*Y*//*Z*/", java.util.Map.of("X", "/*Y*/", "Y", "1")));
+        assertEquals("&lt;script&gt;&amp;&quot;&#39;", ReportPage.escapeHtml("<script>&\"'"));
+    }
+
+    @Test
     void defaultFolderIsBesideTheDatabase() throws Exception {
         Path other = Files.createDirectories(dir.resolve("elsewhere"));
         Path copy = Files.copy(db, other.resolve("results.db"));

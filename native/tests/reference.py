@@ -1,3 +1,7 @@
+# Reference values for tests/test_unit.c, computed independently of the C code:
+# xoshiro256** seeded with splitmix64 and the Irwin-Hall Gaussian of docs/ALGORITHM.md 1-2,
+# multinomial resampling of seed 1, and the first particle of a known-pose init (seed 7).
+# Run: python3 native/tests/reference.py
 M=(1<<64)-1
 def sm(st):
     st=(st+0x9E3779B97F4A7C15)&M; z=st

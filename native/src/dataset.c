@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "dataset.h"
 
@@ -52,11 +53,15 @@ int jm_series_read(jm_series *s, const char *path, int cols, char *err, size_t e
 	s->cols = cols;
 	f = fopen(path, "r");
 	if (!f) {
-		snprintf(err, errlen, "%s:0: cannot open: %s", path, strerror(errno));
+		if (errno == ENOENT)
+			snprintf(err, errlen, "%s: no such file", path);
+		else
+			snprintf(err, errlen, "%s: cannot read: %s", path, strerror(errno));
 		return -1;
 	}
 	while (getline(&line, &linecap, f) != -1) {
 		double row[8];
+		char first[48] = "";
 		char *tok, *save = NULL, *p = line;
 		int ncols = 0;
 
@@ -74,26 +79,28 @@ int jm_series_read(jm_series *s, const char *path, int cols, char *err, size_t e
 				continue; /* counted for the message below */
 			r = parse_number(tok, &v);
 			if (r == 1) {
-				snprintf(err, errlen, "%s:%d: not a number: %.40s", path, lineno, tok);
+				snprintf(err, errlen, "%s:%d: not a number: '%.40s'", path, lineno, tok);
 				goto out;
 			}
 			if (r == 2) {
-				snprintf(err, errlen, "%s:%d: not a finite number: %.40s", path, lineno, tok);
+				snprintf(err, errlen, "%s:%d: not a finite number: '%.40s'", path, lineno, tok);
 				goto out;
 			}
 			row[ncols - 1] = v;
+			if (ncols == 1)
+				snprintf(first, sizeof(first), "%s", tok);
 		}
 		if (ncols != cols) {
-			snprintf(err, errlen, "%s:%d: expected %d columns, found %d", path, lineno, cols, ncols);
+			snprintf(err, errlen, "%s:%d: expected %d columns but found %d", path, lineno, cols, ncols);
 			goto out;
 		}
 		if (row[0] < 0.0) {
-			snprintf(err, errlen, "%s:%d: negative time: %.16e", path, lineno, row[0]);
+			snprintf(err, errlen, "%s:%d: negative time %s", path, lineno, first);
 			goto out;
 		}
 		if (s->n > 0 && row[0] < prev) {
-			snprintf(err, errlen, "%s:%d: not sorted by time: %.16e after %.16e", path, lineno,
-				 row[0], prev);
+			snprintf(err, errlen, "%s:%d: time %s is before the previous line's (not sorted by time)",
+				 path, lineno, first);
 			goto out;
 		}
 		prev = row[0];
@@ -103,11 +110,11 @@ int jm_series_read(jm_series *s, const char *path, int cols, char *err, size_t e
 		}
 	}
 	if (ferror(f)) {
-		snprintf(err, errlen, "%s:%d: read error: %s", path, lineno, strerror(errno));
+		snprintf(err, errlen, "%s: cannot read: %s", path, strerror(errno));
 		goto out;
 	}
 	if (s->n == 0) {
-		snprintf(err, errlen, "%s:0: empty file (no events)", path);
+		snprintf(err, errlen, "%s: empty file (no data lines)", path);
 		goto out;
 	}
 	ret = 0;
@@ -174,7 +181,7 @@ static int read_properties(jm_dataset *ds, const char *path, int *has_start, cha
 	if (!f) {
 		if (errno == ENOENT)
 			return 0;
-		snprintf(err, errlen, "%s:0: cannot open: %s", path, strerror(errno));
+		snprintf(err, errlen, "%s: cannot read: %s", path, strerror(errno));
 		return -1;
 	}
 	while (getline(&line, &linecap, f) != -1) {
@@ -205,7 +212,7 @@ static int read_properties(jm_dataset *ds, const char *path, int *has_start, cha
 			int r = parse_number(value, &v);
 
 			if (r) {
-				snprintf(err, errlen, "%s:%d: %s: %s: %.40s", path, lineno, key,
+				snprintf(err, errlen, "%s:%d: %s: %s: '%.40s'", path, lineno, key,
 					 r == 1 ? "not a number" : "not a finite number", value);
 				goto out;
 			}
@@ -241,6 +248,12 @@ int jm_dataset_load(jm_dataset *ds, const char *dir, const char *odometry, const
 	memset(ds, 0, sizeof(*ds));
 	jm_playground_default(&ds->pg);
 	if (dir) {
+		struct stat st;
+
+		if (stat(dir, &st) || !S_ISDIR(st.st_mode)) {
+			snprintf(err, errlen, "%s: no such dataset folder", dir);
+			return -1;
+		}
 		snprintf(ds->dir, sizeof(ds->dir), "%s", dir);
 		snprintf(ds->odometry_path, sizeof(ds->odometry_path), "%s/odometry.txt", dir);
 		snprintf(ds->laser_path, sizeof(ds->laser_path), "%s/laser.txt", dir);
@@ -257,13 +270,29 @@ int jm_dataset_load(jm_dataset *ds, const char *dir, const char *odometry, const
 		goto fail;
 	if (dir && read_properties(ds, props, &has_start, err, errlen) < 0)
 		goto fail;
-	/* keys the metadata does not give come from the first ground-truth line */
-	if (!(has_start & HAS_X))
+	/* the start pose: all three keys of the metadata, or the first ground-truth line */
+	if (has_start && has_start != (HAS_X | HAS_Y | HAS_THETA)) {
+		snprintf(err, errlen, "%s: %s: missing", props,
+			 !(has_start & HAS_X) ? "start.x" : !(has_start & HAS_Y) ? "start.y" : "start.theta");
+		goto fail;
+	}
+	if (!has_start) {
 		ds->start_x = JM_ROW(&ds->real, 0)[1];
-	if (!(has_start & HAS_Y))
 		ds->start_y = JM_ROW(&ds->real, 0)[2];
-	if (!(has_start & HAS_THETA))
 		ds->start_theta = JM_ROW(&ds->real, 0)[3];
+	}
+	if (!ds->scenario[0]) {
+		const char *base = dir ? dir : ds->odometry_path, *slash;
+		size_t len = strlen(base);
+
+		while (len > 1 && base[len - 1] == '/')
+			len--;
+		for (slash = base + len; slash > base && slash[-1] != '/'; slash--)
+			;
+		snprintf(ds->name, sizeof(ds->name), "%.*s", (int)(base + len - slash), slash);
+	} else {
+		snprintf(ds->name, sizeof(ds->name), "%s", ds->scenario);
+	}
 	return 0;
 fail:
 	jm_dataset_free(ds);

@@ -27,6 +27,7 @@ typedef struct {
 	char laser_path[PATH_MAX];
 	char real_path[PATH_MAX];
 	char scenario[128];        /* empty when unknown */
+	char name[256];            /* the scenario, else the folder's (or odometry file's) name */
 	jm_series odometry;        /* time dx dy dtheta */
 	jm_series laser;           /* time angle */
 	jm_series real;            /* time x y theta */
@@ -36,7 +37,7 @@ typedef struct {
 
 /*
  * Reads one event file of cols columns into s. Returns 0, or -1 with err holding
- * "<file>:<line>: <problem>" (line 0 for a problem with the whole file: missing, empty).
+ * "<file>:<line>: <problem>", or "<file>: <problem>" for the whole file (missing, empty).
  */
 int jm_series_read(jm_series *s, const char *path, int cols, char *err, size_t errlen);
 void jm_series_free(jm_series *s);

@@ -44,9 +44,9 @@ int jm_timeline_build(jm_timeline *tl, const jm_dataset *ds, double time_scale, 
 
 	memset(tl, 0, sizeof(*tl));
 	if (until_s >= 0.0) {
-		while (no > 0 && JM_ROW(odo, no - 1)[0] >= until_s)
+		while (no > 0 && JM_ROW(odo, no - 1)[0] > until_s)
 			no--;
-		while (nl > 0 && JM_ROW(las, nl - 1)[0] >= until_s)
+		while (nl > 0 && JM_ROW(las, nl - 1)[0] > until_s)
 			nl--;
 	}
 	tl->n = no + nl;

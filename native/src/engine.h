@@ -43,7 +43,7 @@ typedef struct {
 	jm_job *jobs;
 } jm_timeline;
 
-/* Builds the timeline of the events with time < until_s (all when until_s < 0). */
+/* Builds the timeline of the events with time <= until_s (all when until_s < 0). */
 int jm_timeline_build(jm_timeline *tl, const jm_dataset *ds, double time_scale, double until_s);
 void jm_timeline_free(jm_timeline *tl);
 

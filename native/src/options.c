@@ -3,6 +3,7 @@
  * are multi-letter options after a single dash, which getopt_long cannot parse, and
  * getopt_long_only would accept abbreviations the Java workload does not.
  */
+#include <ctype.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -25,16 +26,16 @@ struct opt {
 	enum opt_id id;
 };
 
-#define JM_MAX_PARTICLES 10000000
+#define JM_MAX_PARTICLES 100000000
 
 static const struct opt options[] = {
 	{ "-p", "--particles", "N", "particle count (default 400)", OPT_PARTICLES },
 	{ "-n", "--number", "N", "number of the test, the last folder of the run path (default 1)", OPT_NUMBER },
 	{ "-j", "--runtime-name", "NAME", "runtime name in the output path (default native)", OPT_RUNTIME },
 	{ "-O", "--out", "DIR", "output root (default results)", OPT_OUT },
-	{ "-odo", NULL, "FILE", "thesis-format odometry file: time dx dy dtheta (with -laser, -real)", OPT_ODO },
-	{ "-laser", NULL, "FILE", "thesis-format laser file: time angle (with -odo, -real)", OPT_LASER },
-	{ "-real", NULL, "FILE", "thesis-format ground truth: time x y theta (with -odo, -laser)", OPT_REAL },
+	{ "-odo", "--odo", "FILE", "thesis-format odometry file: time dx dy dtheta (with -laser, -real)", OPT_ODO },
+	{ "-laser", "--laser", "FILE", "thesis-format laser file: time angle (with -odo, -real)", OPT_LASER },
+	{ "-real", "--real", "FILE", "thesis-format ground truth: time x y theta (with -odo, -laser)", OPT_REAL },
 	{ NULL, "--dataset", "DIR", "dataset folder (default datasets/match-short under $JMCLBENCH_HOME)", OPT_DATASET },
 	{ "-T", NULL, NULL, "shorthand for --policy terminate", OPT_T },
 	{ NULL, "--policy", "P", "skip|terminate|queue: an event released while a job runs (default skip)", OPT_POLICY },
@@ -103,34 +104,70 @@ void jm_options_usage(FILE *f)
 static int fail(char *err, size_t errlen, const char *name, const char *problem, const char *value)
 {
 	if (value)
-		snprintf(err, errlen, "%s: %s: %s", name, problem, value);
+		snprintf(err, errlen, "%s: %s: '%s'", name, problem, value);
 	else
 		snprintf(err, errlen, "%s: %s", name, problem);
 	return -1;
 }
 
-static int parse_long(const char *s, long long lo, long long hi, long long *out)
+/* An integer in [lo, hi], with the Java workload's messages. */
+static int int_in(const char *name, const char *s, long long lo, long long hi, long long *out, char *err,
+		  size_t errlen)
 {
 	char *end;
 	long long v;
 
 	errno = 0;
 	v = strtoll(s, &end, 10);
-	if (end == s || *end != '\0' || errno == ERANGE || v < lo || v > hi)
+	while (end != s && isspace((unsigned char)*end))
+		end++;
+	if (end == s || *end != '\0' || errno == ERANGE)
+		return fail(err, errlen, name, "not an integer", s);
+	if (v < lo || v > hi) {
+		snprintf(err, errlen, "%s: %lld is out of range [%lld, %lld]", name, v, lo, hi);
 		return -1;
+	}
 	*out = v;
 	return 0;
 }
 
-static int parse_double(const char *s, double *out)
+/* A finite number > 0 (or >= 0 when zero_ok). */
+static int double_in(const char *name, const char *s, int zero_ok, double *out, char *err, size_t errlen)
 {
 	char *end;
 	double v = strtod(s, &end);
 
-	if (end == s || *end != '\0' || !isfinite(v))
+	while (end != s && isspace((unsigned char)*end))
+		end++;
+	if (end == s || *end != '\0')
+		return fail(err, errlen, name, "not a number", s);
+	if (!isfinite(v) || v < 0.0 || (!zero_ok && v == 0.0)) {
+		snprintf(err, errlen, "%s: '%s' must be a finite number %s", name, s, zero_ok ? ">= 0" : "> 0");
 		return -1;
+	}
 	*out = v;
 	return 0;
+}
+
+/* Which of the '|'-separated labels v is (its index), or -1 with err set. */
+static int choice(const char *name, const char *v, const char *labels, char *err, size_t errlen)
+{
+	const char *p = labels;
+	int i = 0;
+
+	for (;;) {
+		const char *bar = strchr(p, '|');
+		size_t len = bar ? (size_t)(bar - p) : strlen(p);
+
+		if (strlen(v) == len && !strncmp(v, p, len))
+			return i;
+		if (!bar)
+			break;
+		p = bar + 1;
+		i++;
+	}
+	snprintf(err, errlen, "%s: '%s' is not one of %s", name, v, labels);
+	return -1;
 }
 
 static const struct opt *find(const char *arg, const char **inline_value)
@@ -144,7 +181,7 @@ static const struct opt *find(const char *arg, const char **inline_value)
 
 		if ((o->dash && !strcmp(arg, o->dash)) || (o->dashdash && !strcmp(arg, o->dashdash)))
 			return o;
-		if (o->dashdash && o->arg) {
+		if (o->dashdash) {
 			len = strlen(o->dashdash);
 			if (!strncmp(arg, o->dashdash, len) && arg[len] == '=') {
 				*inline_value = arg + len + 1;
@@ -155,21 +192,22 @@ static const struct opt *find(const char *arg, const char **inline_value)
 	return NULL;
 }
 
+/* A folder of the run path: letters, digits and . _ + - only, so it cannot escape the output root. */
 static int runtime_name_ok(const char *s)
 {
 	const char *p;
 
-	if (!*s || !strcmp(s, ".") || !strcmp(s, "..") || strlen(s) > 100)
+	if (!*s || !strcmp(s, ".") || !strcmp(s, ".."))
 		return 0;
 	for (p = s; *p; p++)
-		if (*p == '/' || (unsigned char)*p < 0x20 || *p == 0x7f)
+		if (!isalnum((unsigned char)*p) && !strchr("._+-", *p))
 			return 0;
 	return 1;
 }
 
 int jm_options_parse(jm_options *o, int argc, char **argv, char *err, size_t errlen)
 {
-	int i = 1;
+	int i = 1, terminate_flag = 0, policy_given = 0;
 
 	memset(o, 0, sizeof(*o));
 	o->particles = 400;
@@ -188,65 +226,73 @@ int jm_options_parse(jm_options *o, int argc, char **argv, char *err, size_t err
 		const struct opt *opt = find(arg, &value);
 		long long n;
 		double d;
+		int c;
 
 		if (!opt) {
+			const char *eq = strchr(arg, '=');
+
+			if (arg[0] == '-' && arg[1] == '-' && eq) {
+				char head[128];
+
+				snprintf(head, sizeof(head), "%.*s", (int)(eq - arg), arg);
+				return fail(err, errlen, head, "unknown option (see --help)", NULL);
+			}
 			if (arg[0] == '-')
 				return fail(err, errlen, arg, "unknown option (see --help)", NULL);
 			return fail(err, errlen, arg, "unexpected argument (see --help)", NULL);
 		}
 		name = value ? opt->dashdash : arg;
+		if (!opt->arg && value)
+			return fail(err, errlen, name, "takes no value", NULL);
 		if (opt->arg && !value) {
 			if (i + 1 >= argc)
-				return fail(err, errlen, name, "needs a value", opt->arg);
+				return fail(err, errlen, name, "needs a value", NULL);
 			value = argv[++i];
 		}
 		switch (opt->id) {
 		case OPT_PARTICLES:
-			if (parse_long(value, 1, JM_MAX_PARTICLES, &n))
-				return fail(err, errlen, name, "not an integer in 1..10000000", value);
+			if (int_in(name, value, 1, JM_MAX_PARTICLES, &n, err, errlen))
+				return -1;
 			o->particles = (int)n;
 			break;
 		case OPT_NUMBER:
-			if (parse_long(value, 0, INT_MAX, &n))
-				return fail(err, errlen, name, "not a non-negative integer", value);
+			if (int_in(name, value, 0, INT_MAX, &n, err, errlen))
+				return -1;
 			o->number = (int)n;
 			break;
 		case OPT_RUNTIME:
-			if (!runtime_name_ok(value))
-				return fail(err, errlen, name, "not usable as a folder name", value);
+			if (!runtime_name_ok(value)) {
+				snprintf(err, errlen, "%s: '%s' must be letters, digits, '.', '_', '+' or '-'", name, value);
+				return -1;
+			}
 			o->runtime_name = value;
 			break;
 		case OPT_OUT:
-			if (!*value)
-				return fail(err, errlen, name, "empty path", NULL);
-			o->out = value;
-			break;
 		case OPT_ODO:
-			o->odometry = value;
-			break;
 		case OPT_LASER:
-			o->laser = value;
-			break;
 		case OPT_REAL:
-			o->real = value;
-			break;
 		case OPT_DATASET:
 			if (!*value)
-				return fail(err, errlen, name, "empty path", NULL);
-			o->dataset = value;
+				return fail(err, errlen, name, "must not be empty", NULL);
+			if (opt->id == OPT_OUT)
+				o->out = value;
+			else if (opt->id == OPT_ODO)
+				o->odometry = value;
+			else if (opt->id == OPT_LASER)
+				o->laser = value;
+			else if (opt->id == OPT_REAL)
+				o->real = value;
+			else
+				o->dataset = value;
 			break;
 		case OPT_T:
-			o->policy = JM_POLICY_TERMINATE;
+			terminate_flag = 1;
 			break;
 		case OPT_POLICY:
-			if (!strcmp(value, "skip"))
-				o->policy = JM_POLICY_SKIP;
-			else if (!strcmp(value, "terminate"))
-				o->policy = JM_POLICY_TERMINATE;
-			else if (!strcmp(value, "queue"))
-				o->policy = JM_POLICY_QUEUE;
-			else
-				return fail(err, errlen, name, "expected skip, terminate or queue, got", value);
+			if ((c = choice(name, value, "skip|terminate|queue", err, errlen)) < 0)
+				return -1;
+			o->policy = (enum jm_policy)c;
+			policy_given = 1;
 			break;
 		case OPT_IDEAL:
 			o->ideal = 1;
@@ -255,55 +301,43 @@ int jm_options_parse(jm_options *o, int argc, char **argv, char *err, size_t err
 			o->covariance = 1;
 			break;
 		case OPT_MEMORY:
-			if (!strcmp(value, "preallocated"))
-				o->memory = JM_MEMORY_PREALLOCATED;
-			else if (!strcmp(value, "allocating"))
-				o->memory = JM_MEMORY_ALLOCATING;
-			else
-				return fail(err, errlen, name, "expected preallocated or allocating, got", value);
+			if ((c = choice(name, value, "preallocated|allocating", err, errlen)) < 0)
+				return -1;
+			o->memory = (enum jm_memory)c;
 			break;
 		case OPT_ESTIMATE:
-			if (!strcmp(value, "mean"))
-				o->estimate = JM_ESTIMATE_MEAN;
-			else if (!strcmp(value, "best"))
-				o->estimate = JM_ESTIMATE_BEST;
-			else
-				return fail(err, errlen, name, "expected mean or best, got", value);
+			if ((c = choice(name, value, "mean|best", err, errlen)) < 0)
+				return -1;
+			o->estimate = (enum jm_estimate)c;
 			break;
 		case OPT_RESAMPLE:
-			if (!strcmp(value, "systematic"))
-				o->resample = JM_RESAMPLE_SYSTEMATIC;
-			else if (!strcmp(value, "multinomial"))
-				o->resample = JM_RESAMPLE_MULTINOMIAL;
-			else
-				return fail(err, errlen, name, "expected systematic or multinomial, got", value);
+			if ((c = choice(name, value, "systematic|multinomial", err, errlen)) < 0)
+				return -1;
+			o->resample = (enum jm_resample)c;
 			break;
 		case OPT_INIT:
-			if (!strcmp(value, "known"))
-				o->init = JM_INIT_KNOWN;
-			else if (!strcmp(value, "uniform"))
-				o->init = JM_INIT_UNIFORM;
-			else
-				return fail(err, errlen, name, "expected known or uniform, got", value);
+			if ((c = choice(name, value, "known|uniform", err, errlen)) < 0)
+				return -1;
+			o->init = (enum jm_init)c;
 			break;
 		case OPT_SEED:
-			if (parse_long(value, LLONG_MIN, LLONG_MAX, &n))
-				return fail(err, errlen, name, "not a 64-bit integer", value);
+			if (int_in(name, value, LLONG_MIN, LLONG_MAX, &n, err, errlen))
+				return -1;
 			o->seed = (int64_t)n;
 			break;
 		case OPT_TIME_SCALE:
-			if (parse_double(value, &d) || d <= 0.0 || d > 1000.0)
-				return fail(err, errlen, name, "not a number in (0, 1000]", value);
+			if (double_in(name, value, 0, &d, err, errlen))
+				return -1;
 			o->time_scale = d;
 			break;
 		case OPT_WARMUP:
-			if (parse_double(value, &d) || d < 0.0)
-				return fail(err, errlen, name, "not a non-negative number of seconds", value);
+			if (double_in(name, value, 1, &d, err, errlen))
+				return -1;
 			o->warmup_s = d;
 			break;
 		case OPT_SPIN:
-			if (parse_long(value, 0, 1000000, &n))
-				return fail(err, errlen, name, "not an integer in 0..1000000 (microseconds)", value);
+			if (int_in(name, value, 0, 1000000, &n, err, errlen))
+				return -1;
 			o->spin_us = (int)n;
 			break;
 		case OPT_GC_LOG:
@@ -317,13 +351,22 @@ int jm_options_parse(jm_options *o, int argc, char **argv, char *err, size_t err
 			break;
 		case OPT_HELP:
 			o->help = 1;
-			return 0;
+			break;
 		}
 	}
-	if (o->dataset && (o->odometry || o->laser || o->real))
-		return fail(err, errlen, "--dataset", "cannot be combined with -odo, -laser, -real", NULL);
+	if (o->help)
+		return 0;
+	if (terminate_flag) {
+		if (policy_given && o->policy != JM_POLICY_TERMINATE) {
+			snprintf(err, errlen, "-T: contradicts --policy %s", jm_policy_name(o->policy));
+			return -1;
+		}
+		o->policy = JM_POLICY_TERMINATE;
+	}
 	if ((o->odometry || o->laser || o->real) && !(o->odometry && o->laser && o->real))
 		return fail(err, errlen, !o->odometry ? "-odo" : !o->laser ? "-laser" : "-real",
 			    "missing: -odo, -laser and -real go together", NULL);
+	if (o->dataset && o->odometry)
+		return fail(err, errlen, "--dataset", "cannot be combined with -odo/-laser/-real", NULL);
 	return 0;
 }

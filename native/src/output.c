@@ -166,6 +166,8 @@ static int write_positions(const jm_run *r, const char *dir, struct deviation *d
 		fclose(pf);
 		return -1;
 	}
+	fputs("# time x y theta\n", pf);
+	fputs("# time dx dy dxy dtheta\n", df);
 	for (i = 0; i < real->n; i++) {
 		const double *rr = JM_ROW(real, i);
 		double ex, ey, exy, et, a[4];
@@ -213,6 +215,7 @@ static int write_covariance(const jm_run *r, const char *dir, char *err, size_t 
 
 	if (!f)
 		return -1;
+	fputs("# time cxx cxy cxt cyy cyt ctt\n", f);
 	for (k = 0; k < r->tl->n; k++) {
 		const jm_job *j = &r->tl->jobs[k];
 
@@ -268,10 +271,11 @@ static int summarise(const jm_run *r, int task, struct task_summary *s)
 		}
 		if (j->start_ns >= 0)
 			v[0][nv[0]++] = j->start_ns - j->release_ns;
-		if (j->start_ns >= 0 && j->end_ns >= 0)
+		/* latency and response time of completed jobs only: an aborted job's end is no answer */
+		if (completed(j->outcome) && j->start_ns >= 0 && j->end_ns >= 0) {
 			v[1][nv[1]++] = j->end_ns - j->start_ns;
-		if (j->end_ns >= 0)
 			v[2][nv[2]++] = j->end_ns - j->release_ns;
+		}
 		if (j->cpu_ns >= 0)
 			v[3][nv[3]++] = j->cpu_ns;
 	}
@@ -341,7 +345,6 @@ static const char *nonempty(const char *s)
 static void json_parameters(jm_json *j, const jm_run *r)
 {
 	const jm_options *o = r->opt;
-	char abs[PATH_MAX];
 
 	jm_json_open(j, "parameters", '{');
 	jm_json_str(j, "runtimeName", o->runtime_name);
@@ -361,13 +364,14 @@ static void json_parameters(jm_json *j, const jm_run *r)
 	jm_json_bool(j, "gcLog", o->gc_log);
 	jm_json_open(j, "dataset", '{');
 	if (r->ds->dir[0])
-		jm_json_str(j, "path", realpath(r->ds->dir, abs) ? abs : r->ds->dir);
+		jm_json_str(j, "path", r->ds->dir);
 	else
 		jm_json_null(j, "path");
+	jm_json_str(j, "name", nonempty(r->ds->name));
 	jm_json_str(j, "scenario", nonempty(r->ds->scenario));
-	jm_json_str(j, "odometry", realpath(r->ds->odometry_path, abs) ? abs : r->ds->odometry_path);
-	jm_json_str(j, "laser", realpath(r->ds->laser_path, abs) ? abs : r->ds->laser_path);
-	jm_json_str(j, "real", realpath(r->ds->real_path, abs) ? abs : r->ds->real_path);
+	jm_json_str(j, "odometry", r->ds->odometry_path);
+	jm_json_str(j, "laser", r->ds->laser_path);
+	jm_json_str(j, "real", r->ds->real_path);
 	jm_json_close(j, '}');
 	jm_json_close(j, '}');
 }

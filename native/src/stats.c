@@ -12,9 +12,10 @@ static int cmp_i64(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
-int64_t jm_percentile(const int64_t *sorted, long n, double q)
+int64_t jm_percentile(const int64_t *sorted, long n, int per_mille)
 {
-	long i = (long)ceil(q * (double)n) - 1;
+	/* ceil(q * n) - 1 in integers, so that no rounding of q * n can move the rank */
+	long i = (long)((per_mille * (long long)n + 999) / 1000) - 1;
 
 	if (i < 0)
 		i = 0;
@@ -44,8 +45,8 @@ void jm_stats_compute(jm_stats *s, int64_t *values, long n)
 	s->stdev = sqrt(sq / (double)n);
 	s->min = values[0];
 	s->max = values[n - 1];
-	s->p50 = jm_percentile(values, n, 0.5);
-	s->p90 = jm_percentile(values, n, 0.9);
-	s->p99 = jm_percentile(values, n, 0.99);
-	s->p999 = jm_percentile(values, n, 0.999);
+	s->p50 = jm_percentile(values, n, 500);
+	s->p90 = jm_percentile(values, n, 900);
+	s->p99 = jm_percentile(values, n, 990);
+	s->p999 = jm_percentile(values, n, 999);
 }

@@ -13,7 +13,7 @@ typedef struct {
 
 /* Computes s over values[0..n-1]; sorts values in place. */
 void jm_stats_compute(jm_stats *s, int64_t *values, long n);
-/* The nearest-rank percentile of a sorted sample: the value at index ceil(q * n) - 1. */
-int64_t jm_percentile(const int64_t *sorted, long n, double q);
+/* The nearest-rank percentile of a sorted sample, q = per_mille / 1000: index ceil(q * n) - 1. */
+int64_t jm_percentile(const int64_t *sorted, long n, int per_mille);
 
 #endif

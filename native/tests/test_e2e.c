@@ -166,13 +166,14 @@ static void test_bad_data(void)
 		const char *content;
 		const char *line_problem;
 	} cases[] = {
-		{ "0 0 0 0\n0.05 0.01 0\n", ":2: expected 4 columns" },
-		{ "0 0 0 0\n0.05 zero 0 0\n", ":2: not a number" },
+		{ "0 0 0 0\n0.05 0.01 0\n", ":2: expected 4 columns but found 3" },
+		{ "0 0 0 0\n0.05 zero 0 0\n", ":2: not a number: 'zero'" },
 		{ "0 0 0 0\n0.05 nan 0 0\n", ":2: not a finite number" },
 		{ "0 0 0 0\n0.05 0 -inf 0\n", ":2: not a finite number" },
 		{ "-0.05 0 0 0\n", ":1: negative time" },
-		{ "0 0 0 0\n0.1 0 0 0\n# late line\n0.05 0 0 0\n", ":4: not sorted" },
-		{ "", ":0: empty file" },
+		{ "0 0 0 0\n0.1 0 0 0\n# late line\n0.05 0 0 0\n", ":4: time 0.05 is before the previous line's" },
+		{ "", ": empty file (no data lines)" },
+		{ "# nothing but a comment\n", ": empty file (no data lines)" },
 	};
 	char dir[128], odo[160], las[160], real[160], want[400], missing[160];
 	size_t i;
@@ -199,14 +200,22 @@ static void test_bad_data(void)
 		snprintf(badlaser, sizeof(badlaser), "%s/badlaser.txt", tmp);
 		write_text(badlaser, "0.1 1.0 2.0\n");
 		args[3] = badlaser;
-		snprintf(want, sizeof(want), "jmclbench: %s:1: expected 2 columns, found 3", badlaser);
+		snprintf(want, sizeof(want), "jmclbench: %s:1: expected 2 columns but found 3", badlaser);
 		expect_bad(args, want);
 	}
 	{
 		const char *args[] = { "--dataset", missing, "-O", tmp, "--ideal", NULL };
 
 		snprintf(missing, sizeof(missing), "%s/no-such-dataset", tmp);
-		snprintf(want, sizeof(want), "jmclbench: %s/odometry.txt:0: cannot open", missing);
+		snprintf(want, sizeof(want), "jmclbench: %s: no such dataset folder", missing);
+		expect_bad(args, want);
+	}
+	{
+		char nofile[160];
+		const char *args[] = { "-odo", odo, "-laser", las, "-real", nofile, "-O", tmp, "--ideal", NULL };
+
+		snprintf(nofile, sizeof(nofile), "%s/no-real.txt", tmp);
+		snprintf(want, sizeof(want), "jmclbench: %s: no such file", nofile);
 		expect_bad(args, want);
 	}
 	/* nothing was recorded as a result */
@@ -232,9 +241,9 @@ static void test_bad_options(void)
 	expect_bad(a1, "jmclbench: --bogus: unknown option");
 	expect_bad(a2, "jmclbench: -p: needs a value");
 	expect_bad(a3, "jmclbench: -p: not an integer");
-	expect_bad(a4, "jmclbench: --policy: expected skip, terminate or queue");
+	expect_bad(a4, "jmclbench: --policy: 'never' is not one of skip|terminate|queue");
 	expect_bad(a5, "jmclbench: -laser: missing");
-	expect_bad(a6, "jmclbench: --time-scale: ");
+	expect_bad(a6, "jmclbench: --time-scale: '-1' must be a finite number > 0");
 	CHECK_INT(run(help), 0);
 	CHECK_CONTAINS(out_text, "-p, --particles N");
 	CHECK_CONTAINS(out_text, "(default 400)");

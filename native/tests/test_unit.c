@@ -362,7 +362,10 @@ static const char *read_err(const char *content, int *line_ok, const char *want_
 		jm_series_free(&s);
 		return "";
 	}
-	snprintf(want, sizeof(want), "%s:%s: ", path, want_line);
+	if (want_line)
+		snprintf(want, sizeof(want), "%s:%s: ", path, want_line);
+	else
+		snprintf(want, sizeof(want), "%s: ", path);
 	*line_ok = !strncmp(err, want, strlen(want));
 	return err;
 }
@@ -382,13 +385,13 @@ static void test_reader(void)
 	jm_series_free(&s);
 
 	e = read_err("0 1 2\n", &ok, "1");
-	CHECK_CONTAINS(e, "expected 4 columns, found 3");
+	CHECK_CONTAINS(e, "expected 4 columns but found 3");
 	CHECK(ok);
 	e = read_err("0 1 2 3\n0.05 1 2 3 4\n", &ok, "2");
 	CHECK_CONTAINS(e, "found 5");
 	CHECK(ok);
 	e = read_err("0 1 2 3\n\n0.05 1 abc 3\n", &ok, "3");
-	CHECK_CONTAINS(e, "not a number: abc");
+	CHECK_CONTAINS(e, "not a number: 'abc'");
 	CHECK(ok);
 	e = read_err("0 NaN 2 3\n", &ok, "1");
 	CHECK_CONTAINS(e, "not a finite number");
@@ -400,22 +403,22 @@ static void test_reader(void)
 	CHECK_CONTAINS(e, "not a finite number");
 	CHECK(ok);
 	e = read_err("-0.05 1 2 3\n", &ok, "1");
-	CHECK_CONTAINS(e, "negative time");
+	CHECK_CONTAINS(e, "negative time -0.05");
 	CHECK(ok);
 	e = read_err("0.1 1 2 3\n0.05 1 2 3\n", &ok, "2");
-	CHECK_CONTAINS(e, "not sorted by time");
+	CHECK_CONTAINS(e, "time 0.05 is before the previous line's (not sorted by time)");
 	CHECK(ok);
 	e = read_err("1.5x 1 2 3\n", &ok, "1");
 	CHECK_CONTAINS(e, "not a number");
 	CHECK(ok);
-	e = read_err("", &ok, "0");
-	CHECK_CONTAINS(e, "empty file");
+	e = read_err("", &ok, NULL);
+	CHECK_CONTAINS(e, "empty file (no data lines)");
 	CHECK(ok);
-	e = read_err("# only a comment\n\n", &ok, "0");
+	e = read_err("# only a comment\n\n", &ok, NULL);
 	CHECK_CONTAINS(e, "empty file");
 	CHECK(ok);
 	/* equal times are sorted */
-	e = read_err("0.1 1 2 3\n0.1 1 2 3\n", &ok, "0");
+	e = read_err("0.1 1 2 3\n0.1 1 2 3\n", &ok, NULL);
 	CHECK_INT(strlen(e), 0);
 
 	snprintf(err, sizeof(err), "%s/missing.txt", tmpdir);
@@ -423,7 +426,7 @@ static void test_reader(void)
 		char msg[512], want[600];
 
 		CHECK(jm_series_read(&s, err, 4, msg, sizeof(msg)) == -1);
-		snprintf(want, sizeof(want), "%s:0: cannot open", err);
+		snprintf(want, sizeof(want), "%s: no such file", err);
 		CHECK_STR_PREFIX(msg, want);
 	}
 }
@@ -441,16 +444,29 @@ static void test_dataset_properties(void)
 	CHECK(ds.pg.nbeacons == 3 && ds.pg.width == 3.0);
 	jm_dataset_free(&ds);
 
-	write_file("dataset.properties", "# metadata\nscenario=unit\nstart.x=0.5\nbeacons=0,0;4,0;4,4;0,4\nplayground.width=4\n");
+	CHECK(!strcmp(ds.name, strrchr(tmpdir, '/') + 1)); /* no scenario: the folder's name */
+	write_file("dataset.properties", "scenario=unit\nstart.x=0.5\n");
+	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == -1);
+	CHECK_CONTAINS(err, "dataset.properties: start.y: missing");
+	write_file("dataset.properties", "# metadata\nscenario=unit\nstart.x=0.5\nstart.y=0.25\nstart.theta=1\n"
+		   "beacons=0,0;4,0;4,4;0,4\nplayground.width=4\n");
 	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == 0);
-	CHECK(ds.start_x == 0.5 && ds.start_y == 0.75);
+	CHECK(ds.start_x == 0.5 && ds.start_y == 0.25 && ds.start_theta == 1.0);
+	CHECK(!strcmp(ds.name, "unit"));
 	CHECK(ds.pg.nbeacons == 4 && ds.pg.beacon[3][1] == 4.0 && ds.pg.width == 4.0 && ds.pg.height == 2.0);
 	CHECK(!strcmp(ds.scenario, "unit"));
 	jm_dataset_free(&ds);
 
 	write_file("dataset.properties", "scenario=unit\nstart.y=half\n");
 	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == -1);
-	CHECK_CONTAINS(err, "dataset.properties:2: start.y: not a number");
+	CHECK_CONTAINS(err, "dataset.properties:2: start.y: not a number: 'half'");
+	{
+		char nodir[128];
+
+		snprintf(nodir, sizeof(nodir), "%s/none", tmpdir);
+		CHECK(jm_dataset_load(&ds, nodir, NULL, NULL, NULL, err, sizeof(err)) == -1);
+		CHECK_CONTAINS(err, "/none: no such dataset folder");
+	}
 	write_file("dataset.properties", "beacons=1;2\n");
 	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == -1);
 	CHECK_CONTAINS(err, "dataset.properties:1: beacons");
@@ -502,23 +518,35 @@ static void test_options(void)
 	CHECK(parse("-p abc", &o, err, sizeof(err)) == -1);
 	CHECK_STR_PREFIX(err, "-p: not an integer");
 	CHECK(parse("--particles 0", &o, err, sizeof(err)) == -1);
-	CHECK_STR_PREFIX(err, "--particles: ");
+	CHECK_STR_PREFIX(err, "--particles: 0 is out of range [1, 100000000]");
 	CHECK(parse("--particles=-4", &o, err, sizeof(err)) == -1);
-	CHECK_STR_PREFIX(err, "--particles: ");
+	CHECK_STR_PREFIX(err, "--particles: -4 is out of range");
 	CHECK(parse("--policy fast", &o, err, sizeof(err)) == -1);
-	CHECK_STR_PREFIX(err, "--policy: expected skip, terminate or queue");
+	CHECK_STR_PREFIX(err, "--policy: 'fast' is not one of skip|terminate|queue");
+	CHECK(parse("--memory=lots", &o, err, sizeof(err)) == -1);
+	CHECK_STR_PREFIX(err, "--memory: 'lots' is not one of preallocated|allocating");
+	CHECK(parse("--ideal=yes", &o, err, sizeof(err)) == -1);
+	CHECK_STR_PREFIX(err, "--ideal: takes no value");
+	CHECK(parse("--bogus=1", &o, err, sizeof(err)) == -1);
+	CHECK_STR_PREFIX(err, "--bogus: unknown option");
+	CHECK(parse("-T --policy queue", &o, err, sizeof(err)) == -1);
+	CHECK_STR_PREFIX(err, "-T: contradicts --policy queue");
+	CHECK(parse("--policy terminate -T", &o, err, sizeof(err)) == 0 && o.policy == JM_POLICY_TERMINATE);
+	CHECK(parse("--odo a --laser=b --real c", &o, err, sizeof(err)) == 0 && !strcmp(o.laser, "b"));
+	CHECK(parse("-O ", &o, err, sizeof(err)) == -1);
 	CHECK(parse("--time-scale 0", &o, err, sizeof(err)) == -1);
-	CHECK_STR_PREFIX(err, "--time-scale: ");
+	CHECK_STR_PREFIX(err, "--time-scale: '0' must be a finite number > 0");
+	CHECK(parse("--warmup 0", &o, err, sizeof(err)) == 0 && o.warmup_s == 0.0);
 	CHECK(parse("--time-scale nan", &o, err, sizeof(err)) == -1);
 	CHECK_STR_PREFIX(err, "--time-scale: ");
 	CHECK(parse("--seed 1.5", &o, err, sizeof(err)) == -1);
 	CHECK_STR_PREFIX(err, "--seed: ");
 	CHECK(parse("-j a/b", &o, err, sizeof(err)) == -1);
-	CHECK_STR_PREFIX(err, "-j: ");
+	CHECK_STR_PREFIX(err, "-j: 'a/b' must be letters, digits");
 	CHECK(parse("-odo a", &o, err, sizeof(err)) == -1);
 	CHECK_STR_PREFIX(err, "-laser: missing");
 	CHECK(parse("-odo a -laser b -real c --dataset d", &o, err, sizeof(err)) == -1);
-	CHECK_STR_PREFIX(err, "--dataset: cannot be combined");
+	CHECK_STR_PREFIX(err, "--dataset: cannot be combined with -odo/-laser/-real");
 	CHECK(parse("stray", &o, err, sizeof(err)) == -1);
 	CHECK_STR_PREFIX(err, "stray: unexpected argument");
 }

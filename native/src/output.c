@@ -442,6 +442,23 @@ static void json_deviation(jm_json *j, const char *key, const struct deviation *
 	jm_json_close(j, '}');
 }
 
+/* The shortest decimal that reads back as v (NaN when there is no value), as Java prints doubles. */
+static const char *shortest(char buf[40], double v)
+{
+	int prec;
+
+	if (isnan(v))
+		return "NaN";
+	for (prec = 15; prec <= 17; prec++) {
+		snprintf(buf, 40, "%.*g", prec, v);
+		if (strtod(buf, NULL) == v)
+			break;
+	}
+	if (!strpbrk(buf, ".eEn"))
+		strcat(buf, ".0");
+	return buf;
+}
+
 static double ms(double ns)
 {
 	return ns / 1e6;
@@ -455,6 +472,7 @@ int jm_output_write(const jm_run *r, const char *dir, char *err, size_t errlen)
 	jm_stats lateness;
 	int64_t *wake = NULL;
 	long nwake = 0;
+	char num[40];
 	jm_json j;
 	FILE *f;
 	int k, ret = -1;
@@ -482,13 +500,13 @@ int jm_output_write(const jm_run *r, const char *dir, char *err, size_t errlen)
 	f = open_out(dir, "data.txt", path, sizeof(path), err, errlen);
 	if (!f)
 		goto out;
-	fprintf(f, "deviationXY %.16e\n", dev.n ? dev.sum[2] / (double)dev.n : NAN);
-	fprintf(f, "deviationX %.16e\n", dev.n ? dev.sum[0] / (double)dev.n : NAN);
-	fprintf(f, "deviationY %.16e\n", dev.n ? dev.sum[1] / (double)dev.n : NAN);
-	fprintf(f, "deviationAngle %.16e\n", dev.n ? dev.sum[3] / (double)dev.n : NAN);
+	fprintf(f, "deviationXY %s\n", shortest(num, dev.n ? dev.sum[2] / (double)dev.n : NAN));
+	fprintf(f, "deviationX %s\n", shortest(num, dev.n ? dev.sum[0] / (double)dev.n : NAN));
+	fprintf(f, "deviationY %s\n", shortest(num, dev.n ? dev.sum[1] / (double)dev.n : NAN));
+	fprintf(f, "deviationAngle %s\n", shortest(num, dev.n ? dev.sum[3] / (double)dev.n : NAN));
 	fprintf(f, "missCount %ld\n", t[2].miss);
-	fprintf(f, "averageReleaseJitter %.16e\n", t[2].jitter.count ? ms(t[2].jitter.mean) : 0.0);
-	fprintf(f, "averageTaskTime %.16e\n", t[2].latency.count ? ms(t[2].latency.mean) : 0.0);
+	fprintf(f, "averageReleaseJitter %s\n", shortest(num, t[2].jitter.count ? ms(t[2].jitter.mean) : NAN));
+	fprintf(f, "averageTaskTime %s\n", shortest(num, t[2].latency.count ? ms(t[2].latency.mean) : NAN));
 	if (close_out(f, path, err, errlen))
 		goto out;
 

@@ -361,7 +361,7 @@ static double check_run_dir(const char *dir, int ideal, int cov, int nodo, int n
 		}
 		jt_passed++;
 		if (i == 0)
-			dev = atof(p + strlen(data_keys[i]));
+			dev = strtod(p + strlen(data_keys[i]), NULL);
 		if (i == 4)
 			*miss = atoi(p + strlen(data_keys[i]));
 	}
@@ -402,7 +402,7 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 {
 	char out[160], dir[400], odo[300], las[300], pstr[16];
 	int nodo, nlaser, miss = -1;
-	double dev;
+	double dev, ideal_dev;
 
 	snprintf(out, sizeof(out), "%s/out-%s", tmp, label);
 	snprintf(odo, sizeof(odo), "%s/odometry.txt", dataset);
@@ -419,6 +419,7 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 		snprintf(dir, sizeof(dir), "%s/native/nocov/%d/IdealTest/1", out, particles);
 		dev = check_run_dir(dir, 1, 0, nodo, nlaser, &miss);
 		printf("%s: ideal run, %d particles: deviationXY %.4f m\n", label, particles, dev);
+		ideal_dev = dev;
 		CHECK(dev >= 0 && dev < 0.10);
 		CHECK_INT(miss, 0);
 		/* a complete folder is not overwritten without --force */
@@ -454,7 +455,8 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 		dev = check_run_dir(dir, 0, 1, nodo, nlaser, &miss);
 		printf("%s: terminate, %d particles, time scale %s: missCount %d, deviationXY %.4f m\n",
 		       label, particles, scale, miss, dev);
-		CHECK(dev >= 0 && dev < 1.0);
+		/* how far the robot gets lost depends on the machine's load: only a sane number */
+		CHECK(isfinite(dev) && dev >= 0);
 	}
 	{
 		const char *policies[] = { "skip", "queue" };
@@ -470,7 +472,10 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 			dev = check_run_dir(dir, 0, 0, nodo, nlaser, &miss);
 			printf("%s: %s, %d particles, time scale %s: missCount %d, deviationXY %.4f m\n",
 			       label, policies[i], particles, scale, miss, dev);
-			CHECK(dev >= 0 && dev < 1.0);
+			CHECK(isfinite(dev) && dev >= 0);
+			/* queue completes every job in release order: the ideal run's estimates exactly */
+			if (i == 1)
+				CHECK_BITS(dev, ideal_dev);
 		}
 	}
 }

@@ -309,9 +309,9 @@ static void *dispatcher_main(void *arg)
 		case JM_POLICY_TERMINATE:
 			if (e->running >= 0)
 				atomic_store_explicit(&e->abort, 1, memory_order_relaxed);
-			/* a released event that has not started yet never will: it is skipped */
+			/* a released event superseded before it could start never will: terminated */
 			while (e->head < e->tail)
-				e->tl->jobs[e->fifo[e->head++]].outcome = JM_OUTCOME_SKIPPED;
+				e->tl->jobs[e->fifo[e->head++]].outcome = JM_OUTCOME_TERMINATED;
 			e->fifo[e->tail++] = k;
 			break;
 		case JM_POLICY_QUEUE:

@@ -313,7 +313,8 @@ static void check_jobs(const char *dir, const char *name, int ideal, int *counts
 			bad += ideal || st != -1 || en != -1 || cpu != -1;
 		} else if (!strcmp(outcome, "terminated")) {
 			counts[3]++;
-			bad += ideal || st < rel || en < st;
+			/* aborted while running, or superseded before it could start */
+			bad += ideal || (st == -1 ? en != -1 || cpu != -1 : st < rel || en < st);
 		} else {
 			bad++;
 		}

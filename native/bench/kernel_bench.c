@@ -54,7 +54,7 @@ int main(int argc, char **argv)
 		fprintf(stderr, "jmclbench: %s\n", err);
 		return 2;
 	}
-	if (jm_timeline_build(&tl, &ds, 1.0, -1.0)) {
+	if (jm_timeline_build(&tl, &ds, 1.0, -1.0, 1)) {
 		fprintf(stderr, "jmclbench: out of memory\n");
 		return 1;
 	}

@@ -37,16 +37,19 @@ static int64_t scaled_ns(double seconds, double time_scale)
 	return (int64_t)llround(seconds * time_scale * 1e9);
 }
 
-int jm_timeline_build(jm_timeline *tl, const jm_dataset *ds, double time_scale, double until_s)
+int jm_timeline_build(jm_timeline *tl, const jm_dataset *ds, double time_scale, double until_s,
+		      int inclusive)
 {
 	const jm_series *odo = &ds->odometry, *las = &ds->laser;
 	int io = 0, il = 0, k = 0, no = odo->n, nl = las->n, i;
 
 	memset(tl, 0, sizeof(*tl));
 	if (until_s >= 0.0) {
-		while (no > 0 && JM_ROW(odo, no - 1)[0] > until_s)
+		while (no > 0 && (JM_ROW(odo, no - 1)[0] > until_s ||
+				  (!inclusive && JM_ROW(odo, no - 1)[0] == until_s)))
 			no--;
-		while (nl > 0 && JM_ROW(las, nl - 1)[0] > until_s)
+		while (nl > 0 && (JM_ROW(las, nl - 1)[0] > until_s ||
+				  (!inclusive && JM_ROW(las, nl - 1)[0] == until_s)))
 			nl--;
 	}
 	tl->n = no + nl;

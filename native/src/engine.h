@@ -43,8 +43,10 @@ typedef struct {
 	jm_job *jobs;
 } jm_timeline;
 
-/* Builds the timeline of the events with time <= until_s (all when until_s < 0). */
-int jm_timeline_build(jm_timeline *tl, const jm_dataset *ds, double time_scale, double until_s);
+/* Builds the timeline of the events with time <= until_s, or < until_s when not inclusive
+ * (all events when until_s < 0). */
+int jm_timeline_build(jm_timeline *tl, const jm_dataset *ds, double time_scale, double until_s,
+		      int inclusive);
 void jm_timeline_free(jm_timeline *tl);
 
 /* How the real-time engine ran: the scheduling it actually got. */

@@ -466,11 +466,18 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 
 		for (i = 0; i < 2; i++) {
 			const char *args[] = { "--dataset", dataset, "-O", out, "-p", pstr, "--policy", policies[i],
-					       "--time-scale", scale, "--spin-us", "100", NULL };
+					       "--time-scale", scale, "--spin-us", "100", "--warmup", "1", "--gc-log", NULL };
 
 			CHECK_INT(run(args), 0);
 			snprintf(dir, sizeof(dir), "%s/native/nocov/%d/%s/1", out, particles, tests[i]);
 			dev = check_run_dir(dir, 0, 0, nodo, nlaser, &miss);
+			{
+				char gc[512];
+				struct stat st;
+
+				snprintf(gc, sizeof(gc), "%s/gc.log", dir);
+				CHECK(stat(gc, &st) == 0);
+			}
 			printf("%s: %s, %d particles, time scale %s: missCount %d, deviationXY %.4f m\n",
 			       label, policies[i], particles, scale, miss, dev);
 			CHECK(isfinite(dev) && dev >= 0);

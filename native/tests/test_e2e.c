@@ -218,6 +218,16 @@ static void test_bad_data(void)
 		snprintf(want, sizeof(want), "jmclbench: %s: no such file", nofile);
 		expect_bad(args, want);
 	}
+	{
+		/* a place that cannot be written fails before the run */
+		char file[160], want2[400];
+		const char *args[] = { "--dataset", dir, "-O", file, "--ideal", NULL };
+
+		snprintf(file, sizeof(file), "%s/a-file", tmp);
+		write_text(file, "not a folder\n");
+		snprintf(want2, sizeof(want2), "jmclbench: %s/native/nocov/400/IdealTest/1.partial: cannot create", file);
+		expect_bad(args, want2);
+	}
 	/* nothing was recorded as a result */
 	{
 		char results[160];
@@ -425,7 +435,7 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 		CHECK_INT(miss, 0);
 		/* a complete folder is not overwritten without --force */
 		CHECK_INT(run(args), 2);
-		CHECK_CONTAINS(err_text, "run folder exists");
+		CHECK_CONTAINS(err_text, "a complete run folder exists (use --force to overwrite)");
 	}
 	{
 		const char *args[] = { "--dataset", dataset, "-O", out, "-p", pstr, "--ideal", "--force",

@@ -19,6 +19,17 @@
 #include "options.h"
 #include "output.h"
 
+#ifndef JM_CFLAGS
+#define JM_CFLAGS ""
+#endif
+#if defined(__clang__)
+#define JM_COMPILER "clang " __VERSION__
+#elif defined(__GNUC__)
+#define JM_COMPILER "gcc " __VERSION__
+#else
+#define JM_COMPILER __VERSION__
+#endif
+
 #define EXIT_BAD_INPUT 2
 #define EXIT_BENCH_FAILURE 1
 
@@ -91,6 +102,10 @@ int main(int argc, char **argv)
 		die(EXIT_BAD_INPUT, "%s", err);
 	if (opt.help) {
 		jm_options_usage(stdout);
+		return 0;
+	}
+	if (opt.version) {
+		printf("jmclbench-native %s (%s)\n", JM_COMPILER, JM_CFLAGS);
 		return 0;
 	}
 	if (!opt.odometry) {

@@ -254,6 +254,14 @@ static void test_bad_options(void)
 	expect_bad(a4, "jmclbench: --policy: 'never' is not one of skip|terminate|queue");
 	expect_bad(a5, "jmclbench: -laser: missing");
 	expect_bad(a6, "jmclbench: --time-scale: '-1' must be a finite number > 0");
+	{
+		const char *version[] = { "--version", NULL };
+
+		CHECK_INT(run(version), 0);
+		CHECK_STR_PREFIX(out_text, "jmclbench-native ");
+		CHECK_CONTAINS(out_text, "-ffp-contract=off");
+		CHECK_INT(count_lines(out_text), 1);
+	}
 	CHECK_INT(run(help), 0);
 	CHECK_CONTAINS(out_text, "-p, --particles N");
 	CHECK_CONTAINS(out_text, "(default 400)");

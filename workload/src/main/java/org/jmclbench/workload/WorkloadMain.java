@@ -75,18 +75,16 @@ public final class WorkloadMain {
         JobRecords records = new JobRecords(timeline, options.covariance);
         File partial = folder.begin();
 
+        if (options.warmupS > 0 && options.ideal) {
+            // real-time runs warm up through the release engine itself (RealTimeRun)
+            IdealRun.warmup(dataset, timeline, newLocalizer(config, dataset), options.warmupS);
+        }
         Localizer localizer = newLocalizer(config, dataset);
         if (options.ideal) {
-            if (options.warmupS > 0) {
-                // A throwaway localizer, so that the measured run starts from the same state.
-                IdealRun.warmup(dataset, timeline, newLocalizer(config, dataset), options.warmupS);
-            }
             IdealRun.run(dataset, timeline, localizer, records);
         } else {
             // ---- Real-time engine hook (the engine helper's): replace these two lines with
             // ---- RealTimeRun.run(options, dataset, timeline, localizer, records);
-            // ---- The engine owns --policy, --time-scale, --warmup, --spin-us and --gc-log
-            // ---- (gc.log goes into `partial`, which exists from here on).
             err.println("jmclbench: real-time engine not built yet");
             return FAILURE;
         }

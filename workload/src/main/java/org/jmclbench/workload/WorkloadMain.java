@@ -73,7 +73,13 @@ public final class WorkloadMain {
         folder.checkNotComplete();
         Environment environment = Environment.capture();
         JobRecords records = new JobRecords(timeline, options.covariance);
-        File partial = folder.begin();
+        File partial;
+        try {
+            partial = folder.begin();
+        } catch (IOException e) {
+            // Almost always a place that cannot be written: bad usage, not a benchmark failure.
+            throw BadInputException.ofOption("-O", "cannot create " + folder.partial.getPath() + ": " + e);
+        }
 
         if (options.warmupS > 0 && options.ideal) {
             // real-time runs warm up through the release engine itself (RealTimeRun)

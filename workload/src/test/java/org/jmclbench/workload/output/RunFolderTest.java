@@ -176,11 +176,28 @@ class RunFolderTest {
     void aFailingRunLeavesNoCompleteFolder() throws Exception {
         File ds = SyntheticDataset.write(new File(tmp, "ds2"), 1.0, 5, false, true);
         File out = new File(tmp, "out2");
-        // The output root is a file: the run cannot write, exits 1, and nothing complete appears.
+        // The output root is a file: the run cannot write (bad usage, exit 2), and nothing appears.
         Files.write(out.toPath(), new byte[0]);
         int code = main("run", "--ideal", "-p", "10", "--dataset", ds.getPath(), "-O", out.getPath());
-        assertEquals(1, code, err());
-        assertTrue(err().startsWith("jmclbench: "), err());
+        assertEquals(2, code, err());
+        assertTrue(err().startsWith("jmclbench: -O: cannot create "), err());
+        assertEquals(1, err().trim().split("\n").length, err());
         assertTrue(out.isFile());
+    }
+
+    @Test
+    void warmupDoesNotChangeTheIdealRunsResult() throws Exception {
+        File ds = SyntheticDataset.write(new File(tmp, "ds3"), 3.0, 6, true, true);
+        File out = new File(tmp, "out3");
+        assertEquals(0, main("run", "--ideal", "-p", "150", "--dataset", ds.getPath(), "-O", out.getPath(), "-j",
+                "j", "-n", "1"), err());
+        assertEquals(0, main("run", "--ideal", "-p", "150", "--dataset", ds.getPath(), "-O", out.getPath(), "-j",
+                "j", "-n", "2", "--warmup", "2"), err());
+        File a = new File(out, "j/nocov/150/IdealTest/1/position.txt");
+        File b = new File(out, "j/nocov/150/IdealTest/2/position.txt");
+        assertEquals(Files.readAllLines(a.toPath()), Files.readAllLines(b.toPath()));
+        String summary = new String(Files.readAllBytes(new File(out, "j/nocov/150/IdealTest/2/summary.json")
+                .toPath()), StandardCharsets.UTF_8);
+        assertTrue(summary.contains("\"warmupS\": 2.0"), summary);
     }
 }

@@ -51,7 +51,7 @@ public final class WorkloadMain {
                 out.println(RunOptionsParser.USAGE);
                 return OK;
             }
-            return execute(options, err);
+            return execute(options, out, err);
         } catch (BadInputException e) {
             err.println("jmclbench: " + e.getMessage());
             return BAD_INPUT;
@@ -65,7 +65,8 @@ public final class WorkloadMain {
         }
     }
 
-    private static int execute(RunOptions options, PrintStream err) throws BadInputException, IOException {
+    private static int execute(RunOptions options, PrintStream out, PrintStream err)
+            throws BadInputException, IOException {
         Dataset dataset = load(options);
         Timeline timeline = Timeline.of(dataset);
         MclConfig config = options.mclConfig();
@@ -97,6 +98,8 @@ public final class WorkloadMain {
 
         new RunWriter(options, dataset, timeline, records, environment).writeAll(partial);
         folder.commit();
+        // The complete run folder, the one line a script needs.
+        out.println(folder.dir.getPath());
         return OK;
     }
 

@@ -36,17 +36,18 @@ class DatasetReaderTest {
 
     @Test
     void readsBareThesisFilesWithTheThesisPlaygroundAndTheFirstRealPose() throws Exception {
-        Dataset d = DatasetReader.readFiles(file("o", "# comment\n\n" + ODO), file("l", LASER), file("r", REAL));
+        Dataset d = DatasetReader.readFiles(file("o", "# comment\n\n" + ODO), file("l", LASER + "0.08  +2.5E-1\r\n"),
+                file("r", REAL));
+        assertArrayEquals(new double[] {1.5, 4.0, 0.25}, d.laserAngle);
         assertArrayEquals(new double[] {0.05, 0.10}, d.odoTime);
         assertArrayEquals(new double[] {0.001, 0.001}, d.odoDtheta);
-        assertArrayEquals(new double[] {1.5, 4.0}, d.laserAngle);
         assertEquals(Playground.thesis(), d.playground);
         assertEquals(0.5, d.startX);
         assertEquals(0.6, d.startY);
         assertEquals(0.1, d.startTheta);
         assertEquals("o", d.name);
         Timeline t = Timeline.of(d);
-        assertEquals(4, t.size());
+        assertEquals(5, t.size());
         assertEquals(Timeline.UPDATE, t.task(0));
         assertEquals(Timeline.PREDICT, t.task(1));
         assertEquals(1, t.taskIndex(2));
@@ -117,6 +118,12 @@ class DatasetReaderTest {
                 rejectOdometry("0.05  0.01  Infinity  0.001\n"));
         assertEquals("jmclbench: " + path + ":1: not a finite number: '-Infinity'",
                 rejectOdometry("0.05  0.01  -Infinity  0.001\n"));
+        assertEquals("jmclbench: " + path + ":1: not a finite number: 'inf'",
+                rejectOdometry("0.05  0.01  inf  0.001\n"));
+        assertEquals("jmclbench: " + path + ":1: not a number: '1.0f'", rejectOdometry("0.05  1.0f  0  0\n"));
+        assertEquals("jmclbench: " + path + ":1: not a number: '0x1p3'", rejectOdometry("0.05  0x1p3  0  0\n"));
+        assertEquals("jmclbench: " + path + ":1: not a finite number: '1e999' (overflows)",
+                rejectOdometry("0.05  1e999  0  0\n"));
         assertEquals("jmclbench: " + path + ":1: negative time -0.05",
                 rejectOdometry("-0.05  0.01  0.0  0.001\n"));
         assertEquals("jmclbench: " + path + ":2: time 0.04 is before the previous line's (not sorted by time)",

@@ -16,6 +16,18 @@ class JsonTest {
     }
 
     @Test
+    void writesMapsListsAndBoxedValues() {
+        java.util.Map<String, Object> m = new java.util.LinkedHashMap<>();
+        m.put("i", 3);
+        m.put("d", 0.5);
+        m.put("b", false);
+        m.put("n", null);
+        m.put("l", java.util.Arrays.asList("a\"", 7L));
+        assertEquals("{\n  \"i\": 3,\n  \"d\": 0.5,\n  \"b\": false,\n  \"n\": null,\n  \"l\": [\n    \"a\\\"\",\n"
+                + "    7\n  ]\n}\n", new Json().any(m).toString());
+    }
+
+    @Test
     void escapesStrings() {
         Json j = new Json();
         j.beginArray().value("q\"b\\s/\n\r\t\b\f\u0001\u001f\u2028é</script>").value((String) null).endArray();

@@ -96,7 +96,7 @@ public final class ReleaseAccuracyMain {
             release[k] = k * periodUs * 1000L;
             deadline[k] = release[k] + periodUs * 1000L;
         }
-        JobRecords records = Records.create(loops);
+        JobRecords records = Records.periodic(loops, periodUs / 1e6);
         new ReleaseEngine(ReleaseSchedule.of(release, deadline, task), new SkipPolicy(), EMPTY_JOB,
                 records, cpu, spinUs * 1000L).run();
         return records;

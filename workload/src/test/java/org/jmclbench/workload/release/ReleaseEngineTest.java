@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.concurrent.TimeUnit;
+import org.jmclbench.workload.data.Timeline;
 import org.jmclbench.workload.mcl.AbortSignal;
 import org.jmclbench.workload.record.JobRecords;
 import org.junit.jupiter.api.Test;
@@ -58,23 +59,47 @@ class ReleaseEngineTest {
         }
     }
 
-    static ReleaseSchedule periodic(int n, long periodNs) {
+    /** n events every periodNs, every third one an update (both handlers take part). */
+    static Timeline periodicTimeline(int n, long periodNs) {
+        double[] odo = new double[n - n / 3];
+        double[] laser = new double[n / 3];
+        int i = 0;
+        int j = 0;
+        for (int k = 0; k < n; k++) {
+            if (k % 3 == 2) {
+                laser[j++] = k * periodNs / 1e9;
+            } else {
+                odo[i++] = k * periodNs / 1e9;
+            }
+        }
+        return Timeline.merge(odo, laser);
+    }
+
+    /** The timeline's releases, each due one period after it. */
+    static ReleaseSchedule periodicSchedule(Timeline t, long periodNs) {
+        int n = t.size();
         long[] release = new long[n];
         long[] deadline = new long[n];
         int[] task = new int[n];
         for (int k = 0; k < n; k++) {
-            release[k] = k * periodNs;
+            release[k] = Math.round(t.time(k) * 1e9);
             deadline[k] = release[k] + periodNs;
-            task[k] = k % 3 == 2 ? 1 : 0; // both handlers take part
+            task[k] = t.task(k);
         }
         return ReleaseSchedule.of(release, deadline, task);
     }
 
-    static JobRecords run(String policy, ReleaseSchedule schedule, SpinJob job) throws Exception {
-        JobRecords records = TestRecords.create(schedule.size());
-        new ReleaseEngine(schedule, OverrunPolicy.forName(policy), job, records,
+    static JobRecords run(String policy, int n, long periodNs, EventJob job) throws Exception {
+        Timeline t = periodicTimeline(n, periodNs);
+        JobRecords records = new JobRecords(t, false);
+        new ReleaseEngine(periodicSchedule(t, periodNs), OverrunPolicy.forName(policy), job, records,
                 ThreadCpuClock.probe(), 0).run();
-        assertAccountedOnce(records, schedule.size());
+        assertAccountedOnce(records, n);
+        return records;
+    }
+
+    static JobRecords run(String policy, int n, long periodNs, SpinJob job) throws Exception {
+        JobRecords records = run(policy, n, periodNs, (EventJob) job);
         assertTrue(!job.overlapSeen, "two jobs ran on the robot at once");
         return records;
     }
@@ -116,7 +141,7 @@ class ReleaseEngineTest {
     @Test
     void overloadedSkipDropsEventsReleasedWhileBusy() throws Exception {
         SpinJob job = new SpinJob(30 * MS);
-        JobRecords r = run("skip", periodic(20, 10 * MS), job);
+        JobRecords r = run("skip", 20, 10 * MS, job);
         assertTrue(count(r, JobRecords.SKIPPED) >= 5, "skipped " + count(r, JobRecords.SKIPPED));
         assertEquals(0, count(r, JobRecords.TERMINATED));
         assertEquals(0, job.aborted);
@@ -126,7 +151,7 @@ class ReleaseEngineTest {
     @Test
     void overloadedTerminateAbortsTheRunningJob() throws Exception {
         SpinJob job = new SpinJob(30 * MS);
-        JobRecords r = run("terminate", periodic(20, 10 * MS), job);
+        JobRecords r = run("terminate", 20, 10 * MS, job);
         assertTrue(job.aborted >= 5, "aborted " + job.aborted);
         assertEquals(0, count(r, JobRecords.SKIPPED));
         assertEquals(20, count(r, JobRecords.TERMINATED) + job.completed);
@@ -137,7 +162,7 @@ class ReleaseEngineTest {
     @Test
     void overloadedQueueCompletesEveryJobLate() throws Exception {
         SpinJob job = new SpinJob(30 * MS);
-        JobRecords r = run("queue", periodic(20, 10 * MS), job);
+        JobRecords r = run("queue", 20, 10 * MS, job);
         assertEquals(20, job.completed);
         assertEquals(0, count(r, JobRecords.SKIPPED) + count(r, JobRecords.TERMINATED));
         assertTrue(count(r, JobRecords.LATE) >= 10, "late " + count(r, JobRecords.LATE));
@@ -147,7 +172,7 @@ class ReleaseEngineTest {
     void lightLoadNearlyNeverMisses() throws Exception {
         for (String policy : new String[] {"skip", "terminate", "queue"}) {
             SpinJob job = new SpinJob(MS / 10);
-            JobRecords r = run(policy, periodic(20, 20 * MS), job);
+            JobRecords r = run(policy, 20, 20 * MS, job);
             int misses = 20 - count(r, JobRecords.DONE);
             assertTrue(misses <= 3, policy + ": " + misses + " of 20 missed");
         }
@@ -157,7 +182,7 @@ class ReleaseEngineTest {
     void cpuTimeIsRecordedWhenTheRuntimeTellsIt() throws Exception {
         ThreadCpuClock clock = ThreadCpuClock.probe();
         SpinJob job = new SpinJob(2 * MS);
-        JobRecords r = run("skip", periodic(6, 10 * MS), job);
+        JobRecords r = run("skip", 6, 10 * MS, job);
         for (int k = 0; k < 6; k++) {
             if (r.outcome[k] == JobRecords.DONE || r.outcome[k] == JobRecords.LATE) {
                 if (clock.usable()) {

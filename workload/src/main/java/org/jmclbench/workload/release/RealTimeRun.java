@@ -1,0 +1,79 @@
+package org.jmclbench.workload.release;
+
+import java.io.File;
+import java.io.FileOutputStream;
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.PrintStream;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.workload.mcl.Localizer;
+import org.jmclbench.workload.mcl.Localizers;
+import org.jmclbench.workload.record.JobRecords;
+
+/**
+ * A real-time (non-ideal) run: optional GC log, optional warm-up replay through the same
+ * engine on a throwaway localizer and records, then the measured replay of the whole timeline
+ * at its real release times under the run's policy, into the run's records.
+ */
+public final class RealTimeRun {
+    private RealTimeRun() {
+    }
+
+    /**
+     * Runs the test; on return every event of {@code records} is done, late, skipped or
+     * terminated, and the GC log (with {@code --gc-log}) is closed as {@code runDir/gc.log}.
+     *
+     * @param runDir the (partial) run folder, for the GC log
+     * @param err    where the one-line notes about the runtime go (before the measured window)
+     */
+    public static void run(RunOptions options, Dataset dataset, Timeline timeline, Localizer localizer,
+                           JobRecords records, File runDir, PrintStream err) throws IOException {
+        GcLog gcLog = options.gcLog ? GcLog.start(new File(runDir, "gc.log")) : null;
+        try {
+            if (gcLog != null && !gcLog.active()) {
+                err.println("jmclbench: --gc-log: " + gcLog.status());
+                writeNote(gcLog.file(), "# no GC log: " + gcLog.status() + "\n");
+            }
+            ThreadCpuClock cpuClock = ThreadCpuClock.probe();
+            if (!cpuClock.usable()) {
+                err.println("jmclbench: per-job CPU time: " + cpuClock.status() + "; cpu_ns is -1");
+            }
+            ReleaseSchedule schedule = ReleaseSchedule.of(timeline, options.timeScale);
+            long spinNs = options.spinUs * 1000L;
+            OverrunPolicy policy = OverrunPolicy.forName(options.policy.label);
+
+            int warmupEvents = schedule.countBefore(options.warmupS, options.timeScale);
+            if (options.warmupS > 0 && warmupEvents > 0) {
+                Localizer throwaway = Localizers.create(options.mclConfig(), dataset.playground,
+                        dataset.startX, dataset.startY, dataset.startTheta);
+                JobRecords scratch = new JobRecords(timeline, records.cov != null);
+                new ReleaseEngine(schedule.prefix(warmupEvents), OverrunPolicy.forName(options.policy.label),
+                        new LocalizerJob(dataset, timeline, throwaway, scratch), scratch, cpuClock, spinNs).run();
+            }
+
+            records.clear();
+            records.setInitialEstimate(localizer.estimateX(), localizer.estimateY(), localizer.estimateTheta());
+            ReleaseEngine engine = new ReleaseEngine(schedule, policy,
+                    new LocalizerJob(dataset, timeline, localizer, records), records, cpuClock, spinNs);
+            engine.run();
+            records.durationNs = System.nanoTime() - engine.runStartNanoTime();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("the run was interrupted", e);
+        } finally {
+            if (gcLog != null) {
+                gcLog.stop();
+            }
+        }
+    }
+
+    private static void writeNote(File f, String text) throws IOException {
+        try (Writer w = new OutputStreamWriter(new FileOutputStream(f), StandardCharsets.UTF_8)) {
+            w.write(text);
+        }
+    }
+}

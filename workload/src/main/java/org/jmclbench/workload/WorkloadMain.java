@@ -14,6 +14,7 @@ import org.jmclbench.workload.output.Environment;
 import org.jmclbench.workload.output.RunFolder;
 import org.jmclbench.workload.output.RunWriter;
 import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.workload.release.RealTimeRun;
 
 /**
  * Entry point of the workload process: {@code run [options]} reads a dataset, runs one test
@@ -75,17 +76,15 @@ public final class WorkloadMain {
         JobRecords records = new JobRecords(timeline, options.covariance);
         File partial = folder.begin();
 
-        if (options.warmupS > 0) {
+        if (options.warmupS > 0 && options.ideal) {
+            // real-time runs warm up through the release engine itself (RealTimeRun)
             IdealRun.warmup(dataset, timeline, newLocalizer(config, dataset), options.warmupS);
         }
         Localizer localizer = newLocalizer(config, dataset);
         if (options.ideal) {
             IdealRun.run(dataset, timeline, localizer, records);
         } else {
-            // ---- Real-time engine hook (the engine helper's): replace these two lines with
-            // ---- RealTimeRun.run(options, dataset, timeline, localizer, records);
-            err.println("jmclbench: real-time engine not built yet");
-            return FAILURE;
+            RealTimeRun.run(options, dataset, timeline, localizer, records, partial, err);
         }
 
         new RunWriter(options, dataset, timeline, records, environment).writeAll(partial);

@@ -13,12 +13,14 @@ import java.util.concurrent.TimeUnit;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.WorkloadMain;
 import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.data.DatasetReader;
 import org.jmclbench.workload.data.Timeline;
 import org.jmclbench.workload.mcl.AbortSignal;
 import org.jmclbench.workload.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.workload.mcl.MclConfig;
 import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.workload.testing.SyntheticDataset;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -38,7 +40,7 @@ class RealTimeRunTest {
     @Test
     void terminatedJobsLeaveTheStateUntouched() throws Exception {
         for (MclConfig.Memory memory : MclConfig.Memory.values()) {
-            Dataset d = SyntheticDataset.write(tmp, 2.0).read();
+            Dataset d = DatasetReader.readFolder(SyntheticDataset.write(new File(tmp, "data-" + memory), 2.0, 1, true, false));
             Timeline t = Timeline.of(d);
             MclConfig config = MclConfig.builder().particles(40_000).memory(memory).seed(7).build();
             RunOptions options = new RunOptions();
@@ -83,13 +85,16 @@ class RealTimeRunTest {
     /** The whole run tree of FORMATS.md section 3 for each policy, through the workload's main. */
     @Test
     void everyPolicyWritesTheWholeRunTree() throws Exception {
-        SyntheticDataset data = SyntheticDataset.write(tmp, 1.5);
+        File data = SyntheticDataset.write(new File(tmp, "data"), 1.5, 1, true, false);
+        File odo = new File(data, "odometry.txt");
+        File laser = new File(data, "laser.txt");
+        File real = new File(data, "real.txt");
         File out = new File(tmp, "out");
         String[][] policies = {{"SkipTest", "--policy", "skip"}, {"TermTest", "-T"}, {"QueueTest", "--policy", "queue"}};
         for (String[] p : policies) {
             java.util.List<String> args = new java.util.ArrayList<>(java.util.Arrays.asList("run", "-p", "200",
                     "-n", "1", "-j", "local", "-O", out.getPath(), "-c", "--gc-log", "--warmup", "0.3",
-                    "-odo", data.odo.getPath(), "-laser", data.laser.getPath(), "-real", data.real.getPath()));
+                    "-odo", odo.getPath(), "-laser", laser.getPath(), "-real", real.getPath()));
             args.addAll(java.util.Arrays.asList(p).subList(1, p.length));
             ByteArrayOutputStream err = new ByteArrayOutputStream();
             int code = WorkloadMain.run(args.toArray(new String[0]), new PrintStream(new ByteArrayOutputStream()),
@@ -113,7 +118,7 @@ class RealTimeRunTest {
                     jobs++;
                 }
             }
-            Dataset d = data.read();
+            Dataset d = DatasetReader.readFiles(odo, laser, real);
             assertEquals(d.odometryCount() + d.laserCount(), jobs);
             String summary = new String(Files.readAllBytes(new File(dir, "summary.json").toPath()),
                     StandardCharsets.UTF_8);

@@ -12,6 +12,7 @@ import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.Timeline;
 import org.jmclbench.workload.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
+import org.jmclbench.workload.mcl.MclConfig;
 import org.jmclbench.workload.record.JobRecords;
 
 /**
@@ -61,6 +62,10 @@ public final class RealTimeRun {
                     new LocalizerJob(dataset, timeline, localizer, records), records, cpuClock, spinNs);
             engine.run();
             records.durationNs = System.nanoTime() - engine.runStartNanoTime();
+            if (options.memory == MclConfig.Memory.PREALLOCATED && engine.allocatedBytes() > 0) {
+                err.println("jmclbench: warning: the measured window allocated " + engine.allocatedBytes()
+                        + " bytes on the engine's threads (expected none)");
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new IllegalStateException("the run was interrupted", e);

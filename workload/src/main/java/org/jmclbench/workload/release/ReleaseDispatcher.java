@@ -20,6 +20,7 @@ public final class ReleaseDispatcher implements Runnable {
     private final JobRecords records;
     private final long spinNs;
     private long runStartNs;
+    private volatile long allocatedBytes = -1;
 
     /**
      * @param releaseNs scheduled release of each merged event, ns from the run start,
@@ -41,8 +42,22 @@ public final class ReleaseDispatcher implements Runnable {
         this.runStartNs = nanoTime;
     }
 
+    /** Heap bytes this thread allocated in its release loop, or -1 where unknown. */
+    long allocatedBytes() {
+        return allocatedBytes;
+    }
+
     @Override
     public void run() {
+        long allocated0 = ThreadAllocation.now();
+        try {
+            releaseAll();
+        } finally {
+            allocatedBytes = ThreadAllocation.since(allocated0);
+        }
+    }
+
+    private void releaseAll() {
         final long t0 = runStartNs;
         final JobRecords r = records;
         try {

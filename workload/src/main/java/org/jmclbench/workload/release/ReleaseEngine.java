@@ -20,6 +20,7 @@ public final class ReleaseEngine {
     private final ThreadCpuClock cpuClock;
     private final long spinNs;
     private long runStartNanoTime;
+    private long allocatedBytes = -1;
 
     public ReleaseEngine(ReleaseSchedule schedule, OverrunPolicy policy, EventJob job,
                          JobRecords records, ThreadCpuClock cpuClock, long spinNs) {
@@ -77,6 +78,10 @@ public final class ReleaseEngine {
         for (Thread t : handlerThreads) {
             t.join();
         }
+        allocatedBytes = dispatcher.allocatedBytes();
+        for (TaskHandler h : handlers) {
+            allocatedBytes = allocatedBytes < 0 || h.allocatedBytes() < 0 ? -1 : allocatedBytes + h.allocatedBytes();
+        }
         for (TaskHandler h : handlers) {
             if (h.failure() != null) {
                 throw new IllegalStateException("a job failed: " + h.failure(), h.failure());
@@ -87,6 +92,15 @@ public final class ReleaseEngine {
                 throw new IllegalStateException("event " + k + " was never accounted for");
             }
         }
+    }
+
+    /**
+     * Heap bytes the dispatcher and handler threads allocated during the last {@link #run()},
+     * the jobs' own allocation included (zero for an allocation-free job), or -1 where the
+     * runtime does not count allocation.
+     */
+    public long allocatedBytes() {
+        return allocatedBytes;
     }
 
     /** The System.nanoTime of the release of time 0 of the last {@link #run()}. */

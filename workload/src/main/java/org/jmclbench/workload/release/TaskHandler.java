@@ -28,6 +28,7 @@ public final class TaskHandler implements Runnable {
     private long runStartNs;
     private Thread thread;
     private volatile Throwable failure;
+    private volatile long allocatedBytes = -1;
 
     /**
      * @param capacity the number of events of this task in the replay (the queue's size
@@ -88,8 +89,19 @@ public final class TaskHandler implements Runnable {
         return k;
     }
 
+    /** Heap bytes this thread allocated while handling jobs (the job's own included), or -1. */
+    long allocatedBytes() {
+        return allocatedBytes;
+    }
+
     @Override
     public void run() {
+        long allocated0 = ThreadAllocation.now();
+        handle();
+        allocatedBytes = ThreadAllocation.since(allocated0);
+    }
+
+    private void handle() {
         final JobRecords r = records;
         final long t0 = runStartNs;
         while (true) {

@@ -81,13 +81,14 @@ public final class WorkloadMain {
             IdealRun.warmup(dataset, timeline, newLocalizer(config, dataset), options.warmupS);
         }
         Localizer localizer = newLocalizer(config, dataset);
+        java.util.Map<String, Object> engineFacts = null;
         if (options.ideal) {
             IdealRun.run(dataset, timeline, localizer, records);
         } else {
-            RealTimeRun.run(options, dataset, timeline, localizer, records, partial, err);
+            engineFacts = RealTimeRun.run(options, dataset, timeline, localizer, records, partial, err);
         }
 
-        new RunWriter(options, dataset, timeline, records, environment).writeAll(partial);
+        new RunWriter(options, dataset, timeline, records, environment).engine(engineFacts).writeAll(partial);
         folder.commit();
         return OK;
     }

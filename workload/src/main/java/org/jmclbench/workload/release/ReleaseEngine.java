@@ -10,6 +10,10 @@ import org.jmclbench.workload.record.JobRecords;
 public final class ReleaseEngine {
     /** Handlers are started this long before the release of time 0, so they are parked by then. */
     static final long LEAD_NS = 20_000_000L;
+    /** Java priority of the dispatcher thread: above the handlers. */
+    public static final int DISPATCHER_PRIORITY = Thread.MAX_PRIORITY;
+    /** Java priority of the handler threads. */
+    public static final int HANDLER_PRIORITY = Thread.MAX_PRIORITY - 1;
     /** Task names by task index, for thread names. */
     private static final String[] TASK_NAMES = {"predict", "update"};
 
@@ -51,7 +55,7 @@ public final class ReleaseEngine {
         Thread[] handlerThreads = new Thread[handlers.length];
         // Dispatcher above handlers; Linux ignores Java priorities unless the JVM runs with
         // -XX:ThreadPriorityPolicy=1 as root, and SCHED_FIFO comes from chrt on the whole JVM.
-        int handlerPriority = Thread.MAX_PRIORITY - 1;
+        int handlerPriority = HANDLER_PRIORITY;
         for (int t = 0; t < handlers.length; t++) {
             handlers[t] = new TaskHandler(TASK_NAMES[t], schedule.countOf(t), policy, job, records,
                     cpuClock);
@@ -62,7 +66,7 @@ public final class ReleaseEngine {
                 handlers, policy, records, spinNs);
         Thread dispatcherThread = new Thread(dispatcher, "jmclbench-dispatcher");
         dispatcherThread.setDaemon(true);
-        dispatcherThread.setPriority(Thread.MAX_PRIORITY);
+        dispatcherThread.setPriority(DISPATCHER_PRIORITY);
 
         long t0 = System.nanoTime() + LEAD_NS;
         runStartNanoTime = t0;

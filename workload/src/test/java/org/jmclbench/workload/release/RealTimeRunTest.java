@@ -123,7 +123,7 @@ class RealTimeRunTest {
             String summary = new String(Files.readAllBytes(new File(dir, "summary.json").toPath()),
                     StandardCharsets.UTF_8);
             for (String key : new String[] {"\"releaseJitterNs\"", "\"taskLatencyNs\"", "\"responseTimeNs\"",
-                    "\"cpuNs\"", "\"dispatcherLatenessNs\"", "\"status\": \"complete\""}) {
+                    "\"cpuNs\"", "\"dispatcherLatenessNs\"", "\"engine\"", "\"status\": \"complete\""}) {
                 assertTrue(summary.replace("\":\"", "\": \"").contains(key), p[0] + ": " + key + " missing");
             }
             List<String> dataTxt = Files.readAllLines(new File(dir, "data.txt").toPath(), StandardCharsets.UTF_8);

@@ -14,6 +14,7 @@ import org.jmclbench.workload.output.Environment;
 import org.jmclbench.workload.output.RunFolder;
 import org.jmclbench.workload.output.RunWriter;
 import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.workload.release.RealTimeRun;
 
 /**
  * Entry point of the workload process: {@code run [options]} reads a dataset, runs one test
@@ -87,16 +88,14 @@ public final class WorkloadMain {
             IdealRun.warmup(dataset, timeline, newLocalizer(config, dataset), options.warmupS);
         }
         Localizer localizer = newLocalizer(config, dataset);
+        java.util.Map<String, Object> engineFacts = null;
         if (options.ideal) {
             IdealRun.run(dataset, timeline, localizer, records);
         } else {
-            // ---- Real-time engine hook (the engine helper's): replace these two lines with
-            // ---- RealTimeRun.run(options, dataset, timeline, localizer, records);
-            err.println("jmclbench: real-time engine not built yet");
-            return FAILURE;
+            engineFacts = RealTimeRun.run(options, dataset, timeline, localizer, records, partial, err);
         }
 
-        new RunWriter(options, dataset, timeline, records, environment).writeAll(partial);
+        new RunWriter(options, dataset, timeline, records, environment).engine(engineFacts).writeAll(partial);
         folder.commit();
         // The complete run folder, the one line a script needs.
         out.println(folder.dir.getPath());

@@ -88,8 +88,14 @@ class Rng:
 
 # ---------------------------------------------------------------- section 3: angles
 
+def ieee_floor(v):
+    """floor() as C and Java define it: math.floor returns an int, which loses the sign of -0.0."""
+    f = float(math.floor(v))
+    return math.copysign(0.0, v) if f == 0.0 else f
+
+
 def wrap2pi(a):
-    r = a - TWO_PI * float(math.floor(a / TWO_PI))
+    r = a - TWO_PI * ieee_floor(a / TWO_PI)
     return 0.0 if r >= TWO_PI else r
 
 
@@ -505,7 +511,7 @@ def self_check():
     """Published values, so that this reference does not merely agree with itself."""
     # splitmix64 seeded with 0 (Vigna's reference splitmix64.c): first output.
     assert splitmix64(0)[1] == 0xE220A8397B1DCDAF, hex(splitmix64(0)[1])
-    assert wrap2pi(-1e-300) == 0.0 or wrap2pi(-1e-300) < TWO_PI
+    assert math.copysign(1.0, wrap2pi(-0.0)) == 1.0  # -0.0 - (2pi * -0.0) is +0.0 in IEEE arithmetic
     assert 2.0 * SIGMA_LASER * SIGMA_LASER == 2.0 * (SIGMA_LASER * SIGMA_LASER)
 
 

@@ -1,7 +1,11 @@
 package org.jmclbench.bench;
 
+import java.io.File;
 import java.io.IOException;
 import java.util.concurrent.TimeUnit;
+import org.jmclbench.workload.BadInputException;
+import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.data.DatasetReader;
 import org.jmclbench.workload.mcl.AbortSignal;
 import org.jmclbench.workload.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
@@ -51,32 +55,47 @@ public class KernelBenchmark {
     String dataset;
 
     private Localizer localizer;
-    private double[] odometry;
-    private int odometryCount;
+    private double[] odoDx;
+    private double[] odoDy;
+    private double[] odoDtheta;
     private double[] laser;
     private int nextOdometry;
     private int nextLaser;
 
     @Setup(Level.Trial)
-    public void setUp() throws IOException {
-        KernelData d = KernelData.load(dataset);
+    public void setUp() throws IOException, BadInputException {
+        Dataset d = DatasetReader.readFolder(dataset.isEmpty() ? findDefault() : new File(dataset));
         MclConfig config = MclConfig.builder()
                 .particles(particles)
                 .memory(MclConfig.Memory.valueOf(memory.toUpperCase(java.util.Locale.ROOT)))
                 .seed(1)
                 .build();
         localizer = Localizers.create(config, d.playground, d.startX, d.startY, d.startTheta);
-        odometry = d.odometry;
-        odometryCount = d.odometryCount();
-        laser = d.laser;
+        odoDx = d.odoDx;
+        odoDy = d.odoDy;
+        odoDtheta = d.odoDtheta;
+        laser = d.laserAngle;
+    }
+
+    private static File findDefault() throws IOException {
+        File dir = new File("").getAbsoluteFile();
+        while (dir != null) {
+            File c = new File(dir, "datasets/match-short");
+            if (new File(c, DatasetReader.ODOMETRY).isFile()) {
+                return c;
+            }
+            dir = dir.getParentFile();
+        }
+        throw new IOException("datasets/match-short not found above " + new File("").getAbsolutePath()
+                + "; pass -p dataset=DIR");
     }
 
     /** One odometry job. */
     @Benchmark
     public double predict() {
         int k = nextOdometry;
-        nextOdometry = k + 1 == odometryCount ? 0 : k + 1;
-        localizer.predict(odometry[3 * k], odometry[3 * k + 1], odometry[3 * k + 2], AbortSignal.NEVER);
+        nextOdometry = k + 1 == odoDx.length ? 0 : k + 1;
+        localizer.predict(odoDx[k], odoDy[k], odoDtheta[k], AbortSignal.NEVER);
         return localizer.estimateX();
     }
 

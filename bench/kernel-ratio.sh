@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The Java/C kernel comparison of SPEC section 11, run once: JMH (bench/, with -prof gc) and
-# the C timing loop (native/bench/kernel_bench.c) on the same dataset, particle counts and
+# the C timing loop (native/bench/kernel_jobs.c) on the same dataset, particle counts and
 # jobs, then one table: ns per job in Java and C, the Java/C ratio and the bytes Java
 # allocates per job, for both memory styles. A benchmark, not a test: numbers depend on the
 # machine and on what else it runs; the raw outputs are kept beside the table.
@@ -37,7 +37,7 @@ command -v "$java" >/dev/null || { echo "kernel-ratio: --java: $java: not found"
 if [ $build = 1 ]; then
     echo "kernel-ratio: building the benchmarks..." >&2
     (cd "$home" && mvn -q -B -ntp -pl bench -am package -DskipTests >&2)
-    make -s -C "$home/native" bench >&2
+    make -s -C "$home/native" build/kernel-jobs >&2
 fi
 mkdir -p "$out"
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
@@ -59,7 +59,7 @@ echo "kernel-ratio: JMH ($java)..." >&2
     -p "particles=$particles" -p "dataset=$dataset" -rf json -rff "$out/jmh.json" >"$out/jmh.txt" 2>&1 \
     || { tail -20 "$out/jmh.txt" >&2; echo "kernel-ratio: JMH failed (log: $out/jmh.txt)" >&2; exit 1; }
 echo "kernel-ratio: C timing loop..." >&2
-"$home/native/build/kernel_bench" --dataset "$dataset" --particles "$particles" \
+"$home/native/build/kernel-jobs" --dataset "$dataset" --particles "$particles" \
     --warmup "$c_warmup" --iterations "$c_iterations" --time "$c_time" >"$out/c.txt"
 "$java" -version >"$out/java-version.txt" 2>&1 || true
 

@@ -5,7 +5,9 @@
  * Usage: test_conformance [CONFORMANCE_DIR]   (default ../conformance, as run by make -C native)
  * Prints one line per file and exits 0 when every vector holds, 1 otherwise.
  */
+#ifndef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 200809L
+#endif
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>

@@ -27,7 +27,7 @@ import org.openjdk.jmh.annotations.Warmup;
  * Time per job of the MCL kernel (SPEC section 11): one odometry job ({@code predict}) or one
  * laser job ({@code update}: likelihood, normalisation, estimate, systematic resampling), on
  * the events of a shipped dataset replayed in order and wrapped around, exactly as
- * native/bench/kernel_bench.c replays them, so the two times can be divided.
+ * native/bench/kernel_jobs.c replays them, so the two times can be divided.
  *
  * <p>Each benchmark replays only its own task's events: the predict jobs never see an update
  * and the update jobs never move the particles. The arithmetic per job is what a run does

@@ -13,7 +13,9 @@
  * cpu_share is the thread's CPU time over the wall time of the measured iterations: below
  * about 0.95 the machine was busy and the times include preemption.
  */
+#ifndef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 200809L
+#endif
 #include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,7 +43,7 @@ static volatile double sink;
 static void usage(FILE *out)
 {
 	fprintf(out,
-		"usage: kernel_bench [options]\n"
+		"usage: kernel-jobs [options]\n"
 		"  -d, --dataset DIR        dataset folder (default ../datasets/match-short)\n"
 		"  -p, --particles N[,N..]  particle counts (default 1000,4000)\n"
 		"  -m, --memory STYLE       preallocated, allocating or both (default both)\n"
@@ -203,11 +205,11 @@ int main(int argc, char **argv)
 		}
 		continue;
 bad:
-		fprintf(stderr, "kernel_bench: -%c: bad value '%s'\n", opt, optarg);
+		fprintf(stderr, "kernel-jobs: -%c: bad value '%s'\n", opt, optarg);
 		return 2;
 	}
 	if (jm_dataset_load(&ds, o.dataset, NULL, NULL, NULL, err, sizeof(err))) {
-		fprintf(stderr, "kernel_bench: %s\n", err);
+		fprintf(stderr, "kernel-jobs: %s\n", err);
 		return 2;
 	}
 	printf("# job particles memory ns_per_job min_iteration_ns max_iteration_ns jobs cpu_share"
@@ -219,7 +221,7 @@ bad:
 				if (o.memory_mask & (1 << mem) &&
 				    bench_one(&o, &ds, update, o.counts[c],
 					      mem ? JM_MEMORY_ALLOCATING : JM_MEMORY_PREALLOCATED)) {
-					fprintf(stderr, "kernel_bench: out of memory\n");
+					fprintf(stderr, "kernel-jobs: out of memory\n");
 					rc = 1;
 				}
 	jm_dataset_free(&ds);

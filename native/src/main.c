@@ -129,7 +129,7 @@ int main(int argc, char **argv)
 	if (stat(partial, &st) == 0 && jm_remove_tree(partial))
 		die(EXIT_BENCH_FAILURE, "%s: cannot remove what an earlier attempt left: %s", partial, strerror(errno));
 	if (jm_mkdirs(partial))
-		die(EXIT_BAD_INPUT, "%s: cannot create: %s", partial, strerror(errno));
+		die(EXIT_BAD_INPUT, "-O: cannot create %s: %s", partial, strerror(errno));
 
 	jm_env_read(&env);
 	mcl_config(&cfg, &opt, &ds);
@@ -149,6 +149,7 @@ int main(int argc, char **argv)
 			die(EXIT_BENCH_FAILURE, "out of memory");
 		if (run_timeline(&mcl, &tl, &opt, &sched))
 			die(EXIT_BENCH_FAILURE, "the warm-up failed (out of memory or no threads)");
+		sched.warmup_events = tl.n;
 		jm_timeline_free(&tl);
 		jm_mcl_free(&mcl);
 	}
@@ -198,6 +199,8 @@ int main(int argc, char **argv)
 	}
 	if (replaced[0] && jm_remove_tree(replaced))
 		fprintf(stderr, "jmclbench: %s: cannot remove: %s\n", replaced, strerror(errno));
+	/* the complete run folder, the one line a script needs */
+	printf("%s\n", final_dir);
 	ret = 0;
 out:
 	jm_timeline_free(&tl);

@@ -225,7 +225,7 @@ static void test_bad_data(void)
 
 		snprintf(file, sizeof(file), "%s/a-file", tmp);
 		write_text(file, "not a folder\n");
-		snprintf(want2, sizeof(want2), "jmclbench: %s/native/nocov/400/IdealTest/1.partial: cannot create", file);
+		snprintf(want2, sizeof(want2), "jmclbench: -O: cannot create %s/native/nocov/400/IdealTest/1.partial: ", file);
 		expect_bad(args, want2);
 	}
 	/* nothing was recorded as a result */
@@ -436,11 +436,19 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 		CHECK_INT(run(args), 0);
 		CHECK_INT(strlen(err_text), 0);
 		snprintf(dir, sizeof(dir), "%s/native/nocov/%d/IdealTest/1", out, particles);
+		/* the one line on stdout: the complete run folder */
+		{
+			char want[420];
+
+			snprintf(want, sizeof(want), "%s\n", dir);
+			CHECK(!strcmp(out_text, want));
+		}
 		dev = check_run_dir(dir, 1, 0, nodo, nlaser, &miss);
 		printf("%s: ideal run, %d particles: deviationXY %.4f m\n", label, particles, dev);
 		ideal_dev = dev;
 		CHECK(dev >= 0 && dev < 0.10);
 		CHECK_INT(miss, 0);
+		CHECK(!strstr(out_text, "\"engine\"")); /* no release engine in an ideal run */
 		/* a complete folder is not overwritten without --force */
 		CHECK_INT(run(args), 2);
 		CHECK_CONTAINS(err_text, "a complete run folder exists (use --force to overwrite)");
@@ -496,6 +504,9 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 				snprintf(gc, sizeof(gc), "%s/gc.log", dir);
 				CHECK(stat(gc, &st) == 0);
 			}
+			CHECK_CONTAINS(out_text, "\"engine\": {");
+			CHECK_CONTAINS(out_text, "\"warmupEvents\": ");
+			CHECK(!strstr(out_text, "\"warmupEvents\": 0,"));
 			printf("%s: %s, %d particles, time scale %s: missCount %d, deviationXY %.4f m\n",
 			       label, policies[i], particles, scale, miss, dev);
 			CHECK(isfinite(dev) && dev >= 0);

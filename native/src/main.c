@@ -121,7 +121,7 @@ int main(int argc, char **argv)
 		die(EXIT_BAD_INPUT, "%s", err);
 
 	if (jm_run_dir(&opt, final_dir, sizeof(final_dir)))
-		die(EXIT_BAD_INPUT, "%s: path too long", opt.out);
+		die(EXIT_BAD_INPUT, "-O: path too long: %s", opt.out);
 	snprintf(partial, sizeof(partial), "%s.partial", final_dir);
 	if (stat(final_dir, &st) == 0 && !opt.force)
 		die(EXIT_BAD_INPUT, "%s: a complete run folder exists (use --force to overwrite)", final_dir);

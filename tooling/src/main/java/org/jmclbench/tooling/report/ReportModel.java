@@ -50,7 +50,7 @@ public final class ReportModel {
 
     /** A runtime/profile as shown in the legend and the tables. */
     public record ConfigInfo(String id, String runtime, String profile, boolean nativeBaseline, List<String> versions,
-                             List<String> flags, List<String> machines) {
+                             List<String> flags, List<String> machines, List<String> facts) {
     }
 
     /** A machine with the doctor's facts. */
@@ -284,6 +284,7 @@ public final class ReportModel {
             Set<String> versions = new LinkedHashSet<>();
             Set<String> flags = new LinkedHashSet<>();
             Set<String> machines = new LinkedHashSet<>();
+            List<String> facts = new ArrayList<>();
             boolean nativeBaseline = "native".equals(first.runtime);
             for (ResultsStore.Run r : e.getValue()) {
                 if (r.runtimeVersion != null) {
@@ -291,6 +292,9 @@ public final class ReportModel {
                 }
                 if (r.machineId != null) {
                     machines.add(r.machineId);
+                }
+                if (r.ok() && facts.isEmpty()) {
+                    facts.addAll(facts(Metric.summaryOf(r)));
                 }
                 if (r.ok() && flags.isEmpty()) {
                     JsonNode rt = Metric.summaryOf(r).at("/environment/runtime");
@@ -304,7 +308,28 @@ public final class ReportModel {
                 }
             }
             out.add(new ConfigInfo(e.getKey(), first.runtime, first.profile, nativeBaseline, List.copyOf(versions),
-                    List.copyOf(flags), List.copyOf(machines)));
+                    List.copyOf(flags), List.copyOf(machines), List.copyOf(facts)));
+        }
+        return out;
+    }
+
+    /** What says how far a run's numbers can be trusted: scheduling, priorities, allocation (FORMATS.md 4). */
+    static List<String> facts(JsonNode summary) {
+        List<String> out = new ArrayList<>();
+        JsonNode sched = summary.at("/environment/scheduling");
+        if (sched.hasNonNull("policy")) {
+            out.add("scheduling " + sched.get("policy").asText()
+                    + (sched.hasNonNull("priority") ? " priority " + sched.get("priority").asText() : ""));
+        }
+        JsonNode engine = summary.path("engine");
+        if (engine.hasNonNull("prioritiesApplied")) {
+            out.add(engine.get("prioritiesApplied").asBoolean() ? "thread priorities applied" : "thread priorities not applied by the OS");
+        }
+        if (engine.hasNonNull("allocatedBytes")) {
+            out.add(engine.get("allocatedBytes").asText() + " bytes allocated while measuring");
+        }
+        if (summary.at("/environment").hasNonNull("clocksource")) {
+            out.add("clocksource " + summary.at("/environment/clocksource").asText());
         }
         return out;
     }

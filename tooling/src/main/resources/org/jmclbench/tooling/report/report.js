@@ -294,6 +294,7 @@
       p.appendChild(el('strong', null, c.id));
       p.appendChild(document.createTextNode(' ' + (c.versions.join(', ') || '') + (c.nativeBaseline ? ' (native C baseline)' : '')));
       if (c.flags.length) { p.appendChild(el('br')); p.appendChild(el('code', null, c.flags.join(' '))); }
+      if (c.facts.length) { p.appendChild(el('br')); p.appendChild(el('span', { 'class': 'facts' }, c.facts.join('; '))); }
       box.appendChild(p);
     });
   }

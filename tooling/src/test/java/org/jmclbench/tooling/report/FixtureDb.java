@@ -194,6 +194,8 @@ public final class FixtureDb {
         env.putObject("cpu").put("model", "Intel(R) Xeon(R) CPU @ 2.20GHz").put("processors", 2);
         env.putObject("scheduling").put("policy", "SCHED_OTHER").put("priority", 0);
         env.put("clocksource", "kvm-clock").put("hostname", "bench-host").put("startedAt", "2026-11-22T02:10:00Z");
+        s.putObject("engine").put("dispatcherPriority", 10).put("handlerPriority", 9).put("prioritiesApplied", nat)
+                .put("cpuTime", "used (allocation-free)").putNull("gcLog").put("warmupEvents", 0).put("allocatedBytes", 0);
         s.put("durationS", durationS);
         int missCount = missPredict + missUpdate;
         s.put("missCount", missCount);

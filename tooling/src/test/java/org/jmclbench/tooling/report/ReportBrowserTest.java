@@ -176,6 +176,7 @@ class ReportBrowserTest {
         assertEquals(XSS_CONFIG, cell(XSS_CONFIG, "config"));
         assertTrue(driver.findElement(By.id("environment")).getText().contains("<img src=x onerror=alert(3)>"),
                 "the version string shown as text beside the results");
+        assertTrue(driver.findElement(By.id("environment")).getText().contains("thread priorities not applied by the OS"));
         Number images = (Number) js().executeScript("return document.images.length");
         assertEquals(0, images.intValue(), "an <img> from a string was parsed as HTML");
         String stderr = (String) js().executeScript(

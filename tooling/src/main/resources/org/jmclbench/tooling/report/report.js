@@ -266,7 +266,10 @@
     DATA.configs.forEach(function (c) { if (ids.has(c.id)) { c.machines.forEach(function (m) { machineIds.add(m); }); } });
     var shown = DATA.machines.filter(function (m) { return machineIds.has(m.id); });
     if (shown.length === 0) { shown = DATA.machines; }
+    var machinesBox = el('div', { 'class': 'env-machines' });
+    var runtimesBox = el('div', { 'class': 'env-runtimes' });
     shown.forEach(function (m) {
+      var box = machinesBox;
       box.appendChild(el('h3', null, 'Machine ' + (m.hostname || m.id)));
       var t = el('table', { 'class': 'machine' });
       [['kernel', m.kernel], ['CPU', m.cpu], ['processors', m.processors], ['virtualisation', m.virtualization || 'not reported']].forEach(function (kv) {
@@ -280,7 +283,7 @@
         m.checks.forEach(function (c) {
           var tr = el('tr');
           var st = el('td', { 'class': /ok|pass/i.test(c.status) ? 'status-ok' : /fail|error/i.test(c.status) ? 'status-fail' : 'status-warn' }, c.status);
-          tr.appendChild(el('td', null, c.check)); tr.appendChild(st); tr.appendChild(el('td', null, c.value));
+          tr.appendChild(el('td', null, c.check)); tr.appendChild(st); tr.appendChild(el('td', null, c.value)); tr.appendChild(el('td', { 'class': 'advice' }, c.advice || ''));
           tr.title = c.advice || '';
           ct.appendChild(tr);
         });
@@ -288,8 +291,11 @@
         box.appendChild(d);
       }
     });
-    box.appendChild(el('h3', null, 'Runtimes'));
+    box.appendChild(machinesBox);
+    box.appendChild(runtimesBox);
+    runtimesBox.appendChild(el('h3', null, 'Runtimes'));
     DATA.configs.filter(function (c) { return ids.has(c.id); }).forEach(function (c) {
+      var box = runtimesBox;
       var p = el('p');
       p.appendChild(el('strong', null, c.id));
       p.appendChild(document.createTextNode(' ' + (c.versions.join(', ') || '') + (c.nativeBaseline ? ' (native C baseline)' : '')));

@@ -316,6 +316,13 @@ public final class ReportModel {
     /** What says how far a run's numbers can be trusted: scheduling, priorities, allocation (FORMATS.md 4). */
     static List<String> facts(JsonNode summary) {
         List<String> out = new ArrayList<>();
+        JsonNode params = summary.path("parameters");
+        if (params.hasNonNull("timeScale") && params.get("timeScale").asDouble() != 1.0) {
+            out.add("replayed at time scale " + params.get("timeScale").asText() + " (deadlines scaled too)");
+        }
+        if (params.hasNonNull("memory")) {
+            out.add("memory " + params.get("memory").asText());
+        }
         JsonNode sched = summary.at("/environment/scheduling");
         if (sched.hasNonNull("policy")) {
             out.add("scheduling " + sched.get("policy").asText()

@@ -115,7 +115,7 @@
     var winners = withMiss.filter(function (c) { return c.metrics.MISS_COUNT.mean === best; });
     h.appendChild(el('p', { 'class': 'big', id: 'headline-best' }, 'Fewest deadline misses at ' + where + ': ' +
       winners.map(function (c) { return c.config; }).join(', ') + ' (' + fmtCi(winners[0].metrics.MISS_COUNT) +
-      ' misses per run, ' + winners[0].metrics.MISS_COUNT.n + ' runs).'));
+      ' misses per run, ' + winners[0].metrics.MISS_COUNT.n + (winners[0].metrics.MISS_COUNT.n === 1 ? ' run).' : ' runs).')));
     var nat = withMiss.filter(function (c) { return configById[c.config] && configById[c.config].nativeBaseline; })[0];
     var javas = withMiss.filter(function (c) { return !(configById[c.config] && configById[c.config].nativeBaseline); });
     var p = el('p', { id: 'headline-ratio' });

@@ -5,7 +5,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
-import org.jmclbench.tooling.cli.JmclbenchCli;
 import org.jmclbench.workload.BadInputException;
 
 import picocli.CommandLine.Command;
@@ -65,7 +64,4 @@ public final class ReportCommand implements Callable<Integer> {
         return done + "/" + total + (done < total && Double.isFinite(left)
                 ? String.format(java.util.Locale.ROOT, ", about %.0f s left", Math.ceil(left)) : "");
     }
-
-    /** Exit code of a failure of the report itself (not of the input). */
-    static final int EXIT_FAILURE = JmclbenchCli.EXIT_FAILURE;
 }

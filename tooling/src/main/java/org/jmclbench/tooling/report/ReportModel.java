@@ -4,7 +4,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
-import java.util.EnumMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -118,9 +117,6 @@ public final class ReportModel {
         public List<double[]> real = new ArrayList<>();
         public List<Failure> failures = new ArrayList<>();
 
-        String settingKey() {
-            return dataset + "\u0000" + policy + "\u0000" + particles;
-        }
     }
 
     /** Builds the model, reporting progress through {@code progress} (one line a step). */
@@ -409,22 +405,13 @@ public final class ReportModel {
         if (runs.isEmpty()) {
             return new Selection(null, null, null);
         }
-        Map<String, Long> perDataset = runs.stream().collect(Collectors.groupingBy(r -> r.dataset, TreeMapSupplier.INSTANCE, Collectors.counting()));
+        Map<String, Long> perDataset = runs.stream().collect(Collectors.groupingBy(r -> r.dataset, java.util.TreeMap::new, Collectors.counting()));
         String dataset = perDataset.entrySet().stream().max(Map.Entry.comparingByValue()).get().getKey();
         String policy = m.policies.contains("skip") ? "skip" : m.policies.get(0);
         List<Integer> ps = runs.stream().filter(r -> r.dataset.equals(dataset) && r.policy.equals(policy))
                 .map(r -> r.particles).distinct().sorted().toList();
         Integer particles = ps.isEmpty() ? m.particles.get(0) : ps.get(ps.size() / 2);
         return new Selection(dataset, policy, particles);
-    }
-
-    private enum TreeMapSupplier implements java.util.function.Supplier<Map<String, Long>> {
-        INSTANCE;
-
-        @Override
-        public Map<String, Long> get() {
-            return new java.util.TreeMap<>();
-        }
     }
 
     private static String tail(String s) {
@@ -436,20 +423,5 @@ public final class ReportModel {
 
     private static Double finite(double v) {
         return Double.isFinite(v) ? v : null;
-    }
-
-    /** Values of a metric for the cells of a setting: a helper of the chart export and tests. */
-    Map<String, Agg> metricBySetting(String dataset, String policy, int particles, Metric metric) {
-        Map<String, Agg> out = new LinkedHashMap<>();
-        for (Cell c : cells) {
-            if (c.dataset.equals(dataset) && c.policy.equals(policy) && c.particles == particles) {
-                out.put(c.config, c.metrics.get(metric.name()));
-            }
-        }
-        return out;
-    }
-
-    static Map<Metric, Agg> emptyMetrics() {
-        return new EnumMap<>(Metric.class);
     }
 }

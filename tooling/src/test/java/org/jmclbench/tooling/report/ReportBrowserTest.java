@@ -53,6 +53,7 @@ class ReportBrowserTest {
 
     static WebDriver driver;
     static ChromeDriverService service;
+    static Path profile;
     /** Held so that the level sticks: Selenium's warning that it has no CDP binding for this Chromium is noise here. */
     static final java.util.logging.Logger SELENIUM_LOG = java.util.logging.Logger.getLogger("org.openqa.selenium");
 
@@ -68,7 +69,7 @@ class ReportBrowserTest {
         Path out = ARTIFACTS.resolve("report");
         assertEquals(0, JmclbenchCli.execute("report", "--db", db.toString(), "--out", out.toString()));
 
-        Path profile = Files.createTempDirectory("jmclbench-chromium-");
+        profile = Files.createTempDirectory("jmclbench-chromium-");
         ChromeOptions options = new ChromeOptions();
         options.setBinary(CHROMIUM);
         options.addArguments("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--no-first-run",
@@ -86,12 +87,17 @@ class ReportBrowserTest {
     }
 
     @AfterAll
-    static void close() {
+    static void close() throws Exception {
         if (driver != null) {
             driver.quit();
         }
         if (service != null) {
             service.stop();
+        }
+        if (profile != null) {
+            try (var files = Files.walk(profile)) {
+                files.sorted(java.util.Comparator.reverseOrder()).forEach(f -> f.toFile().delete());
+            }
         }
     }
 

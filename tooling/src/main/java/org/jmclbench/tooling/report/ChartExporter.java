@@ -235,8 +235,8 @@ final class ChartExporter {
     private JFreeChart latencyIndex(String at, List<ReportModel.Cell> cells) {
         Map<String, XYSeries> series = new LinkedHashMap<>();
         for (ReportModel.Cell c : cells) {
-            c.latencyPredict.forEach(p -> add(series, c.config + " predict", p[0], p[1]));
-            c.latencyUpdate.forEach(p -> add(series, c.config + " update", p[0], p[1]));
+            thin(c.latencyPredict, EXPORT_POINTS, true).forEach(p -> add(series, c.config + " predict", p[0], p[1]));
+            thin(c.latencyUpdate, EXPORT_POINTS, true).forEach(p -> add(series, c.config + " update", p[0], p[1]));
         }
         return xy("Task latency vs event index (" + at + ")", "event index", new NumberAxis("task latency (ms)"), series, false, true);
     }
@@ -246,7 +246,7 @@ final class ChartExporter {
         for (ReportModel.Cell c : cells) {
             for (int i = 0; i < c.deviation.size(); i++) {
                 String name = c.config + " #" + c.deviationRepetitions.get(i);
-                c.deviation.get(i).forEach(p -> add(series, name, p[0], p[1]));
+                thin(c.deviation.get(i), EXPORT_POINTS, false).forEach(p -> add(series, name, p[0], p[1]));
             }
         }
         return xy("Deviation over time, repeated runs (" + at + ")", "time (s)", new NumberAxis("deviation xy (m)"), series, true, false);
@@ -314,6 +314,28 @@ final class ChartExporter {
         JFreeChart chart = xy("CDF of release jitter (" + at + ")", null, y, series, true, false);
         chart.getXYPlot().setDomainAxis(x);
         return chart;
+    }
+
+    /** Points per series in the exported files: enough for print, and the export stays fast. */
+    static final int EXPORT_POINTS = 300;
+
+    /** At most {@code max} points: every k-th, or with {@code keepPeaks} the largest y of each bucket. */
+    static List<double[]> thin(List<double[]> points, int max, boolean keepPeaks) {
+        if (points.size() <= max) {
+            return points;
+        }
+        int bucket = (points.size() + max - 1) / max;
+        List<double[]> out = new ArrayList<>();
+        for (int i = 0; i < points.size(); i += bucket) {
+            double[] best = points.get(i);
+            for (int k = i + 1; keepPeaks && k < Math.min(points.size(), i + bucket); k++) {
+                if (points.get(k)[1] > best[1]) {
+                    best = points.get(k);
+                }
+            }
+            out.add(best);
+        }
+        return out;
     }
 
     private static void add(Map<String, XYSeries> series, String name, double x, Double y) {

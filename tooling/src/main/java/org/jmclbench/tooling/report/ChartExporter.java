@@ -129,6 +129,7 @@ final class ChartExporter {
         try {
             ChartUtils.saveChartAsPNG(dir.resolve(stem + ".png").toFile(), chart, WIDTH, HEIGHT);
             SVGGraphics2D g2 = new SVGGraphics2D(WIDTH, HEIGHT);
+            g2.setGeomDoubleConverter(ChartExporter::twoDecimals); // a hundredth of a pixel is plenty
             chart.draw(g2, new Rectangle(0, 0, WIDTH, HEIGHT));
             SVGUtils.writeToSVG(dir.resolve(stem + ".svg").toFile(), g2.getSVGElement());
         } catch (IOException e) {
@@ -238,7 +239,20 @@ final class ChartExporter {
             thin(c.latencyPredict, EXPORT_POINTS, true).forEach(p -> add(series, c.config + " predict", p[0], p[1]));
             thin(c.latencyUpdate, EXPORT_POINTS, true).forEach(p -> add(series, c.config + " update", p[0], p[1]));
         }
-        return xy("Task latency vs event index (" + at + ")", "event index", new NumberAxis("task latency (ms)"), series, false, true);
+        JFreeChart chart = xy("Task latency vs event index (" + at + ")", "event index",
+                new NumberAxis("task latency (ms); dots: predict, triangles: update"), series, false, true);
+        List<String> names = new ArrayList<>(series.keySet());
+        java.awt.geom.Path2D.Double triangle = new java.awt.geom.Path2D.Double();
+        triangle.moveTo(0, -3.5);
+        triangle.lineTo(3, 2.5);
+        triangle.lineTo(-3, 2.5);
+        triangle.closePath();
+        for (int i = 0; i < names.size(); i++) {
+            if (names.get(i).endsWith(" update")) {
+                ((XYLineAndShapeRenderer) chart.getXYPlot().getRenderer()).setSeriesShape(i, triangle);
+            }
+        }
+        return chart;
     }
 
     private JFreeChart deviationTime(String at, List<ReportModel.Cell> cells) {
@@ -316,6 +330,11 @@ final class ChartExporter {
         return chart;
     }
 
+    static String twoDecimals(double v) {
+        double r = Math.round(v * 100) / 100.0;
+        return r == Math.rint(r) ? Long.toString((long) r) : Double.toString(r);
+    }
+
     /** Points per series in the exported files: enough for print, and the export stays fast. */
     static final int EXPORT_POINTS = 300;
 
@@ -353,6 +372,8 @@ final class ChartExporter {
         XYSeriesCollection data = new XYSeriesCollection();
         series.values().forEach(data::addSeries);
         XYLineAndShapeRenderer renderer = new XYLineAndShapeRenderer(lines, shapes);
+        renderer.setDrawOutlines(false);
+        renderer.setDrawSeriesLineAsPath(true); // one SVG path a series, not one a segment
         for (int i = 0; i < series.size(); i++) {
             renderer.setSeriesShape(i, new Ellipse2D.Double(-2, -2, 4, 4));
         }

@@ -128,9 +128,17 @@ public final class ReportModel {
         m.runCount = runs.size();
         progress.accept("read " + runs.size() + " runs");
 
+        Map<String, ResultsStore.Machine> machineRows = store.machines();
+        if (runs.stream().map(r -> String.valueOf(r.machineId)).distinct().count() > 1) {
+            // Runs of two machines (merged stores) are never pooled: each runtime is shown per machine.
+            for (ResultsStore.Run r : runs) {
+                ResultsStore.Machine mc = machineRows.get(r.machineId);
+                r.machineLabel = mc != null && mc.hostname() != null ? mc.hostname() : String.valueOf(r.machineId);
+            }
+        }
         Map<String, List<ResultsStore.Run>> byCell = new LinkedHashMap<>();
         for (ResultsStore.Run r : runs) {
-            byCell.computeIfAbsent(r.dataset + "\u0000" + r.policy + "\u0000" + r.particles + "\u0000" + r.config(),
+            byCell.computeIfAbsent(r.dataset + "\u0000" + r.policy + "\u0000" + r.particles + "\u0000" + r.configOnMachine(),
                     k -> new ArrayList<>()).add(r);
         }
         m.datasets = runs.stream().map(r -> r.dataset).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
@@ -163,7 +171,7 @@ public final class ReportModel {
         c.dataset = first.dataset;
         c.policy = first.policy;
         c.particles = first.particles;
-        c.config = first.config();
+        c.config = first.configOnMachine();
         c.runs = group.size();
         List<ResultsStore.Run> ok = new ArrayList<>();
         for (ResultsStore.Run r : group) {
@@ -272,8 +280,8 @@ public final class ReportModel {
 
     private static List<ConfigInfo> configs(List<ResultsStore.Run> runs) {
         Map<String, List<ResultsStore.Run>> byConfig = new LinkedHashMap<>();
-        runs.stream().sorted(Comparator.comparing(ResultsStore.Run::config))
-                .forEach(r -> byConfig.computeIfAbsent(r.config(), k -> new ArrayList<>()).add(r));
+        runs.stream().sorted(Comparator.comparing(ResultsStore.Run::configOnMachine))
+                .forEach(r -> byConfig.computeIfAbsent(r.configOnMachine(), k -> new ArrayList<>()).add(r));
         List<ConfigInfo> out = new ArrayList<>();
         for (Map.Entry<String, List<ResultsStore.Run>> e : byConfig.entrySet()) {
             ResultsStore.Run first = e.getValue().get(0);

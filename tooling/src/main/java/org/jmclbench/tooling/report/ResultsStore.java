@@ -87,9 +87,17 @@ public final class ResultsStore implements AutoCloseable {
         /** summary_json parsed on first use ({@link Metric}); a missing node when absent or invalid. */
         com.fasterxml.jackson.databind.JsonNode summary;
 
+        /** Set by the report when the store holds several machines: the same runtime on two machines is two configurations. */
+        String machineLabel;
+
         /** The configuration under test: runtime, and profile when there is one. */
         public String config() {
             return profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
+        }
+
+        /** {@link #config()}, with " @host" when the report tells machines apart. */
+        String configOnMachine() {
+            return machineLabel == null ? config() : config() + " @" + machineLabel;
         }
 
         public boolean ok() {

@@ -116,8 +116,8 @@
     h.appendChild(el('p', { 'class': 'big', id: 'headline-best' }, 'Fewest deadline misses at ' + where + ': ' +
       winners.map(function (c) { return c.config; }).join(', ') + ' (' + fmtCi(winners[0].metrics.MISS_COUNT) +
       ' misses per run, ' + winners[0].metrics.MISS_COUNT.n + (winners[0].metrics.MISS_COUNT.n === 1 ? ' run).' : ' runs).')));
-    var nat = withMiss.filter(function (c) { return configById[c.config] && configById[c.config].nativeBaseline; })[0];
-    var javas = withMiss.filter(function (c) { return !(configById[c.config] && configById[c.config].nativeBaseline); });
+    var javas = withMiss.filter(function (c) { return !isNative(c); });
+    var nat = withMiss.filter(isNative)[0];
     var p = el('p', { id: 'headline-ratio' });
     if (!nat) {
       p.textContent = 'No native (C) baseline among the chosen runtimes at this setting, so no Java/C ratio.';
@@ -129,6 +129,7 @@
           ((a.metrics.LATENCY_MEAN.mean || Infinity) - (b.metrics.LATENCY_MEAN.mean || Infinity));
       });
       var j = javas[0];
+      nat = nativeFor(j.config, withMiss);
       var lr = ratio(j.metrics.LATENCY_MEAN.mean, nat.metrics.LATENCY_MEAN.mean);
       var mr = ratio(j.metrics.MISS_COUNT.mean, nat.metrics.MISS_COUNT.mean);
       p.textContent = 'Java vs C: the best Java runtime, ' + j.config + ', has a mean task latency ' + lr + ' that of ' +
@@ -136,6 +137,13 @@
         fmt(j.metrics.MISS_COUNT.mean) + ' vs ' + fmt(nat.metrics.MISS_COUNT.mean) + ' misses per run (' + mr + ').';
     }
     h.appendChild(p);
+  }
+  /** The native baseline to compare a runtime with: on the same machine when the store has several. */
+  function isNative(c) { return configById[c.config] && configById[c.config].nativeBaseline; }
+  function machineOf(id) { var i = id.lastIndexOf(' @'); return i < 0 ? '' : id.substring(i); }
+  function nativeFor(config, cells) {
+    var natives = cells.filter(isNative);
+    return natives.filter(function (n) { return machineOf(n.config) === machineOf(config); })[0] || natives[0];
   }
   function ratio(a, b) {
     if (a === null || b === null || a === undefined || b === undefined) { return 'n/a'; }
@@ -161,9 +169,9 @@
     { key: 'unsupported', label: 'not supported', text: true }
   ];
   function tableRows(cells) {
-    var nat = cells.filter(function (c) { return configById[c.config] && configById[c.config].nativeBaseline; })[0];
-    var natLat = nat ? nat.metrics.LATENCY_MEAN.mean : null;
     return configOrder(cells).map(function (c) {
+      var nat = nativeFor(c.config, cells);
+      var natLat = nat ? nat.metrics.LATENCY_MEAN.mean : null;
       var cfg = configById[c.config] || { versions: [] };
       var row = { cell: c, values: {}, texts: {} };
       row.values.config = c.config; row.texts.config = c.config;

@@ -142,6 +142,20 @@ class ReportCommandTest {
     }
 
     @Test
+    void runsOfTwoMachinesAreNeverPooled() throws Exception {
+        Path merged = Files.copy(db, dir.resolve("merged.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + merged); var st = c.createStatement()) {
+            st.execute("INSERT INTO machines VALUES ('m-2', 'other-host', '6.8.0', 'AMD EPYC', 4, '[]')");
+            st.execute("UPDATE runs SET machine_id = 'm-2' WHERE repetition = 3");
+        }
+        Path page = dir.resolve("merged-report");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", merged.toString(), "--out", page.toString(), "--no-export"));
+        String h = Files.readString(page.resolve("index.html"));
+        assertTrue(h.contains("\"config\":\"native @bench-host\"") && h.contains("\"config\":\"native @other-host\""));
+        assertFalse(h.contains("\"config\":\"native\""), "no pooled native");
+    }
+
+    @Test
     void defaultFolderIsBesideTheDatabase() throws Exception {
         Path other = Files.createDirectories(dir.resolve("elsewhere"));
         Path copy = Files.copy(db, other.resolve("results.db"));

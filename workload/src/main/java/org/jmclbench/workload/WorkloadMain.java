@@ -52,7 +52,7 @@ public final class WorkloadMain {
                 out.println(RunOptionsParser.USAGE);
                 return OK;
             }
-            return execute(options, err);
+            return execute(options, out, err);
         } catch (BadInputException e) {
             err.println("jmclbench: " + e.getMessage());
             return BAD_INPUT;
@@ -66,7 +66,8 @@ public final class WorkloadMain {
         }
     }
 
-    private static int execute(RunOptions options, PrintStream err) throws BadInputException, IOException {
+    private static int execute(RunOptions options, PrintStream out, PrintStream err)
+            throws BadInputException, IOException {
         Dataset dataset = load(options);
         Timeline timeline = Timeline.of(dataset);
         MclConfig config = options.mclConfig();
@@ -74,7 +75,13 @@ public final class WorkloadMain {
         folder.checkNotComplete();
         Environment environment = Environment.capture();
         JobRecords records = new JobRecords(timeline, options.covariance);
-        File partial = folder.begin();
+        File partial;
+        try {
+            partial = folder.begin();
+        } catch (IOException e) {
+            // Almost always a place that cannot be written: bad usage, not a benchmark failure.
+            throw BadInputException.ofOption("-O", "cannot create " + folder.partial.getPath() + ": " + e);
+        }
 
         if (options.warmupS > 0 && options.ideal) {
             // real-time runs warm up through the release engine itself (RealTimeRun)
@@ -90,6 +97,8 @@ public final class WorkloadMain {
 
         new RunWriter(options, dataset, timeline, records, environment).engine(engineFacts).writeAll(partial);
         folder.commit();
+        // The complete run folder, the one line a script needs.
+        out.println(folder.dir.getPath());
         return OK;
     }
 

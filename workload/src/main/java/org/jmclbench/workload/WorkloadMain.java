@@ -107,7 +107,7 @@ public final class WorkloadMain {
             engineFacts = RealTimeRun.run(options, dataset, timeline, localizer, records, partial, err);
         }
 
-        new RunWriter(options, dataset, timeline, records, environment).engineFacts(engineFacts).writeAll(partial);
+        new RunWriter(options, dataset, timeline, records, environment).engine(engineFacts).writeAll(partial);
         folder.commit();
         // The complete run folder, the one line a script needs.
         out.println(folder.dir.getPath());

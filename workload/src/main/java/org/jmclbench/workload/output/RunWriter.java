@@ -29,6 +29,7 @@ public final class RunWriter {
     private final Timeline timeline;
     private final JobRecords records;
     private final Environment environment;
+    private java.util.Map<String, Object> engine;
 
     public RunWriter(RunOptions options, Dataset dataset, Timeline timeline, JobRecords records,
             Environment environment) {
@@ -37,6 +38,16 @@ public final class RunWriter {
         this.timeline = timeline;
         this.records = records;
         this.environment = environment;
+    }
+
+    /**
+     * Facts about the release engine of a real-time run (thread priorities, how CPU time and
+     * the GC log were obtained, allocation in the measured window), written as summary.json's
+     * {@code "engine"} object; values are strings, numbers, booleans or null.
+     */
+    public RunWriter engine(java.util.Map<String, Object> facts) {
+        this.engine = facts;
+        return this;
     }
 
     /** Writes every file of the run into dir. */
@@ -149,6 +160,25 @@ public final class RunWriter {
         j.endObject();
         j.name("dispatcherLatenessNs");
         writeStats(j, dispatcherLateness());
+        if (engine != null) {
+            j.name("engine").beginObject();
+            for (java.util.Map.Entry<String, Object> e : engine.entrySet()) {
+                j.name(e.getKey());
+                Object v = e.getValue();
+                if (v == null) {
+                    j.nullValue();
+                } else if (v instanceof Boolean) {
+                    j.value((Boolean) v);
+                } else if (v instanceof Long || v instanceof Integer) {
+                    j.value(((Number) v).longValue());
+                } else if (v instanceof Number) {
+                    j.value(((Number) v).doubleValue());
+                } else {
+                    j.value(v.toString());
+                }
+            }
+            j.endObject();
+        }
         j.name("deviation").beginObject();
         meanMax(j, "xy", dev.meanXY(), Deviation.maxAbs(dev.dxy));
         meanMax(j, "x", dev.meanAbsX(), Deviation.maxAbs(dev.dx));

@@ -9,9 +9,10 @@
  * the score is the mean of the measured iterations. A benchmark, not a test.
  *
  * Output: one '#' header line, then per configuration
- *   job particles memory ns_per_job min_iteration_ns max_iteration_ns jobs cpu_share
+ *   job particles memory ns_per_job min_iteration_ns max_iteration_ns jobs cpu_share cpu_ns_per_job
  * cpu_share is the thread's CPU time over the wall time of the measured iterations: below
- * about 0.95 the machine was busy and the times include preemption.
+ * about 0.95 the machine was busy and the wall times include waiting for a CPU, which
+ * cpu_ns_per_job (the thread's CPU time per job) does not.
  */
 #ifndef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 200809L
@@ -136,9 +137,9 @@ static int bench_one(const struct bench_opts *o, const jm_dataset *ds, int updat
 			max = per;
 	}
 	jm_mcl_free(&m);
-	printf("%s %d %s %.1f %.1f %.1f %ld %.3f\n", update ? "update" : "predict", n,
+	printf("%s %d %s %.1f %.1f %.1f %ld %.3f %.1f\n", update ? "update" : "predict", n,
 	       memory == JM_MEMORY_PREALLOCATED ? "preallocated" : "allocating", sum / o->iterations,
-	       min, max, total, (double)cpu / (double)wall);
+	       min, max, total, (double)cpu / (double)wall, (double)cpu / (double)total);
 	fflush(stdout);
 	return 0;
 }
@@ -212,7 +213,7 @@ bad:
 		fprintf(stderr, "kernel-jobs: %s\n", err);
 		return 2;
 	}
-	printf("# job particles memory ns_per_job min_iteration_ns max_iteration_ns jobs cpu_share"
+	printf("# job particles memory ns_per_job min_iteration_ns max_iteration_ns jobs cpu_share cpu_ns_per_job"
 	       "  (dataset %s, %d warm-up + %d x %.3g s)\n", o.dataset, o.warmup, o.iterations,
 	       o.seconds);
 	for (int update = 0; update <= 1 && !rc; update++)

@@ -53,25 +53,34 @@ for ((k = 0; k < ${#jmh_opts[@]} - 1; k++)); do
     esac
 done
 
-# The same counts and iteration shape for both; C runs after Java so neither warms the other.
-echo "kernel-ratio: JMH ($java)..." >&2
-"$java" -jar "$home/bench/target/benchmarks.jar" KernelBenchmark "${jmh_opts[@]}" -prof gc \
-    -p "particles=$particles" -p "dataset=$dataset" -rf json -rff "$out/jmh.json" >"$out/jmh.txt" 2>&1 \
-    || { tail -20 "$out/jmh.txt" >&2; echo "kernel-ratio: JMH failed (log: $out/jmh.txt)" >&2; exit 1; }
+# Each configuration runs in Java and then at once in C, so that on a shared machine both sides
+# meet about the same load; the same counts and iteration shape for both.
+: >"$out/jmh.txt"
+echo "# job particles memory ns_per_job min_iteration_ns max_iteration_ns jobs cpu_share cpu_ns_per_job" >"$out/c.txt"
+for job in predict update; do
+    for n in ${particles//,/ }; do
+        for memory in preallocated allocating; do
+            echo "kernel-ratio: $job, $n particles, $memory: JMH ($java), then C..." >&2
+            "$java" -jar "$home/bench/target/benchmarks.jar" "KernelBenchmark.$job\$" "${jmh_opts[@]}" -prof gc \
+                -p "particles=$n" -p "memory=$memory" -p "dataset=$dataset" \
+                -rf json -rff "$out/jmh-$job-$n-$memory.json" >>"$out/jmh.txt" 2>&1 \
+                || { tail -20 "$out/jmh.txt" >&2; echo "kernel-ratio: JMH failed (log: $out/jmh.txt)" >&2; exit 1; }
+            "$home/native/build/kernel-jobs" --dataset "$dataset" --job "$job" --particles "$n" --memory "$memory" \
+                --warmup "$c_warmup" --iterations "$c_iterations" --time "$c_time" | grep -v '^#' >>"$out/c.txt"
+        done
+    done
+done
 echo "kernel-ratio: per-job counters (exact allocation, thread CPU time)..." >&2
 "$java" -cp "$home/bench/target/benchmarks.jar" org.jmclbench.bench.JobCounters "$dataset" "$particles" \
     >"$out/counters.txt"
-echo "kernel-ratio: C timing loop..." >&2
-"$home/native/build/kernel-jobs" --dataset "$dataset" --particles "$particles" \
-    --warmup "$c_warmup" --iterations "$c_iterations" --time "$c_time" >"$out/c.txt"
 "$java" -version >"$out/java-version.txt" 2>&1 || true
 
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 python3 - "$out" "$load_before" "$load_after" "$(nproc)" <<'PY'
-import json, os, sys
+import glob, json, os, sys
 out, load_before, load_after, cpus = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
 java = {}  # (job, n, memory) -> (ns, error, bytes per job)
-for r in json.load(open(os.path.join(out, "jmh.json"))):
+for r in [r for f in sorted(glob.glob(os.path.join(out, "jmh-*.json"))) for r in json.load(open(f))]:
     job = r["benchmark"].rsplit(".", 1)[1]
     key = (job, int(r["params"]["particles"]), r["params"]["memory"])
     alloc = r.get("secondaryMetrics", {}).get("gc.alloc.rate.norm", {}).get("score")
@@ -127,5 +136,5 @@ if known:
           % (most, "zero" if most == 0 else "NOT zero"))
 else:
     print("SPEC 11, preallocated style: this JVM has no per-thread allocation counter; see JMH's column")
-print("raw outputs: %s/{jmh.txt,jmh.json,counters.txt,c.txt}" % out)
+print("raw outputs: %s/{jmh.txt,jmh-*.json,counters.txt,c.txt}" % out)
 PY

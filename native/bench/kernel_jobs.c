@@ -33,6 +33,7 @@ struct bench_opts {
 	int counts[MAX_COUNTS];
 	int ncounts;
 	int memory_mask; /* bit 0 preallocated, bit 1 allocating */
+	int job_mask;    /* bit 0 predict, bit 1 update */
 	int warmup;
 	int iterations;
 	double seconds;
@@ -48,6 +49,7 @@ static void usage(FILE *out)
 		"  -d, --dataset DIR        dataset folder (default ../datasets/match-short)\n"
 		"  -p, --particles N[,N..]  particle counts (default 1000,4000)\n"
 		"  -m, --memory STYLE       preallocated, allocating or both (default both)\n"
+		"  -j, --job KIND           predict, update or both (default both)\n"
 		"  -w, --warmup N           warm-up iterations (default 3)\n"
 		"  -i, --iterations N       measured iterations (default 5)\n"
 		"  -r, --time S             seconds per iteration (default 1)\n"
@@ -150,18 +152,19 @@ int main(int argc, char **argv)
 		{ "dataset", required_argument, NULL, 'd' },
 		{ "particles", required_argument, NULL, 'p' },
 		{ "memory", required_argument, NULL, 'm' },
+		{ "job", required_argument, NULL, 'j' },
 		{ "warmup", required_argument, NULL, 'w' },
 		{ "iterations", required_argument, NULL, 'i' },
 		{ "time", required_argument, NULL, 'r' },
 		{ "help", no_argument, NULL, 'h' },
 		{ NULL, 0, NULL, 0 },
 	};
-	struct bench_opts o = { "../datasets/match-short", { 1000, 4000 }, 2, 3, 3, 5, 1.0 };
+	struct bench_opts o = { "../datasets/match-short", { 1000, 4000 }, 2, 3, 3, 3, 5, 1.0 };
 	jm_dataset ds;
 	char err[PATH_MAX + 256];
 	int opt, rc = 0;
 
-	while ((opt = getopt_long(argc, argv, "d:p:m:w:i:r:h", longopts, NULL)) != -1) {
+	while ((opt = getopt_long(argc, argv, "d:p:m:j:w:i:r:h", longopts, NULL)) != -1) {
 		char *end = NULL;
 
 		switch (opt) {
@@ -179,6 +182,16 @@ int main(int argc, char **argv)
 				o.memory_mask = 2;
 			else if (!strcmp(optarg, "both"))
 				o.memory_mask = 3;
+			else
+				goto bad;
+			break;
+		case 'j':
+			if (!strcmp(optarg, "predict"))
+				o.job_mask = 1;
+			else if (!strcmp(optarg, "update"))
+				o.job_mask = 2;
+			else if (!strcmp(optarg, "both"))
+				o.job_mask = 3;
 			else
 				goto bad;
 			break;
@@ -219,7 +232,7 @@ bad:
 	for (int update = 0; update <= 1 && !rc; update++)
 		for (int c = 0; c < o.ncounts && !rc; c++)
 			for (int mem = 0; mem <= 1 && !rc; mem++)
-				if (o.memory_mask & (1 << mem) &&
+				if (o.job_mask & (1 << update) && o.memory_mask & (1 << mem) &&
 				    bench_one(&o, &ds, update, o.counts[c],
 					      mem ? JM_MEMORY_ALLOCATING : JM_MEMORY_PREALLOCATED)) {
 					fprintf(stderr, "kernel-jobs: out of memory\n");

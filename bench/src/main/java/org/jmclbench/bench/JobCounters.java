@@ -22,15 +22,19 @@ import org.jmclbench.workload.mcl.MclConfig;
  */
 public final class JobCounters {
     private static final int WARM_JOBS = 1000;
+    /** Warm-up lasts at least this long too, as JMH's 3 x 1 s, so the JIT finishes even on a busy machine. */
+    private static final long WARM_NS = 3_000_000_000L;
     private static final int ALLOCATION_JOBS = 200;
     private static final long CPU_BUDGET_NS = 1_000_000_000L;
 
     private final Localizer localizer;
     private final Dataset data;
     private final boolean update;
+    private final long warmNs;
     private int next;
 
-    private JobCounters(Dataset d, int particles, MclConfig.Memory memory, boolean update) {
+    private JobCounters(Dataset d, int particles, MclConfig.Memory memory, boolean update, long warmNs) {
+        this.warmNs = warmNs;
         MclConfig config = MclConfig.builder().particles(particles).memory(memory).seed(1).build();
         this.localizer = Localizers.create(config, d.playground, d.startX, d.startY, d.startTheta);
         this.data = d;
@@ -44,11 +48,11 @@ public final class JobCounters {
         }
         Dataset d = DatasetReader.readFolder(new File(args[0]));
         System.out.println("# job particles memory bytes_per_job cpu_ns_per_job (after " + WARM_JOBS
-                + " warm-up jobs; bytes over " + ALLOCATION_JOBS + " jobs, CPU over about 1 s of jobs)");
+                + " warm-up jobs and at least 3 s; bytes over " + ALLOCATION_JOBS + " jobs, CPU over about 1 s of jobs)");
         for (String job : new String[] {"predict", "update"}) {
             for (String n : args[1].split(",")) {
                 for (MclConfig.Memory m : MclConfig.Memory.values()) {
-                    JobCounters c = new JobCounters(d, Integer.parseInt(n.trim()), m, job.equals("update"));
+                    JobCounters c = new JobCounters(d, Integer.parseInt(n.trim()), m, job.equals("update"), WARM_NS);
                     c.warm();
                     double bytes = c.bytesPerJob();
                     double cpu = c.cpuNsPerJob();
@@ -63,15 +67,19 @@ public final class JobCounters {
         return Double.isNaN(v) ? "n/a" : String.format(Locale.ROOT, f, v);
     }
 
-    /** Bytes per warm job of the given kind, or NaN when this JVM has no per-thread allocation counter. */
+    /**
+     * Bytes per job of the given kind after {@link #WARM_JOBS} jobs (no minimum warm-up time:
+     * the count does not depend on the JIT), or NaN when this JVM has no per-thread allocation counter.
+     */
     static double bytesPerJob(Dataset d, int particles, MclConfig.Memory memory, boolean update) {
-        JobCounters c = new JobCounters(d, particles, memory, update);
+        JobCounters c = new JobCounters(d, particles, memory, update, 0);
         c.warm();
         return c.bytesPerJob();
     }
 
     private void warm() {
-        for (int i = 0; i < WARM_JOBS; i++) {
+        long start = System.nanoTime();
+        for (int i = 0; i < WARM_JOBS || System.nanoTime() - start < warmNs; i++) {
             job();
         }
     }

@@ -443,6 +443,9 @@ SCENARIOS = [
      [(0.01, 0.0, 0.0), (0.01, 0.0, 0.1)], [1, 2]),
     ("blocks", 70, 1234567890123456789, "mean", "multinomial", "known", True, (2.0, 0.7, 4.0),
      [(0.03, 0.0, -0.04), (0.0, 0.0, 0.2)], [0, 2]),
+    # A start heading outside [0, 2pi): the initial estimate is reported wrapped, like every heading.
+    ("wrapstart", 8, 11, "mean", "systematic", "known", False, (1.0, 1.5, -1.0),
+     [(0.01, 0.0, 0.02)], [1]),
 ]
 
 

@@ -156,6 +156,30 @@ class ReportCommandTest {
     }
 
     @Test
+    void summaryJsonStandsInForMissingMetricRows() throws Exception {
+        Path bare = Files.copy(db, dir.resolve("bare.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + bare); var st = c.createStatement()) {
+            st.execute("DELETE FROM metrics");
+        }
+        try (ResultsStore full = ResultsStore.open(db, "--db"); ResultsStore summaryOnly = ResultsStore.open(bare, "--db")) {
+            List<ResultsStore.Run> a = full.runs();
+            List<ResultsStore.Run> b = summaryOnly.runs();
+            assertEquals(a.size(), b.size());
+            int compared = 0;
+            for (int i = 0; i < a.size(); i++) {
+                assertTrue(b.get(i).metrics.isEmpty());
+                for (Metric m : Metric.values()) {
+                    Double x = m.of(a.get(i));
+                    Double y = m.of(b.get(i));
+                    assertEquals(x, y, m + " of " + a.get(i).runKey);
+                    compared += x == null ? 0 : 1;
+                }
+            }
+            assertTrue(compared > 500, "values compared: " + compared);
+        }
+    }
+
+    @Test
     void defaultFolderIsBesideTheDatabase() throws Exception {
         Path other = Files.createDirectories(dir.resolve("elsewhere"));
         Path copy = Files.copy(db, other.resolve("results.db"));

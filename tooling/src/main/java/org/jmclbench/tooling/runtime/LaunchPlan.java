@@ -47,7 +47,7 @@ public record LaunchPlan(List<String> prefix, List<String> jvmFlags) {
     /** The CPU a pinned run uses: the last isolated CPU if any (isolcpus), else the last CPU. */
     public static String defaultPinCpu() {
         try {
-            String iso = java.nio.file.Files.readString(java.nio.file.Path.of("/sys/devices/system/cpu/isolated")).trim();
+            String iso = ProcessRunner.readText(java.nio.file.Path.of("/sys/devices/system/cpu/isolated")).trim();
             if (!iso.isEmpty()) {
                 List<Integer> cpus = CpuList.parse(iso);
                 if (!cpus.isEmpty()) {

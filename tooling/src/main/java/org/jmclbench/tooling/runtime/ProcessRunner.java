@@ -50,8 +50,7 @@ public final class ProcessRunner {
                 ProcessTree.kill(p);
             }
             int code = finished ? p.exitValue() : -1;
-            return new Result(code, Files.readString(out, StandardCharsets.UTF_8),
-                    Files.readString(err, StandardCharsets.UTF_8), !finished);
+            return new Result(code, readText(out), readText(err), !finished);
         } catch (IOException e) {
             return new Result(127, "", String.valueOf(e.getMessage()), false);
         } catch (InterruptedException e) {
@@ -60,6 +59,16 @@ public final class ProcessRunner {
         } finally {
             deleteQuietly(out);
             deleteQuietly(err);
+        }
+    }
+
+    /**
+     * A whole file as UTF-8, malformed bytes replaced (a crashing child may print anything), read
+     * through a stream because procfs files report size 0 and {@code Files.readString} trusts it.
+     */
+    public static String readText(Path p) throws IOException {
+        try (java.io.InputStream in = Files.newInputStream(p)) {
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
         }
     }
 

@@ -16,7 +16,7 @@ public record MachineInfo(String machineId, String hostname, String kernel, Stri
     public static MachineInfo current() {
         String host;
         try {
-            host = Files.readString(Path.of("/etc/hostname")).strip();
+            host = org.jmclbench.tooling.runtime.ProcessRunner.readText(Path.of("/etc/hostname")).strip();
         } catch (IOException e) {
             host = "";
         }

@@ -68,6 +68,7 @@ public final class ForkedRun {
                     null, null, null);
         }
         CURRENT.set(p);
+        writePidFile(folder, p);
         boolean finished;
         try {
             finished = p.waitFor((long) Math.ceil(timeoutS * 1000), TimeUnit.MILLISECONDS);
@@ -115,6 +116,43 @@ public final class ForkedRun {
                     + SUMMARY_SCHEMA + " summary", tail, wall, leaf, null, null);
         }
         return new RunOutcome(RunRecord.OK, code, null, tail, wall, leaf, text, summary);
+    }
+
+    static final String PID_FILE = "runner.pid";
+
+    /** Notes the child's pid and start time, so that a later runner can kill it if this one dies first. */
+    private static void writePidFile(Path folder, Process p) {
+        String started = p.toHandle().info().startInstant().map(Object::toString).orElse("");
+        try {
+            Files.writeString(folder.resolve(PID_FILE), p.pid() + " " + started + "\n");
+        } catch (IOException ignored) {
+            // only a help for cleaning up after a killed runner
+        }
+    }
+
+    /**
+     * Kills the process left running by a runner that was killed mid-run (SIGKILL leaves its child
+     * orphaned), identified by the pid file in its run folder and checked by its start time.
+     */
+    public static void killOrphan(Path folder) {
+        Path f = folder.resolve(PID_FILE);
+        if (!Files.isRegularFile(f)) {
+            return;
+        }
+        try {
+            String[] w = Files.readString(f).strip().split(" ");
+            long pid = Long.parseLong(w[0]);
+            String started = w.length > 1 ? w[1] : "";
+            ProcessHandle.of(pid).ifPresent(h -> {
+                if (h.isAlive() && h.info().startInstant().map(Object::toString).orElse("-").equals(started)) {
+                    h.descendants().forEach(ProcessHandle::destroyForcibly);
+                    h.destroyForcibly();
+                    h.onExit().orTimeout(10, TimeUnit.SECONDS).exceptionally(e -> h).join();
+                }
+            });
+        } catch (IOException | RuntimeException ignored) {
+            // a damaged pid file: nothing to kill
+        }
     }
 
     /** The one complete run folder (no {@code .partial}) holding a summary.json under {@code out}. */

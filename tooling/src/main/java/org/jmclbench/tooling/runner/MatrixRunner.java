@@ -116,6 +116,7 @@ public final class MatrixRunner {
         }
         Path folder = store.runFolder(run.runKey());
         // a folder without a row is the remains of a runner killed mid-run: start it afresh
+        ForkedRun.killOrphan(folder);
         StoreMerger.deleteTree(folder);
         if (!support.supported()) {
             return new Finished(record(run, RunRecord.UNSUPPORTED, null, support.reason(), null, startedAt, null, null,

@@ -17,7 +17,8 @@ import org.jmclbench.tooling.store.StoreMerger;
 
 /**
  * Trains the {@code aot} profile's cache once per JVM and flag set, on a short run of the workload
- * (100 particles, the dataset replayed 10x faster): JDK 25+ an AOT cache ({@code -XX:AOTCacheOutput},
+ * with the run's own policy (100 particles, the dataset replayed 10x faster, so that the classes
+ * of that release engine are in the cache): JDK 25+ an AOT cache ({@code -XX:AOTCacheOutput},
  * then {@code -XX:AOTCache} with {@code -XX:AOTMode=on} so that an unusable cache fails loudly),
  * JDK 13-24 a dynamic AppCDS archive ({@code -XX:ArchiveClassesAtExit}, then {@code -XX:SharedArchiveFile}).
  * Caches live in {@code <db dir>/aot/}; a training that fails makes the profile unsupported.
@@ -39,13 +40,13 @@ final class AotTrainer {
         this.jar = jar;
     }
 
-    Result ensure(RuntimeInfo rt, LaunchPlan plan, Dataset dataset) {
-        String id = rt.name() + "-" + MachineInfo.sha256Hex(rt.realPath() + "\n" + rt.version() + "\n"
+    Result ensure(RuntimeInfo rt, LaunchPlan plan, Dataset dataset, String policy) {
+        String id = rt.name() + "-" + policy + "-" + MachineInfo.sha256Hex(rt.realPath() + "\n" + rt.version() + "\n"
                 + String.join(" ", plan.jvmFlags())).substring(0, 12);
-        return done.computeIfAbsent(id, k -> train(k, rt, plan, dataset));
+        return done.computeIfAbsent(id, k -> train(k, rt, plan, dataset, policy));
     }
 
-    private Result train(String id, RuntimeInfo rt, LaunchPlan plan, Dataset dataset) {
+    private Result train(String id, RuntimeInfo rt, LaunchPlan plan, Dataset dataset, String policy) {
         boolean aotCache = rt.major() >= 25;
         if (rt.major() < 13) {
             return new Result(List.of(), "aot: needs JDK 13+ (AppCDS dynamic archive) or 25+ (AOT cache)");
@@ -67,7 +68,12 @@ final class AotTrainer {
             cmd.add(aotCache ? "-XX:AOTCacheOutput=" + partial : "-XX:ArchiveClassesAtExit=" + partial);
             cmd.addAll(List.of("-Djmclbench.home=" + home, "-cp", jar.toString(), WorkloadCommand.MAIN_CLASS, "run",
                     "-p", "100", "-n", "1", "-j", "aot-training", "-O", work.resolve("out").toString(),
-                    "--dataset", dataset.dir().toString(), "--policy", "skip", "--time-scale", "0.1"));
+                    "--dataset", dataset.dir().toString()));
+            if (policy.equals("ideal")) {
+                cmd.add("--ideal");
+            } else {
+                cmd.addAll(List.of("--policy", policy, "--time-scale", "0.1"));
+            }
             long timeoutMs = (long) ((dataset.durationS() * 0.1 * 3 + 120) * 1000);
             ProcessRunner.Result r = ProcessRunner.run(cmd, timeoutMs);
             if (!r.ok() || !Files.isRegularFile(partial)) {
@@ -90,9 +96,15 @@ final class AotTrainer {
         }
     }
 
+    /** The last line that says something (not the JVM's "Picked up JAVA_TOOL_OPTIONS" echo). */
     private static String lastLine(String s) {
         String[] l = s.strip().split("\n");
-        String t = l[l.length - 1].strip();
-        return t.length() > 200 ? t.substring(0, 200) : t;
+        for (int i = l.length - 1; i >= 0; i--) {
+            String t = l[i].strip();
+            if (!t.isEmpty() && !t.startsWith("Picked up ")) {
+                return t.length() > 200 ? t.substring(0, 200) : t;
+            }
+        }
+        return "no message";
     }
 }

@@ -108,7 +108,7 @@ public final class MatrixRunner {
         LaunchPlan plan = LaunchPlan.of(run.runtime(), run.profile(), matrix.pinCpu());
         List<String> extra = List.of();
         if (support.supported() && run.runtime().isJvm() && run.profile().has(ProfileComponent.AOT)) {
-            AotTrainer.Result a = aot.ensure(run.runtime(), plan, run.dataset());
+            AotTrainer.Result a = aot.ensure(run.runtime(), plan, run.dataset(), run.policy());
             if (a.unsupported() != null) {
                 support = ProfileProbe.Support.no(a.unsupported());
             }

@@ -84,7 +84,7 @@ public final class Doctor {
 
     DoctorCheck fifoPermission() {
         if (!runCommands) {
-            return DoctorCheck.warn("sched-fifo", "not tried", "");
+            return DoctorCheck.warn("sched-fifo", "not tried", "try it: chrt -f 1 true");
         }
         ProcessRunner.Result r = ProcessRunner.run(List.of("chrt", "-f", "1", "true"), 10_000);
         if (r.ok()) {

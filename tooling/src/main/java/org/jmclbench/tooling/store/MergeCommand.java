@@ -29,18 +29,35 @@ public final class MergeCommand implements Callable<Integer> {
             if (!Files.isRegularFile(s)) {
                 throw new BadInputException(s + ": no such database");
             }
+            checkSchema(s); // every source is checked before the target is touched
         }
         try (ResultStore target = ResultStore.open(into)) {
             for (Path s : sources) {
                 StoreMerger.Outcome o;
                 try {
                     o = StoreMerger.merge(target, s);
-                } catch (java.io.IOException e) {
-                    throw new BadInputException(e.getMessage());
+                } catch (java.io.IOException | java.sql.SQLException e) {
+                    throw new BadInputException(s + ": " + e.getMessage());
                 }
                 System.out.println(s + ": " + o.taken() + " runs merged, " + o.kept() + " already in " + into);
             }
         }
         return 0;
+    }
+
+    /** A source must be a results store of this tool's schema version. */
+    private static void checkSchema(Path db) throws BadInputException {
+        try (java.sql.Connection c = java.sql.DriverManager.getConnection("jdbc:sqlite:file:" + db.toAbsolutePath() + "?mode=ro");
+             java.sql.Statement st = c.createStatement();
+             java.sql.ResultSet rs = st.executeQuery("PRAGMA user_version")) {
+            int v = rs.next() ? rs.getInt(1) : 0;
+            try (java.sql.ResultSet t = st.executeQuery("SELECT count(*) FROM sqlite_master WHERE name = 'runs'")) {
+                if (v != Schema.VERSION || !t.next() || t.getInt(1) != 1) {
+                    throw new BadInputException(db + ": not a jmclbench results store (schema version " + v + ")");
+                }
+            }
+        } catch (java.sql.SQLException e) {
+            throw new BadInputException(db + ": not a jmclbench results store (" + e.getMessage() + ")");
+        }
     }
 }

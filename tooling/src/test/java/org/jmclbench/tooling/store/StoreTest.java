@@ -75,6 +75,13 @@ class StoreTest {
         Fixtures.CliResult again = Fixtures.cli("merge", dbA.toString(), dbB.toString(), "--into", dbC.toString());
         assertTrue(again.out().contains("0 runs merged, 4 already in"), again.out());
         assertEquals(2, Fixtures.cli("merge", dir.resolve("nope.db").toString(), "--into", dbC.toString()).exitCode());
+        Path notDb = dir.resolve("not.db");
+        Files.writeString(notDb, "hello");
+        Path dbD = dir.resolve("D/results.db");
+        Fixtures.CliResult rejected = Fixtures.cli("merge", dbA.toString(), notDb.toString(), "--into", dbD.toString());
+        assertEquals(2, rejected.exitCode(), rejected.err());
+        assertTrue(rejected.err().strip().startsWith("jmclbench: " + notDb + ": not a jmclbench results store"), rejected.err());
+        assertTrue(!Files.exists(dbD), "nothing is merged when a source is bad");
     }
 
     @Test

@@ -10,7 +10,6 @@ import java.util.Base64;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 
 import org.HdrHistogram.Histogram;
@@ -308,9 +307,5 @@ public final class RunIngest {
             }
         }
         return root.toString();
-    }
-
-    static String lower(String s) {
-        return s.toLowerCase(Locale.ROOT);
     }
 }

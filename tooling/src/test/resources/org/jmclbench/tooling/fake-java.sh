@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # A fake runtime for the runner's tests: answers like a JVM to probes and, as the workload, does
-# what MODE says (ok, crash, hang, garbage, badjson, oom, badexit). Tests copy it with the
+# what MODE says (ok, crash, hang, garbage, badjson, oom, badexit, wrongrun: a valid folder for
+# another particle count). Tests copy it with the
 # placeholders replaced. Never a real measurement.
 MODE=@MODE@
 SLEEP=@SLEEP@
@@ -33,7 +34,7 @@ if [ "${*: -1}" = "-version" ]; then
     echo "fake version \"$MAJOR.0.1\"" >&2
     exit 0
 fi
-p=400 n=1 j=fake O=results policy=skip
+p=400 n=1 j=fake O=results policy=skip ideal=false seed=1
 while [ $# -gt 0 ]; do
     case "$1" in
         -p) p=$2; shift ;;
@@ -41,10 +42,12 @@ while [ $# -gt 0 ]; do
         -j) j=$2; shift ;;
         -O) O=$2; shift ;;
         --policy) policy=$2; shift ;;
-        --ideal) policy=ideal ;;
+        --ideal) policy=ideal; ideal=true ;;
+        --seed) seed=$2; shift ;;
     esac
     shift
 done
+if [ "$MODE" = wrongrun ]; then p=$((p + 1)); fi
 case $policy in skip) T=SkipTest ;; terminate) T=TermTest ;; queue) T=QueueTest ;; *) T=IdealTest ;; esac
 sleep "$SLEEP"
 echo "fake workload: $p particles, policy $policy"
@@ -95,7 +98,7 @@ else
     S='{"count": 9, "mean": 2000000.0, "stdev": 1000.0, "min": 100000, "p50": 2000000, "p90": 2100000, "p99": 2200000, "p999": 2200000, "max": 2200000}'
     cat > "$leaf.partial/summary.json" <<JSON
 {"schema": "jmclbench-run/1", "status": "complete",
- "parameters": {"runtimeName": "$j", "particles": $p, "number": $n, "policy": "$policy"},
+ "parameters": {"runtimeName": "$j", "particles": $p, "number": $n, "policy": "$policy", "ideal": $ideal, "seed": $seed},
  "environment": {"runtime": {"language": "java", "name": "$j"}},
  "durationS": 0.5, "missCount": 1,
  "tasks": {"predict": {"released": 10, "completed": 9, "done": 9, "late": 0, "skipped": 1, "terminated": 0, "missCount": 1,

@@ -129,6 +129,13 @@ public final class MatrixRunner {
         String failure = o.failure();
         RunData data = RunData.empty();
         if (status.equals(RunRecord.OK)) {
+            String mismatch = describesAnotherRun(o.summary(), run);
+            if (mismatch != null) {
+                status = RunRecord.FAILED;
+                failure = "garbage output: summary.json describes another run (" + mismatch + ")";
+            }
+        }
+        if (status.equals(RunRecord.OK)) {
             try {
                 data = RunIngest.ingest(o.leaf(), o.summary(), run.dataset().dir().resolve("real.txt"));
             } catch (IOException | RuntimeException e) {
@@ -140,6 +147,28 @@ public final class MatrixRunner {
         Path dir = o.leaf() != null ? o.leaf() : folder;
         return new Finished(record(run, status, o.exitCode(), failure, o.stderrTail(), startedAt, o.wallS(),
                 store.baseDir().relativize(dir).toString(), status.equals(RunRecord.OK) ? o.summaryText() : null, cmd), data);
+    }
+
+    /**
+     * What in the summary's parameters contradicts the run asked for (null when it matches), so
+     * that a workload that ignored an option cannot report a result for it.
+     */
+    static String describesAnotherRun(com.fasterxml.jackson.databind.JsonNode summary, PlannedRun run) {
+        com.fasterxml.jackson.databind.JsonNode p = summary.path("parameters");
+        if (p.path("particles").asLong(-1) != run.particles()) {
+            return "particles " + p.path("particles").asText("missing") + ", asked " + run.particles();
+        }
+        boolean ideal = run.policy().equals("ideal");
+        if (ideal != p.path("ideal").asBoolean(false)) {
+            return "ideal " + p.path("ideal").asText("missing") + ", asked policy " + run.policy();
+        }
+        if (!ideal && !run.policy().equals(p.path("policy").asText())) {
+            return "policy " + p.path("policy").asText("missing") + ", asked " + run.policy();
+        }
+        if (p.has("seed") && p.path("seed").asLong() != run.seed()) {
+            return "seed " + p.path("seed").asText() + ", asked " + run.seed();
+        }
+        return null;
     }
 
     private RunRecord record(PlannedRun run, String status, Integer exitCode, String failure, String stderrTail,

@@ -30,7 +30,7 @@ class MatrixIsolationTest {
     @Test
     void everyKindOfFailureIsRecordedAndTheMatrixGoesOn() throws Exception {
         Fixtures.home(dir);
-        String[] modes = {"ok", "crash", "hang", "garbage", "badjson", "oom", "badexit"};
+        String[] modes = {"ok", "crash", "hang", "garbage", "badjson", "oom", "badexit", "wrongrun"};
         java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of("matrix", "--datasets", "tiny",
                 "--particles", "100", "--policies", "skip", "--timeout", "4", "--db", dir.resolve("r/results.db").toString()));
         for (int i = 0; i < modes.length; i++) {
@@ -57,7 +57,7 @@ class MatrixIsolationTest {
                 }
             }
         }
-        assertEquals(7, statusByRuntime.size(), statusByRuntime.toString());
+        assertEquals(8, statusByRuntime.size(), statusByRuntime.toString());
         assertEquals("ok", statusByRuntime.get("fake-21"));
         assertEquals("failed", statusByRuntime.get("fake-22"));
         assertTrue(failureByRuntime.get("fake-22").contains("SIGSEGV"), failureByRuntime.get("fake-22"));
@@ -69,7 +69,10 @@ class MatrixIsolationTest {
         assertEquals("failed", statusByRuntime.get("fake-26"));
         assertTrue(failureByRuntime.get("fake-26").contains("out of memory"), failureByRuntime.get("fake-26"));
         assertEquals("failed", statusByRuntime.get("fake-27"));
-        assertTrue(r.out().contains("1 ok, 5 failed, 1 timed out"), r.out());
+        assertEquals("failed", statusByRuntime.get("fake-28"));
+        assertTrue(failureByRuntime.get("fake-28").contains("describes another run (particles 101, asked 100)"),
+                failureByRuntime.get("fake-28"));
+        assertTrue(r.out().contains("1 ok, 6 failed, 1 timed out"), r.out());
 
         // the hung run's whole process tree was killed
         String mark = Fixtures.hangMark(dir.resolve("hang"));
@@ -108,7 +111,7 @@ class MatrixIsolationTest {
         // rerunning resumes: nothing left to run
         Fixtures.CliResult again = Fixtures.cli(args.toArray(String[]::new));
         assertEquals(0, again.exitCode());
-        assertTrue(again.out().contains("7 already in"), again.out());
+        assertTrue(again.out().contains("8 already in"), again.out());
         assertTrue(again.out().contains("0 ran"), again.out());
     }
 }

@@ -61,14 +61,25 @@ public final class MatrixSession {
             }
             return new Result(0, m.db());
         }
-        Files.createDirectories(m.db().getParent());
         Path lockFile = m.db().resolveSibling(m.db().getFileName() + ".lock");
-        try (FileChannel ch = FileChannel.open(lockFile, StandardOpenOption.CREATE, StandardOpenOption.WRITE);
-             FileLock lock = ch.tryLock()) {
+        FileChannel ch;
+        try {
+            Files.createDirectories(m.db().getParent());
+            ch = FileChannel.open(lockFile, StandardOpenOption.CREATE, StandardOpenOption.WRITE);
+        } catch (IOException e) {
+            throw new BadUsageException("--db: " + m.db() + ": cannot write there (" + e.getClass().getSimpleName() + ")");
+        }
+        try (ch; FileLock lock = ch.tryLock()) {
             if (lock == null) {
                 throw new BadUsageException("--db: " + m.db() + ": another matrix is writing to it");
             }
-            try (ResultStore store = ResultStore.open(m.db())) {
+            ResultStore opened;
+            try {
+                opened = ResultStore.open(m.db());
+            } catch (java.sql.SQLException e) {
+                throw new BadUsageException("--db: " + m.db() + ": not a usable results store (" + e.getMessage() + ")");
+            }
+            try (ResultStore store = opened) {
                 store.saveMachine(machine, Doctor.toJson(Doctor.system().run()));
                 String matrixId = UUID.randomUUID().toString();
                 store.saveMatrix(matrixId, machine.machineId(), commandText, m.orderSeed(), Instant.now().toString(),

@@ -100,6 +100,17 @@ class BadInputTest {
     }
 
     @Test
+    void databaseThatIsNotOne() throws Exception {
+        Files.createDirectories(db.getParent());
+        Files.writeString(db, "not a database, just text that happens to sit here");
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
+        assertEquals(2, r.exitCode(), r.out() + r.err());
+        assertTrue(r.err().strip().startsWith("jmclbench: --db: " + db + ": not a usable results store"), r.err());
+        assertEquals("not a database, just text that happens to sit here", Files.readString(db));
+        assertFalse(Files.exists(dir.resolve("out/runs")));
+    }
+
+    @Test
     void matrixFileAndCommandLineCombine() throws Exception {
         Path m = dir.resolve("m.properties");
         Files.writeString(m, "java = " + fake + "\nprofiles = g1, zgc\nparticles = 100\nparticles = 200\n"

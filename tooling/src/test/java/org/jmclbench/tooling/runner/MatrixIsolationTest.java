@@ -32,7 +32,8 @@ class MatrixIsolationTest {
         Fixtures.home(dir);
         String[] modes = {"ok", "crash", "hang", "garbage", "badjson", "oom", "badexit", "wrongrun"};
         java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of("matrix", "--datasets", "tiny",
-                "--particles", "100", "--policies", "skip", "--timeout", "4", "--db", dir.resolve("r/results.db").toString()));
+                "--particles", "100", "--policies", "skip", "--timeout", "15", // generous: the ok runs must not time out on a loaded machine
+                "--db", dir.resolve("r/results.db").toString()));
         for (int i = 0; i < modes.length; i++) {
             // distinct majors give distinct runtime names (fake-21, fake-22, ...)
             args.add("--java");

@@ -286,7 +286,7 @@ public final class ReportModel {
         for (Map.Entry<String, List<ResultsStore.Run>> e : byConfig.entrySet()) {
             ResultsStore.Run first = e.getValue().get(0);
             Set<String> versions = new LinkedHashSet<>();
-            Set<String> flags = new LinkedHashSet<>();
+            List<String> flags = new ArrayList<>(); // a list: an argument may repeat ("-n 1 ... --seed 1")
             Set<String> machines = new LinkedHashSet<>();
             List<String> facts = new ArrayList<>();
             boolean nativeBaseline = "native".equals(first.runtime);

@@ -186,7 +186,9 @@ public final class FixtureDb {
         rt.put("language", nat ? "c" : "java").put("name", cfg.runtime()).put("vendor", nat ? "gcc" : "Eclipse Adoptium")
                 .put("version", cfg.version()).put("vmName", nat ? "native" : "OpenJDK 64-Bit Server VM");
         ArrayNode args = rt.putArray("inputArguments");
-        if (!nat) {
+        if (nat) {
+            args.add("run").add("-n").add("1").add("--seed").add("1"); // the native baseline reports its argv
+        } else {
             args.add("-XX:+Use" + (cfg.profile().isEmpty() ? "G1" : cfg.profile().toUpperCase(Locale.ROOT).replace("ZGC", "Z")) + "GC");
             args.add("-Xms256m");
         }

@@ -65,6 +65,12 @@ class ReportCommandTest {
         JsonNode data = new ObjectMapper().readTree(m.group(1));
         assertEquals(6 * 2 * 3 * 3, data.get("runCount").asInt());
         assertEquals("skip", data.at("/defaults/policy").asText());
+        for (JsonNode cfg : data.get("configs")) {
+            if (cfg.get("id").asText().equals("native")) {
+                assertEquals("[\"run\",\"-n\",\"1\",\"--seed\",\"1\"]", cfg.get("flags").toString(), "arguments keep their repeats");
+                assertTrue(cfg.get("nativeBaseline").asBoolean());
+            }
+        }
         assertEquals(400, data.at("/defaults/particles").asInt());
         JsonNode xss = null;
         JsonNode unsupported = null;

@@ -1,0 +1,86 @@
+package org.jmclbench.tooling.report;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.jmclbench.tooling.Fixtures;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+/**
+ * The report and compare on a store written by the runner itself (matrix with the runner's fake
+ * runtimes), so that what the runner writes and what the report reads cannot drift apart.
+ */
+class ReportOnRunnerStoreTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void reportAndCompareReadWhatTheMatrixWrote() throws Exception {
+        Fixtures.home(dir);
+        String a = Fixtures.fakeJava(dir, "a", "ok", 0, null, 17).toString();
+        String b = Fixtures.fakeJava(dir, "b", "ok", 0, null, 21).toString();
+        String crash = Fixtures.fakeJava(dir, "crash", "crash", 0, null, 11).toString();
+        Path db = dir.resolve("results/results.db");
+        Fixtures.CliResult m = Fixtures.cli("matrix", "--datasets", "tiny", "--particles", "100,200", "--policies", "skip",
+                "--repeat", "3", "--java", a, "--java", b, "--java", crash, "--db", db.toString());
+        assertEquals(0, m.exitCode(), m.out() + m.err());
+
+        Fixtures.CliResult r = Fixtures.cli("report", "--db", db.toString(), "--out", dir.resolve("report").toString());
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+        String html = Files.readString(dir.resolve("report/index.html"));
+        Matcher data = Pattern.compile("(?s)id=\"jmclbench-data\">(.*?)</script>").matcher(html);
+        assertTrue(data.find());
+        JsonNode model = new ObjectMapper().readTree(data.group(1));
+        assertEquals(3 * 2 * 3, model.get("runCount").asInt());
+
+        List<String> okConfigs = new ArrayList<>();
+        int failedCells = 0;
+        for (JsonNode c : model.get("cells")) {
+            if (c.get("ok").asInt() == 0) {
+                failedCells++;
+                assertEquals(3, c.get("failures").size(), "each failed run listed with its stderr");
+                assertFalse(c.at("/failures/0/stderrTail").asText().isEmpty());
+                continue;
+            }
+            String where = c.get("config").asText() + " " + c.get("particles").asInt();
+            assertEquals(3, c.at("/metrics/MISS_COUNT/n").asInt(), where);
+            assertEquals(1.0, c.at("/metrics/MISS_COUNT/mean").asDouble(), 1e-9, where);
+            assertEquals(0.003, c.at("/metrics/DEVIATION/mean").asDouble(), 1e-9, where);
+            assertTrue(c.at("/metrics/LATENCY_MEAN/mean").asDouble() > 0, where);
+            // Series and histograms as the runner's ingest stores them.
+            assertEquals(9, c.get("latencyPredict").size(), where + ": 10 jobs, 1 skipped");
+            assertEquals(4, c.get("latencyUpdate").size(), where);
+            assertEquals(3, c.get("deviation").size(), where + ": one line per repetition");
+            assertFalse(c.get("trajectory").isEmpty(), where);
+            assertFalse(c.get("real").isEmpty(), where + ": the dataset's ground truth");
+            assertFalse(c.get("latencySpectrum").isEmpty(), where);
+            assertFalse(c.get("jitterCdf").isEmpty(), where);
+            if (!okConfigs.contains(c.get("config").asText())) {
+                okConfigs.add(c.get("config").asText());
+            }
+        }
+        assertEquals(2, okConfigs.size(), okConfigs.toString());
+        assertEquals(2, failedCells, "the crashing runtime at both particle counts");
+        assertTrue(Files.isRegularFile(dir.resolve("report/charts/tiny-skip-100-spectrum.svg")));
+
+        Fixtures.CliResult cmp = Fixtures.cli("compare", "--db", db.toString(), "--a", okConfigs.get(0), "--b", okConfigs.get(1));
+        assertEquals(0, cmp.exitCode(), cmp.out() + cmp.err());
+        assertTrue(cmp.out().contains("== tiny  skip  100 particles =="), cmp.out());
+        // The fake runtimes measure identical values: ratio 1, every rank tied, no difference.
+        String latency = cmp.out().lines().filter(l -> l.startsWith("task latency mean")).findFirst().orElseThrow();
+        assertTrue(latency.contains("1.000") && latency.contains("not significant (p=1.000)"), latency);
+    }
+}

@@ -20,7 +20,7 @@ public enum Metric {
     DEVIATION("deviation xy mean", "m", 1, "/deviation/xy/mean", "run/deviationXY/mean", "run/deviationXY/value",
             "all/deviationXY/mean", "all/deviationXY/value");
 
-    private static final ObjectMapper JSON = new ObjectMapper();
+    private static final ObjectMapper JSON = SeriesTable.JSON;
 
     /** Name shown in tables. */
     public final String label;

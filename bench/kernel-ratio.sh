@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The Java/C kernel comparison of SPEC section 11, run once: JMH (bench/, with -prof gc) and
 # the C timing loop (native/bench/kernel_jobs.c) on the same dataset, particle counts and
-# jobs, then one table: ns per job in Java and C, the Java/C ratio and the bytes Java
-# allocates per job, for both memory styles. A benchmark, not a test: numbers depend on the
+# jobs, then one table: wall and CPU ns per job in Java and C, the Java/C ratios and the
+# bytes Java allocates per job, for both memory styles. A benchmark, not a test: numbers depend on the
 # machine and on what else it runs; the raw outputs are kept beside the table.
 #
 # usage: bench/kernel-ratio.sh [--java PATH] [--dataset DIR] [--particles N,N] [--out DIR]
@@ -21,13 +21,17 @@ build=1
 jmh_opts=(-f 1 -wi 3 -i 5 -w 1s -r 1s)
 while [ $# -gt 0 ]; do
     case "$1" in
+        --java|--dataset|--particles|--out)
+            [ $# -ge 2 ] || { echo "kernel-ratio: $1: needs a value" >&2; exit 2; } ;;
+    esac
+    case "$1" in
         --java) java=$2; shift 2 ;;
         --dataset) dataset=$(readlink -f "$2"); shift 2 ;;
         --particles) particles=$2; shift 2 ;;
         --out) out=$2; shift 2 ;;
         --no-build) build=0; shift ;;
         --) shift; jmh_opts=("$@"); break ;;
-        -h|--help) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "kernel-ratio: $1: unknown option (see --help)" >&2; exit 2 ;;
     esac
 done

@@ -16,6 +16,7 @@ import picocli.CommandLine.Option;
                 + "byte-identical files.", "", "Scenarios:",
                 "  match        90 s Eurobot-like match: goal points, turns, short stops",
                 "  match-short  the first 20 s of the match route (the default dataset)",
+                "  match-quick  the first 10 s of the match route (the dataset of quick)",
                 "  stay         30 s standing still in the middle (the thesis's stay case)",
                 "  figure8      60 s figure-eight around the middle",
                 "  kidnap       60 s match route, carried away at 30 s with no odometry", ""},
@@ -25,7 +26,7 @@ public final class GenerateCommand implements Callable<Integer> {
     static final double MAX_DURATION = 3600.0;
 
     @Option(names = "--scenario", required = true, paramLabel = "NAME",
-            description = "match, match-short, stay, figure8 or kidnap")
+            description = "match, match-short, match-quick, stay, figure8 or kidnap")
     String scenario;
 
     @Option(names = "--seed", paramLabel = "N", defaultValue = "1",

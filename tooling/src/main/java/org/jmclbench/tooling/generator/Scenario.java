@@ -54,6 +54,8 @@ public record Scenario(String name, String description, double defaultDuration, 
                 90.0, MATCH_START, matchRoute(), true, null));
         add(m, new Scenario("match-short", "the first 20 s of the match route (the default dataset for quick runs)",
                 20.0, MATCH_START, matchRoute(), true, null));
+        add(m, new Scenario("match-quick", "the first 10 s of the match route (the dataset of ./jmclbench quick)",
+                10.0, MATCH_START, matchRoute(), true, null));
         add(m, new Scenario("stay", "standing still in the middle of the field (the thesis's stay case)",
                 30.0, new Pose(1.5, 1.0, 0.0), List.of(new Leg.Wait(Double.POSITIVE_INFINITY)), false, null));
         add(m, new Scenario("figure8", "a figure-eight around the middle of the field at 0.35 m/s",

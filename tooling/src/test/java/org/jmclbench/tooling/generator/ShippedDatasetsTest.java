@@ -30,7 +30,7 @@ class ShippedDatasetsTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"match", "match-short", "stay", "figure8", "kidnap"})
+    @ValueSource(strings = {"match", "match-short", "match-quick", "stay", "figure8", "kidnap"})
     void regeneratingGivesTheSameBytes(String name, @TempDir Path tmp) throws Exception {
         Path shipped = projectHome().resolve("datasets").resolve(name);
         Scenario s = Scenario.byName(name);
@@ -48,7 +48,7 @@ class ShippedDatasetsTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"match", "match-short", "stay", "figure8", "kidnap"})
+    @ValueSource(strings = {"match", "match-short", "match-quick", "stay", "figure8", "kidnap"})
     void filesFollowTheFormat(String name) throws IOException {
         Path dir = projectHome().resolve("datasets").resolve(name);
         checkTable(dir.resolve("odometry.txt"), 4);

@@ -1,15 +1,227 @@
 package org.jmclbench.tooling.report;
 
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeSet;
 import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
+
+import org.jmclbench.workload.BadInputException;
 
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
 
-/** Compares two result sets, metric by metric, with significance. */
-@Command(name = "compare", mixinStandardHelpOptions = true, description = "Compares two result sets, metric by metric, with significance.")
+/**
+ * Compares two result sets metric by metric, like benchstat: means with 95% CIs, the ratio
+ * B/A with a bootstrap interval, and a Mann-Whitney U test per metric.
+ */
+@Command(name = "compare", mixinStandardHelpOptions = true,
+        description = {"Compares two result sets metric by metric: A and B means (95% CI), the ratio B/A with its",
+                "bootstrap 95% CI (fixed seed) and whether the difference is significant (Mann-Whitney U, alpha 0.05).",
+                "  compare A.db B.db                       the same configurations in two databases (two machines)",
+                "  compare --db X.db --a RT[/PROFILE] --b RT[/PROFILE]   two runtimes of one database"})
 public final class CompareCommand implements Callable<Integer> {
+
+    /** The metrics compared, in table order. */
+    static final List<Metric> METRICS = List.of(Metric.MISS_COUNT, Metric.LATENCY_MEAN, Metric.LATENCY_P99,
+            Metric.JITTER_MEAN, Metric.JITTER_P99, Metric.DEVIATION);
+
+    @Parameters(arity = "0..2", paramLabel = "DB", description = "two databases, A then B")
+    List<Path> databases = new ArrayList<>();
+
+    @Option(names = "--db", paramLabel = "FILE", description = "one database holding both A and B")
+    Path db;
+
+    @Option(names = "--a", paramLabel = "RUNTIME[/PROFILE]", description = "configuration A (with --db; with two databases: A's filter)")
+    String a;
+
+    @Option(names = "--b", paramLabel = "RUNTIME[/PROFILE]", description = "configuration B (with --db; with two databases: B's filter)")
+    String b;
+
+    @Option(names = "--policy", paramLabel = "POLICY", description = "only this policy (skip, terminate, queue)")
+    String policy;
+
+    @Option(names = "--particles", paramLabel = "N", description = "only this particle count")
+    Integer particles;
+
+    @Option(names = "--dataset", paramLabel = "NAME", description = "only this dataset")
+    String dataset;
+
+    PrintStream out = System.out;
+
     @Override
-    public Integer call() {
-        System.err.println("jmclbench: compare: not built yet");
-        return 1;
+    public Integer call() throws BadInputException {
+        List<ResultsStore.Run> runsA;
+        List<ResultsStore.Run> runsB;
+        String nameA;
+        String nameB;
+        boolean pairByConfig;
+        if (db != null) {
+            if (!databases.isEmpty()) {
+                throw new BadInputException("--db: give either --db with --a/--b or two databases, not both");
+            }
+            if (a == null || b == null) {
+                throw new BadInputException((a == null ? "--a" : "--b") + ": needed with --db (RUNTIME[/PROFILE])");
+            }
+            try (ResultsStore store = ResultsStore.open(db, "--db")) {
+                List<ResultsStore.Run> all = filtered(store.runs());
+                runsA = select(all, a, "--a", db);
+                runsB = select(all, b, "--b", db);
+            }
+            nameA = a;
+            nameB = b;
+            pairByConfig = false;
+        } else {
+            if (databases.size() != 2) {
+                throw new BadInputException("compare: give two databases (A.db B.db) or --db FILE --a RUNTIME --b RUNTIME");
+            }
+            try (ResultsStore sa = ResultsStore.open(databases.get(0), "A");
+                 ResultsStore sb = ResultsStore.open(databases.get(1), "B")) {
+                runsA = filtered(sa.runs());
+                runsB = filtered(sb.runs());
+            }
+            if (a != null) {
+                runsA = select(runsA, a, "--a", databases.get(0));
+            }
+            if (b != null) {
+                runsB = select(runsB, b, "--b", databases.get(1));
+            }
+            nameA = databases.get(0) + (a == null ? "" : " " + a);
+            nameB = databases.get(1) + (b == null ? "" : " " + b);
+            pairByConfig = a == null || b == null;
+        }
+        Map<String, List<ResultsStore.Run>> groupsA = group(runsA, pairByConfig);
+        Map<String, List<ResultsStore.Run>> groupsB = group(runsB, pairByConfig);
+        out.println("A: " + nameA);
+        out.println("B: " + nameB);
+        int compared = 0;
+        for (Map.Entry<String, List<ResultsStore.Run>> e : groupsA.entrySet()) {
+            List<ResultsStore.Run> gb = groupsB.get(e.getKey());
+            if (gb == null) {
+                continue;
+            }
+            out.println();
+            out.println("== " + e.getKey() + " ==");
+            printTable(e.getValue(), gb);
+            compared++;
+        }
+        if (compared == 0) {
+            throw new BadInputException("compare: no setting (dataset, policy, particles" + (pairByConfig ? ", runtime" : "")
+                    + ") has runs in both A and B" + (hasFilter() ? " with the given filters" : ""));
+        }
+        out.println();
+        out.println("B/A CI: percentile bootstrap, " + Stats.BOOTSTRAP_RESAMPLES + " resamples, seed " + Stats.BOOTSTRAP_SEED
+                + "; p: two-sided Mann-Whitney U, significant when p < " + Stats.ALPHA + "; n = completed runs.");
+        return 0;
+    }
+
+    private boolean hasFilter() {
+        return policy != null || particles != null || dataset != null;
+    }
+
+    private List<ResultsStore.Run> filtered(List<ResultsStore.Run> runs) {
+        return runs.stream()
+                .filter(r -> policy == null || policy.equals(r.policy))
+                .filter(r -> particles == null || particles == r.particles)
+                .filter(r -> dataset == null || dataset.equals(r.dataset))
+                .collect(Collectors.toList());
+    }
+
+    /** The runs of one configuration: an exact runtime/profile, or a runtime with a single profile. */
+    static List<ResultsStore.Run> select(List<ResultsStore.Run> runs, String spec, String option, Path file)
+            throws BadInputException {
+        List<ResultsStore.Run> exact = runs.stream().filter(r -> r.config().equals(spec)).toList();
+        if (!exact.isEmpty()) {
+            return exact;
+        }
+        List<ResultsStore.Run> byRuntime = runs.stream().filter(r -> r.runtime.equals(spec)).toList();
+        TreeSet<String> configs = byRuntime.stream().map(ResultsStore.Run::config).collect(Collectors.toCollection(TreeSet::new));
+        if (configs.size() > 1) {
+            throw new BadInputException(option + ": " + spec + " has several profiles in " + file + ", say which: "
+                    + String.join(", ", configs));
+        }
+        if (byRuntime.isEmpty()) {
+            TreeSet<String> known = runs.stream().map(ResultsStore.Run::config).collect(Collectors.toCollection(TreeSet::new));
+            throw new BadInputException(option + ": unknown runtime '" + spec + "' in " + file
+                    + (known.isEmpty() ? " (no runs match the filters)" : " (known: " + String.join(", ", known) + ")"));
+        }
+        return byRuntime;
+    }
+
+    private static Map<String, List<ResultsStore.Run>> group(List<ResultsStore.Run> runs, boolean withConfig) {
+        Map<String, List<ResultsStore.Run>> out = new LinkedHashMap<>();
+        for (ResultsStore.Run r : runs) {
+            String key = String.format(Locale.ROOT, "%s  %s  %d particles%s", r.dataset, r.policy, r.particles,
+                    withConfig ? "  " + r.config() : "");
+            out.computeIfAbsent(key, k -> new ArrayList<>()).add(r);
+        }
+        return out;
+    }
+
+    private void printTable(List<ResultsStore.Run> ra, List<ResultsStore.Run> rb) {
+        String fmt = "%-26s %-24s %-24s %8s  %-20s %s%n";
+        out.printf(Locale.ROOT, fmt, "metric", "A", "B", "B/A", "95% CI of B/A", "difference");
+        for (Metric m : METRICS) {
+            double[] xa = values(ra, m);
+            double[] xb = values(rb, m);
+            Row row = compare(xa, xb);
+            out.printf(Locale.ROOT, fmt, m.label + " (" + m.unit + ")", cell(xa), cell(xb), row.ratio, row.ci, row.verdict);
+        }
+        int failedA = (int) ra.stream().filter(r -> !r.ok()).count();
+        int failedB = (int) rb.stream().filter(r -> !r.ok()).count();
+        if (failedA + failedB > 0) {
+            out.printf(Locale.ROOT, "runs that did not complete: A %d of %d, B %d of %d%n", failedA, ra.size(), failedB, rb.size());
+        }
+    }
+
+    /** One line of the table, formatted. */
+    record Row(String ratio, String ci, String verdict) {
+    }
+
+    /** Ratio, its bootstrap CI and the verdict of the test, for two samples. */
+    static Row compare(double[] xa, double[] xb) {
+        if (xa.length == 0 || xb.length == 0) {
+            return new Row("-", "-", "no data");
+        }
+        Stats.RatioCi r = Stats.ratioCi(xa, xb);
+        String ratio = Double.isFinite(r.ratio()) ? String.format(Locale.ROOT, "%.3f", r.ratio()) : (Stats.mean(xb) == 0 ? "1 (0/0)" : "inf");
+        if (Double.isNaN(r.ratio()) && Stats.mean(xa) == 0 && Stats.mean(xb) == 0) {
+            ratio = "1 (0/0)";
+        }
+        String ci = Double.isFinite(r.low()) && Double.isFinite(r.high())
+                ? String.format(Locale.ROOT, "[%.3f, %.3f]", r.low(), r.high()) : "-";
+        String verdict;
+        if (xa.length < Stats.MIN_SAMPLES_FOR_TEST || xb.length < Stats.MIN_SAMPLES_FOR_TEST) {
+            verdict = "n too small";
+        } else {
+            double p = Stats.mannWhitneyP(xa, xb);
+            String pv = p < 0.001 ? "p<0.001" : String.format(Locale.ROOT, "p=%.3f", p);
+            verdict = (p < Stats.ALPHA ? "significant (" : "~ not significant (") + pv + ")";
+        }
+        return new Row(ratio, ci, verdict);
+    }
+
+    private static double[] values(List<ResultsStore.Run> runs, Metric m) {
+        return runs.stream().map(m::of).filter(v -> v != null).mapToDouble(Double::doubleValue).toArray();
+    }
+
+    private static String cell(double[] xs) {
+        if (xs.length == 0) {
+            return "-";
+        }
+        Stats.MeanCi ci = Stats.meanCi(xs);
+        String half = Double.isFinite(ci.halfWidth()) ? " ±" + num(ci.halfWidth()) : "";
+        return num(ci.mean()) + half + " n=" + xs.length;
+    }
+
+    private static String num(double v) {
+        double a = Math.abs(v);
+        return String.format(Locale.ROOT, a >= 100 ? "%.1f" : a >= 1 ? "%.3f" : a == 0 ? "%.0f" : "%.4f", v);
     }
 }

@@ -1,15 +1,67 @@
 package org.jmclbench.tooling.report;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
-import picocli.CommandLine.Command;
+import org.jmclbench.workload.BadInputException;
 
-/** Builds the HTML report from the results database. */
-@Command(name = "report", mixinStandardHelpOptions = true, description = "Builds the HTML report from the results database.")
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** Builds the HTML report (charts, comparison tables, SVG/PNG exports) from the results database. */
+@Command(name = "report", mixinStandardHelpOptions = true,
+        description = {"Builds the HTML report from the results database: a self-contained index.html (works offline",
+                "from file://) with the comparison tables and charts, and every chart as SVG and PNG in charts/."})
 public final class ReportCommand implements Callable<Integer> {
+
+    @Option(names = "--db", paramLabel = "FILE", description = "results database (default: ${DEFAULT-VALUE})")
+    Path db = Path.of("results", "results.db");
+
+    @Option(names = "--out", paramLabel = "DIR", description = "report folder (default: report/ beside the database, results/report)")
+    Path out;
+
+    @Option(names = "--no-export", description = "skip the SVG/PNG export of the charts (the page alone)")
+    boolean noExport;
+
     @Override
-    public Integer call() {
-        System.err.println("jmclbench: report: not built yet");
-        return 1;
+    public Integer call() throws BadInputException, IOException {
+        System.setProperty("java.awt.headless", "true");
+        long t0 = System.nanoTime();
+        if (out == null) {
+            Path parent = db.toAbsolutePath().getParent();
+            out = parent == null ? Path.of("report") : parent.resolve("report");
+        }
+        if (Files.exists(out) && !Files.isDirectory(out)) {
+            throw new BadInputException("--out: " + out + ": not a folder");
+        }
+        ReportModel model;
+        try (ResultsStore store = ResultsStore.open(db, "--db")) {
+            model = ReportModel.build(store, ReportCommand::progress);
+        }
+        Files.createDirectories(out);
+        Path index = out.resolve("index.html");
+        ReportPage.write(model, index);
+        progress("wrote " + index);
+        if (!noExport) {
+            int files = new ChartExporter(model, out.resolve("charts")).exportAll(ReportCommand::progress);
+            progress("wrote " + files + " chart files to " + out.resolve("charts"));
+        }
+        System.out.printf(java.util.Locale.ROOT, "report: %s (%d runs, %.1f s)%n", index, model.runCount,
+                (System.nanoTime() - t0) / 1e9);
+        return 0;
+    }
+
+    private static void progress(String line) {
+        System.err.println("report: " + line);
+    }
+
+    /** "done/total" with the time left, estimated from the pace so far. */
+    static String eta(int done, int total, long startNanos) {
+        double elapsed = (System.nanoTime() - startNanos) / 1e9;
+        double left = done == 0 ? Double.NaN : elapsed / done * (total - done);
+        return done + "/" + total + (done < total && Double.isFinite(left)
+                ? String.format(java.util.Locale.ROOT, ", about %.0f s left", Math.ceil(left)) : "");
     }
 }

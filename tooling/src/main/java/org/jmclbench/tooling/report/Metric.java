@@ -1,0 +1,71 @@
+package org.jmclbench.tooling.report;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.MissingNode;
+
+/**
+ * A per-run value the report and compare aggregate over repetitions: read from the
+ * flattened {@code metrics} table, else from the run's summary.json (docs/FORMATS.md 4-5).
+ */
+public enum Metric {
+    MISS_COUNT("missCount", "misses", 1, "/missCount", "run/missCount/value", "all/missCount/value", "all/missCount/mean"),
+    LATE("late", "jobs", 1, "/tasks/all/late", "all/late/value", "run/late/value"),
+    LATENCY_MEAN("task latency mean", "ms", 1e-6, "/tasks/all/taskLatencyNs/mean", "all/taskLatencyNs/mean"),
+    LATENCY_P99("task latency p99", "ms", 1e-6, "/tasks/all/taskLatencyNs/p99", "all/taskLatencyNs/p99"),
+    LATENCY_MAX("task latency max", "ms", 1e-6, "/tasks/all/taskLatencyNs/max", "all/taskLatencyNs/max"),
+    JITTER_MEAN("release jitter mean", "ms", 1e-6, "/tasks/all/releaseJitterNs/mean", "all/releaseJitterNs/mean"),
+    JITTER_P99("release jitter p99", "ms", 1e-6, "/tasks/all/releaseJitterNs/p99", "all/releaseJitterNs/p99"),
+    JITTER_MAX("release jitter max", "ms", 1e-6, "/tasks/all/releaseJitterNs/max", "all/releaseJitterNs/max"),
+    DEVIATION("deviation xy mean", "m", 1, "/deviation/xy/mean", "run/deviationXY/mean", "run/deviationXY/value",
+            "all/deviationXY/mean", "all/deviationXY/value");
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    /** Name shown in tables. */
+    public final String label;
+    /** Unit of {@link #of} (after {@link #scale}). */
+    public final String unit;
+    private final double scale;
+    private final String summaryPointer;
+    private final String[] metricKeys;
+
+    Metric(String label, String unit, double scale, String summaryPointer, String... metricKeys) {
+        this.label = label;
+        this.unit = unit;
+        this.scale = scale;
+        this.summaryPointer = summaryPointer;
+        this.metricKeys = metricKeys;
+    }
+
+    /** The value of a run in {@link #unit}, or null when the run has none (failed, or not recorded). */
+    public Double of(ResultsStore.Run run) {
+        if (!run.ok()) {
+            return null;
+        }
+        Double v = run.metric(metricKeys);
+        if (v == null) {
+            JsonNode n = summary(run).at(summaryPointer);
+            if (n.isNumber()) {
+                v = n.asDouble();
+            }
+        }
+        return v == null || v.isNaN() ? null : v * scale;
+    }
+
+    private static JsonNode summary(ResultsStore.Run run) {
+        if (run.summary == null) {
+            try {
+                run.summary = run.summaryJson == null ? MissingNode.getInstance() : JSON.readTree(run.summaryJson);
+            } catch (Exception e) {
+                run.summary = MissingNode.getInstance();
+            }
+        }
+        return run.summary;
+    }
+
+    /** The run's summary.json as a tree (missing node when there is none). */
+    static JsonNode summaryOf(ResultsStore.Run run) {
+        return summary(run);
+    }
+}

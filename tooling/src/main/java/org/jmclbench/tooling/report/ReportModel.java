@@ -1,0 +1,435 @@
+package org.jmclbench.tooling.report;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Properties;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.function.Consumer;
+import java.util.stream.Collectors;
+
+import org.HdrHistogram.Histogram;
+import org.HdrHistogram.HistogramIterationValue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+/**
+ * Everything the report shows, aggregated from the store: one {@link Cell} per
+ * (dataset, policy, particles, runtime/profile) with the repetitions' statistics, the
+ * merged histograms' spectra and a few series; serialised as the page's inlined JSON.
+ */
+public final class ReportModel {
+
+    /** Repetitions drawn in "deviation over time" per configuration. */
+    static final int MAX_REPETITION_SERIES = 5;
+    /** Points per series after down-sampling (the store keeps up to 2000). */
+    static final int MAX_POINTS = 400;
+    /** Points of a task latency series: each bucket keeps its slowest job. */
+    static final int MAX_LATENCY_POINTS = 1000;
+
+    public String schema = "jmclbench-report/1";
+    public String generatedAt;
+    public String database;
+    public int runCount;
+    public List<String> datasets = new ArrayList<>();
+    public List<String> policies = new ArrayList<>();
+    public List<Integer> particles = new ArrayList<>();
+    public List<ConfigInfo> configs = new ArrayList<>();
+    public List<MachineInfo> machines = new ArrayList<>();
+    public List<Cell> cells = new ArrayList<>();
+    public Map<String, Playground> playgrounds = new LinkedHashMap<>();
+    public Selection defaults;
+
+    /** A runtime/profile as shown in the legend and the tables. */
+    public record ConfigInfo(String id, String runtime, String profile, boolean nativeBaseline, List<String> versions,
+                             List<String> flags, List<String> machines, List<String> facts) {
+    }
+
+    /** A machine with the doctor's facts. */
+    public record MachineInfo(String id, String hostname, String kernel, String cpu, Integer processors,
+                              String virtualization, List<Map<String, String>> checks) {
+    }
+
+    /** Mean over repetitions with its 95% interval half-width (null when it cannot be made). */
+    public record Agg(int n, Double mean, Double half, Double min, Double max) {
+        static Agg of(List<Double> values) {
+            double[] xs = values.stream().mapToDouble(Double::doubleValue).toArray();
+            if (xs.length == 0) {
+                return new Agg(0, null, null, null, null);
+            }
+            Stats.MeanCi ci = Stats.meanCi(xs);
+            double min = Double.POSITIVE_INFINITY;
+            double max = Double.NEGATIVE_INFINITY;
+            for (double x : xs) {
+                min = Math.min(min, x);
+                max = Math.max(max, x);
+            }
+            return new Agg(xs.length, finite(ci.mean()), finite(ci.halfWidth()), min, max);
+        }
+    }
+
+    /** A run that did not complete: its status and what it said. */
+    public record Failure(int repetition, String status, Integer exitCode, String failure, String stderrTail) {
+    }
+
+    /** The playground of a dataset (the thesis's unless the dataset's metadata says otherwise). */
+    public record Playground(double width, double height, List<double[]> beacons) {
+        static Playground thesis() {
+            return new Playground(3.0, 2.0, List.of(new double[] {0, 1}, new double[] {3, 0}, new double[] {3, 2}));
+        }
+    }
+
+    /** What the page shows first. */
+    public record Selection(String dataset, String policy, Integer particles) {
+    }
+
+    /** One configuration at one setting, over its repetitions. */
+    public static final class Cell {
+        public String dataset;
+        public String policy;
+        public int particles;
+        public String config;
+        public int runs;
+        public int ok;
+        public int failed;
+        public int timeout;
+        public int unsupported;
+        public Map<String, Agg> metrics = new LinkedHashMap<>();
+        /** [1/(1-p), latency ms, percentile] of every job's task latency, all repetitions merged. */
+        public List<double[]> latencySpectrum = new ArrayList<>();
+        /** [release jitter ms, cumulative fraction], all repetitions merged. */
+        public List<double[]> jitterCdf = new ArrayList<>();
+        /** [event index, task latency ms] of the first repetition. */
+        public List<double[]> latencyPredict = new ArrayList<>();
+        public List<double[]> latencyUpdate = new ArrayList<>();
+        /** Per repetition (up to five): [time s, deviation xy m]. */
+        public List<List<double[]>> deviation = new ArrayList<>();
+        public List<Integer> deviationRepetitions = new ArrayList<>();
+        /** [x, y] estimated and real, of the first repetition. */
+        public List<double[]> trajectory = new ArrayList<>();
+        public List<double[]> real = new ArrayList<>();
+        public List<Failure> failures = new ArrayList<>();
+
+    }
+
+    /** Builds the model, reporting progress through {@code progress} (one line a step). */
+    public static ReportModel build(ResultsStore store, Consumer<String> progress) {
+        ReportModel m = new ReportModel();
+        m.generatedAt = java.time.Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS).toString();
+        m.database = store.file().getFileName().toString();
+        List<ResultsStore.Run> runs = store.runs();
+        m.runCount = runs.size();
+        progress.accept("read " + runs.size() + " runs");
+
+        Map<String, ResultsStore.Machine> machineRows = store.machines();
+        if (runs.stream().map(r -> String.valueOf(r.machineId)).distinct().count() > 1) {
+            // Runs of two machines (merged stores) are never pooled: each runtime is shown per machine.
+            for (ResultsStore.Run r : runs) {
+                ResultsStore.Machine mc = machineRows.get(r.machineId);
+                r.machineLabel = mc != null && mc.hostname() != null ? mc.hostname() : String.valueOf(r.machineId);
+            }
+        }
+        Map<String, List<ResultsStore.Run>> byCell = new LinkedHashMap<>();
+        for (ResultsStore.Run r : runs) {
+            byCell.computeIfAbsent(r.dataset + "\u0000" + r.policy + "\u0000" + r.particles + "\u0000" + r.configOnMachine(),
+                    k -> new ArrayList<>()).add(r);
+        }
+        m.datasets = runs.stream().map(r -> r.dataset).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
+        m.policies = runs.stream().map(r -> r.policy).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
+        m.particles = runs.stream().map(r -> r.particles).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
+        m.configs = configs(runs);
+        m.machines = machines(store, runs);
+        for (String d : m.datasets) {
+            m.playgrounds.put(d, playground(store, runs, d));
+        }
+
+        int done = 0;
+        long start = System.nanoTime();
+        long last = start;
+        for (List<ResultsStore.Run> group : byCell.values()) {
+            m.cells.add(cell(store, group));
+            done++;
+            if (System.nanoTime() - last > 1_000_000_000L || done == byCell.size()) {
+                progress.accept("aggregated configurations " + ReportCommand.eta(done, byCell.size(), start));
+                last = System.nanoTime();
+            }
+        }
+        m.defaults = defaults(m, runs);
+        return m;
+    }
+
+    private static Cell cell(ResultsStore store, List<ResultsStore.Run> group) {
+        ResultsStore.Run first = group.get(0);
+        Cell c = new Cell();
+        c.dataset = first.dataset;
+        c.policy = first.policy;
+        c.particles = first.particles;
+        c.config = first.configOnMachine();
+        c.runs = group.size();
+        List<ResultsStore.Run> ok = new ArrayList<>();
+        for (ResultsStore.Run r : group) {
+            switch (r.status) {
+                case "ok" -> ok.add(r);
+                case "timeout" -> c.timeout++;
+                case "unsupported" -> c.unsupported++;
+                default -> c.failed++;
+            }
+            if (!r.ok()) {
+                c.failures.add(new Failure(r.repetition, r.status, r.exitCode, r.failure, tail(r.stderrTail)));
+            }
+        }
+        c.ok = ok.size();
+        for (Metric metric : Metric.values()) {
+            List<Double> values = new ArrayList<>();
+            for (ResultsStore.Run r : ok) {
+                Double v = metric.of(r);
+                if (v != null) {
+                    values.add(v);
+                }
+            }
+            c.metrics.put(metric.name(), Agg.of(values));
+        }
+        if (ok.isEmpty()) {
+            return c;
+        }
+        List<String> keys = ok.stream().map(r -> r.runKey).toList();
+        Histogram latency = merged(store.histograms(keys, "all", "taskLatencyNs"));
+        if (latency != null) {
+            for (HistogramIterationValue v : latency.percentiles(5)) {
+                double p = v.getPercentileLevelIteratedTo();
+                double x = p >= 100 ? 1e7 : Math.min(1e7, 100.0 / (100.0 - p));
+                c.latencySpectrum.add(new double[] {SeriesTable.round(x), SeriesTable.round(v.getValueIteratedTo() / 1e6),
+                        SeriesTable.round(p)});
+            }
+        }
+        Histogram jitter = merged(store.histograms(keys, "all", "releaseJitterNs"));
+        if (jitter != null) {
+            for (HistogramIterationValue v : jitter.percentiles(5)) {
+                c.jitterCdf.add(new double[] {SeriesTable.round(Math.max(1e-4, v.getValueIteratedTo() / 1e6)),
+                        SeriesTable.round(v.getPercentileLevelIteratedTo() / 100.0)});
+            }
+        }
+        ResultsStore.Run rep = ok.get(0);
+        c.latencyPredict = latencyPoints(store.series(rep.runKey, "taskLatency.predict"));
+        c.latencyUpdate = latencyPoints(store.series(rep.runKey, "taskLatency.update"));
+        for (ResultsStore.Run r : ok.subList(0, Math.min(MAX_REPETITION_SERIES, ok.size()))) {
+            SeriesTable t = SeriesTable.parse(store.series(r.runKey, "deviation"));
+            if (t != null) {
+                c.deviation.add(t.points(t.column("time", "t", "timeS"), 1, t.column("dxy", "deviationXY", "xy", "exy"), 1, MAX_POINTS));
+                c.deviationRepetitions.add(r.repetition);
+            }
+        }
+        SeriesTable t = SeriesTable.parse(store.series(rep.runKey, "trajectory"));
+        if (t != null) {
+            c.trajectory = t.points(t.column("x", "estX", "estimateX", "xEst"), 1, t.column("y", "estY", "estimateY", "yEst"), 1, MAX_POINTS);
+            c.real = t.points(t.column("realX", "trueX", "xReal"), 1, t.column("realY", "trueY", "yReal"), 1, MAX_POINTS);
+        }
+        return c;
+    }
+
+    private static List<double[]> latencyPoints(String json) {
+        SeriesTable t = SeriesTable.parse(json);
+        if (t == null) {
+            return new ArrayList<>();
+        }
+        int index = t.column("index", "i", "job");
+        int ns = t.column("latencyNs", "taskLatencyNs", "latency", "taskLatency");
+        if (ns >= 0) {
+            return t.peakPoints(index, 1, ns, 1e-6, MAX_LATENCY_POINTS);
+        }
+        int ms = t.column("latencyMs", "taskLatencyMs");
+        if (ms >= 0) {
+            return t.peakPoints(index, 1, ms, 1, MAX_LATENCY_POINTS);
+        }
+        int start = t.column("startNs", "start");
+        int end = t.column("endNs", "end");
+        List<double[]> out = new ArrayList<>();
+        if (index < 0 || start < 0 || end < 0) {
+            return out;
+        }
+        double step = Math.max(1.0, (double) t.size() / MAX_LATENCY_POINTS);
+        for (double d = 0; d < t.size(); d += step) {
+            int i = (int) d;
+            double s = t.value(i, start);
+            double e = t.value(i, end);
+            if (Double.isFinite(s) && Double.isFinite(e) && s >= 0 && e >= 0) {
+                out.add(new double[] {t.value(i, index), SeriesTable.round((e - s) / 1e6)});
+            }
+        }
+        return out;
+    }
+
+    private static Histogram merged(Map<String, Histogram> histograms) {
+        Histogram sum = null;
+        for (Histogram h : histograms.values()) {
+            if (sum == null) {
+                sum = new Histogram(h.getNumberOfSignificantValueDigits());
+                sum.setAutoResize(true);
+            }
+            sum.add(h);
+        }
+        return sum == null || sum.getTotalCount() == 0 ? null : sum;
+    }
+
+    private static List<ConfigInfo> configs(List<ResultsStore.Run> runs) {
+        Map<String, List<ResultsStore.Run>> byConfig = new LinkedHashMap<>();
+        runs.stream().sorted(Comparator.comparing(ResultsStore.Run::configOnMachine))
+                .forEach(r -> byConfig.computeIfAbsent(r.configOnMachine(), k -> new ArrayList<>()).add(r));
+        List<ConfigInfo> out = new ArrayList<>();
+        for (Map.Entry<String, List<ResultsStore.Run>> e : byConfig.entrySet()) {
+            ResultsStore.Run first = e.getValue().get(0);
+            Set<String> versions = new LinkedHashSet<>();
+            List<String> flags = new ArrayList<>(); // a list: an argument may repeat ("-n 1 ... --seed 1")
+            Set<String> machines = new LinkedHashSet<>();
+            List<String> facts = new ArrayList<>();
+            boolean nativeBaseline = "native".equals(first.runtime);
+            for (ResultsStore.Run r : e.getValue()) {
+                if (r.runtimeVersion != null) {
+                    versions.add(r.runtimeVersion);
+                }
+                if (r.machineId != null) {
+                    machines.add(r.machineId);
+                }
+                if (r.ok() && facts.isEmpty()) {
+                    facts.addAll(facts(Metric.summaryOf(r)));
+                }
+                if (r.ok() && flags.isEmpty()) {
+                    JsonNode rt = Metric.summaryOf(r).at("/environment/runtime");
+                    rt.path("inputArguments").forEach(a -> flags.add(a.asText()));
+                    if ("c".equalsIgnoreCase(rt.path("language").asText())) {
+                        nativeBaseline = true;
+                    }
+                    if (versions.isEmpty() && rt.hasNonNull("version")) {
+                        versions.add(rt.path("version").asText());
+                    }
+                }
+            }
+            out.add(new ConfigInfo(e.getKey(), first.runtime, first.profile, nativeBaseline, List.copyOf(versions),
+                    List.copyOf(flags), List.copyOf(machines), List.copyOf(facts)));
+        }
+        return out;
+    }
+
+    /** What says how far a run's numbers can be trusted: scheduling, priorities, allocation (FORMATS.md 4). */
+    static List<String> facts(JsonNode summary) {
+        List<String> out = new ArrayList<>();
+        JsonNode params = summary.path("parameters");
+        if (params.hasNonNull("timeScale") && params.get("timeScale").asDouble() != 1.0) {
+            out.add("replayed at time scale " + params.get("timeScale").asText() + " (deadlines scaled too)");
+        }
+        if (params.hasNonNull("memory")) {
+            out.add("memory " + params.get("memory").asText());
+        }
+        JsonNode sched = summary.at("/environment/scheduling");
+        if (sched.hasNonNull("policy")) {
+            out.add("scheduling " + sched.get("policy").asText()
+                    + (sched.hasNonNull("priority") ? " priority " + sched.get("priority").asText() : ""));
+        }
+        JsonNode engine = summary.path("engine");
+        if (engine.hasNonNull("prioritiesApplied")) {
+            out.add(engine.get("prioritiesApplied").asBoolean() ? "thread priorities applied" : "thread priorities not applied by the OS");
+        }
+        if (engine.hasNonNull("allocatedBytes")) {
+            out.add(engine.get("allocatedBytes").asText() + " bytes allocated while measuring");
+        }
+        if (summary.at("/environment").hasNonNull("clocksource")) {
+            out.add("clocksource " + summary.at("/environment/clocksource").asText());
+        }
+        return out;
+    }
+
+    private static List<MachineInfo> machines(ResultsStore store, List<ResultsStore.Run> runs) {
+        ObjectMapper json = new ObjectMapper();
+        List<MachineInfo> out = new ArrayList<>();
+        for (ResultsStore.Machine mc : store.machines().values()) {
+            List<Map<String, String>> checks = new ArrayList<>();
+            String virtualization = null;
+            try {
+                JsonNode doctor = mc.doctorJson() == null ? null : json.readTree(mc.doctorJson());
+                if (doctor != null && doctor.isArray()) {
+                    for (JsonNode check : doctor) {
+                        Map<String, String> row = new LinkedHashMap<>();
+                        for (String k : List.of("check", "status", "value", "advice")) {
+                            row.put(k, check.hasNonNull(k) ? check.get(k).asText() : "");
+                        }
+                        checks.add(row);
+                        String name = row.get("check").toLowerCase(java.util.Locale.ROOT);
+                        if (virtualization == null && (name.contains("virt") || name.contains("hypervisor"))) {
+                            virtualization = row.get("value");
+                        }
+                    }
+                }
+            } catch (Exception e) {
+                checks.add(Map.of("check", "doctor_json", "status", "unreadable", "value", "", "advice", ""));
+            }
+            out.add(new MachineInfo(mc.machineId(), mc.hostname(), mc.kernel(), mc.cpuModel(), mc.processors(),
+                    virtualization, checks));
+        }
+        return out;
+    }
+
+    private static Playground playground(ResultsStore store, List<ResultsStore.Run> runs, String dataset) {
+        for (ResultsStore.Run r : runs) {
+            if (!dataset.equals(r.dataset) || !r.ok()) {
+                continue;
+            }
+            String path = Metric.summaryOf(r).at("/parameters/dataset/path").asText("");
+            if (path.isEmpty()) {
+                continue;
+            }
+            Path props = Path.of(path).resolve("dataset.properties");
+            if (!props.isAbsolute() && store.file().getParent() != null) {
+                props = store.file().toAbsolutePath().getParent().resolve(props);
+            }
+            if (Files.isRegularFile(props)) {
+                try (var in = Files.newBufferedReader(props)) {
+                    Properties p = new Properties();
+                    p.load(in);
+                    double w = Double.parseDouble(p.getProperty("playground.width", "3.0"));
+                    double h = Double.parseDouble(p.getProperty("playground.height", "2.0"));
+                    List<double[]> beacons = new ArrayList<>();
+                    for (String b : p.getProperty("beacons", "0.0,1.0;3.0,0.0;3.0,2.0").split(";")) {
+                        String[] xy = b.split(",");
+                        beacons.add(new double[] {Double.parseDouble(xy[0].trim()), Double.parseDouble(xy[1].trim())});
+                    }
+                    return new Playground(w, h, beacons);
+                } catch (Exception e) {
+                    break; // unreadable metadata: the thesis's playground
+                }
+            }
+            break;
+        }
+        return Playground.thesis();
+    }
+
+    private static Selection defaults(ReportModel m, List<ResultsStore.Run> runs) {
+        if (runs.isEmpty()) {
+            return new Selection(null, null, null);
+        }
+        Map<String, Long> perDataset = runs.stream().collect(Collectors.groupingBy(r -> r.dataset, java.util.TreeMap::new, Collectors.counting()));
+        String dataset = perDataset.entrySet().stream().max(Map.Entry.comparingByValue()).get().getKey();
+        String policy = m.policies.contains("skip") ? "skip" : m.policies.get(0);
+        List<Integer> ps = runs.stream().filter(r -> r.dataset.equals(dataset) && r.policy.equals(policy))
+                .map(r -> r.particles).distinct().sorted().toList();
+        Integer particles = ps.isEmpty() ? m.particles.get(0) : ps.get(ps.size() / 2);
+        return new Selection(dataset, policy, particles);
+    }
+
+    private static String tail(String s) {
+        if (s == null) {
+            return null;
+        }
+        return s.length() <= 2000 ? s : s.substring(s.length() - 2000);
+    }
+
+    private static Double finite(double v) {
+        return Double.isFinite(v) ? v : null;
+    }
+}

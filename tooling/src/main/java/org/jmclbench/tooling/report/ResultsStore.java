@@ -1,0 +1,275 @@
+package org.jmclbench.tooling.report;
+
+import java.nio.ByteBuffer;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.sql.Statement;
+import java.util.ArrayList;
+import java.util.Base64;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.zip.DataFormatException;
+
+import org.HdrHistogram.Histogram;
+import org.jmclbench.workload.BadInputException;
+import org.sqlite.SQLiteConfig;
+
+/**
+ * Read-only view of the results database (docs/FORMATS.md section 5) for the report and
+ * compare: runs, their flattened metrics, histograms, series and the machines.
+ */
+public final class ResultsStore implements AutoCloseable {
+
+    private final Path file;
+    private final Connection db;
+
+    private ResultsStore(Path file, Connection db) {
+        this.file = file;
+        this.db = db;
+    }
+
+    /** Opens {@code file} read-only; a missing or unreadable database is bad input. */
+    public static ResultsStore open(Path file, String option) throws BadInputException {
+        if (!Files.isRegularFile(file)) {
+            throw new BadInputException(option + ": " + file + ": no such database");
+        }
+        SQLiteConfig config = new SQLiteConfig();
+        config.setReadOnly(true);
+        try {
+            Connection c = DriverManager.getConnection("jdbc:sqlite:" + file.toAbsolutePath(), config.toProperties());
+            try (Statement st = c.createStatement();
+                 ResultSet rs = st.executeQuery("SELECT count(*) FROM sqlite_master WHERE type='table' AND name='runs'")) {
+                if (!rs.next() || rs.getInt(1) == 0) {
+                    c.close();
+                    throw new BadInputException(option + ": " + file + ": not a jmclbench results database (no runs table)");
+                }
+            }
+            return new ResultsStore(file, c);
+        } catch (SQLException e) {
+            throw new BadInputException(option + ": " + file + ": cannot read the database: " + oneLine(e.getMessage()));
+        }
+    }
+
+    public Path file() {
+        return file;
+    }
+
+    /** One row of {@code runs} with its flattened metrics. */
+    public static final class Run {
+        public String runKey;
+        public String matrixId;
+        public String machineId;
+        public String runtime;
+        public String runtimeVersion;
+        public String profile;
+        public String policy;
+        public int particles;
+        public String dataset;
+        public String load;
+        public int repetition;
+        public String status;
+        public Integer exitCode;
+        public String failure;
+        public String stderrTail;
+        public String startedAt;
+        public Double wallS;
+        public String runDir;
+        public String summaryJson;
+        /** {@code task/metric/stat} -> value. */
+        public final Map<String, Double> metrics = new HashMap<>();
+        /** summary_json parsed on first use ({@link Metric}); a missing node when absent or invalid. */
+        com.fasterxml.jackson.databind.JsonNode summary;
+
+        /** Set by the report when the store holds several machines: the same runtime on two machines is two configurations. */
+        String machineLabel;
+
+        /** The configuration under test: runtime, and profile when there is one. */
+        public String config() {
+            return profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
+        }
+
+        /** {@link #config()}, with " @host" when the report tells machines apart. */
+        String configOnMachine() {
+            return machineLabel == null ? config() : config() + " @" + machineLabel;
+        }
+
+        public boolean ok() {
+            return "ok".equals(status);
+        }
+
+        /** The first of {@code task/metric/stat} keys present, or null. */
+        public Double metric(String... keys) {
+            for (String k : keys) {
+                Double v = metrics.get(k);
+                if (v != null) {
+                    return v;
+                }
+            }
+            return null;
+        }
+    }
+
+    /** One row of {@code machines}. */
+    public record Machine(String machineId, String hostname, String kernel, String cpuModel, Integer processors,
+                          String doctorJson) {
+    }
+
+    /** Every run, in a stable order (configuration, then repetition), with its metrics. */
+    public List<Run> runs() {
+        Map<String, Run> byKey = new LinkedHashMap<>();
+        String sql = "SELECT run_key, matrix_id, machine_id, runtime, runtime_version, profile, policy, particles, dataset, load,"
+                + " repetition, status, exit_code, failure, stderr_tail, started_at, wall_s, run_dir, summary_json FROM runs"
+                + " ORDER BY dataset, policy, particles, runtime, profile, repetition, started_at, run_key";
+        try (Statement st = db.createStatement(); ResultSet rs = st.executeQuery(sql)) {
+            while (rs.next()) {
+                Run r = new Run();
+                r.runKey = rs.getString(1);
+                r.matrixId = rs.getString(2);
+                r.machineId = rs.getString(3);
+                r.runtime = nz(rs.getString(4), "?");
+                r.runtimeVersion = rs.getString(5);
+                r.profile = nz(rs.getString(6), "");
+                r.policy = nz(rs.getString(7), "?");
+                r.particles = rs.getInt(8);
+                r.dataset = nz(rs.getString(9), "?");
+                r.load = rs.getString(10);
+                r.repetition = rs.getInt(11);
+                r.status = nz(rs.getString(12), "?");
+                int exit = rs.getInt(13);
+                r.exitCode = rs.wasNull() ? null : exit;
+                r.failure = rs.getString(14);
+                r.stderrTail = rs.getString(15);
+                r.startedAt = rs.getString(16);
+                double wall = rs.getDouble(17);
+                r.wallS = rs.wasNull() ? null : wall;
+                r.runDir = rs.getString(18);
+                r.summaryJson = rs.getString(19);
+                byKey.put(r.runKey, r);
+            }
+            if (hasTable("metrics")) {
+                try (ResultSet m = st.executeQuery("SELECT run_key, task, metric, stat, value FROM metrics WHERE value IS NOT NULL")) {
+                    while (m.next()) {
+                        Run r = byKey.get(m.getString(1));
+                        if (r != null) {
+                            r.metrics.put(m.getString(2) + "/" + m.getString(3) + "/" + m.getString(4), m.getDouble(5));
+                        }
+                    }
+                }
+            }
+        } catch (SQLException e) {
+            throw new IllegalStateException(file + ": " + oneLine(e.getMessage()), e);
+        }
+        return new ArrayList<>(byKey.values());
+    }
+
+    /** Every machine, by id. */
+    public Map<String, Machine> machines() {
+        Map<String, Machine> out = new LinkedHashMap<>();
+        if (!hasTable("machines")) {
+            return out;
+        }
+        try (Statement st = db.createStatement();
+             ResultSet rs = st.executeQuery("SELECT machine_id, hostname, kernel, cpu_model, processors, doctor_json FROM machines ORDER BY machine_id")) {
+            while (rs.next()) {
+                int p = rs.getInt(5);
+                Integer processors = rs.wasNull() ? null : p;
+                out.put(rs.getString(1), new Machine(rs.getString(1), rs.getString(2), rs.getString(3), rs.getString(4),
+                        processors, rs.getString(6)));
+            }
+        } catch (SQLException e) {
+            throw new IllegalStateException(file + ": " + oneLine(e.getMessage()), e);
+        }
+        return out;
+    }
+
+    /** The decoded histograms of one task/metric for each of {@code runKeys} (missing ones left out). */
+    public Map<String, Histogram> histograms(List<String> runKeys, String task, String metric) {
+        Map<String, Histogram> out = new HashMap<>();
+        if (!hasTable("histograms")) {
+            return out;
+        }
+        try (PreparedStatement ps = db.prepareStatement("SELECT hdr FROM histograms WHERE run_key = ? AND task = ? AND metric = ?")) {
+            for (String key : runKeys) {
+                ps.setString(1, key);
+                ps.setString(2, task);
+                ps.setString(3, metric);
+                try (ResultSet rs = ps.executeQuery()) {
+                    if (rs.next() && rs.getString(1) != null) {
+                        Histogram h = decode(rs.getString(1));
+                        if (h != null) {
+                            out.put(key, h);
+                        }
+                    }
+                }
+            }
+        } catch (SQLException e) {
+            throw new IllegalStateException(file + ": " + oneLine(e.getMessage()), e);
+        }
+        return out;
+    }
+
+    /** Base64 of HdrHistogram's compressed encoding -> histogram; null when it cannot be decoded. */
+    static Histogram decode(String base64) {
+        try {
+            byte[] bytes = Base64.getDecoder().decode(base64.trim());
+            return Histogram.decodeFromCompressedByteBuffer(ByteBuffer.wrap(bytes), 0);
+        } catch (IllegalArgumentException | DataFormatException | java.nio.BufferUnderflowException e) {
+            return null;
+        }
+    }
+
+    /** The series JSON of one run by name, or null. */
+    public String series(String runKey, String name) {
+        if (!hasTable("series")) {
+            return null;
+        }
+        try (PreparedStatement ps = db.prepareStatement("SELECT json FROM series WHERE run_key = ? AND name = ?")) {
+            ps.setString(1, runKey);
+            ps.setString(2, name);
+            try (ResultSet rs = ps.executeQuery()) {
+                return rs.next() ? rs.getString(1) : null;
+            }
+        } catch (SQLException e) {
+            throw new IllegalStateException(file + ": " + oneLine(e.getMessage()), e);
+        }
+    }
+
+    private final Map<String, Boolean> tables = new HashMap<>();
+
+    private boolean hasTable(String name) {
+        return tables.computeIfAbsent(name, n -> {
+            try (PreparedStatement ps = db.prepareStatement("SELECT count(*) FROM sqlite_master WHERE type='table' AND name=?")) {
+                ps.setString(1, n);
+                try (ResultSet rs = ps.executeQuery()) {
+                    return rs.next() && rs.getInt(1) > 0;
+                }
+            } catch (SQLException e) {
+                return false;
+            }
+        });
+    }
+
+    private static String nz(String s, String dflt) {
+        return s == null ? dflt : s;
+    }
+
+    static String oneLine(String s) {
+        return s == null ? "" : s.replaceAll("\\s+", " ").trim();
+    }
+
+    @Override
+    public void close() {
+        try {
+            db.close();
+        } catch (SQLException e) {
+            // read-only: nothing to lose
+        }
+    }
+}

@@ -1,0 +1,120 @@
+package org.jmclbench.tooling.report;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** compare on fixture stores: both modes, the verdicts, and bad input. */
+class CompareCommandTest {
+
+    @TempDir
+    static Path dir;
+    static Path a;
+    static Path b;
+
+    @BeforeAll
+    static void stores() throws Exception {
+        FixtureDb fa = new FixtureDb();
+        fa.policies = List.of("skip");
+        fa.particles = List.of(400);
+        fa.repetitions = 6;
+        a = ReportFixtures.write(fa, dir, "a.db");
+        FixtureDb fb = new FixtureDb();
+        fb.policies = List.of("skip");
+        fb.particles = List.of(400);
+        fb.repetitions = 6;
+        fb.seed = 2;
+        // Machine B is twice as slow for every runtime.
+        fb.configs = new ArrayList<>(fa.configs.stream()
+                .map(c -> new FixtureDb.Config(c.runtime(), c.profile(), c.version(), c.speed() * 2, c.status())).toList());
+        b = ReportFixtures.write(fb, dir, "b.db");
+    }
+
+    static String[] run(int expectedExit, String... args) {
+        PrintStream oldOut = System.out;
+        PrintStream oldErr = System.err;
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
+        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+        int code;
+        try {
+            code = JmclbenchCli.execute(args);
+        } finally {
+            System.setOut(oldOut);
+            System.setErr(oldErr);
+        }
+        String[] result = {out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8)};
+        assertEquals(expectedExit, code, "stdout: " + result[0] + "\nstderr: " + result[1]);
+        return result;
+    }
+
+    static String line(String table, String metric) {
+        return table.lines().filter(l -> l.startsWith(metric)).findFirst().orElseThrow(() -> new AssertionError(metric + " in\n" + table));
+    }
+
+    @Test
+    void twoDatabasesPairTheSameConfigurations() {
+        String out = run(0, "compare", a.toString(), b.toString())[0];
+        assertTrue(out.contains("== match-short  skip  400 particles  native =="), out);
+        assertTrue(out.contains("== match-short  skip  400 particles  temurin-25/zgc =="), out);
+        String latency = line(out.substring(out.indexOf("native ==")), "task latency mean");
+        // Twice as slow: the ratio is about 2, its interval excludes 1 and six runs against six are significant.
+        String[] cols = latency.split("\\s{2,}");
+        double ratio = Double.parseDouble(cols[3].trim());
+        assertEquals(2.0, ratio, 0.15, latency);
+        assertTrue(latency.contains("significant (p=0.00"), latency);
+        assertTrue(!latency.contains("not significant"), latency);
+    }
+
+    @Test
+    void oneDatabaseTwoRuntimesWithFilters() {
+        String out = run(0, "compare", "--db", a.toString(), "--a", "native", "--b", "temurin-17/g1", "--policy", "skip",
+                "--particles", "400")[0];
+        assertTrue(out.contains("A: native") && out.contains("B: temurin-17/g1"), out);
+        String latency = line(out, "task latency mean");
+        double ratio = Double.parseDouble(latency.split("\\s{2,}")[3].trim());
+        assertEquals(1.3, ratio, 0.1, latency);
+        assertTrue(latency.matches(".*\\[\\d\\.\\d{3}, \\d\\.\\d{3}\\].*"), "a bootstrap interval: " + latency);
+        // A runtime with a single profile is found by its runtime name alone.
+        run(0, "compare", "--db", a.toString(), "--a", "native", "--b", "temurin-17");
+    }
+
+    @Test
+    void tooFewRepetitionsSaySo() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.policies = List.of("skip");
+        f.particles = List.of(100);
+        f.repetitions = 2;
+        Path small = ReportFixtures.write(f, dir, "small.db");
+        String out = run(0, "compare", "--db", small.toString(), "--a", "native", "--b", "temurin-25/zgc")[0];
+        assertTrue(line(out, "missCount").endsWith("n too small"), out);
+    }
+
+    @Test
+    void badInputIsOneLineAndExitTwo() {
+        String err = run(2, "compare", "--db", a.toString(), "--a", "native", "--b", "no-such-jvm")[1];
+        assertEquals(1, err.strip().lines().count(), err);
+        assertTrue(err.contains("--b: unknown runtime 'no-such-jvm'") && err.contains("known: native"), err);
+        err = run(2, "compare", dir.resolve("missing.db").toString(), b.toString())[1];
+        assertEquals(1, err.strip().lines().count(), err);
+        assertTrue(err.contains("missing.db: no such database"), err);
+        err = run(2, "compare", a.toString())[1];
+        assertEquals(1, err.strip().lines().count(), err);
+        err = run(2, "compare", "--db", a.toString(), "--a", "native")[1];
+        assertTrue(err.startsWith("jmclbench: --b:"), err);
+        err = run(2, "compare", "--db", a.toString(), "--a", "native", "--b", "temurin-17", "--particles", "999")[1];
+        assertEquals(1, err.strip().lines().count(), err);
+    }
+}

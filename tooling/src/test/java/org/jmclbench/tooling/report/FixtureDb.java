@@ -1,0 +1,393 @@
+package org.jmclbench.tooling.report;
+
+import java.nio.ByteBuffer;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.PreparedStatement;
+import java.sql.SQLException;
+import java.sql.Statement;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Base64;
+import java.util.List;
+import java.util.Locale;
+import java.util.SplittableRandom;
+
+import org.HdrHistogram.Histogram;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+/**
+ * Makes results databases with the schema of docs/FORMATS.md section 5 and realistic rows
+ * (summary.json per section 4, flattened metrics, HdrHistogram histograms, series), for the
+ * report's tests and for its benchmark ({@code main}: a database of any number of runs).
+ */
+public final class FixtureDb {
+
+    /** The store's schema, as written in docs/FORMATS.md section 5. */
+    public static final String SCHEMA = """
+            CREATE TABLE machines (machine_id TEXT PRIMARY KEY, hostname TEXT, kernel TEXT, cpu_model TEXT, processors INTEGER, doctor_json TEXT);
+            CREATE TABLE matrices (matrix_id TEXT PRIMARY KEY, machine_id TEXT, command TEXT, order_seed INTEGER, started_at TEXT, spec_json TEXT);
+            CREATE TABLE runs (run_key TEXT PRIMARY KEY, matrix_id TEXT, machine_id TEXT, runtime TEXT, runtime_version TEXT, profile TEXT,
+              policy TEXT, particles INTEGER, dataset TEXT, load TEXT, repetition INTEGER, status TEXT, exit_code INTEGER, failure TEXT,
+              stderr_tail TEXT, started_at TEXT, ended_at TEXT, wall_s REAL, run_dir TEXT, summary_json TEXT);
+            CREATE TABLE metrics (run_key TEXT, task TEXT, metric TEXT, stat TEXT, value REAL, PRIMARY KEY (run_key, task, metric, stat));
+            CREATE TABLE histograms (run_key TEXT, task TEXT, metric TEXT, hdr TEXT, PRIMARY KEY (run_key, task, metric));
+            CREATE TABLE series (run_key TEXT, name TEXT, json TEXT, PRIMARY KEY (run_key, name));
+            """;
+
+    /** A runtime configuration of the fixture; {@code speed} multiplies the job cost (native = 1). */
+    public record Config(String runtime, String profile, String version, double speed, String status) {
+        public String id() {
+            return profile.isEmpty() ? runtime : runtime + "/" + profile;
+        }
+    }
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    public List<Config> configs = new ArrayList<>(List.of(
+            new Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+            new Config("temurin-17", "g1", "17.0.15+6", 1.3, "ok"),
+            new Config("temurin-25", "zgc", "25+36", 1.15, "ok")));
+    public List<String> datasets = List.of("match-short");
+    public List<String> policies = List.of("skip", "terminate");
+    public List<Integer> particles = List.of(100, 400, 1600);
+    public int repetitions = 3;
+    /** Length of the replayed timeline in seconds (odometry every 50 ms, laser about 3.6 per second). */
+    public double durationS = 12.0;
+    public long seed = 1;
+
+    /** Writes the database (replacing any file at {@code db}); returns the number of runs. */
+    public int write(Path db) throws Exception {
+        Files.deleteIfExists(db);
+        if (db.getParent() != null) {
+            Files.createDirectories(db.getParent());
+        }
+        SplittableRandom rng = new SplittableRandom(seed);
+        int runs = 0;
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db.toAbsolutePath())) {
+            c.setAutoCommit(false);
+            try (Statement st = c.createStatement()) {
+                for (String sql : SCHEMA.split(";")) {
+                    if (!sql.isBlank()) {
+                        st.execute(sql);
+                    }
+                }
+                st.execute("PRAGMA user_version = 1");
+            }
+            insertMachine(c);
+            try (PreparedStatement run = c.prepareStatement("INSERT INTO runs VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
+                 PreparedStatement metric = c.prepareStatement("INSERT INTO metrics VALUES (?,?,?,?,?)");
+                 PreparedStatement hist = c.prepareStatement("INSERT INTO histograms VALUES (?,?,?,?)");
+                 PreparedStatement series = c.prepareStatement("INSERT INTO series VALUES (?,?,?)")) {
+                for (String dataset : datasets) {
+                    for (String policy : policies) {
+                        for (int p : particles) {
+                            for (Config cfg : configs) {
+                                for (int rep = 1; rep <= repetitions; rep++) {
+                                    insertRun(run, metric, hist, series, rng, dataset, policy, p, cfg, rep);
+                                    runs++;
+                                }
+                            }
+                        }
+                    }
+                }
+                run.executeBatch();
+                metric.executeBatch();
+                hist.executeBatch();
+                series.executeBatch();
+            }
+            c.commit();
+        }
+        return runs;
+    }
+
+    private static void insertMachine(Connection c) throws SQLException {
+        ArrayNode doctor = JSON.createArrayNode();
+        doctor.addObject().put("check", "virtualization").put("status", "warn").put("value", "kvm")
+                .put("advice", "a virtual machine adds jitter; prefer bare metal");
+        doctor.addObject().put("check", "cpu governor").put("status", "ok").put("value", "performance").put("advice", "");
+        doctor.addObject().put("check", "clocksource").put("status", "ok").put("value", "kvm-clock").put("advice", "");
+        try (PreparedStatement ps = c.prepareStatement("INSERT INTO machines VALUES (?,?,?,?,?,?)")) {
+            ps.setString(1, "m-1");
+            ps.setString(2, "bench-host");
+            ps.setString(3, "6.1.0-27-amd64");
+            ps.setString(4, "Intel(R) Xeon(R) CPU @ 2.20GHz");
+            ps.setInt(5, 2);
+            ps.setString(6, doctor.toString());
+            ps.executeUpdate();
+            try (PreparedStatement m = c.prepareStatement("INSERT INTO matrices VALUES ('x-1','m-1','jmclbench quick',7,'2026-11-22T02:00:00Z','{}')")) {
+                m.executeUpdate();
+            }
+        }
+    }
+
+    private void insertRun(PreparedStatement run, PreparedStatement metric, PreparedStatement hist, PreparedStatement series,
+                           SplittableRandom rng, String dataset, String policy, int particles, Config cfg, int rep)
+            throws Exception {
+        String key = String.format(Locale.ROOT, "%s-%s-%s-%d-%s-%d", dataset, policy, cfg.id().replaceAll("[^A-Za-z0-9]", "_"),
+                particles, Integer.toHexString(cfg.id().hashCode()), rep);
+        run.setString(1, key);
+        run.setString(2, "x-1");
+        run.setString(3, "m-1");
+        run.setString(4, cfg.runtime());
+        run.setString(5, cfg.version());
+        run.setString(6, cfg.profile());
+        run.setString(7, policy);
+        run.setInt(8, particles);
+        run.setString(9, dataset);
+        run.setString(10, "none");
+        run.setInt(11, rep);
+        run.setString(12, cfg.status());
+        run.setString(16, "2026-11-22T02:10:00Z");
+        run.setString(17, "2026-11-22T02:10:13Z");
+        run.setDouble(18, durationS + 1);
+        run.setString(19, "runs/" + key);
+        if (!"ok".equals(cfg.status())) {
+            run.setInt(13, "unsupported".equals(cfg.status()) ? 1 : 134);
+            run.setString(14, "unsupported".equals(cfg.status()) ? "not supported: Unrecognized VM option 'UseShenandoahGC'"
+                    : "crashed <b>bold</b> & exit 134");
+            run.setString(15, "Error: <img src=x onerror=alert(2)>\nUnrecognized VM option");
+            run.setNull(20, java.sql.Types.VARCHAR);
+            run.addBatch();
+            return;
+        }
+        run.setInt(13, 0);
+        run.setNull(14, java.sql.Types.VARCHAR);
+        run.setString(15, "");
+
+        // Jobs: cost grows with particles; under skip/terminate jobs longer than the period are missed.
+        double periodMs = 50;
+        int predictJobs = (int) (durationS / 0.05);
+        int updateJobs = (int) (durationS * 3.6);
+        double costMs = 0.004 * particles * cfg.speed() * (1 + 0.05 * rng.nextDouble());
+        Job[] predict = jobs(rng, predictJobs, costMs * 0.3, cfg.speed(), periodMs);
+        Job[] update = jobs(rng, updateJobs, costMs, cfg.speed(), 1000 / 3.6);
+        Job[] all = concat(predict, update);
+        int missPredict = (int) Arrays.stream(predict).filter(j -> j.latencyNs > 45e6 * (0.9 + 0.2 * rng.nextDouble())).count()
+                + (int) Math.round(particles / 400.0 * cfg.speed() * rng.nextDouble() * 2);
+        int missUpdate = (int) Math.round(particles / 800.0 * (cfg.speed() - 0.9) * 4 * rng.nextDouble());
+        double deviation = 0.02 + 2.0 / Math.sqrt(particles) * 0.05 + 0.01 * rng.nextDouble() + 0.001 * (missPredict + missUpdate);
+
+        ObjectNode s = JSON.createObjectNode();
+        s.put("schema", "jmclbench-run/1").put("status", "complete");
+        ObjectNode params = s.putObject("parameters");
+        params.put("runtimeName", cfg.runtime()).put("particles", particles).put("number", rep).put("policy", policy)
+                .put("ideal", false).put("memory", "preallocated").put("estimate", "mean").put("resample", "systematic")
+                .put("init", "known").put("seed", 1).put("covariance", false).put("timeScale", 1.0).put("warmupS", 0.0).put("spinUs", 0);
+        params.putObject("dataset").put("path", "datasets/" + dataset).put("scenario", "match");
+        ObjectNode env = s.putObject("environment");
+        ObjectNode rt = env.putObject("runtime");
+        boolean nat = "native".equals(cfg.runtime());
+        rt.put("language", nat ? "c" : "java").put("name", cfg.runtime()).put("vendor", nat ? "gcc" : "Eclipse Adoptium")
+                .put("version", cfg.version()).put("vmName", nat ? "native" : "OpenJDK 64-Bit Server VM");
+        ArrayNode args = rt.putArray("inputArguments");
+        if (nat) {
+            args.add("run").add("-n").add("1").add("--seed").add("1"); // the native baseline reports its argv
+        } else {
+            args.add("-XX:+Use" + (cfg.profile().isEmpty() ? "G1" : cfg.profile().toUpperCase(Locale.ROOT).replace("ZGC", "Z")) + "GC");
+            args.add("-Xms256m");
+        }
+        env.putObject("os").put("name", "Linux").put("arch", "amd64").put("kernel", "6.1.0-27-amd64");
+        env.putObject("cpu").put("model", "Intel(R) Xeon(R) CPU @ 2.20GHz").put("processors", 2);
+        env.putObject("scheduling").put("policy", "SCHED_OTHER").put("priority", 0);
+        env.put("clocksource", "kvm-clock").put("hostname", "bench-host").put("startedAt", "2026-11-22T02:10:00Z");
+        s.putObject("engine").put("dispatcherPriority", 10).put("handlerPriority", 9).put("prioritiesApplied", nat)
+                .put("cpuTime", "used (allocation-free)").putNull("gcLog").put("warmupEvents", 0).put("allocatedBytes", 0);
+        s.put("durationS", durationS);
+        int missCount = missPredict + missUpdate;
+        s.put("missCount", missCount);
+        ObjectNode tasks = s.putObject("tasks");
+        task(tasks.putObject("predict"), predict, missPredict);
+        task(tasks.putObject("update"), update, missUpdate);
+        task(tasks.putObject("all"), all, missCount);
+        stats(s.putObject("dispatcherLatenessNs"), Arrays.stream(all).mapToDouble(j -> j.jitterNs * 0.8).toArray());
+        ObjectNode dev = s.putObject("deviation");
+        dev.putObject("xy").put("mean", deviation).put("max", deviation * 3);
+        dev.putObject("x").put("mean", deviation * 0.6).put("max", deviation * 2);
+        dev.putObject("y").put("mean", deviation * 0.6).put("max", deviation * 2);
+        dev.putObject("angle").put("mean", 0.02).put("max", 0.1);
+        run.setString(20, s.toString());
+        run.addBatch();
+
+        for (String t : List.of("predict", "update", "all")) {
+            ObjectNode tn = (ObjectNode) tasks.get(t);
+            for (String m : List.of("releaseJitterNs", "taskLatencyNs", "responseTimeNs", "cpuNs")) {
+                tn.get(m).fields().forEachRemaining(e -> addMetric(metric, key, t, m, e.getKey(), e.getValue().isNull() ? null : e.getValue().asDouble()));
+            }
+            for (String m : List.of("missCount", "late", "skipped", "terminated")) {
+                addMetric(metric, key, t, m, "value", tn.get(m).asDouble());
+            }
+        }
+        addMetric(metric, key, "run", "missCount", "value", (double) missCount);
+        s.get("dispatcherLatenessNs").fields().forEachRemaining(e -> addMetric(metric, key, "dispatcher", "latenessNs", e.getKey(), e.getValue().asDouble()));
+        addMetric(metric, key, "run", "deviationXY", "mean", deviation);
+        addMetric(metric, key, "run", "deviationX", "mean", deviation * 0.6);
+        addMetric(metric, key, "run", "deviationY", "mean", deviation * 0.6);
+        addMetric(metric, key, "run", "deviationAngle", "mean", 0.02);
+
+        for (String t : List.of("predict", "update", "all")) {
+            Job[] jobs = t.equals("predict") ? predict : t.equals("update") ? update : all;
+            addHistogram(hist, key, t, "taskLatencyNs", jobs, true);
+            addHistogram(hist, key, t, "releaseJitterNs", jobs, false);
+        }
+
+        // Columns as the runner's ingest writes them (the outcome column is text there; a number here).
+        List<String> latencyColumns = List.of("index", "releaseS", "taskLatencyNs", "responseTimeNs", "outcome");
+        addSeries(series, key, "taskLatency.predict", latencyColumns, predict.length,
+                i -> new double[] {i, i * 0.05, predict[i].latencyNs, predict[i].latencyNs + predict[i].jitterNs, 0});
+        addSeries(series, key, "taskLatency.update", latencyColumns, update.length,
+                i -> new double[] {i, i / 3.6, update[i].latencyNs, update[i].latencyNs + update[i].jitterNs, 0});
+        double phase = rng.nextDouble();
+        addSeries(series, key, "deviation", List.of("time", "dx", "dy", "dxy", "dtheta"), predictJobs, i -> {
+            double d = deviation * (1 + 0.8 * Math.sin(i * 0.02 + phase * 6));
+            return new double[] {i * 0.05, d * 0.7, d * 0.7, d, 0.01};
+        });
+        addSeries(series, key, "trajectory", List.of("time", "x", "y", "theta", "realX", "realY", "realTheta"), predictJobs, i -> {
+            double a = 2 * Math.PI * i / predictJobs;
+            double rx = 1.5 + 0.9 * Math.sin(a);
+            double ry = 1.0 + 0.6 * Math.sin(2 * a);
+            double e = deviation * Math.sin(a * 7 + phase);
+            return new double[] {i * 0.05, rx + e, ry - e, a, rx, ry, a};
+        });
+    }
+
+    private record Job(double latencyNs, double jitterNs) {
+    }
+
+    private static Job[] jobs(SplittableRandom rng, int n, double costMs, double speed, double periodMs) {
+        Job[] out = new Job[n];
+        for (int i = 0; i < n; i++) {
+            double spike = rng.nextDouble() < 0.01 * speed ? rng.nextDouble() * 8 * speed : 0;
+            double latency = Math.max(0.01, costMs * (1 + 0.1 * gauss(rng)) + spike) * 1e6;
+            double jitter = (0.05 + 0.04 * Math.abs(gauss(rng)) * speed + (rng.nextDouble() < 0.02 ? rng.nextDouble() * speed : 0)) * 1e6;
+            out[i] = new Job(Math.min(latency, periodMs * 2e6), jitter);
+        }
+        return out;
+    }
+
+    private static double gauss(SplittableRandom rng) {
+        double s = 0;
+        for (int i = 0; i < 12; i++) {
+            s += rng.nextDouble();
+        }
+        return s - 6;
+    }
+
+    private static Job[] concat(Job[] a, Job[] b) {
+        Job[] out = Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, out, a.length, b.length);
+        return out;
+    }
+
+    private static void task(ObjectNode t, Job[] jobs, int missed) {
+        t.put("released", jobs.length + missed).put("completed", jobs.length).put("done", jobs.length).put("late", 0)
+                .put("skipped", missed).put("terminated", 0).put("missCount", missed);
+        double[] lat = Arrays.stream(jobs).mapToDouble(Job::latencyNs).toArray();
+        double[] jit = Arrays.stream(jobs).mapToDouble(Job::jitterNs).toArray();
+        stats(t.putObject("releaseJitterNs"), jit);
+        stats(t.putObject("taskLatencyNs"), lat);
+        double[] resp = new double[lat.length];
+        for (int i = 0; i < resp.length; i++) {
+            resp[i] = lat[i] + jit[i];
+        }
+        stats(t.putObject("responseTimeNs"), resp);
+        stats(t.putObject("cpuNs"), Arrays.stream(lat).map(v -> v * 0.97).toArray());
+    }
+
+    /** STATS of docs/FORMATS.md 4: nearest-rank percentiles. */
+    private static void stats(ObjectNode o, double[] xs) {
+        double[] s = xs.clone();
+        Arrays.sort(s);
+        int n = s.length;
+        o.put("count", n).put("mean", Stats.mean(s)).put("stdev", n > 1 ? Stats.stdev(s) : 0.0).put("min", (long) s[0]);
+        for (String[] q : new String[][] {{"p50", "0.5"}, {"p90", "0.9"}, {"p99", "0.99"}, {"p999", "0.999"}}) {
+            o.put(q[0], (long) s[Math.max(0, (int) Math.ceil(Double.parseDouble(q[1]) * n) - 1)]);
+        }
+        o.put("max", (long) s[n - 1]);
+    }
+
+    private static void addMetric(PreparedStatement ps, String key, String task, String metric, String stat, Double value) {
+        try {
+            ps.setString(1, key);
+            ps.setString(2, task);
+            ps.setString(3, metric);
+            ps.setString(4, stat);
+            if (value == null) {
+                ps.setNull(5, java.sql.Types.REAL);
+            } else {
+                ps.setDouble(5, value);
+            }
+            ps.addBatch();
+        } catch (SQLException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    /** Base64 of HdrHistogram's compressed encoding, values in nanoseconds (3 significant digits). */
+    static String encode(Histogram h) {
+        ByteBuffer buf = ByteBuffer.allocate(h.getNeededByteBufferCapacity());
+        int len = h.encodeIntoCompressedByteBuffer(buf);
+        return Base64.getEncoder().encodeToString(Arrays.copyOf(buf.array(), len));
+    }
+
+    private static void addHistogram(PreparedStatement ps, String key, String task, String metric, Job[] jobs, boolean latency)
+            throws SQLException {
+        Histogram h = new Histogram(3);
+        for (Job j : jobs) {
+            h.recordValue((long) (latency ? j.latencyNs : j.jitterNs));
+        }
+        ps.setString(1, key);
+        ps.setString(2, task);
+        ps.setString(3, metric);
+        ps.setString(4, encode(h));
+        ps.addBatch();
+    }
+
+    private static void addSeries(PreparedStatement ps, String key, String name, List<String> columns, int n,
+                                  java.util.function.IntFunction<double[]> row) throws SQLException {
+        ObjectNode o = JSON.createObjectNode();
+        ArrayNode cols = o.putArray("columns");
+        columns.forEach(cols::add);
+        ArrayNode rows = o.putArray("rows");
+        for (int i = 0; i < n; i++) {
+            ArrayNode r = rows.addArray();
+            for (double v : row.apply(i)) {
+                r.add(v);
+            }
+        }
+        ps.setString(1, key);
+        ps.setString(2, name);
+        ps.setString(3, o.toString());
+        ps.addBatch();
+    }
+
+    /**
+     * Writes a benchmark database: {@code FixtureDb OUT.db RUNS}; the runs are spread over 5
+     * runtimes, 2 policies, 4 particle counts and as many repetitions as needed, 90 s each.
+     */
+    public static void main(String[] args) throws Exception {
+        if (args.length != 2) {
+            System.err.println("usage: FixtureDb OUT.db RUNS");
+            System.exit(2);
+        }
+        FixtureDb f = new FixtureDb();
+        f.configs = new ArrayList<>(List.of(
+                new Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new Config("temurin-17", "g1", "17.0.15+6", 1.3, "ok"),
+                new Config("temurin-21", "parallel", "21.0.5+11", 1.2, "ok"),
+                new Config("temurin-25", "zgc", "25+36", 1.15, "ok"),
+                new Config("temurin-25", "shenandoah", "25+36", 1.2, "ok")));
+        f.particles = List.of(100, 400, 1600, 3200);
+        f.durationS = 90;
+        int perRep = f.configs.size() * f.policies.size() * f.particles.size() * f.datasets.size();
+        f.repetitions = Math.max(1, (int) Math.ceil(Integer.parseInt(args[1]) / (double) perRep));
+        long t0 = System.nanoTime();
+        int runs = f.write(Path.of(args[0]));
+        System.err.printf(Locale.ROOT, "FixtureDb: %d runs written to %s in %.1f s%n", runs, args[0], (System.nanoTime() - t0) / 1e9);
+    }
+}

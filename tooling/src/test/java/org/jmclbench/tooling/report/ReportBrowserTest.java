@@ -1,0 +1,231 @@
+package org.jmclbench.tooling.report;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.io.File;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.logging.Level;
+import java.util.stream.Collectors;
+
+import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.openqa.selenium.By;
+import org.openqa.selenium.JavascriptExecutor;
+import org.openqa.selenium.NoAlertPresentException;
+import org.openqa.selenium.OutputType;
+import org.openqa.selenium.TakesScreenshot;
+import org.openqa.selenium.WebDriver;
+import org.openqa.selenium.WebElement;
+import org.openqa.selenium.chrome.ChromeDriver;
+import org.openqa.selenium.chrome.ChromeDriverService;
+import org.openqa.selenium.chrome.ChromeOptions;
+import org.openqa.selenium.logging.LogEntry;
+import org.openqa.selenium.logging.LogType;
+import org.openqa.selenium.logging.LoggingPreferences;
+import org.openqa.selenium.support.ui.Select;
+import org.openqa.selenium.support.ui.WebDriverWait;
+
+/**
+ * The report in headless Chromium from file://: no console error, no request, every chart drawn
+ * with its expected number of series (hook: canvas data-series, window.jmclbenchCharts), the
+ * choices drive tables and charts, hostile names stay text. Needs Debian's chromium and
+ * chromium-driver (scripts/install-deps.sh); without them the test fails, it does not skip.
+ * Keeps the report and a screenshot under target/report-test/.
+ */
+class ReportBrowserTest {
+
+    static final String CHROMIUM = System.getenv().getOrDefault("JMCLBENCH_CHROMIUM", "/usr/bin/chromium");
+    static final String CHROMEDRIVER = System.getenv().getOrDefault("JMCLBENCH_CHROMEDRIVER", "/usr/bin/chromedriver");
+    static final Path ARTIFACTS = Path.of("target", "report-test");
+    static final String XSS_CONFIG = ReportFixtures.XSS_RUNTIME + "/g1";
+
+    static WebDriver driver;
+    static ChromeDriverService service;
+    static Path profile;
+    /** Held so that the level sticks: Selenium's warning that it has no CDP binding for this Chromium is noise here. */
+    static final java.util.logging.Logger SELENIUM_LOG = java.util.logging.Logger.getLogger("org.openqa.selenium");
+
+    @BeforeAll
+    static void openReport() throws Exception {
+        if (!Files.isExecutable(Path.of(CHROMIUM)) || !Files.isExecutable(Path.of(CHROMEDRIVER))) {
+            fail("headless Chromium is needed for the report's browser test: " + CHROMIUM + " and " + CHROMEDRIVER
+                    + " must exist (Debian packages chromium and chromium-driver; run scripts/install-deps.sh)");
+        }
+        SELENIUM_LOG.setLevel(Level.SEVERE);
+        Files.createDirectories(ARTIFACTS);
+        Path db = ReportFixtures.write(ReportFixtures.mixed(), ARTIFACTS, "results.db");
+        Path out = ARTIFACTS.resolve("report");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", db.toString(), "--out", out.toString()));
+
+        profile = Files.createTempDirectory("jmclbench-chromium-");
+        ChromeOptions options = new ChromeOptions();
+        options.setBinary(CHROMIUM);
+        options.addArguments("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--no-first-run",
+                "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                "--user-data-dir=" + profile.toAbsolutePath(), "--window-size=1400,3300");
+        LoggingPreferences logs = new LoggingPreferences();
+        logs.enable(LogType.BROWSER, Level.ALL);
+        options.setCapability(ChromeOptions.LOGGING_PREFS, logs);
+        service = new ChromeDriverService.Builder().usingDriverExecutable(new File(CHROMEDRIVER)).usingAnyFreePort()
+                .withLogFile(ARTIFACTS.resolve("chromedriver.log").toFile()).build();
+        driver = new ChromeDriver(service, options);
+        driver.manage().timeouts().pageLoadTimeout(Duration.ofSeconds(120)).scriptTimeout(Duration.ofSeconds(60));
+        driver.get(out.resolve("index.html").toAbsolutePath().toUri().toString());
+        waitForRender(0);
+    }
+
+    @AfterAll
+    static void close() throws Exception {
+        if (driver != null) {
+            driver.quit();
+        }
+        if (service != null) {
+            service.stop();
+        }
+        if (profile != null) {
+            try (var files = Files.walk(profile)) {
+                files.sorted(java.util.Comparator.reverseOrder()).forEach(f -> f.toFile().delete());
+            }
+        }
+    }
+
+    static JavascriptExecutor js() {
+        return (JavascriptExecutor) driver;
+    }
+
+    static int renderCount() {
+        String c = driver.findElement(By.tagName("body")).getAttribute("data-render-count");
+        return c == null ? 0 : Integer.parseInt(c);
+    }
+
+    static void waitForRender(int before) {
+        new WebDriverWait(driver, Duration.ofSeconds(60)).until(d -> renderCount() > before);
+    }
+
+    static Map<String, Integer> seriesPerChart() {
+        Map<String, Integer> out = new LinkedHashMap<>();
+        for (WebElement c : driver.findElements(By.cssSelector("canvas[id^=chart-]"))) {
+            out.put(c.getAttribute("id").substring("chart-".length()), Integer.parseInt(c.getAttribute("data-series")));
+        }
+        return out;
+    }
+
+    static Map<String, Integer> expected(int configs, int repetitions) {
+        Map<String, Integer> m = new LinkedHashMap<>();
+        m.put("misses", configs);
+        m.put("deviation", configs);
+        m.put("latency-jitter", 2 * configs);       // task latency and release jitter per runtime
+        m.put("latency-index", 2 * configs);        // predict and update per runtime
+        m.put("deviation-time", configs * repetitions);
+        m.put("trajectory", configs + 2);           // the real trajectory, one estimate per runtime, the beacons
+        m.put("spectrum", configs);
+        m.put("jitter-cdf", configs);
+        return m;
+    }
+
+    static List<String> tableConfigs() {
+        return driver.findElements(By.cssSelector("#results-table tbody tr")).stream()
+                .map(r -> r.getAttribute("data-config")).collect(Collectors.toList());
+    }
+
+    static String cell(String config, String key) {
+        for (WebElement r : driver.findElements(By.cssSelector("#results-table tbody tr"))) {
+            if (config.equals(r.getAttribute("data-config"))) {
+                return r.findElement(By.cssSelector("td[data-key=" + key + "]")).getText();
+            }
+        }
+        throw new AssertionError("no row for " + config);
+    }
+
+    @Test
+    void loadsWithoutErrorOrRequestAndDrawsEveryChart() throws Exception {
+        List<LogEntry> severe = driver.manage().logs().get(LogType.BROWSER).getAll().stream()
+                .filter(e -> e.getLevel().intValue() >= Level.WARNING.intValue()).toList();
+        assertTrue(severe.isEmpty(), "console errors: " + severe);
+        Number requests = (Number) js().executeScript("return performance.getEntriesByType('resource').length");
+        assertEquals(0, requests.intValue(), "the page fetched something");
+        Number chartJs = (Number) js().executeScript("return Object.keys(window.jmclbenchCharts).length");
+        assertEquals(8, chartJs.intValue());
+        // Four runtimes completed runs (the unsupported and the crashed one draw nothing), three repetitions each.
+        assertEquals(expected(4, 3), seriesPerChart());
+        Number datasets = (Number) js().executeScript("return window.jmclbenchCharts['spectrum'].data.datasets.length");
+        assertEquals(4, datasets.intValue(), "the hook agrees with Chart.js");
+        assertEquals(6, tableConfigs().size(), "every runtime has a row, failed ones too");
+        assertTrue(driver.findElement(By.id("headline-best")).getText().startsWith("Fewest deadline misses at match-short, skip, 400 particles"));
+        assertTrue(driver.findElement(By.id("headline-ratio")).getText().contains("Java vs C"));
+        assertEquals("not supported", cell("temurin-11/shenandoah", "unsupported"));
+        assertEquals("3", cell("crashy", "failures"));
+        // The best (lowest) mean latency is native's and it is marked.
+        WebElement best = driver.findElement(By.cssSelector("#results-table tr[data-config=native] td[data-key=latMean]"));
+        assertTrue(best.getAttribute("class").contains("best"));
+
+        byte[] png = ((TakesScreenshot) driver).getScreenshotAs(OutputType.BYTES);
+        Files.write(ARTIFACTS.resolve("report.png"), png);
+    }
+
+    @Test
+    void hostileNamesAreTextAndNoAlertRuns() {
+        assertThrows(NoAlertPresentException.class, () -> driver.switchTo().alert());
+        assertTrue(tableConfigs().contains(XSS_CONFIG));
+        assertEquals(XSS_CONFIG, cell(XSS_CONFIG, "config"));
+        assertTrue(driver.findElement(By.id("environment")).getText().contains("<img src=x onerror=alert(3)>"),
+                "the version string shown as text beside the results");
+        assertTrue(driver.findElement(By.id("environment")).getText().contains("thread priorities not applied by the OS"));
+        Number images = (Number) js().executeScript("return document.images.length");
+        assertEquals(0, images.intValue(), "an <img> from a string was parsed as HTML");
+        String stderr = (String) js().executeScript(
+                "return Array.from(document.querySelectorAll('pre.stderr')).map(function (p) { return p.textContent; }).join('\\n')");
+        assertTrue(stderr.contains("<img src=x onerror=alert(2)>"), stderr);
+        Number scripts = (Number) js().executeScript("return document.scripts.length");
+        assertEquals(3, scripts.intValue());
+    }
+
+    @Test
+    void choicesDriveTheTablesAndCharts() {
+        String latencyAt400 = cell("native", "latMean");
+
+        int before = renderCount();
+        new Select(driver.findElement(By.id("sel-particles"))).selectByValue("1600");
+        waitForRender(before);
+        assertNotEquals(latencyAt400, cell("native", "latMean"), "the table follows the particle count");
+        String title = (String) js().executeScript("return window.jmclbenchCharts['latency-index'].options.plugins.title.text");
+        assertTrue(title.contains("1600 particles"), title);
+
+        before = renderCount();
+        new Select(driver.findElement(By.id("sel-policy"))).selectByValue("terminate");
+        waitForRender(before);
+        assertTrue(driver.findElement(By.id("headline-best")).getText().contains("terminate, 1600 particles"));
+
+        before = renderCount();
+        driver.findElement(By.cssSelector("#sel-configs input[value='temurin-17/g1']")).click();
+        waitForRender(before);
+        assertFalse(tableConfigs().contains("temurin-17/g1"));
+        assertEquals(expected(3, 3), seriesPerChart());
+
+        // Sorting: ascending mean latency puts native first, descending puts it last among those with values.
+        before = renderCount();
+        driver.findElement(By.cssSelector("#results-table th[data-key=latMean]")).click();
+        assertEquals("native", tableConfigs().get(0));
+        driver.findElement(By.cssSelector("#results-table th[data-key=latMean]")).click();
+        assertEquals(XSS_CONFIG, tableConfigs().get(0), "the slowest runtime first when descending");
+
+        // Back to the first view for the other tests (they share the page).
+        driver.findElement(By.cssSelector("#sel-configs input[value='temurin-17/g1']")).click();
+        new Select(driver.findElement(By.id("sel-policy"))).selectByValue("skip");
+        new Select(driver.findElement(By.id("sel-particles"))).selectByValue("400");
+        driver.findElement(By.cssSelector("#results-table th[data-key=config]")).click();
+        assertEquals(expected(4, 3), seriesPerChart());
+    }
+}

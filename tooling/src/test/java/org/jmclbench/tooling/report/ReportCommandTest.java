@@ -1,0 +1,234 @@
+package org.jmclbench.tooling.report;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+/** The report folder built from a fixture store: self-contained page, escaped strings, exports, aggregates. */
+class ReportCommandTest {
+
+    @TempDir
+    static Path dir;
+    static Path db;
+    static Path out;
+    static String html;
+
+    @BeforeAll
+    static void build() throws Exception {
+        db = ReportFixtures.write(ReportFixtures.mixed(), dir, "results.db");
+        out = dir.resolve("report");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", db.toString(), "--out", out.toString()));
+        html = Files.readString(out.resolve("index.html"));
+    }
+
+    @Test
+    void pageIsSelfContained() {
+        // No element loads anything: no src/href to a URL, no stylesheet link, no import.
+        Matcher m = Pattern.compile("(?i)<(script|link|img|iframe)[^>]*(src|href)\\s*=").matcher(html);
+        assertFalse(m.find(), "an element that loads a resource: " + (m.find(0) ? m.group() : ""));
+        assertTrue(html.contains("default-src 'none'"), "a content security policy that forbids every request");
+        assertTrue(html.contains("Chart.js v4"), "Chart.js inlined from the WebJar");
+        assertFalse(html.contains("sourceMappingURL"), "no source map reference");
+    }
+
+    @Test
+    void hostileStringsNeverReachTheHtmlUnescaped() {
+        assertFalse(html.contains(ReportFixtures.XSS_RUNTIME), "the runtime name appears raw");
+        assertFalse(html.contains("<img src=x"), "a version string appears raw");
+        assertFalse(html.contains("<b>bold</b>"), "a failure message appears raw");
+        // There are exactly three script elements: the data, Chart.js and the page's own.
+        assertEquals(3, Pattern.compile("<script").matcher(html).results().count());
+    }
+
+    @Test
+    void inlinedDataHasTheAggregatesOfTheStore() throws Exception {
+        Matcher m = Pattern.compile("(?s)<script type=\"application/json\" id=\"jmclbench-data\">(.*?)</script>").matcher(html);
+        assertTrue(m.find());
+        JsonNode data = new ObjectMapper().readTree(m.group(1));
+        assertEquals(6 * 2 * 3 * 3, data.get("runCount").asInt());
+        assertEquals("skip", data.at("/defaults/policy").asText());
+        for (JsonNode cfg : data.get("configs")) {
+            if (cfg.get("id").asText().equals("native")) {
+                assertEquals("[\"run\",\"-n\",\"1\",\"--seed\",\"1\"]", cfg.get("flags").toString(), "arguments keep their repeats");
+                assertTrue(cfg.get("nativeBaseline").asBoolean());
+            }
+        }
+        assertEquals(400, data.at("/defaults/particles").asInt());
+        JsonNode xss = null;
+        JsonNode unsupported = null;
+        for (JsonNode c : data.get("cells")) {
+            if (c.get("policy").asText().equals("skip") && c.get("particles").asInt() == 400) {
+                if (c.get("config").asText().equals(ReportFixtures.XSS_RUNTIME + "/g1")) {
+                    xss = c;
+                }
+                if (c.get("config").asText().equals("temurin-11/shenandoah")) {
+                    unsupported = c;
+                }
+            }
+        }
+        assertNotNull(xss, "the hostile name survives as data");
+        assertEquals(3, xss.at("/metrics/MISS_COUNT/n").asInt());
+        assertFalse(xss.get("latencySpectrum").isEmpty());
+        assertEquals(3, xss.get("deviation").size());
+        assertNotNull(unsupported);
+        assertEquals(3, unsupported.get("unsupported").asInt());
+        assertTrue(unsupported.at("/metrics/MISS_COUNT/mean").isNull());
+
+        // The mean missCount of a cell is the mean of the runs' summary.json missCount.
+        try (ResultsStore store = ResultsStore.open(db, "--db")) {
+            List<ResultsStore.Run> runs = store.runs().stream()
+                    .filter(r -> r.config().equals("temurin-17/g1") && r.policy.equals("terminate") && r.particles == 1600).toList();
+            assertEquals(3, runs.size());
+            ObjectMapper json = new ObjectMapper();
+            double sum = 0;
+            for (ResultsStore.Run r : runs) {
+                sum += json.readTree(r.summaryJson).get("missCount").asDouble();
+            }
+            for (JsonNode c : data.get("cells")) {
+                if (c.get("config").asText().equals("temurin-17/g1") && c.get("policy").asText().equals("terminate")
+                        && c.get("particles").asInt() == 1600) {
+                    assertEquals(sum / 3, c.at("/metrics/MISS_COUNT/mean").asDouble(), 1e-9);
+                }
+            }
+        }
+    }
+
+    @Test
+    void everyChartIsExportedAsSvgAndPng() throws Exception {
+        Path charts = out.resolve("charts");
+        for (String policy : List.of("skip", "terminate")) {
+            for (String kind : List.of("misses", "deviation", "latency-jitter")) {
+                assertChart(charts, "match-short-" + policy + "-" + kind);
+            }
+            for (int p : List.of(100, 400, 1600)) {
+                for (String kind : List.of("latency-index", "deviation-time", "trajectory", "spectrum", "jitter-cdf")) {
+                    assertChart(charts, "match-short-" + policy + "-" + p + "-" + kind);
+                }
+            }
+        }
+        String svg = Files.readString(charts.resolve("match-short-skip-misses.svg"));
+        assertTrue(svg.contains("Deadline misses vs particles"), "title in the SVG");
+        assertTrue(svg.contains("&lt;script&gt;alert(1)&lt;/script&gt;/g1"), "legend escaped in the SVG");
+        assertFalse(svg.contains(ReportFixtures.XSS_RUNTIME));
+    }
+
+    private static void assertChart(Path charts, String stem) throws Exception {
+        Path svg = charts.resolve(stem + ".svg");
+        Path png = charts.resolve(stem + ".png");
+        assertTrue(Files.isRegularFile(svg), "missing " + svg);
+        assertTrue(Files.isRegularFile(png), "missing " + png);
+        assertTrue(Files.readString(svg).contains("<svg xmlns="), stem);
+        byte[] head = Files.readAllBytes(png);
+        assertEquals((byte) 0x89, head[0]);
+        assertEquals('P', head[1]);
+    }
+
+    @Test
+    void placeholdersAreFilledOnceSoInsertedTextIsNeverRescanned() {
+        assertEquals("a/*Y*/b1/*Z*/", ReportPage.fill("a/*X*/b/*Y*//*Z*/", java.util.Map.of("X", "/*Y*/", "Y", "1")));
+        assertEquals("&lt;script&gt;&amp;&quot;&#39;", ReportPage.escapeHtml("<script>&\"'"));
+    }
+
+    @Test
+    void runsOfTwoMachinesAreNeverPooled() throws Exception {
+        Path merged = Files.copy(db, dir.resolve("merged.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + merged); var st = c.createStatement()) {
+            st.execute("INSERT INTO machines VALUES ('m-2', 'other-host', '6.8.0', 'AMD EPYC', 4, '[]')");
+            st.execute("UPDATE runs SET machine_id = 'm-2' WHERE repetition = 3");
+        }
+        Path page = dir.resolve("merged-report");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", merged.toString(), "--out", page.toString(), "--no-export"));
+        String h = Files.readString(page.resolve("index.html"));
+        assertTrue(h.contains("\"config\":\"native @bench-host\"") && h.contains("\"config\":\"native @other-host\""));
+        assertFalse(h.contains("\"config\":\"native\""), "no pooled native");
+    }
+
+    @Test
+    void summaryJsonStandsInForMissingMetricRows() throws Exception {
+        Path bare = Files.copy(db, dir.resolve("bare.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + bare); var st = c.createStatement()) {
+            st.execute("DELETE FROM metrics");
+        }
+        try (ResultsStore full = ResultsStore.open(db, "--db"); ResultsStore summaryOnly = ResultsStore.open(bare, "--db")) {
+            List<ResultsStore.Run> a = full.runs();
+            List<ResultsStore.Run> b = summaryOnly.runs();
+            assertEquals(a.size(), b.size());
+            int compared = 0;
+            for (int i = 0; i < a.size(); i++) {
+                assertTrue(b.get(i).metrics.isEmpty());
+                for (Metric m : Metric.values()) {
+                    Double x = m.of(a.get(i));
+                    Double y = m.of(b.get(i));
+                    assertEquals(x, y, m + " of " + a.get(i).runKey);
+                    compared += x == null ? 0 : 1;
+                }
+            }
+            assertTrue(compared > 500, "values compared: " + compared);
+        }
+    }
+
+    @Test
+    void defaultFolderIsBesideTheDatabase() throws Exception {
+        Path other = Files.createDirectories(dir.resolve("elsewhere"));
+        Path copy = Files.copy(db, other.resolve("results.db"));
+        assertEquals(0, JmclbenchCli.execute("report", "--db", copy.toString(), "--no-export"));
+        assertTrue(Files.isRegularFile(other.resolve("report/index.html")));
+        assertFalse(Files.exists(other.resolve("report/charts")), "--no-export writes the page alone");
+    }
+
+    @Test
+    void missingDatabaseIsOneLineAndExitTwo() {
+        String err = stderrOf(() -> assertEquals(2, JmclbenchCli.execute("report", "--db", dir.resolve("nope.db").toString(),
+                "--out", dir.resolve("r2").toString())));
+        assertEquals(1, err.strip().lines().count(), err);
+        assertTrue(err.contains("--db") && err.contains("nope.db"), err);
+        assertFalse(Files.exists(dir.resolve("r2")), "nothing written for bad input");
+    }
+
+    @Test
+    void notADatabaseIsBadInput() throws Exception {
+        Path junk = Files.writeString(dir.resolve("junk.db"), "not sqlite");
+        String err = stderrOf(() -> assertEquals(2, JmclbenchCli.execute("report", "--db", junk.toString(),
+                "--out", dir.resolve("r3").toString())));
+        assertEquals(1, err.strip().lines().count(), err);
+    }
+
+    @Test
+    void emptyStoreGivesAPageThatSaysSo() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.configs = List.of();
+        Path empty = ReportFixtures.write(f, dir, "empty.db");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", empty.toString(), "--out", dir.resolve("r4").toString()));
+        assertTrue(Files.readString(dir.resolve("r4/index.html")).contains("\"runCount\":0"));
+    }
+
+    static String stderrOf(Runnable r) {
+        PrintStream old = System.err;
+        ByteArrayOutputStream buf = new ByteArrayOutputStream();
+        System.setErr(new PrintStream(buf, true, StandardCharsets.UTF_8));
+        try {
+            r.run();
+        } finally {
+            System.setErr(old);
+        }
+        return buf.toString(StandardCharsets.UTF_8);
+    }
+}

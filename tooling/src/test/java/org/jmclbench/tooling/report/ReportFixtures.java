@@ -1,0 +1,39 @@
+package org.jmclbench.tooling.report;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+/** The fixture databases shared by the report's tests. */
+final class ReportFixtures {
+
+    /** A runtime name that would run script if the page ever put it into HTML unescaped. */
+    static final String XSS_RUNTIME = "<script>alert(1)</script>";
+
+    private ReportFixtures() {
+    }
+
+    /**
+     * Four runtimes with completed runs (native, two JVMs, one hostile name), one whose flag is
+     * not supported, one that crashed; skip and terminate; 100/400/1600 particles; 3 repetitions.
+     */
+    static FixtureDb mixed() {
+        FixtureDb f = new FixtureDb();
+        f.configs = new ArrayList<>(List.of(
+                new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("temurin-17", "g1", "17.0.15+6", 1.3, "ok"),
+                new FixtureDb.Config("temurin-25", "zgc", "25+36", 1.15, "ok"),
+                new FixtureDb.Config(XSS_RUNTIME, "g1", "<img src=x onerror=alert(3)>", 1.4, "ok"),
+                new FixtureDb.Config("temurin-11", "shenandoah", "11.0.25", 1.2, "unsupported"),
+                new FixtureDb.Config("crashy", "", "1.0", 1.2, "failed")));
+        f.repetitions = 3;
+        f.durationS = 12;
+        return f;
+    }
+
+    static Path write(FixtureDb f, Path dir, String name) throws Exception {
+        Path db = dir.resolve(name);
+        f.write(db);
+        return db;
+    }
+}

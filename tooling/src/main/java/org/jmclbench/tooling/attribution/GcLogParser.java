@@ -37,7 +37,7 @@ import java.util.regex.Pattern;
 public final class GcLogParser {
     private static final Pattern DECORATION = Pattern.compile("^\\[([^\\]]*)\\]");
     private static final Pattern UNIFIED_PAUSE = Pattern.compile(
-            "GC\\((\\d+)\\)\\s+(?:[YO]:\\s+)?(Pause [^0-9]*?(?:\\([^)]*\\)\\s*)*)(?:\\s+\\S+->\\S+)?\\s+(\\d+(?:\\.\\d+)?)ms\\s*$");
+            "GC\\((\\d+)\\)\\s+((?:[yYO]:\\s+)?Pause [^0-9]*?(?:\\([^)]*\\)\\s*)*)(?:\\s+\\S+->\\S+)?\\s+(\\d+(?:\\.\\d+)?)ms\\s*$");
     private static final Pattern USING = Pattern.compile("\\bUsing (.+?)\\s*$");
     private static final Pattern SAFEPOINT_13 = Pattern.compile("Safepoint \"([^\"]+)\".*?Total: (\\d+) ns");
     private static final Pattern SAFEPOINT_ENTER = Pattern.compile("Entering safepoint region: (.+?)\\s*$");
@@ -46,7 +46,7 @@ public final class GcLogParser {
     private static final Pattern JDK8_STAMPS = Pattern.compile(
             "^(?:(\\d{4}-\\d\\d-\\d\\dT\\d\\d:\\d\\d:\\d\\d\\.\\d{3}[+-]\\d{4}): )?(?:(\\d+\\.\\d+): )?(.*)$");
     private static final Pattern JDK8_PAUSE = Pattern.compile(
-            "^\\[(Full GC|GC)\\s*(\\([^)]*\\))?.*?,\\s+(\\d+\\.\\d+) secs\\](?:\\s*\\[Times:.*)?\\s*$");
+            "^\\[(Full GC|GC)\\s*(\\((?:[^()]|\\([^)]*\\))*\\))?.*?,\\s+(\\d+\\.\\d+) secs\\](?:\\s*\\[Times:.*)?\\s*$");
     private static final Pattern JDK8_G1_PAUSE = Pattern.compile(
             "^\\[GC (pause|remark|cleanup)\\s*(.*?),\\s+(\\d+\\.\\d+) secs\\]\\s*$");
     private static final DateTimeFormatter JDK8_DATE = new DateTimeFormatterBuilder()

@@ -1,12 +1,112 @@
 package org.jmclbench.workload;
 
-/** Entry point of the workload process: one test, configured by its command line. */
+import java.io.File;
+import java.io.IOException;
+import java.io.PrintStream;
+
+import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.data.DatasetReader;
+import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.workload.mcl.Localizer;
+import org.jmclbench.workload.mcl.Localizers;
+import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.workload.output.Environment;
+import org.jmclbench.workload.output.RunFolder;
+import org.jmclbench.workload.output.RunWriter;
+import org.jmclbench.workload.record.JobRecords;
+
+/**
+ * Entry point of the workload process: {@code run [options]} reads a dataset, runs one test
+ * (ideal or real-time), writes its run folder and exits 0 (success), 2 (bad usage or input)
+ * or 1 (a failure of the benchmark itself). A folder left behind by a failure is {@code .partial}.
+ */
 public final class WorkloadMain {
+    /** Exit codes of docs/FORMATS.md section 2. */
+    public static final int OK = 0;
+    public static final int FAILURE = 1;
+    public static final int BAD_INPUT = 2;
+
     private WorkloadMain() {
     }
 
     public static void main(String[] args) {
-        System.err.println("jmclbench: run: not built yet");
-        System.exit(1);
+        int code = run(args, System.out, System.err);
+        System.out.flush();
+        System.exit(code);
+    }
+
+    /** Runs the command line; returns the exit code (for tests: no System.exit). */
+    public static int run(String[] args, PrintStream out, PrintStream err) {
+        try {
+            if (args.length == 0 || !"run".equals(args[0])) {
+                if (args.length > 0 && ("-h".equals(args[0]) || "--help".equals(args[0]))) {
+                    out.println(RunOptionsParser.USAGE);
+                    return OK;
+                }
+                throw BadInputException.ofOption(args.length == 0 ? "command" : args[0],
+                        args.length == 0 ? "missing (expected: run [options])" : "unknown command (expected: run)");
+            }
+            RunOptions options = RunOptionsParser.parse(args);
+            if (options.help) {
+                out.println(RunOptionsParser.USAGE);
+                return OK;
+            }
+            return execute(options, err);
+        } catch (BadInputException e) {
+            err.println("jmclbench: " + e.getMessage());
+            return BAD_INPUT;
+        } catch (IOException e) {
+            err.println("jmclbench: I/O failure: " + e);
+            return FAILURE;
+        } catch (RuntimeException | OutOfMemoryError | StackOverflowError e) {
+            err.println("jmclbench: failure: " + e);
+            e.printStackTrace(err);
+            return FAILURE;
+        }
+    }
+
+    private static int execute(RunOptions options, PrintStream err) throws BadInputException, IOException {
+        Dataset dataset = load(options);
+        Timeline timeline = Timeline.of(dataset);
+        MclConfig config = options.mclConfig();
+        RunFolder folder = RunFolder.of(options);
+        folder.checkNotComplete();
+        Environment environment = Environment.capture();
+        JobRecords records = new JobRecords(timeline, options.covariance);
+        File partial = folder.begin();
+
+        if (options.warmupS > 0) {
+            IdealRun.warmup(dataset, timeline, newLocalizer(config, dataset), options.warmupS);
+        }
+        Localizer localizer = newLocalizer(config, dataset);
+        if (options.ideal) {
+            IdealRun.run(dataset, timeline, localizer, records);
+        } else {
+            // ---- Real-time engine hook (the engine helper's): replace these two lines with
+            // ---- RealTimeRun.run(options, dataset, timeline, localizer, records);
+            err.println("jmclbench: real-time engine not built yet");
+            return FAILURE;
+        }
+
+        new RunWriter(options, dataset, timeline, records, environment).writeAll(partial);
+        folder.commit();
+        return OK;
+    }
+
+    private static Localizer newLocalizer(MclConfig config, Dataset d) {
+        return Localizers.create(config, d.playground, d.startX, d.startY, d.startTheta);
+    }
+
+    /** The dataset the options name: -odo/-laser/-real, --dataset, else datasets/match-short under the home. */
+    static Dataset load(RunOptions o) throws BadInputException {
+        if (o.odo != null) {
+            return DatasetReader.readFiles(new File(o.odo), new File(o.laser), new File(o.real));
+        }
+        if (o.dataset != null) {
+            return DatasetReader.readFolder(new File(o.dataset));
+        }
+        String home = System.getProperty("jmclbench.home");
+        File base = home != null ? new File(home) : new File(".");
+        return DatasetReader.readFolder(new File(base, "datasets" + File.separator + "match-short"));
     }
 }

@@ -1,0 +1,137 @@
+package org.jmclbench.tooling.generator;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class GenerateCommandTest {
+    @TempDir
+    Path tmp;
+
+    private record Result(int code, String out, String err) {
+    }
+
+    private static Result generate(String... args) {
+        PrintStream oldOut = System.out;
+        PrintStream oldErr = System.err;
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        try {
+            System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
+            System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+            String[] full = new String[args.length + 1];
+            full[0] = "generate";
+            System.arraycopy(args, 0, full, 1, args.length);
+            int code = JmclbenchCli.execute(full);
+            return new Result(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+        } finally {
+            System.setOut(oldOut);
+            System.setErr(oldErr);
+        }
+    }
+
+    private static void assertBadUsage(Result r, String mentions) {
+        assertEquals(2, r.code(), r.err());
+        assertTrue(r.err().startsWith("jmclbench: "), r.err());
+        assertEquals(1, r.err().lines().count(), "one line: " + r.err());
+        assertTrue(r.err().contains(mentions), r.err());
+    }
+
+    @Test
+    void writesADatasetAndTheSameAgainForTheSameSeed() throws Exception {
+        Path a = tmp.resolve("a");
+        Path b = tmp.resolve("b");
+        assertEquals(0, generate("--scenario", "stay", "--seed", "3", "--duration", "2", "--out", a.toString()).code());
+        assertEquals(0, generate("--scenario", "stay", "--seed", "3", "--duration", "2", "--out", b.toString()).code());
+        for (String f : DatasetWriter.FILES) {
+            assertArrayEquals(Files.readAllBytes(a.resolve(f)), Files.readAllBytes(b.resolve(f)), f);
+        }
+        assertEquals(40, Files.readAllLines(a.resolve("odometry.txt")).size());
+        String props = Files.readString(a.resolve("dataset.properties"));
+        assertTrue(props.contains("\nseed=3\n") && props.contains("\nduration=2.0\n"), props);
+        // Nothing but the two datasets: no temporary folder left behind.
+        try (var entries = Files.list(tmp)) {
+            assertEquals(List.of("a", "b"), entries.map(p -> p.getFileName().toString()).sorted().toList());
+        }
+    }
+
+    @Test
+    void badOptionsAreOneLineAndExitCode2() {
+        String out = tmp.resolve("x").toString();
+        assertBadUsage(generate("--scenario", "nowhere", "--out", out), "--scenario");
+        assertBadUsage(generate("--scenario", "match", "--out", out, "--duration", "0.03"), "--duration");
+        assertBadUsage(generate("--scenario", "match", "--out", out, "--duration", "-1"), "--duration");
+        assertBadUsage(generate("--scenario", "match", "--out", out, "--duration", "NaN"), "--duration");
+        assertBadUsage(generate("--scenario", "match", "--out", out, "--duration", "abc"), "--duration");
+        assertBadUsage(generate("--scenario", "match", "--out", out, "--seed", "1.5"), "--seed");
+        assertBadUsage(generate("--scenario", "match"), "--out");
+        assertBadUsage(generate("--out", out), "--scenario");
+        assertBadUsage(generate("--scenario", "match", "--out", out, "--colour", "red"), "--colour");
+        assertFalse(Files.exists(tmp.resolve("x")), "nothing written after bad usage");
+    }
+
+    @Test
+    void helpExitsZero() {
+        Result r = generate("--help");
+        assertEquals(0, r.code());
+        assertTrue(r.out().contains("--scenario") && r.out().contains("figure8"), r.out());
+    }
+
+    @Test
+    void refusesToOverwriteWithoutForce() throws Exception {
+        Path dir = tmp.resolve("d");
+        assertEquals(0, generate("--scenario", "stay", "--duration", "1", "--out", dir.toString()).code());
+        byte[] before = Files.readAllBytes(dir.resolve("odometry.txt"));
+        assertBadUsage(generate("--scenario", "stay", "--seed", "2", "--duration", "1", "--out", dir.toString()), "--force");
+        assertArrayEquals(before, Files.readAllBytes(dir.resolve("odometry.txt")));
+        assertEquals(0, generate("--scenario", "stay", "--seed", "2", "--duration", "1", "--out", dir.toString(), "--force")
+                .code());
+        assertFalse(java.util.Arrays.equals(before, Files.readAllBytes(dir.resolve("odometry.txt"))));
+    }
+
+    @Test
+    void forceDoesNotDeleteAFolderThatIsNotADataset() throws Exception {
+        Path dir = tmp.resolve("home");
+        Files.createDirectories(dir);
+        Files.writeString(dir.resolve("thesis.tex"), "precious");
+        assertBadUsage(generate("--scenario", "stay", "--duration", "1", "--out", dir.toString(), "--force"), "--out");
+        assertEquals("precious", Files.readString(dir.resolve("thesis.tex")));
+        assertFalse(Files.exists(dir.resolve("odometry.txt")));
+    }
+
+    @Test
+    void unwritablePlaceIsOneLineAndExitCode2() throws Exception {
+        Path file = tmp.resolve("plain-file");
+        Files.writeString(file, "x");
+        assertBadUsage(generate("--scenario", "stay", "--duration", "1", "--out", file.resolve("sub").toString()), "--out");
+        assertBadUsage(generate("--scenario", "stay", "--duration", "1", "--out", file.toString()), "--out");
+    }
+
+    @Test
+    void writesIntoAnEmptyExistingFolder() throws Exception {
+        Path dir = tmp.resolve("empty");
+        Files.createDirectories(dir);
+        assertEquals(0, generate("--scenario", "figure8", "--duration", "1", "--out", dir.toString()).code());
+        assertTrue(Files.isRegularFile(dir.resolve("laser.txt")));
+    }
+
+    @Test
+    void noNoiseWritesPerfectSensors() throws Exception {
+        Path dir = tmp.resolve("clean");
+        assertEquals(0, generate("--scenario", "match", "--duration", "5", "--no-noise", "--out", dir.toString()).code());
+        String props = Files.readString(dir.resolve("dataset.properties"));
+        assertTrue(props.contains("\nlaser.noise=0.0\n") && props.contains("\nlaser.missProbability=0.0\n"), props);
+    }
+}

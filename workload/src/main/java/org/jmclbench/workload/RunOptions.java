@@ -1,0 +1,85 @@
+package org.jmclbench.workload;
+
+import java.util.Locale;
+
+import org.jmclbench.workload.mcl.MclConfig;
+
+/**
+ * Every option of one workload run (docs/FORMATS.md section 2), with the defaults filled in;
+ * produced by {@link RunOptionsParser}. Fields are plain data, set only by the parser (and tests).
+ */
+public final class RunOptions {
+    /** What happens to an event released while a job is in progress (SPEC section 4). */
+    public enum Policy {
+        SKIP("skip", "SkipTest"), TERMINATE("terminate", "TermTest"), QUEUE("queue", "QueueTest");
+
+        /** The option value and summary.json name. */
+        public final String label;
+        /** The thesis-style folder name of the run path. */
+        public final String folder;
+
+        Policy(String label, String folder) {
+            this.label = label;
+            this.folder = folder;
+        }
+    }
+
+    public int particles = 400;
+    /** The number of the test: the last folder of the run path. */
+    public int number = 1;
+    /** Runtime name in the output path; null = derived from the running JVM ({@link #defaultRuntimeName()}). */
+    public String runtimeName;
+    public String out = "results";
+    /** Thesis-format files (all three, or none). */
+    public String odo;
+    public String laser;
+    public String real;
+    /** A dataset folder; null = the default. Exclusive with odo/laser/real. */
+    public String dataset;
+    public Policy policy = Policy.SKIP;
+    public boolean ideal;
+    public boolean covariance;
+    public MclConfig.Memory memory = MclConfig.Memory.PREALLOCATED;
+    public MclConfig.Estimate estimate = MclConfig.Estimate.MEAN;
+    public MclConfig.Resample resample = MclConfig.Resample.SYSTEMATIC;
+    public MclConfig.Init init = MclConfig.Init.KNOWN;
+    public long seed = 1;
+    /** Multiplies every event time and deadline: 0.5 replays twice as fast. */
+    public double timeScale = 1.0;
+    /** Seconds of data replayed first and discarded. */
+    public double warmupS = 0.0;
+    /** Park until this many microseconds before each release, then spin. */
+    public long spinUs = 0;
+    public boolean gcLog;
+    public boolean force;
+    public boolean help;
+
+    /** The filter configuration these options select. */
+    public MclConfig mclConfig() {
+        return MclConfig.builder().particles(particles).estimate(estimate).resample(resample).init(init)
+                .memory(memory).seed(seed).covariance(covariance).build();
+    }
+
+    /** The runtime name used in the output path: the option, else derived from the JVM. */
+    public String effectiveRuntimeName() {
+        return runtimeName != null ? runtimeName : defaultRuntimeName();
+    }
+
+    /** The test folder: IdealTest for ideal runs, else the policy's (SkipTest, TermTest, QueueTest). */
+    public String testFolder() {
+        return ideal ? "IdealTest" : policy.folder;
+    }
+
+    /** {@code java.vendor}-{@code java.specification.version} in lower case, made a safe path component. */
+    public static String defaultRuntimeName() {
+        String raw = System.getProperty("java.vendor", "java") + "-" + System.getProperty("java.specification.version", "");
+        String s = raw.toLowerCase(Locale.ROOT).replaceAll("[^a-z0-9._+-]+", "-").replaceAll("-+", "-");
+        s = s.replaceAll("^[-.]+", "").replaceAll("-+$", "");
+        return s.isEmpty() ? "java" : s;
+    }
+
+    /** A lower-case label of an enum constant, as written in options and summary.json. */
+    public static String label(Enum<?> e) {
+        return e.name().toLowerCase(Locale.ROOT);
+    }
+}

@@ -1,0 +1,268 @@
+package org.jmclbench.workload;
+
+import java.util.Locale;
+
+import org.jmclbench.workload.mcl.MclConfig;
+
+/**
+ * Parses the workload's command line (docs/FORMATS.md section 2): the thesis's short flags
+ * ({@code -p -n -j -O -odo -laser -real -T -c -h}) and the long options, as
+ * {@code --name value} or {@code --name=value}. Any problem is a {@link BadInputException}
+ * naming the option.
+ */
+public final class RunOptionsParser {
+    /** The usage text, one line an option with its default. */
+    public static final String USAGE = String.join("\n",
+            "usage: jmclbench run [options]",
+            "  -p, --particles N        particle count (default 400)",
+            "  -n, --number N           number of the test, the last folder of the run path (default 1)",
+            "  -j, --runtime-name NAME  runtime name in the output path (default: <java.vendor>-<java version>)",
+            "  -O, --out DIR            output root (default results)",
+            "  -odo F -laser F -real F  thesis-format data files (all three together)",
+            "  --dataset DIR            dataset folder (default datasets/match-short under the project home)",
+            "  -T                       same as --policy terminate",
+            "  --policy skip|terminate|queue   event released while a job runs (default skip)",
+            "  --ideal                  one thread, no timing: the infinitely fast computer",
+            "  -c, --covariance         compute and write the covariance after each update",
+            "  --memory preallocated|allocating   memory style (default preallocated)",
+            "  --estimate mean|best     estimate (default mean)",
+            "  --resample systematic|multinomial  resampling (default systematic)",
+            "  --init known|uniform     initialisation (default known)",
+            "  --seed N                 random generator seed (default 1)",
+            "  --time-scale F           multiplies event times and deadlines; 0.5 = twice as fast (default 1.0)",
+            "  --warmup S               replay the first S seconds of data first and discard them (default 0)",
+            "  --spin-us N              park until N us before each release, then spin (default 0)",
+            "  --gc-log                 keep the runtime's GC log as gc.log in the run folder",
+            "  --force                  overwrite a complete run folder",
+            "  -h, --help               this help");
+
+    private RunOptionsParser() {
+    }
+
+    /** Parses args; a leading {@code run} is accepted and ignored. */
+    public static RunOptions parse(String[] args) throws BadInputException {
+        RunOptions o = new RunOptions();
+        int i = 0;
+        if (args.length > 0 && "run".equals(args[0])) {
+            i = 1;
+        }
+        boolean terminateFlag = false;
+        boolean policyGiven = false;
+        while (i < args.length) {
+            String arg = args[i++];
+            String name = arg;
+            String inline = null;
+            if (arg.startsWith("--")) {
+                int eq = arg.indexOf('=');
+                if (eq > 0) {
+                    name = arg.substring(0, eq);
+                    inline = arg.substring(eq + 1);
+                }
+            }
+            switch (name) {
+                case "-h":
+                case "--help":
+                    noValue(name, inline);
+                    o.help = true;
+                    break;
+                case "-p":
+                case "--particles":
+                    o.particles = intIn(name, value(name, inline, args, i), 1, 100_000_000);
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "-n":
+                case "--number":
+                    o.number = intIn(name, value(name, inline, args, i), 0, Integer.MAX_VALUE);
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "-j":
+                case "--runtime-name":
+                    o.runtimeName = pathComponent(name, value(name, inline, args, i));
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "-O":
+                case "--out":
+                    o.out = nonEmpty(name, value(name, inline, args, i));
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "-odo":
+                case "--odo":
+                    o.odo = nonEmpty(name, value(name, inline, args, i));
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "-laser":
+                case "--laser":
+                    o.laser = nonEmpty(name, value(name, inline, args, i));
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "-real":
+                case "--real":
+                    o.real = nonEmpty(name, value(name, inline, args, i));
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "--dataset":
+                    o.dataset = nonEmpty(name, value(name, inline, args, i));
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "-T":
+                    terminateFlag = true;
+                    break;
+                case "--policy":
+                    o.policy = choice(name, value(name, inline, args, i), RunOptions.Policy.class);
+                    policyGiven = true;
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "--ideal":
+                    noValue(name, inline);
+                    o.ideal = true;
+                    break;
+                case "-c":
+                case "--covariance":
+                    noValue(name, inline);
+                    o.covariance = true;
+                    break;
+                case "--memory":
+                    o.memory = choice(name, value(name, inline, args, i), MclConfig.Memory.class);
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "--estimate":
+                    o.estimate = choice(name, value(name, inline, args, i), MclConfig.Estimate.class);
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "--resample":
+                    o.resample = choice(name, value(name, inline, args, i), MclConfig.Resample.class);
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "--init":
+                    o.init = choice(name, value(name, inline, args, i), MclConfig.Init.class);
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "--seed":
+                    o.seed = longValue(name, value(name, inline, args, i));
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "--time-scale":
+                    o.timeScale = doubleIn(name, value(name, inline, args, i), false);
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "--warmup":
+                    o.warmupS = doubleIn(name, value(name, inline, args, i), true);
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "--spin-us":
+                    o.spinUs = intIn(name, value(name, inline, args, i), 0, 1_000_000);
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "--gc-log":
+                    noValue(name, inline);
+                    o.gcLog = true;
+                    break;
+                case "--force":
+                    noValue(name, inline);
+                    o.force = true;
+                    break;
+                default:
+                    if (arg.startsWith("-")) {
+                        throw BadInputException.ofOption(name, "unknown option (see --help)");
+                    }
+                    throw BadInputException.ofOption(arg, "unexpected argument (see --help)");
+            }
+        }
+        if (terminateFlag) {
+            if (policyGiven && o.policy != RunOptions.Policy.TERMINATE) {
+                throw BadInputException.ofOption("-T", "contradicts --policy " + o.policy.label);
+            }
+            o.policy = RunOptions.Policy.TERMINATE;
+        }
+        int files = (o.odo != null ? 1 : 0) + (o.laser != null ? 1 : 0) + (o.real != null ? 1 : 0);
+        if (files != 0 && files != 3) {
+            String missing = o.odo == null ? "-odo" : o.laser == null ? "-laser" : "-real";
+            throw BadInputException.ofOption(missing, "missing: -odo, -laser and -real go together");
+        }
+        if (files == 3 && o.dataset != null) {
+            throw BadInputException.ofOption("--dataset", "cannot be combined with -odo/-laser/-real");
+        }
+        return o;
+    }
+
+    private static String value(String name, String inline, String[] args, int i) throws BadInputException {
+        if (inline != null) {
+            return inline;
+        }
+        if (i >= args.length) {
+            throw BadInputException.ofOption(name, "needs a value");
+        }
+        return args[i];
+    }
+
+    private static void noValue(String name, String inline) throws BadInputException {
+        if (inline != null) {
+            throw BadInputException.ofOption(name, "takes no value");
+        }
+    }
+
+    private static String nonEmpty(String name, String v) throws BadInputException {
+        if (v.isEmpty()) {
+            throw BadInputException.ofOption(name, "must not be empty");
+        }
+        return v;
+    }
+
+    /** A name used as a folder of the run path: letters, digits and . _ + - only, so it cannot escape the output root. */
+    private static String pathComponent(String name, String v) throws BadInputException {
+        if (!v.matches("[A-Za-z0-9._+-]+") || v.equals(".") || v.equals("..")) {
+            throw BadInputException.ofOption(name, "'" + v + "' must be letters, digits, '.', '_', '+' or '-'");
+        }
+        return v;
+    }
+
+    private static int intIn(String name, String v, int min, int max) throws BadInputException {
+        long x;
+        try {
+            x = Long.parseLong(v.trim());
+        } catch (NumberFormatException e) {
+            throw BadInputException.ofOption(name, "not an integer: '" + v + "'");
+        }
+        if (x < min || x > max) {
+            throw BadInputException.ofOption(name, x + " is out of range [" + min + ", " + max + "]");
+        }
+        return (int) x;
+    }
+
+    private static long longValue(String name, String v) throws BadInputException {
+        try {
+            return Long.parseLong(v.trim());
+        } catch (NumberFormatException e) {
+            throw BadInputException.ofOption(name, "not an integer: '" + v + "'");
+        }
+    }
+
+    private static double doubleIn(String name, String v, boolean zeroAllowed) throws BadInputException {
+        double x;
+        try {
+            x = Double.parseDouble(v.trim());
+        } catch (NumberFormatException e) {
+            throw BadInputException.ofOption(name, "not a number: '" + v + "'");
+        }
+        if (Double.isNaN(x) || Double.isInfinite(x) || x < 0 || (!zeroAllowed && x == 0)) {
+            throw BadInputException.ofOption(name, "'" + v + "' must be a finite number "
+                    + (zeroAllowed ? ">= 0" : "> 0"));
+        }
+        return x;
+    }
+
+    private static <E extends Enum<E>> E choice(String name, String v, Class<E> type) throws BadInputException {
+        StringBuilder allowed = new StringBuilder();
+        for (E e : type.getEnumConstants()) {
+            String label = e.name().toLowerCase(Locale.ROOT);
+            if (label.equals(v)) {
+                return e;
+            }
+            if (allowed.length() > 0) {
+                allowed.append('|');
+            }
+            allowed.append(label);
+        }
+        throw BadInputException.ofOption(name, "'" + v + "' is not one of " + allowed);
+    }
+}

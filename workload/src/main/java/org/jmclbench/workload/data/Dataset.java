@@ -1,0 +1,99 @@
+package org.jmclbench.workload.data;
+
+import java.io.File;
+import java.util.Properties;
+
+import org.jmclbench.workload.mcl.Playground;
+
+/** One recorded run of the robot (docs/FORMATS.md section 1): odometry, laser and ground truth, by columns. */
+public final class Dataset {
+    /** Odometry event times (s) and increments in the robot frame (m, m, rad). */
+    public final double[] odoTime;
+    public final double[] odoDx;
+    public final double[] odoDy;
+    public final double[] odoDtheta;
+    /** Laser event times (s) and measured beacon angles relative to the heading (rad). */
+    public final double[] laserTime;
+    public final double[] laserAngle;
+    /** Ground-truth times (s) and poses. */
+    public final double[] realTime;
+    public final double[] realX;
+    public final double[] realY;
+    public final double[] realTheta;
+    /** The field and its beacons (the thesis's when the metadata does not say). */
+    public final Playground playground;
+    /** The known start pose: from the metadata, else the first ground-truth line. */
+    public final double startX;
+    public final double startY;
+    public final double startTheta;
+    /** The metadata (empty for bare thesis-format files); never modified after reading. */
+    public final Properties metadata;
+    /** A short name: the scenario, else the folder or odometry file name. */
+    public final String name;
+    /** The dataset folder, or null for bare files. */
+    public final File folder;
+    /** The three data files as read. */
+    public final File odometryFile;
+    public final File laserFile;
+    public final File realFile;
+
+    Dataset(double[][] odo, double[][] laser, double[][] real, Playground playground, double startX,
+            double startY, double startTheta, Properties metadata, String name, File folder, File odometryFile,
+            File laserFile, File realFile) {
+        this.odoTime = odo[0];
+        this.odoDx = odo[1];
+        this.odoDy = odo[2];
+        this.odoDtheta = odo[3];
+        this.laserTime = laser[0];
+        this.laserAngle = laser[1];
+        this.realTime = real[0];
+        this.realX = real[1];
+        this.realY = real[2];
+        this.realTheta = real[3];
+        this.playground = playground;
+        this.startX = startX;
+        this.startY = startY;
+        this.startTheta = startTheta;
+        this.metadata = metadata;
+        this.name = name;
+        this.folder = folder;
+        this.odometryFile = odometryFile;
+        this.laserFile = laserFile;
+        this.realFile = realFile;
+    }
+
+    /** The scenario named in the metadata, or null. */
+    public String scenario() {
+        return metadata.getProperty("scenario");
+    }
+
+    /** Number of odometry events. */
+    public int odometryCount() {
+        return odoTime.length;
+    }
+
+    /** Number of laser events. */
+    public int laserCount() {
+        return laserTime.length;
+    }
+
+    /** Number of ground-truth poses. */
+    public int realCount() {
+        return realTime.length;
+    }
+
+    /** Time of the last event or pose (s). */
+    public double duration() {
+        double d = 0;
+        if (odoTime.length > 0) {
+            d = Math.max(d, odoTime[odoTime.length - 1]);
+        }
+        if (laserTime.length > 0) {
+            d = Math.max(d, laserTime[laserTime.length - 1]);
+        }
+        if (realTime.length > 0) {
+            d = Math.max(d, realTime[realTime.length - 1]);
+        }
+        return d;
+    }
+}

@@ -1,0 +1,173 @@
+package org.jmclbench.workload.output;
+
+/**
+ * A tiny dependency-free JSON writer (the workload may not depend on a library): objects,
+ * arrays, strings with full escaping, numbers (NaN and infinities become null), two-space
+ * indentation. Misuse (a value where a name is due) is the caller's bug, not checked.
+ */
+public final class Json {
+    private final StringBuilder out = new StringBuilder();
+    /** Per open container: whether it has no element yet. */
+    private boolean[] empty = new boolean[16];
+    private int depth;
+    private boolean afterName;
+
+    /** Opens an object (as a value). */
+    public Json beginObject() {
+        beforeValue();
+        out.append('{');
+        push();
+        return this;
+    }
+
+    public Json endObject() {
+        pop('}');
+        return this;
+    }
+
+    /** Opens an array (as a value). */
+    public Json beginArray() {
+        beforeValue();
+        out.append('[');
+        push();
+        return this;
+    }
+
+    public Json endArray() {
+        pop(']');
+        return this;
+    }
+
+    /** The name of the next member of the current object. */
+    public Json name(String name) {
+        separator();
+        quote(name);
+        out.append(": ");
+        afterName = true;
+        return this;
+    }
+
+    public Json value(String s) {
+        beforeValue();
+        if (s == null) {
+            out.append("null");
+        } else {
+            quote(s);
+        }
+        return this;
+    }
+
+    public Json value(long v) {
+        beforeValue();
+        out.append(v);
+        return this;
+    }
+
+    public Json value(double v) {
+        beforeValue();
+        if (Double.isNaN(v) || Double.isInfinite(v)) {
+            out.append("null");
+        } else {
+            out.append(v);
+        }
+        return this;
+    }
+
+    public Json value(boolean v) {
+        beforeValue();
+        out.append(v);
+        return this;
+    }
+
+    /** A null value. */
+    public Json nullValue() {
+        beforeValue();
+        out.append("null");
+        return this;
+    }
+
+    /** The text written so far, with a final newline once the top level is closed. */
+    @Override
+    public String toString() {
+        return depth == 0 ? out.toString() + "\n" : out.toString();
+    }
+
+    private void beforeValue() {
+        if (afterName) {
+            afterName = false;
+            return;
+        }
+        separator();
+    }
+
+    private void separator() {
+        if (depth == 0) {
+            return;
+        }
+        if (!empty[depth - 1]) {
+            out.append(',');
+        }
+        empty[depth - 1] = false;
+        newline();
+    }
+
+    private void push() {
+        if (depth == empty.length) {
+            empty = java.util.Arrays.copyOf(empty, depth * 2);
+        }
+        empty[depth++] = true;
+    }
+
+    private void pop(char close) {
+        boolean wasEmpty = empty[--depth];
+        if (!wasEmpty) {
+            newline();
+        }
+        out.append(close);
+    }
+
+    private void newline() {
+        out.append('\n');
+        for (int i = 0; i < depth; i++) {
+            out.append("  ");
+        }
+    }
+
+    private void quote(String s) {
+        out.append('"');
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            switch (c) {
+                case '"':
+                    out.append("\\\"");
+                    break;
+                case '\\':
+                    out.append("\\\\");
+                    break;
+                case '\n':
+                    out.append("\\n");
+                    break;
+                case '\r':
+                    out.append("\\r");
+                    break;
+                case '\t':
+                    out.append("\\t");
+                    break;
+                case '\b':
+                    out.append("\\b");
+                    break;
+                case '\f':
+                    out.append("\\f");
+                    break;
+                default:
+                    // Control characters, and U+2028/2029 which break JavaScript embedding.
+                    if (c < 0x20 || c == '\u2028' || c == '\u2029') {
+                        out.append(String.format("\\u%04x", (int) c));
+                    } else {
+                        out.append(c);
+                    }
+            }
+        }
+        out.append('"');
+    }
+}

@@ -1,0 +1,307 @@
+package org.jmclbench.workload.output;
+
+import java.io.BufferedWriter;
+import java.io.File;
+import java.io.FileOutputStream;
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.util.Locale;
+
+import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.workload.record.Deviation;
+import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.workload.record.Stats;
+
+/**
+ * Writes a finished run's files into its (partial) folder, per docs/FORMATS.md section 3:
+ * the job files, position and deviation series, covariance, the thesis's data.txt and
+ * summary.json. Runs after the measured window; allocation and I/O are fine here.
+ */
+public final class RunWriter {
+    public static final String SCHEMA = "jmclbench-run/1";
+
+    private final RunOptions options;
+    private final Dataset dataset;
+    private final Timeline timeline;
+    private final JobRecords records;
+    private final Environment environment;
+
+    public RunWriter(RunOptions options, Dataset dataset, Timeline timeline, JobRecords records,
+            Environment environment) {
+        this.options = options;
+        this.dataset = dataset;
+        this.timeline = timeline;
+        this.records = records;
+        this.environment = environment;
+    }
+
+    /** Writes every file of the run into dir. */
+    public void writeAll(File dir) throws IOException {
+        Deviation dev = Deviation.of(dataset, timeline, records);
+        writeJobs(new File(dir, "odoData.txt"), Timeline.PREDICT);
+        writeJobs(new File(dir, "laserData.txt"), Timeline.UPDATE);
+        writePositions(new File(dir, "position.txt"), new File(dir, "positionDeviation.txt"), dev);
+        if (records.cov != null) {
+            writeCovariance(new File(dir, "covariance.txt"));
+        }
+        TaskSummary predict = TaskSummary.of(records, Timeline.PREDICT, options);
+        TaskSummary update = TaskSummary.of(records, Timeline.UPDATE, options);
+        TaskSummary all = TaskSummary.of(records, -1, options);
+        writeData(new File(dir, "data.txt"), dev, all);
+        writeText(new File(dir, "summary.json"), summary(dev, predict, update, all));
+    }
+
+    private void writeJobs(File f, int task) throws IOException {
+        StringBuilder b = new StringBuilder(64 * (timeline.count(task) + 1));
+        b.append("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns\n");
+        for (int k = 0; k < timeline.size(); k++) {
+            if (timeline.task(k) != task) {
+                continue;
+            }
+            b.append(timeline.taskIndex(k)).append(' ').append(records.releaseNs[k]).append(' ')
+                    .append(records.startNs[k]).append(' ').append(records.endNs[k]).append(' ')
+                    .append(records.deadlineNs[k]).append(' ').append(JobRecords.outcomeName(records.outcome[k]))
+                    .append(' ').append(records.cpuNs[k]).append('\n');
+        }
+        writeText(f, b.toString());
+    }
+
+    private void writePositions(File position, File deviation, Deviation dev) throws IOException {
+        StringBuilder p = new StringBuilder("# time x y theta\n");
+        StringBuilder d = new StringBuilder("# time dx dy dxy dtheta\n");
+        for (int i = 0; i < dev.size(); i++) {
+            row(p, dev.time[i], dev.x[i], dev.y[i], dev.theta[i]);
+            row(d, dev.time[i], dev.dx[i], dev.dy[i], dev.dxy[i], dev.dtheta[i]);
+        }
+        writeText(position, p.toString());
+        writeText(deviation, d.toString());
+    }
+
+    private void writeCovariance(File f) throws IOException {
+        StringBuilder b = new StringBuilder("# time cxx cxy cxt cyy cyt ctt\n");
+        double[] c = records.cov;
+        for (int k = 0; k < timeline.size(); k++) {
+            if (timeline.task(k) == Timeline.UPDATE && records.completed(k)) {
+                int o = 6 * k;
+                row(b, timeline.time(k), c[o], c[o + 1], c[o + 2], c[o + 3], c[o + 4], c[o + 5]);
+            }
+        }
+        writeText(f, b.toString());
+    }
+
+    private void writeData(File f, Deviation dev, TaskSummary all) throws IOException {
+        StringBuilder b = new StringBuilder();
+        b.append("deviationXY ").append(dev.meanXY()).append('\n');
+        b.append("deviationX ").append(dev.meanAbsX()).append('\n');
+        b.append("deviationY ").append(dev.meanAbsY()).append('\n');
+        b.append("deviationAngle ").append(dev.meanAbsTheta()).append('\n');
+        b.append("missCount ").append(all.missCount).append('\n');
+        b.append("averageReleaseJitter ").append(all.releaseJitter.mean / 1e6).append('\n');
+        b.append("averageTaskTime ").append(all.taskLatency.mean / 1e6).append('\n');
+        writeText(f, b.toString());
+    }
+
+    /** The summary.json text. */
+    String summary(Deviation dev, TaskSummary predict, TaskSummary update, TaskSummary all) {
+        Json j = new Json();
+        j.beginObject();
+        j.name("schema").value(SCHEMA);
+        j.name("status").value("complete");
+        j.name("parameters").beginObject();
+        j.name("runtimeName").value(options.effectiveRuntimeName());
+        j.name("particles").value(options.particles);
+        j.name("number").value(options.number);
+        j.name("policy").value(options.policy.label);
+        j.name("ideal").value(options.ideal);
+        j.name("memory").value(RunOptions.label(options.memory));
+        j.name("estimate").value(RunOptions.label(options.estimate));
+        j.name("resample").value(RunOptions.label(options.resample));
+        j.name("init").value(RunOptions.label(options.init));
+        j.name("seed").value(options.seed);
+        j.name("covariance").value(options.covariance);
+        j.name("timeScale").value(options.timeScale);
+        j.name("warmupS").value(options.warmupS);
+        j.name("spinUs").value(options.spinUs);
+        j.name("dataset").beginObject();
+        j.name("path").value(dataset.folder == null ? null : dataset.folder.getPath());
+        j.name("name").value(dataset.name);
+        j.name("scenario").value(dataset.scenario());
+        j.name("odometry").value(dataset.odometryFile.getPath());
+        j.name("laser").value(dataset.laserFile.getPath());
+        j.name("real").value(dataset.realFile.getPath());
+        j.endObject();
+        j.endObject();
+        j.name("environment");
+        environment.writeTo(j);
+        j.name("durationS").value(records.durationNs < 0 ? Double.NaN : records.durationNs / 1e9);
+        j.name("missCount").value(all.missCount);
+        j.name("tasks").beginObject();
+        j.name("predict");
+        predict.writeTo(j);
+        j.name("update");
+        update.writeTo(j);
+        j.name("all");
+        all.writeTo(j);
+        j.endObject();
+        j.name("dispatcherLatenessNs");
+        writeStats(j, dispatcherLateness());
+        j.name("deviation").beginObject();
+        meanMax(j, "xy", dev.meanXY(), Deviation.maxAbs(dev.dxy));
+        meanMax(j, "x", dev.meanAbsX(), Deviation.maxAbs(dev.dx));
+        meanMax(j, "y", dev.meanAbsY(), Deviation.maxAbs(dev.dy));
+        meanMax(j, "angle", dev.meanAbsTheta(), Deviation.maxAbs(dev.dtheta));
+        j.endObject();
+        j.endObject();
+        return j.toString();
+    }
+
+    private static void meanMax(Json j, String name, double mean, double max) {
+        j.name(name).beginObject().name("mean").value(mean).name("max").value(max).endObject();
+    }
+
+    private Stats dispatcherLateness() {
+        long[] v = new long[records.size()];
+        int c = 0;
+        for (int k = 0; k < records.size(); k++) {
+            if (records.wakeNs[k] >= 0 && records.releaseNs[k] >= 0) {
+                v[c++] = records.wakeNs[k] - records.releaseNs[k];
+            }
+        }
+        return Stats.of(v, c);
+    }
+
+    /** Writes a STATS object; every field null when the sample is empty. */
+    static void writeStats(Json j, Stats s) {
+        j.beginObject();
+        j.name("count").value(s.count);
+        if (s.count == 0) {
+            j.name("mean").nullValue().name("stdev").nullValue().name("min").nullValue().name("p50").nullValue()
+                    .name("p90").nullValue().name("p99").nullValue().name("p999").nullValue().name("max")
+                    .nullValue();
+        } else {
+            j.name("mean").value(s.mean).name("stdev").value(s.stdev).name("min").value(s.min).name("p50")
+                    .value(s.p50).name("p90").value(s.p90).name("p99").value(s.p99).name("p999").value(s.p999)
+                    .name("max").value(s.max);
+        }
+        j.endObject();
+    }
+
+    private static void row(StringBuilder b, double... v) {
+        for (int i = 0; i < v.length; i++) {
+            if (i > 0) {
+                b.append("  ");
+            }
+            b.append(String.format(Locale.ROOT, "%.16e", v[i]));
+        }
+        b.append('\n');
+    }
+
+    private static void writeText(File f, String text) throws IOException {
+        try (Writer w = new BufferedWriter(new OutputStreamWriter(new FileOutputStream(f), StandardCharsets.UTF_8))) {
+            w.write(text);
+        }
+    }
+
+    /** The counts and statistics of one task (or of all, task = -1) for summary.json. */
+    static final class TaskSummary {
+        int released;
+        int completed;
+        int done;
+        int late;
+        int skipped;
+        int terminated;
+        int missCount;
+        Stats releaseJitter;
+        Stats taskLatency;
+        Stats responseTime;
+        Stats cpu;
+
+        static TaskSummary of(JobRecords r, int task, RunOptions o) {
+            TaskSummary s = new TaskSummary();
+            int n = r.size();
+            long[] jitter = new long[n];
+            long[] latency = new long[n];
+            long[] response = new long[n];
+            long[] cpu = new long[n];
+            int nj = 0;
+            int nl = 0;
+            int nr = 0;
+            int nc = 0;
+            for (int k = 0; k < n; k++) {
+                if (task >= 0 && r.timeline.task(k) != task) {
+                    continue;
+                }
+                byte out = r.outcome[k];
+                if (out == JobRecords.PENDING) {
+                    continue; // never released (a run cut short)
+                }
+                s.released++;
+                switch (out) {
+                    case JobRecords.DONE:
+                        s.done++;
+                        break;
+                    case JobRecords.LATE:
+                        s.late++;
+                        break;
+                    case JobRecords.SKIPPED:
+                        s.skipped++;
+                        break;
+                    case JobRecords.TERMINATED:
+                        s.terminated++;
+                        break;
+                    default:
+                        break;
+                }
+                if (r.startNs[k] >= 0 && r.releaseNs[k] >= 0) {
+                    jitter[nj++] = r.startNs[k] - r.releaseNs[k];
+                }
+                if (r.completed(k) && r.startNs[k] >= 0 && r.endNs[k] >= 0) {
+                    latency[nl++] = r.endNs[k] - r.startNs[k];
+                    if (r.releaseNs[k] >= 0) {
+                        response[nr++] = r.endNs[k] - r.releaseNs[k];
+                    }
+                }
+                if (r.cpuNs[k] >= 0) {
+                    cpu[nc++] = r.cpuNs[k];
+                }
+            }
+            s.completed = s.done + s.late;
+            if (o.ideal) {
+                s.missCount = 0;
+            } else if (o.policy == RunOptions.Policy.QUEUE) {
+                s.missCount = s.late;
+            } else {
+                s.missCount = s.skipped + s.terminated;
+            }
+            s.releaseJitter = Stats.of(jitter, nj);
+            s.taskLatency = Stats.of(latency, nl);
+            s.responseTime = Stats.of(response, nr);
+            s.cpu = Stats.of(cpu, nc);
+            return s;
+        }
+
+        void writeTo(Json j) {
+            j.beginObject();
+            j.name("released").value(released);
+            j.name("completed").value(completed);
+            j.name("done").value(done);
+            j.name("late").value(late);
+            j.name("skipped").value(skipped);
+            j.name("terminated").value(terminated);
+            j.name("missCount").value(missCount);
+            j.name("releaseJitterNs");
+            writeStats(j, releaseJitter);
+            j.name("taskLatencyNs");
+            writeStats(j, taskLatency);
+            j.name("responseTimeNs");
+            writeStats(j, responseTime);
+            j.name("cpuNs");
+            writeStats(j, cpu);
+            j.endObject();
+        }
+    }
+}

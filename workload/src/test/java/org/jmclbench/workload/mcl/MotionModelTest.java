@@ -1,0 +1,124 @@
+package org.jmclbench.workload.mcl;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+
+/** Predict (ALGORITHM 6): the noise-free estimate and the particles' noise. */
+class MotionModelTest {
+    @Test
+    void estimateMovesWithoutNoiseInTheRobotFrame() {
+        for (MclConfig.Memory memory : MclConfig.Memory.values()) {
+            Localizer l = Localizers.create(MclConfig.builder().particles(10).memory(memory).build(),
+                    Playground.thesis(), 1.0, 1.0, Math.PI / 2);
+            assertTrue(l.predict(0.1, 0.0, 0.0, AbortSignal.NEVER));
+            assertEquals(1.0, l.estimateX(), 1e-12);
+            assertEquals(1.1, l.estimateY(), 1e-12);
+            assertEquals(Math.PI / 2, l.estimateTheta(), 1e-12);
+            // Sideways (dy, left of the heading north = west), then a quarter turn.
+            assertTrue(l.predict(0.0, 0.2, Math.PI / 2, AbortSignal.NEVER));
+            assertEquals(0.8, l.estimateX(), 1e-12);
+            assertEquals(1.1, l.estimateY(), 1e-12);
+            assertEquals(Math.PI, l.estimateTheta(), 1e-12);
+            // Back to the start: forward now means -x.
+            assertTrue(l.predict(-0.2, 0.1, Math.PI, AbortSignal.NEVER));
+            assertEquals(1.0, l.estimateX(), 1e-12);
+            assertEquals(1.0, l.estimateY(), 1e-12);
+            assertEquals(0.0, Angles.wrapPi(l.estimateTheta()), 1e-12);
+        }
+    }
+
+    @Test
+    void knownStartSpreadsParticlesBySigmaInit() {
+        int n = 20000;
+        Localizer l = Localizers.create(MclConfig.of(n), Playground.thesis(), 1.0, 0.5, 0.2);
+        double[] p = new double[3];
+        double[] sx = new double[2];
+        double[] st = new double[2];
+        for (int i = 0; i < n; i++) {
+            l.particle(i, p);
+            sx[0] += p[0] - 1.0;
+            sx[1] += (p[0] - 1.0) * (p[0] - 1.0);
+            double dt = Angles.wrapPi(p[2] - 0.2);
+            st[0] += dt;
+            st[1] += dt * dt;
+        }
+        assertEquals(0.0, sx[0] / n, 0.002);
+        assertEquals(MotionModel.INIT_SIGMA, Math.sqrt(sx[1] / n), 0.002);
+        assertEquals(MotionModel.INIT_SIGMA, Math.sqrt(st[1] / n), 0.002);
+    }
+
+    @Test
+    void particleMotionHasTheModelsMeanAndSpread() {
+        int n = 20000;
+        double dx = 0.1;
+        double dy = 0.02;
+        double dtheta = 0.3;
+        Localizer l = Localizers.create(MclConfig.of(n), Playground.thesis(), 1.0, 0.5, 0.2);
+        double[][] before = new double[n][3];
+        for (int i = 0; i < n; i++) {
+            l.particle(i, before[i]);
+        }
+        assertTrue(l.predict(dx, dy, dtheta, AbortSignal.NEVER));
+        double[] p = new double[3];
+        double sumF = 0;
+        double sumF2 = 0;
+        double sumL = 0;
+        double sumL2 = 0;
+        double sumT = 0;
+        double sumT2 = 0;
+        for (int i = 0; i < n; i++) {
+            l.particle(i, p);
+            double c = Math.cos(before[i][2]);
+            double s = Math.sin(before[i][2]);
+            double ex = p[0] - before[i][0];
+            double ey = p[1] - before[i][1];
+            // The displacement seen in the particle's own frame before the move.
+            double forward = c * ex + s * ey;
+            double left = -s * ex + c * ey;
+            double turn = Angles.wrapPi(p[2] - before[i][2]);
+            sumF += forward;
+            sumF2 += forward * forward;
+            sumL += left;
+            sumL2 += left * left;
+            sumT += turn;
+            sumT2 += turn * turn;
+        }
+        double d = Math.sqrt(dx * dx + dy * dy);
+        double sigmaXY = MotionModel.ALPHA_XY * d + MotionModel.FLOOR_XY;
+        double sigmaT = MotionModel.ALPHA_THETA * dtheta + MotionModel.ALPHA_THETA_XY * d + MotionModel.FLOOR_THETA;
+        double mf = sumF / n;
+        double ml = sumL / n;
+        double mt = sumT / n;
+        // Means within 5 standard errors, spreads within 5 percent.
+        assertEquals(dx, mf, 5 * sigmaXY / Math.sqrt(n));
+        assertEquals(dy, ml, 5 * sigmaXY / Math.sqrt(n));
+        assertEquals(dtheta, mt, 5 * sigmaT / Math.sqrt(n));
+        assertEquals(sigmaXY, Math.sqrt(sumF2 / n - mf * mf), 0.05 * sigmaXY);
+        assertEquals(sigmaXY, Math.sqrt(sumL2 / n - ml * ml), 0.05 * sigmaXY);
+        assertEquals(sigmaT, Math.sqrt(sumT2 / n - mt * mt), 0.05 * sigmaT);
+    }
+
+    @Test
+    void uniformStartCoversThePlayground() {
+        int n = 20000;
+        Playground pg = Playground.thesis();
+        Localizer l = Localizers.create(MclConfig.builder().particles(n).init(MclConfig.Init.UNIFORM).build(), pg,
+                0, 0, 0);
+        assertEquals(1.5, l.estimateX());
+        assertEquals(1.0, l.estimateY());
+        assertEquals(0.0, l.estimateTheta());
+        double[] p = new double[3];
+        double mx = 0;
+        double my = 0;
+        for (int i = 0; i < n; i++) {
+            l.particle(i, p);
+            assertTrue(p[0] >= 0 && p[0] < 3 && p[1] >= 0 && p[1] < 2 && p[2] >= 0 && p[2] < Angles.TWO_PI);
+            mx += p[0];
+            my += p[1];
+        }
+        assertEquals(1.5, mx / n, 0.03);
+        assertEquals(1.0, my / n, 0.02);
+    }
+}

@@ -14,6 +14,7 @@ import org.jmclbench.workload.output.Environment;
 import org.jmclbench.workload.output.RunFolder;
 import org.jmclbench.workload.output.RunWriter;
 import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.workload.release.RealTimeRun;
 
 /**
  * Entry point of the workload process: {@code run [options]} reads a dataset, runs one test
@@ -51,7 +52,7 @@ public final class WorkloadMain {
                 out.println(RunOptionsParser.USAGE);
                 return OK;
             }
-            return execute(options, err);
+            return execute(options, out, err);
         } catch (BadInputException e) {
             err.println("jmclbench: " + e.getMessage());
             return BAD_INPUT;
@@ -65,7 +66,8 @@ public final class WorkloadMain {
         }
     }
 
-    private static int execute(RunOptions options, PrintStream err) throws BadInputException, IOException {
+    private static int execute(RunOptions options, PrintStream out, PrintStream err)
+            throws BadInputException, IOException {
         Dataset dataset = load(options);
         Timeline timeline = Timeline.of(dataset);
         MclConfig config = options.mclConfig();
@@ -73,23 +75,30 @@ public final class WorkloadMain {
         folder.checkNotComplete();
         Environment environment = Environment.capture();
         JobRecords records = new JobRecords(timeline, options.covariance);
-        File partial = folder.begin();
+        File partial;
+        try {
+            partial = folder.begin();
+        } catch (IOException e) {
+            // Almost always a place that cannot be written: bad usage, not a benchmark failure.
+            throw BadInputException.ofOption("-O", "cannot create " + folder.partial.getPath() + ": " + e);
+        }
 
-        if (options.warmupS > 0) {
+        if (options.warmupS > 0 && options.ideal) {
+            // real-time runs warm up through the release engine itself (RealTimeRun)
             IdealRun.warmup(dataset, timeline, newLocalizer(config, dataset), options.warmupS);
         }
         Localizer localizer = newLocalizer(config, dataset);
+        java.util.Map<String, Object> engineFacts = null;
         if (options.ideal) {
             IdealRun.run(dataset, timeline, localizer, records);
         } else {
-            // ---- Real-time engine hook (the engine helper's): replace these two lines with
-            // ---- RealTimeRun.run(options, dataset, timeline, localizer, records);
-            err.println("jmclbench: real-time engine not built yet");
-            return FAILURE;
+            engineFacts = RealTimeRun.run(options, dataset, timeline, localizer, records, partial, err);
         }
 
-        new RunWriter(options, dataset, timeline, records, environment).writeAll(partial);
+        new RunWriter(options, dataset, timeline, records, environment).engine(engineFacts).writeAll(partial);
         folder.commit();
+        // The complete run folder, the one line a script needs.
+        out.println(folder.dir.getPath());
         return OK;
     }
 

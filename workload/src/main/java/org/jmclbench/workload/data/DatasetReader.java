@@ -8,6 +8,7 @@ import java.io.InputStreamReader;
 import java.io.Reader;
 import java.nio.charset.StandardCharsets;
 import java.util.Properties;
+import java.util.regex.Pattern;
 
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.mcl.Playground;
@@ -124,6 +125,24 @@ public final class DatasetReader {
         return v;
     }
 
+    /** A plain decimal number (what %.16e and C's strtod agree on): no hex, no 'd'/'f' suffix, no NaN or infinity. */
+    private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
+
+    private static double number(String token, String file, int line) throws BadInputException {
+        if (!DECIMAL.matcher(token).matches()) {
+            String t = token.toLowerCase(java.util.Locale.ROOT).replace("+", "").replace("-", "");
+            if (t.equals("nan") || t.equals("inf") || t.equals("infinity")) {
+                throw BadInputException.atLine(file, line, "not a finite number: '" + token + "'");
+            }
+            throw BadInputException.atLine(file, line, "not a number: '" + token + "'");
+        }
+        double v = Double.parseDouble(token);
+        if (Double.isInfinite(v)) {
+            throw BadInputException.atLine(file, line, "not a finite number: '" + token + "' (overflows)");
+        }
+        return v;
+    }
+
     /**
      * Reads a whitespace-separated numeric file with exactly {@code columns} numbers a line;
      * column 0 is a time, non-negative and non-decreasing. Returns the columns.
@@ -157,16 +176,7 @@ public final class DatasetReader {
                     }
                 }
                 for (int c = 0; c < columns; c++) {
-                    double v;
-                    try {
-                        v = Double.parseDouble(tokens[c]);
-                    } catch (NumberFormatException e) {
-                        throw BadInputException.atLine(name, lineNo, "not a number: '" + tokens[c] + "'");
-                    }
-                    if (Double.isNaN(v) || Double.isInfinite(v)) {
-                        throw BadInputException.atLine(name, lineNo, "not a finite number: '" + tokens[c] + "'");
-                    }
-                    out[c][count] = v;
+                    out[c][count] = number(tokens[c], name, lineNo);
                 }
                 double t = out[0][count];
                 if (t < 0) {

@@ -79,6 +79,41 @@ public final class Json {
         return this;
     }
 
+    /**
+     * Any of null, String, Boolean, Number (integers as integers), a Map with String keys
+     * (insertion order kept by the map) or an Iterable of those; anything else as its toString().
+     */
+    public Json any(Object v) {
+        if (v == null) {
+            return nullValue();
+        }
+        if (v instanceof Boolean) {
+            return value(((Boolean) v).booleanValue());
+        }
+        if (v instanceof Long || v instanceof Integer || v instanceof Short || v instanceof Byte) {
+            return value(((Number) v).longValue());
+        }
+        if (v instanceof Number) {
+            return value(((Number) v).doubleValue());
+        }
+        if (v instanceof java.util.Map) {
+            beginObject();
+            for (java.util.Map.Entry<?, ?> e : ((java.util.Map<?, ?>) v).entrySet()) {
+                name(String.valueOf(e.getKey()));
+                any(e.getValue());
+            }
+            return endObject();
+        }
+        if (v instanceof Iterable) {
+            beginArray();
+            for (Object o : (Iterable<?>) v) {
+                any(o);
+            }
+            return endArray();
+        }
+        return value(v.toString());
+    }
+
     /** A null value. */
     public Json nullValue() {
         beforeValue();

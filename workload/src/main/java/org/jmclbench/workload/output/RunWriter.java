@@ -29,6 +29,15 @@ public final class RunWriter {
     private final Timeline timeline;
     private final JobRecords records;
     private final Environment environment;
+    private java.util.Map<String, Object> engine;
+
+    private java.util.Map<String, ?> engineFacts;
+
+    /** Facts about the release engine (priorities, CPU clock, ...) written as summary.json's "engine" object. */
+    public RunWriter engineFacts(java.util.Map<String, ?> facts) {
+        engineFacts = facts;
+        return this;
+    }
 
     public RunWriter(RunOptions options, Dataset dataset, Timeline timeline, JobRecords records,
             Environment environment) {
@@ -37,6 +46,16 @@ public final class RunWriter {
         this.timeline = timeline;
         this.records = records;
         this.environment = environment;
+    }
+
+    /**
+     * Facts about the release engine of a real-time run (thread priorities, how CPU time and
+     * the GC log were obtained, allocation in the measured window), written as summary.json's
+     * {@code "engine"} object; values are strings, numbers, booleans or null.
+     */
+    public RunWriter engine(java.util.Map<String, Object> facts) {
+        this.engine = facts;
+        return this;
     }
 
     /** Writes every file of the run into dir. */
@@ -137,6 +156,9 @@ public final class RunWriter {
         j.endObject();
         j.name("environment");
         environment.writeTo(j);
+        if (engineFacts != null) {
+            j.name("engine").any(engineFacts);
+        }
         j.name("durationS").value(records.durationNs < 0 ? Double.NaN : records.durationNs / 1e9);
         j.name("missCount").value(all.missCount);
         j.name("tasks").beginObject();
@@ -149,6 +171,25 @@ public final class RunWriter {
         j.endObject();
         j.name("dispatcherLatenessNs");
         writeStats(j, dispatcherLateness());
+        if (engine != null) {
+            j.name("engine").beginObject();
+            for (java.util.Map.Entry<String, Object> e : engine.entrySet()) {
+                j.name(e.getKey());
+                Object v = e.getValue();
+                if (v == null) {
+                    j.nullValue();
+                } else if (v instanceof Boolean) {
+                    j.value((Boolean) v);
+                } else if (v instanceof Long || v instanceof Integer) {
+                    j.value(((Number) v).longValue());
+                } else if (v instanceof Number) {
+                    j.value(((Number) v).doubleValue());
+                } else {
+                    j.value(v.toString());
+                }
+            }
+            j.endObject();
+        }
         j.name("deviation").beginObject();
         meanMax(j, "xy", dev.meanXY(), Deviation.maxAbs(dev.dxy));
         meanMax(j, "x", dev.meanAbsX(), Deviation.maxAbs(dev.dx));

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Overload sweep: at which particle count does this machine start missing deadlines?
+#
+# Runs the workload (real time, one fresh JVM per run) for each particle count and policy and
+# prints one line per run from its summary.json: misses, late/skipped/terminated jobs, and
+# the job latency, response time and CPU time per task.
+#
+# usage: bench/overload.sh [--particles "400 1000 ..."] [--policies "skip queue"]
+#                          [--dataset DIR] [--warmup S] [--out DIR] [-- extra run options]
+set -euo pipefail
+home=$(cd "$(dirname "$0")/.." && pwd)
+particles="400 1000 2000 5000 10000 20000 50000"
+policies="skip"
+warmup=2
+dataset=
+out=
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --particles) particles=${2:?--particles: needs a list}; shift 2 ;;
+        --policies) policies=${2:?--policies: needs a list}; shift 2 ;;
+        --dataset) dataset=${2:?--dataset: needs a folder}; shift 2 ;;
+        --warmup) warmup=${2:?--warmup: needs seconds}; shift 2 ;;
+        --out) out=${2:?--out: needs a folder}; shift 2 ;;
+        --) shift; break ;;
+        -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        *) echo "jmclbench: $1: unknown option" >&2; exit 2 ;;
+    esac
+done
+extra=("$@")
+[ -n "$out" ] || { out=$(mktemp -d); trap 'rm -rf "$out"' EXIT; }
+ds=(); [ -n "$dataset" ] && ds=(--dataset "$dataset")
+
+printf '%-9s %-6s %5s %5s %5s %5s %5s | %9s %9s | %9s %9s | %9s %9s | %9s\n' \
+    policy N jobs miss late skip term "lat.p50" "lat.p99" "cpuP.p50" "cpuU.p50" "resp.p99" "resp.max" "disp.p99"
+echo "# times in ms; lat = job end - start, resp = end - scheduled release, cpuP/cpuU = CPU per predict/update job, disp = dispatcher lateness"
+for policy in $policies; do
+    for n in $particles; do
+        "$home/jmclbench" run -p "$n" -n 1 -j sweep -O "$out" --policy "$policy" --warmup "$warmup" --force \
+            "${ds[@]}" "${extra[@]}" >/dev/null
+        summary=$(find "$out/sweep" -path "*/$n/*/1/summary.json" -newer "$0" | head -1)
+        python3 - "$summary" "$policy" "$n" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+a, p, u = d["tasks"]["all"], d["tasks"]["predict"], d["tasks"]["update"]
+ms = lambda s, q: float("nan") if s[q] is None else s[q] / 1e6
+print("%-9s %-6s %5d %5d %5d %5d %5d | %9.3f %9.3f | %9.3f %9.3f | %9.3f %9.3f | %9.3f" % (
+    sys.argv[2], sys.argv[3], a["released"], d["missCount"], a["late"], a["skipped"], a["terminated"],
+    ms(a["taskLatencyNs"], "p50"), ms(a["taskLatencyNs"], "p99"), ms(p["cpuNs"], "p50"), ms(u["cpuNs"], "p50"),
+    ms(a["responseTimeNs"], "p99"), ms(a["responseTimeNs"], "max"), ms(d["dispatcherLatenessNs"], "p99")))
+PY
+        rm -rf "$out/sweep"
+    done
+done

@@ -1,0 +1,60 @@
+package org.jmclbench.workload.release;
+
+import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.workload.mcl.AbortSignal;
+import org.jmclbench.workload.mcl.Localizer;
+import org.jmclbench.workload.record.JobRecords;
+
+/**
+ * The MCL job of an event: predict with the odometry increment or update with the laser angle,
+ * then, when the job completed, the committed estimate (and covariance) into the records.
+ * Allocation-free; runs on the handler that holds the robot, so no other job can interleave.
+ */
+public final class LocalizerJob implements EventJob {
+    private final double[] odoDx;
+    private final double[] odoDy;
+    private final double[] odoDtheta;
+    private final double[] laserAngle;
+    private final Timeline timeline;
+    private final Localizer localizer;
+    private final JobRecords records;
+    private final double[] covariance = new double[6];
+
+    public LocalizerJob(Dataset dataset, Timeline timeline, Localizer localizer, JobRecords records) {
+        this(dataset.odoDx, dataset.odoDy, dataset.odoDtheta, dataset.laserAngle, timeline, localizer, records);
+    }
+
+    /** A job on explicit event data: odometry increments and laser angles by task index. */
+    public LocalizerJob(double[] odoDx, double[] odoDy, double[] odoDtheta, double[] laserAngle,
+                        Timeline timeline, Localizer localizer, JobRecords records) {
+        this.odoDx = odoDx;
+        this.odoDy = odoDy;
+        this.odoDtheta = odoDtheta;
+        this.laserAngle = laserAngle;
+        this.timeline = timeline;
+        this.localizer = localizer;
+        this.records = records;
+    }
+
+    @Override
+    public boolean run(int k, AbortSignal abort) {
+        int i = timeline.taskIndex(k);
+        boolean update = timeline.task(k) == Timeline.UPDATE;
+        boolean completed = update
+                ? localizer.update(laserAngle[i], abort)
+                : localizer.predict(odoDx[i], odoDy[i], odoDtheta[i], abort);
+        if (!completed) {
+            return false;
+        }
+        JobRecords r = records;
+        r.estX[k] = localizer.estimateX();
+        r.estY[k] = localizer.estimateY();
+        r.estTheta[k] = localizer.estimateTheta();
+        if (update && r.cov != null) {
+            localizer.covariance(covariance);
+            System.arraycopy(covariance, 0, r.cov, 6 * k, 6);
+        }
+        return true;
+    }
+}

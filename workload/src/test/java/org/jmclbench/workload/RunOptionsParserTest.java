@@ -1,0 +1,124 @@
+package org.jmclbench.workload;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+
+import org.jmclbench.workload.mcl.MclConfig;
+import org.junit.jupiter.api.Test;
+
+/** The workload's command line (FORMATS 2): thesis flags, long options, errors naming the option. */
+class RunOptionsParserTest {
+    @Test
+    void defaults() throws BadInputException {
+        RunOptions o = RunOptionsParser.parse(new String[] {"run"});
+        assertEquals(400, o.particles);
+        assertEquals(1, o.number);
+        assertEquals("results", o.out);
+        assertEquals(RunOptions.Policy.SKIP, o.policy);
+        assertFalse(o.ideal);
+        assertFalse(o.covariance);
+        assertEquals(MclConfig.Memory.PREALLOCATED, o.memory);
+        assertEquals(MclConfig.Estimate.MEAN, o.estimate);
+        assertEquals(MclConfig.Resample.SYSTEMATIC, o.resample);
+        assertEquals(MclConfig.Init.KNOWN, o.init);
+        assertEquals(1, o.seed);
+        assertEquals(1.0, o.timeScale);
+        assertNull(o.dataset);
+        assertTrue(o.effectiveRuntimeName().matches("[a-z0-9._+-]+"), o.effectiveRuntimeName());
+        assertEquals("SkipTest", o.testFolder());
+    }
+
+    @Test
+    void thesisFlags() throws BadInputException {
+        RunOptions o = RunOptionsParser.parse(new String[] {"-p", "1000", "-n", "7", "-j", "sun-rts", "-O", "out",
+            "-odo", "a.txt", "-laser", "b.txt", "-real", "c.txt", "-T", "-c"});
+        assertEquals(1000, o.particles);
+        assertEquals(7, o.number);
+        assertEquals("sun-rts", o.runtimeName);
+        assertEquals("out", o.out);
+        assertEquals("a.txt", o.odo);
+        assertEquals("b.txt", o.laser);
+        assertEquals("c.txt", o.real);
+        assertEquals(RunOptions.Policy.TERMINATE, o.policy);
+        assertEquals("TermTest", o.testFolder());
+        assertTrue(o.covariance);
+        assertTrue(RunOptionsParser.parse(new String[] {"-h"}).help);
+    }
+
+    @Test
+    void longOptions() throws BadInputException {
+        RunOptions o = RunOptionsParser.parse(new String[] {"run", "--particles=250", "--number", "3",
+            "--runtime-name", "temurin-25", "--out", "o", "--dataset", "datasets/stay", "--policy", "queue",
+            "--covariance", "--memory", "allocating", "--estimate", "best", "--resample=multinomial", "--init",
+            "uniform", "--seed", "-9", "--time-scale", "0.5", "--warmup", "2.5", "--spin-us", "100", "--gc-log",
+            "--force", "--ideal"});
+        assertEquals(250, o.particles);
+        assertEquals(3, o.number);
+        assertEquals("temurin-25", o.effectiveRuntimeName());
+        assertEquals("datasets/stay", o.dataset);
+        assertEquals(RunOptions.Policy.QUEUE, o.policy);
+        assertTrue(o.covariance);
+        assertEquals(MclConfig.Memory.ALLOCATING, o.memory);
+        assertEquals(MclConfig.Estimate.BEST, o.estimate);
+        assertEquals(MclConfig.Resample.MULTINOMIAL, o.resample);
+        assertEquals(MclConfig.Init.UNIFORM, o.init);
+        assertEquals(-9, o.seed);
+        assertEquals(0.5, o.timeScale);
+        assertEquals(2.5, o.warmupS);
+        assertEquals(100, o.spinUs);
+        assertTrue(o.gcLog && o.force && o.ideal);
+        assertEquals("IdealTest", o.testFolder());
+        MclConfig c = o.mclConfig();
+        assertEquals(250, c.particles);
+        assertEquals(-9, c.seed);
+        assertTrue(c.covariance);
+    }
+
+    private static String error(String... args) {
+        return assertThrows(BadInputException.class, () -> RunOptionsParser.parse(args)).getMessage();
+    }
+
+    @Test
+    void errorsNameTheOption() {
+        assertEquals("--frobnicate: unknown option (see --help)", error("--frobnicate"));
+        assertEquals("-x: unknown option (see --help)", error("-p", "10", "-x"));
+        assertEquals("--frob: unknown option (see --help)", error("--frob=1"));
+        assertEquals("-p: needs a value", error("-p"));
+        assertEquals("-p: not an integer: 'many'", error("-p", "many"));
+        assertEquals("-p: 0 is out of range [1, 100000000]", error("-p", "0"));
+        assertEquals("--policy: 'later' is not one of skip|terminate|queue", error("--policy", "later"));
+        assertEquals("--memory: 'pooled' is not one of preallocated|allocating", error("--memory", "pooled"));
+        assertTrue(error("--time-scale", "0").startsWith("--time-scale:"));
+        assertTrue(error("--time-scale", "NaN").startsWith("--time-scale:"));
+        assertTrue(error("--warmup", "-1").startsWith("--warmup:"));
+        assertTrue(error("-j", "../etc").startsWith("-j:"));
+        assertTrue(error("-j", "..").startsWith("-j:"));
+        assertEquals("-laser: missing: -odo, -laser and -real go together", error("-odo", "a", "-real", "c"));
+        assertEquals("--dataset: cannot be combined with -odo/-laser/-real",
+                error("--dataset", "d", "-odo", "a", "-laser", "b", "-real", "c"));
+        assertEquals("-T: contradicts --policy queue", error("--policy", "queue", "-T"));
+        assertEquals("--ideal: takes no value", error("--ideal=yes"));
+        assertEquals("stray: unexpected argument (see --help)", error("stray"));
+    }
+
+    @Test
+    void theMainReportsOptionErrorsWithExitCodeTwo() {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        assertEquals(2, WorkloadMain.run(new String[] {"run", "--bogus"}, new PrintStream(out), new PrintStream(err)));
+        assertEquals("jmclbench: --bogus: unknown option (see --help)\n",
+                new String(err.toByteArray(), StandardCharsets.UTF_8).replace("\r", ""));
+        err.reset();
+        assertEquals(2, WorkloadMain.run(new String[] {"walk"}, new PrintStream(out), new PrintStream(err)));
+        assertTrue(new String(err.toByteArray(), StandardCharsets.UTF_8).startsWith("jmclbench: walk: "));
+        assertEquals(0, WorkloadMain.run(new String[] {"run", "--help"}, new PrintStream(out), new PrintStream(err)));
+        assertTrue(new String(out.toByteArray(), StandardCharsets.UTF_8).contains("--particles"));
+    }
+}

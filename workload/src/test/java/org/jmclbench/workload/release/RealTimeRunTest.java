@@ -1,0 +1,133 @@
+package org.jmclbench.workload.release;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.WorkloadMain;
+import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.data.DatasetReader;
+import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.workload.mcl.AbortSignal;
+import org.jmclbench.workload.mcl.Localizer;
+import org.jmclbench.workload.mcl.Localizers;
+import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.workload.testing.SyntheticDataset;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Real-time runs of the MCL through the engine: state integrity under termination, and outputs. */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class RealTimeRunTest {
+    @TempDir
+    File tmp;
+
+    /**
+     * An overloaded terminate run (many particles, timeline replayed 10x faster) aborts jobs in
+     * the middle; replaying only the completed jobs, in order, on a fresh localizer with the
+     * same seed must reproduce every recorded estimate bit for bit: an aborted job left no trace,
+     * not even in the random generator.
+     */
+    @Test
+    void terminatedJobsLeaveTheStateUntouched() throws Exception {
+        for (MclConfig.Memory memory : MclConfig.Memory.values()) {
+            Dataset d = DatasetReader.readFolder(SyntheticDataset.write(new File(tmp, "data-" + memory), 2.0, 1, true, false));
+            Timeline t = Timeline.of(d);
+            MclConfig config = MclConfig.builder().particles(40_000).memory(memory).seed(7).build();
+            RunOptions options = new RunOptions();
+            options.policy = RunOptions.Policy.TERMINATE;
+            options.particles = config.particles;
+            options.memory = memory;
+            options.seed = 7;
+            options.timeScale = 0.1;
+            JobRecords records = new JobRecords(t, false);
+            Localizer live = create(config, d);
+            RealTimeRun.run(options, d, t, live, records, tmp, System.err);
+
+            int aborted = 0;
+            int completed = 0;
+            Localizer replay = create(config, d);
+            for (int k = 0; k < t.size(); k++) {
+                if (records.outcome[k] == JobRecords.TERMINATED && records.startNs[k] >= 0) {
+                    aborted++;
+                }
+                if (!records.completed(k)) {
+                    continue;
+                }
+                completed++;
+                int i = t.taskIndex(k);
+                assertTrue(t.task(k) == Timeline.PREDICT
+                        ? replay.predict(d.odoDx[i], d.odoDy[i], d.odoDtheta[i], AbortSignal.NEVER)
+                        : replay.update(d.laserAngle[i], AbortSignal.NEVER));
+                assertEquals(replay.estimateX(), records.estX[k], 0.0, memory + " event " + k);
+                assertEquals(replay.estimateY(), records.estY[k], 0.0, memory + " event " + k);
+                assertEquals(replay.estimateTheta(), records.estTheta[k], 0.0, memory + " event " + k);
+            }
+            assertTrue(aborted >= 1, memory + ": no job was aborted mid-way; the test proves nothing");
+            assertTrue(completed >= 1, memory + ": no job completed");
+            assertEquals(live.estimateX(), replay.estimateX(), 0.0);
+        }
+    }
+
+    private static Localizer create(MclConfig c, Dataset d) {
+        return Localizers.create(c, d.playground, d.startX, d.startY, d.startTheta);
+    }
+
+    /** The whole run tree of FORMATS.md section 3 for each policy, through the workload's main. */
+    @Test
+    void everyPolicyWritesTheWholeRunTree() throws Exception {
+        File data = SyntheticDataset.write(new File(tmp, "data"), 1.5, 1, true, false);
+        File odo = new File(data, "odometry.txt");
+        File laser = new File(data, "laser.txt");
+        File real = new File(data, "real.txt");
+        File out = new File(tmp, "out");
+        String[][] policies = {{"SkipTest", "--policy", "skip"}, {"TermTest", "-T"}, {"QueueTest", "--policy", "queue"}};
+        for (String[] p : policies) {
+            java.util.List<String> args = new java.util.ArrayList<>(java.util.Arrays.asList("run", "-p", "200",
+                    "-n", "1", "-j", "local", "-O", out.getPath(), "-c", "--gc-log", "--warmup", "0.3",
+                    "-odo", odo.getPath(), "-laser", laser.getPath(), "-real", real.getPath()));
+            args.addAll(java.util.Arrays.asList(p).subList(1, p.length));
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            int code = WorkloadMain.run(args.toArray(new String[0]), new PrintStream(new ByteArrayOutputStream()),
+                    new PrintStream(err, true, "UTF-8"));
+            assertEquals(0, code, p[0] + ": " + err.toString("UTF-8"));
+            File dir = new File(out, "local/cov/200/" + p[0] + "/1");
+            assertTrue(dir.isDirectory(), dir + " missing");
+            for (String f : new String[] {"odoData.txt", "laserData.txt", "position.txt", "positionDeviation.txt",
+                    "covariance.txt", "data.txt", "summary.json", "gc.log"}) {
+                assertTrue(new File(dir, f).isFile(), p[0] + ": " + f + " missing");
+            }
+            int jobs = 0;
+            for (String f : new String[] {"odoData.txt", "laserData.txt"}) {
+                List<String> lines = Files.readAllLines(new File(dir, f).toPath(), StandardCharsets.UTF_8);
+                assertEquals("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns", lines.get(0));
+                for (String line : lines.subList(1, lines.size())) {
+                    String[] c = line.split(" ");
+                    assertEquals(7, c.length, f + ": " + line);
+                    assertTrue(c[5].matches("done|late|skipped|terminated"), f + ": " + line);
+                    assertTrue(Long.parseLong(c[4]) > Long.parseLong(c[1]), "deadline after release: " + line);
+                    jobs++;
+                }
+            }
+            Dataset d = DatasetReader.readFiles(odo, laser, real);
+            assertEquals(d.odometryCount() + d.laserCount(), jobs);
+            String summary = new String(Files.readAllBytes(new File(dir, "summary.json").toPath()),
+                    StandardCharsets.UTF_8);
+            for (String key : new String[] {"\"releaseJitterNs\"", "\"taskLatencyNs\"", "\"responseTimeNs\"",
+                    "\"cpuNs\"", "\"dispatcherLatenessNs\"", "\"engine\"", "\"status\": \"complete\""}) {
+                assertTrue(summary.replace("\":\"", "\": \"").contains(key), p[0] + ": " + key + " missing");
+            }
+            List<String> dataTxt = Files.readAllLines(new File(dir, "data.txt").toPath(), StandardCharsets.UTF_8);
+            assertEquals(7, dataTxt.size());
+        }
+    }
+}

@@ -14,9 +14,13 @@ import java.util.TreeMap;
  * JFR or the GC log) that overlap the job's window, and what its own timestamps show.
  *
  * <p>The window of a late or terminated job runs from its release to its end. A skipped job
- * never ran: it was released while another job held the robot, so its causes are those of
- * that blocking job, over the blocking job's window from its start to its end (an event
+ * never ran: it was released while another job held the robot (from that job's release to
+ * its end, as the release engine takes the robot at release), so its causes are those of
+ * that blocking job, over the blocking job's window from its release to its end (an event
  * that delayed the blocker before this release delayed this job too).
+ *
+ * <p>Causes are listed largest first, except {@code jit} and {@code deopt}, listed last; the
+ * first is the job's primary cause.
  *
  * <p>Causes, each with the time it accounts for:
  * <ul>
@@ -32,7 +36,7 @@ import java.util.TreeMap;
  * <li>{@code preemption}: the job's wall time is well above its CPU time and pauses and
  *     waits do not explain the difference: its thread was runnable but not running;</li>
  * <li>{@code compute}: the job's CPU time alone exceeds its relative deadline (for a skipped
- *     job: the blocker's CPU time alone reaches past the release);</li>
+ *     job: the blocker's CPU time alone, from its own release, reaches past this release);</li>
  * <li>{@code unknown}: none of these.</li>
  * </ul>
  * Without runtime events (the C baseline, or a JVM run without capture) only
@@ -59,6 +63,7 @@ public final class Attribution {
     }
 
     private final List<JobRecord> started;
+    private final List<JobRecord> byRelease;
     private final List<VmEvent> events;
     private final List<long[]> gcUnion;
     private final List<long[]> stwUnion;
@@ -68,6 +73,7 @@ public final class Attribution {
         this.settings = settings;
         this.events = events;
         this.started = jobs.stream().filter(JobRecord::started).sorted(Comparator.comparingLong(JobRecord::startNs)).toList();
+        this.byRelease = jobs.stream().sorted(Comparator.comparingLong(JobRecord::releaseNs)).toList();
         this.gcUnion = union(events.stream().filter(e -> e.kind() == VmEventKind.GC_PAUSE).toList());
         this.stwUnion = union(events.stream()
                 .filter(e -> e.kind() == VmEventKind.GC_PAUSE || e.kind() == VmEventKind.SAFEPOINT).toList());
@@ -110,12 +116,15 @@ public final class Attribution {
             JobRecord b = blocker(j);
             if (b != null) {
                 blockedBy = b.task() + "#" + b.index();
-                ws = b.startNs();
+                ws = b.releaseNs();
                 we = b.endNs() >= 0 ? Math.max(b.endNs(), j.releaseNs()) : j.releaseNs();
+                startDelayCauses(b, causes);
                 runCauses(b, ws, we, causes);
-                if (b.cpuNs() >= 0 && b.startNs() + b.cpuNs() > j.releaseNs()) {
+                // Plain compute: started at its own release and never interrupted, the blocker
+                // would still have held the robot at this release.
+                if (b.cpuNs() >= 0 && b.releaseNs() + b.cpuNs() > j.releaseNs()) {
                     causes.add(new Cause("compute", b.cpuNs(), String.format(Locale.ROOT,
-                            "the blocking job %s used %s of CPU, past this release", blockedBy, ms(b.cpuNs()))));
+                            "the blocking job %s needs %s of CPU, past this release", blockedBy, ms(b.cpuNs()))));
                 }
             } else {
                 ws = j.releaseNs();
@@ -136,18 +145,26 @@ public final class Attribution {
         if (causes.isEmpty()) {
             causes.add(new Cause("unknown", we - ws, ""));
         }
-        causes.sort(Comparator.comparingLong(Cause::ns).reversed());
+        // jit and deopt last: their time is a compilation's overlap with the window, during
+        // which the job ran slower code, not time during which it stood still.
+        causes.sort(Comparator.comparingInt((Cause c) -> c.kind().equals("jit") || c.kind().equals("deopt") ? 1 : 0)
+                .thenComparing(Comparator.comparingLong(Cause::ns).reversed()));
         return new JobAttribution(j.task(), j.index(), j.outcome(), ws, we, blockedBy, List.copyOf(causes));
     }
 
-    /** The job that held the robot when {@code j} was released: the latest one started by then and not yet ended. */
+    /**
+     * The job that held the robot when {@code j} was released: the latest one released before
+     * it that had not yet ended (the release engine takes the robot for a job at its release,
+     * so a job released but not yet started holds it too).
+     */
     private JobRecord blocker(JobRecord j) {
         JobRecord found = null;
-        for (JobRecord b : started) {
-            if (b.startNs() > j.releaseNs()) {
+        for (JobRecord b : byRelease) {
+            if (b.releaseNs() > j.releaseNs()) {
                 break;
             }
-            if (b != j && (b.endNs() < 0 || b.endNs() > j.releaseNs())) {
+            if (b != j && b.started() && (b.endNs() < 0 || b.endNs() > j.releaseNs())
+                    && (found == null || b.releaseNs() >= found.releaseNs())) {
                 found = b;
             }
         }

@@ -11,7 +11,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
  * Where the run's time base (ns from the run start, on {@code System.nanoTime}) sits on the
  * other clocks the runtime's own records use, so that JFR events and GC log lines can be
  * placed on the jobs' timeline. Written by the workload as {@code summary.json}'s
- * {@code "clock"} object (docs/FORMATS.md section 4).
+ * {@code engine.clock} object (docs/FORMATS.md section 4).
  *
  * @param runStartEpochNs  wall-clock time of the run start, ns since the epoch (JFR timestamps)
  * @param runStartNanoTime {@code System.nanoTime()} at the run start (GC log {@code timenanos})
@@ -19,9 +19,12 @@ import com.fasterxml.jackson.databind.ObjectMapper;
  */
 public record RunClock(long runStartEpochNs, long runStartNanoTime, long jvmStartEpochMs) {
 
-    /** Reads the {@code "clock"} object of a summary.json; null when the run has none. */
+    /** Reads the clock of a summary.json ({@code engine.clock}, or a top-level {@code clock}); null when the run has none. */
     public static RunClock fromSummary(JsonNode summary) {
-        JsonNode c = summary == null ? null : summary.get("clock");
+        JsonNode c = summary == null ? null : summary.path("engine").get("clock");
+        if (c == null && summary != null) {
+            c = summary.get("clock");
+        }
         if (c == null || !c.hasNonNull("runStartEpochNs") || !c.hasNonNull("runStartNanoTime")) {
             return null;
         }

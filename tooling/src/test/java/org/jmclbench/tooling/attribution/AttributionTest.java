@@ -126,6 +126,26 @@ class AttributionTest {
     }
 
     @Test
+    void aJobReleasedButNotYetStartedHoldsTheRobot() {
+        // predict#0 released at 0 starts only at 40 (the OS), so predict#1 released at 20 is skipped behind it.
+        List<JobRecord> jobs = List.of(job("predict", 0, 0, 40, 45, 50, "done", 5),
+                job("predict", 1, 20, -1, -1, 70, "skipped", -1));
+        JobAttribution a = Attribution.attribute(jobs, List.of(), DEFAULTS).get(0);
+        assertEquals("predict#0", a.blockedBy());
+        assertEquals(List.of("os"), a.causes().stream().map(Cause::kind).toList());
+        assertEquals(40 * MS, a.primary().ns());
+    }
+
+    @Test
+    void jitIsListedAfterCausesDuringWhichTheJobStoodStill() {
+        List<JobRecord> jobs = List.of(job("predict", 0, 0, 0, 60, 50, "late", 20));
+        List<VmEvent> ev = List.of(ev(VmEventKind.GC_PAUSE, 10, 30, null, "Serial"),
+                ev(VmEventKind.COMPILATION, 0, 60, "C2 CompilerThread0", "org.jmclbench.workload.mcl.X.y level 4"));
+        JobAttribution a = Attribution.attribute(jobs, ev, DEFAULTS).get(0);
+        assertEquals(List.of("gc", "preemption", "jit"), a.causes().stream().map(Cause::kind).toList());
+    }
+
+    @Test
     void aSkippedJobBehindABlockerStalledByAPauseIsTheGc() {
         List<JobRecord> jobs = List.of(job("update", 0, 0, 0, 70, 200, "done", 5),
                 job("predict", 1, 50, -1, -1, 100, "skipped", -1));

@@ -1,0 +1,448 @@
+/*
+ * Release engine. The dispatcher sleeps to each event's absolute release time
+ * (clock_nanosleep TIMER_ABSTIME, as cyclictest does), records its wake-up and hands the
+ * event to the handler thread of its task under the run's policy. The robot is one resource:
+ * a handler starts a job only when no job is on it and its event is the oldest released one,
+ * so jobs run one at a time in release order. Nothing is allocated or written to a file while
+ * the run lasts (except what --memory allocating asks for); the records are preallocated.
+ */
+#define _GNU_SOURCE
+#include <errno.h>
+#include <math.h>
+#include <pthread.h>
+#include <sched.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+
+#include "clock.h"
+#include "engine.h"
+
+#define JM_DISPATCHER_PRIORITY 80
+#define JM_HANDLER_PRIORITY 70
+#define JM_THREAD_STACK (256 * 1024)
+/* Time between setting the run start and its first release: lets the threads get ready. */
+#define JM_START_LEAD_NS 20000000LL
+
+#if defined(__SANITIZE_ADDRESS__)
+#define JM_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define JM_ASAN 1
+#endif
+#endif
+
+static int64_t scaled_ns(double seconds, double time_scale)
+{
+	return (int64_t)llround(seconds * time_scale * 1e9);
+}
+
+int jm_timeline_build(jm_timeline *tl, const jm_dataset *ds, double time_scale, double until_s,
+		      int inclusive)
+{
+	const jm_series *odo = &ds->odometry, *las = &ds->laser;
+	int io = 0, il = 0, k = 0, no = odo->n, nl = las->n, i;
+
+	memset(tl, 0, sizeof(*tl));
+	if (until_s >= 0.0) {
+		while (no > 0 && (JM_ROW(odo, no - 1)[0] > until_s ||
+				  (!inclusive && JM_ROW(odo, no - 1)[0] == until_s)))
+			no--;
+		while (nl > 0 && (JM_ROW(las, nl - 1)[0] > until_s ||
+				  (!inclusive && JM_ROW(las, nl - 1)[0] == until_s)))
+			nl--;
+	}
+	tl->n = no + nl;
+	tl->ntask[JM_TASK_PREDICT] = no;
+	tl->ntask[JM_TASK_UPDATE] = nl;
+	tl->events = calloc((size_t)(tl->n ? tl->n : 1), sizeof(jm_event));
+	tl->jobs = calloc((size_t)(tl->n ? tl->n : 1), sizeof(jm_job));
+	if (!tl->events || !tl->jobs) {
+		jm_timeline_free(tl);
+		return -1;
+	}
+	while (io < no || il < nl) {
+		jm_event *e = &tl->events[k++];
+
+		if (il >= nl || (io < no && JM_ROW(odo, io)[0] <= JM_ROW(las, il)[0])) {
+			const double *r = JM_ROW(odo, io);
+
+			e->task = JM_TASK_PREDICT;
+			e->index = io++;
+			e->time = r[0];
+			e->arg[0] = r[1];
+			e->arg[1] = r[2];
+			e->arg[2] = r[3];
+			e->release_ns = scaled_ns(r[0], time_scale);
+			e->deadline_ns = e->release_ns + scaled_ns(JM_PREDICT_DEADLINE_S, time_scale);
+		} else {
+			const double *r = JM_ROW(las, il);
+
+			e->task = JM_TASK_UPDATE;
+			e->index = il++;
+			e->time = r[0];
+			e->arg[0] = r[1];
+			e->release_ns = scaled_ns(r[0], time_scale);
+			/* the update's deadline is the next laser event's release */
+			if (il < nl)
+				e->deadline_ns = scaled_ns(JM_ROW(las, il)[0], time_scale);
+			else
+				e->deadline_ns = e->release_ns + scaled_ns(JM_LAST_UPDATE_DEADLINE_S, time_scale);
+		}
+	}
+	for (i = 0; i < tl->n; i++) {
+		jm_job *j = &tl->jobs[i];
+
+		j->start_ns = j->end_ns = j->cpu_ns = j->wake_ns = -1;
+		j->release_ns = tl->events[i].release_ns;
+		j->deadline_ns = tl->events[i].deadline_ns;
+		j->outcome = JM_OUTCOME_PENDING;
+	}
+	return 0;
+}
+
+void jm_timeline_free(jm_timeline *tl)
+{
+	free(tl->events);
+	free(tl->jobs);
+	tl->events = NULL;
+	tl->jobs = NULL;
+	tl->n = 0;
+}
+
+static int run_job(jm_mcl *m, const jm_event *e, const atomic_int *abort)
+{
+	if (e->task == JM_TASK_PREDICT)
+		return jm_mcl_predict(m, e->arg[0], e->arg[1], e->arg[2], abort);
+	return jm_mcl_update(m, e->arg[0], abort);
+}
+
+static void record_commit(const jm_mcl *m, jm_job *j)
+{
+	jm_mcl_estimate(m, &j->ex, &j->ey, &j->et);
+	jm_mcl_covariance(m, j->cov);
+}
+
+static const char *policy_name(int policy)
+{
+	switch (policy) {
+	case SCHED_FIFO:
+		return "SCHED_FIFO";
+	case SCHED_RR:
+		return "SCHED_RR";
+	case SCHED_BATCH:
+		return "SCHED_BATCH";
+	case SCHED_IDLE:
+		return "SCHED_IDLE";
+	default:
+		return "SCHED_OTHER";
+	}
+}
+
+void jm_lock_memory(jm_sched_info *info)
+{
+	info->mlocked = 0;
+#ifdef JM_ASAN
+	/* the sanitizer's shadow memory is terabytes of reserved address space */
+	info->mlock_note = "not under AddressSanitizer";
+#else
+	if (mlockall(MCL_CURRENT | MCL_FUTURE) == 0) {
+		info->mlocked = 1;
+		info->mlock_note = NULL;
+	} else {
+		info->mlock_note = strerror(errno);
+	}
+#endif
+}
+
+int jm_run_ideal(jm_mcl *m, jm_timeline *tl, jm_sched_info *info)
+{
+	struct sched_param sp;
+	int64_t t0 = jm_now_ns(), end = t0;
+	int k, pol = sched_getscheduler(0);
+
+	info->fifo = pol == SCHED_FIFO || pol == SCHED_RR;
+	info->policy_name = policy_name(pol);
+	info->dispatcher_priority = info->handler_priority =
+		sched_getparam(0, &sp) == 0 ? sp.sched_priority : 0;
+	for (k = 0; k < tl->n; k++) {
+		jm_job *j = &tl->jobs[k];
+		int64_t c0 = jm_thread_cpu_ns(), start = jm_now_ns();
+		int r = run_job(m, &tl->events[k], NULL);
+		int64_t c1;
+
+		end = jm_now_ns();
+		c1 = jm_thread_cpu_ns();
+		if (r == JM_JOB_NOMEM)
+			return -1;
+		j->release_ns = j->start_ns = start - t0;
+		j->end_ns = end - t0;
+		j->deadline_ns = -1;
+		j->cpu_ns = c0 >= 0 && c1 >= 0 ? c1 - c0 : -1;
+		j->outcome = JM_OUTCOME_DONE;
+		record_commit(m, j);
+	}
+	info->duration_ns = end - t0;
+	return 0;
+}
+
+struct engine;
+
+struct handler {
+	struct engine *e;
+	enum jm_task task;
+};
+
+struct engine {
+	pthread_mutex_t lock;
+	pthread_cond_t cond[2];   /* one a handler */
+	jm_mcl *m;
+	jm_timeline *tl;
+	enum jm_policy policy;
+	int64_t t0;
+	int64_t spin_ns;
+	int *fifo;                /* released events waiting for the robot, in release order */
+	int head, tail;
+	int running;              /* event whose job is on the robot, or -1 */
+	int dispatch_done;
+	int failed;
+	atomic_int abort;         /* the job on the robot is asked to stop */
+	int dispatcher_policy, dispatcher_priority;
+};
+
+/* Under the lock: whether the handler of task may start the oldest released event now. */
+static int ready_for(const struct engine *e, enum jm_task task)
+{
+	return e->running < 0 && e->head < e->tail && e->tl->events[e->fifo[e->head]].task == task;
+}
+
+/* Under the lock: wakes whoever can make progress. */
+static void wake_next(struct engine *e)
+{
+	if (e->dispatch_done && e->head == e->tail) {
+		pthread_cond_signal(&e->cond[0]);
+		pthread_cond_signal(&e->cond[1]);
+	} else if (e->running < 0 && e->head < e->tail) {
+		pthread_cond_signal(&e->cond[e->tl->events[e->fifo[e->head]].task]);
+	}
+}
+
+static void *handler_main(void *arg)
+{
+	struct handler *h = arg;
+	struct engine *e = h->e;
+
+	pthread_mutex_lock(&e->lock);
+	for (;;) {
+		jm_job *j;
+		int64_t c0, c1, start, end;
+		int k, r;
+
+		while (!ready_for(e, h->task) && !(e->dispatch_done && e->head == e->tail))
+			pthread_cond_wait(&e->cond[h->task], &e->lock);
+		if (!ready_for(e, h->task))
+			break;
+		k = e->fifo[e->head++];
+		e->running = k;
+		atomic_store_explicit(&e->abort, 0, memory_order_relaxed);
+		pthread_mutex_unlock(&e->lock);
+
+		c0 = jm_thread_cpu_ns();
+		start = jm_now_ns();
+		r = run_job(e->m, &e->tl->events[k], &e->abort);
+		end = jm_now_ns();
+		c1 = jm_thread_cpu_ns();
+
+		pthread_mutex_lock(&e->lock);
+		j = &e->tl->jobs[k];
+		j->start_ns = start - e->t0;
+		j->end_ns = end - e->t0;
+		j->cpu_ns = c0 >= 0 && c1 >= 0 ? c1 - c0 : -1;
+		if (r == JM_JOB_NOMEM) {
+			e->failed = 1;
+			j->outcome = JM_OUTCOME_TERMINATED;
+		} else if (r == JM_JOB_ABORTED) {
+			j->outcome = JM_OUTCOME_TERMINATED;
+		} else {
+			j->outcome = j->end_ns <= j->deadline_ns ? JM_OUTCOME_DONE : JM_OUTCOME_LATE;
+			record_commit(e->m, j);
+		}
+		e->running = -1;
+		wake_next(e);
+	}
+	pthread_mutex_unlock(&e->lock);
+	return NULL;
+}
+
+static void sleep_until(int64_t target, int64_t spin_ns)
+{
+	int64_t park = target - spin_ns;
+	struct timespec ts = { .tv_sec = park / 1000000000LL, .tv_nsec = park % 1000000000LL };
+
+	while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, NULL) == EINTR)
+		;
+	if (spin_ns > 0)
+		while (jm_now_ns() < target)
+			;
+}
+
+static void *dispatcher_main(void *arg)
+{
+	struct engine *e = arg;
+	struct sched_param sp;
+	int k;
+
+	if (pthread_getschedparam(pthread_self(), &e->dispatcher_policy, &sp) == 0)
+		e->dispatcher_priority = sp.sched_priority;
+	for (k = 0; k < e->tl->n; k++) {
+		int64_t wake;
+
+		sleep_until(e->t0 + e->tl->events[k].release_ns, e->spin_ns);
+		wake = jm_now_ns();
+		pthread_mutex_lock(&e->lock);
+		e->tl->jobs[k].wake_ns = wake - e->t0;
+		switch (e->policy) {
+		case JM_POLICY_SKIP:
+			/* a job on the robot, or one released and about to start: drop the new event */
+			if (e->running >= 0 || e->head < e->tail)
+				e->tl->jobs[k].outcome = JM_OUTCOME_SKIPPED;
+			else
+				e->fifo[e->tail++] = k;
+			break;
+		case JM_POLICY_TERMINATE:
+			if (e->running >= 0)
+				atomic_store_explicit(&e->abort, 1, memory_order_relaxed);
+			/* a released event superseded before it could start never will: terminated */
+			while (e->head < e->tail)
+				e->tl->jobs[e->fifo[e->head++]].outcome = JM_OUTCOME_TERMINATED;
+			e->fifo[e->tail++] = k;
+			break;
+		case JM_POLICY_QUEUE:
+			e->fifo[e->tail++] = k;
+			break;
+		}
+		wake_next(e);
+		pthread_mutex_unlock(&e->lock);
+	}
+	pthread_mutex_lock(&e->lock);
+	e->dispatch_done = 1;
+	wake_next(e);
+	pthread_mutex_unlock(&e->lock);
+	return NULL;
+}
+
+static void *probe_main(void *arg)
+{
+	return arg;
+}
+
+/* Thread attributes: a small stack and, when fifo, SCHED_FIFO at the given priority. */
+static int make_attr(pthread_attr_t *attr, int fifo, int priority)
+{
+	struct sched_param sp = { .sched_priority = priority };
+
+	if (pthread_attr_init(attr))
+		return -1;
+	pthread_attr_setstacksize(attr, JM_THREAD_STACK);
+	if (fifo) {
+		if (pthread_attr_setinheritsched(attr, PTHREAD_EXPLICIT_SCHED) ||
+		    pthread_attr_setschedpolicy(attr, SCHED_FIFO) ||
+		    pthread_attr_setschedparam(attr, &sp)) {
+			pthread_attr_destroy(attr);
+			return -1;
+		}
+	}
+	return 0;
+}
+
+/* Whether this process may create SCHED_FIFO threads: tried once with a thread that exits. */
+static int fifo_permitted(void)
+{
+	pthread_attr_t attr;
+	pthread_t t;
+	int ok;
+
+	if (make_attr(&attr, 1, JM_HANDLER_PRIORITY))
+		return 0;
+	ok = pthread_create(&t, &attr, probe_main, NULL) == 0;
+	pthread_attr_destroy(&attr);
+	if (ok)
+		pthread_join(t, NULL);
+	return ok;
+}
+
+int jm_run_realtime(jm_mcl *m, jm_timeline *tl, enum jm_policy policy, int spin_us, int fifo,
+		    jm_sched_info *info)
+{
+	struct engine e;
+	struct handler h[2];
+	pthread_t th[3];
+	pthread_attr_t attr;
+	int created = 0, ret = -1, i, pmin, pmax;
+
+	memset(&e, 0, sizeof(e));
+	e.m = m;
+	e.tl = tl;
+	e.policy = policy;
+	e.spin_ns = (int64_t)spin_us * 1000;
+	e.running = -1;
+	atomic_init(&e.abort, 0);
+	e.fifo = malloc(sizeof(int) * (size_t)(tl->n ? tl->n : 1));
+	if (!e.fifo)
+		return -1;
+	pthread_mutex_init(&e.lock, NULL);
+	pthread_cond_init(&e.cond[0], NULL);
+	pthread_cond_init(&e.cond[1], NULL);
+
+	info->fifo_requested = fifo;
+	info->fifo = fifo && fifo_permitted();
+	pmin = sched_get_priority_min(SCHED_FIFO);
+	pmax = sched_get_priority_max(SCHED_FIFO);
+	info->dispatcher_priority = JM_DISPATCHER_PRIORITY < pmax ? JM_DISPATCHER_PRIORITY : pmax;
+	info->handler_priority = JM_HANDLER_PRIORITY > pmin ? JM_HANDLER_PRIORITY : pmin;
+
+	e.t0 = jm_now_ns() + JM_START_LEAD_NS;
+	for (i = 0; i < 2; i++) {
+		h[i].e = &e;
+		h[i].task = (enum jm_task)i;
+		if (make_attr(&attr, info->fifo, info->handler_priority))
+			goto out;
+		if (pthread_create(&th[i], &attr, handler_main, &h[i])) {
+			pthread_attr_destroy(&attr);
+			goto out;
+		}
+		pthread_attr_destroy(&attr);
+		created++;
+	}
+	if (make_attr(&attr, info->fifo, info->dispatcher_priority))
+		goto out;
+	if (pthread_create(&th[2], &attr, dispatcher_main, &e)) {
+		pthread_attr_destroy(&attr);
+		goto out;
+	}
+	pthread_attr_destroy(&attr);
+	created++;
+	ret = 0;
+out:
+	if (created < 3) {
+		/* no dispatcher: tell the handlers there is nothing to come */
+		pthread_mutex_lock(&e.lock);
+		e.dispatch_done = 1;
+		e.head = e.tail;
+		wake_next(&e);
+		pthread_mutex_unlock(&e.lock);
+	}
+	for (i = 0; i < created; i++)
+		pthread_join(th[i], NULL);
+	info->duration_ns = jm_now_ns() - e.t0;
+	info->policy_name = policy_name(e.dispatcher_policy);
+	if (!info->fifo)
+		info->dispatcher_priority = info->handler_priority = e.dispatcher_priority;
+	if (e.failed)
+		ret = -1;
+	pthread_cond_destroy(&e.cond[0]);
+	pthread_cond_destroy(&e.cond[1]);
+	pthread_mutex_destroy(&e.lock);
+	free(e.fifo);
+	return ret;
+}

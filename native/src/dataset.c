@@ -9,18 +9,61 @@
 
 #include "dataset.h"
 
-/* Parses a whole token as a finite double; returns 0, 1 when not a number, 2 when not finite. */
+/*
+ * Whether tok is a plain decimal number, [+-]?(digits[.[digits]] | .digits)[(e|E)[+-]digits]:
+ * what %.16e writes and both languages' parsers agree on (no hex, no suffix, no NaN/infinity).
+ */
+static int plain_decimal(const char *p)
+{
+	int digits = 0;
+
+	if (*p == '+' || *p == '-')
+		p++;
+	while (isdigit((unsigned char)*p))
+		p++, digits++;
+	if (*p == '.') {
+		p++;
+		while (isdigit((unsigned char)*p))
+			p++, digits++;
+	}
+	if (!digits)
+		return 0;
+	if (*p == 'e' || *p == 'E') {
+		p++;
+		if (*p == '+' || *p == '-')
+			p++;
+		if (!isdigit((unsigned char)*p))
+			return 0;
+		while (isdigit((unsigned char)*p))
+			p++;
+	}
+	return *p == '\0';
+}
+
+/* NaN or infinity in any case and sign: "not a finite number" rather than "not a number". */
+static int names_non_finite(const char *tok)
+{
+	char t[16];
+	size_t n = 0;
+
+	for (; *tok && n < sizeof(t) - 1; tok++)
+		if (*tok != '+' && *tok != '-')
+			t[n++] = (char)tolower((unsigned char)*tok);
+	t[n] = '\0';
+	return !*tok && (!strcmp(t, "nan") || !strcmp(t, "inf") || !strcmp(t, "infinity"));
+}
+
+/* Parses a whole token as a finite double; returns 0, 1 when not a number, 2 when not finite,
+ * 3 when it overflows. */
 static int parse_number(const char *tok, double *out)
 {
-	char *end;
 	double v;
 
-	errno = 0;
-	v = strtod(tok, &end);
-	if (end == tok || *end != '\0')
-		return 1;
+	if (!plain_decimal(tok))
+		return names_non_finite(tok) ? 2 : 1;
+	v = strtod(tok, NULL);
 	if (!isfinite(v))
-		return 2;
+		return 3;
 	*out = v;
 	return 0;
 }
@@ -82,8 +125,9 @@ int jm_series_read(jm_series *s, const char *path, int cols, char *err, size_t e
 				snprintf(err, errlen, "%s:%d: not a number: '%.40s'", path, lineno, tok);
 				goto out;
 			}
-			if (r == 2) {
-				snprintf(err, errlen, "%s:%d: not a finite number: '%.40s'", path, lineno, tok);
+			if (r >= 2) {
+				snprintf(err, errlen, "%s:%d: not a finite number: '%.40s'%s", path, lineno, tok,
+					 r == 3 ? " (overflows)" : "");
 				goto out;
 			}
 			row[ncols - 1] = v;

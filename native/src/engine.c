@@ -32,9 +32,12 @@
 #endif
 #endif
 
+/* Seconds of the timeline as nanoseconds of the run; clamped (to ~73 years) so sums cannot overflow. */
 static int64_t scaled_ns(double seconds, double time_scale)
 {
-	return (int64_t)llround(seconds * time_scale * 1e9);
+	double ns = seconds * time_scale * 1e9;
+
+	return ns < 2.3e18 ? (int64_t)llround(ns) : (int64_t)2300000000000000000LL;
 }
 
 int jm_timeline_build(jm_timeline *tl, const jm_dataset *ds, double time_scale, double until_s,

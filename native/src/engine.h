@@ -59,6 +59,7 @@ typedef struct {
 	int mlocked;
 	const char *mlock_note;  /* why not, when not */
 	int64_t duration_ns;     /* run start to the end of the last job */
+	int warmup_events;       /* events replayed by the warm-up before the measured run */
 } jm_sched_info;
 
 /* The infinitely fast computer: every event in order in this thread. 0, or -1 out of memory. */

@@ -19,6 +19,17 @@
 #include "options.h"
 #include "output.h"
 
+#ifndef JM_CFLAGS
+#define JM_CFLAGS ""
+#endif
+#if defined(__clang__)
+#define JM_COMPILER "clang " __VERSION__
+#elif defined(__GNUC__)
+#define JM_COMPILER "gcc " __VERSION__
+#else
+#define JM_COMPILER __VERSION__
+#endif
+
 #define EXIT_BAD_INPUT 2
 #define EXIT_BENCH_FAILURE 1
 
@@ -73,7 +84,7 @@ static int run_timeline(jm_mcl *m, jm_timeline *tl, const jm_options *o, jm_sche
 
 int main(int argc, char **argv)
 {
-	char err[PATH_MAX + 256], final_dir[PATH_MAX], partial[PATH_MAX + 16], parent[PATH_MAX];
+	char err[PATH_MAX + 256], final_dir[PATH_MAX], partial[PATH_MAX + 16], replaced[PATH_MAX + 32] = "";
 	char default_dataset[PATH_MAX];
 	jm_options opt;
 	jm_dataset ds;
@@ -85,13 +96,16 @@ int main(int argc, char **argv)
 	jm_run run;
 	struct stat st;
 	const char *dataset_dir = NULL, *home;
-	char *slash;
 	int ret = EXIT_BENCH_FAILURE;
 
 	if (jm_options_parse(&opt, argc, argv, err, sizeof(err)))
 		die(EXIT_BAD_INPUT, "%s", err);
 	if (opt.help) {
 		jm_options_usage(stdout);
+		return 0;
+	}
+	if (opt.version) {
+		printf("jmclbench-native %s (%s)\n", JM_COMPILER, JM_CFLAGS);
 		return 0;
 	}
 	if (!opt.odometry) {
@@ -107,10 +121,15 @@ int main(int argc, char **argv)
 		die(EXIT_BAD_INPUT, "%s", err);
 
 	if (jm_run_dir(&opt, final_dir, sizeof(final_dir)))
-		die(EXIT_BAD_INPUT, "%s: path too long", opt.out);
+		die(EXIT_BAD_INPUT, "-O: path too long: %s", opt.out);
 	snprintf(partial, sizeof(partial), "%s.partial", final_dir);
 	if (stat(final_dir, &st) == 0 && !opt.force)
-		die(EXIT_BAD_INPUT, "%s: run folder exists (use --force to overwrite)", final_dir);
+		die(EXIT_BAD_INPUT, "%s: a complete run folder exists (use --force to overwrite)", final_dir);
+	/* the empty <n>.partial/ now, so that a place that cannot be written fails before the run */
+	if (stat(partial, &st) == 0 && jm_remove_tree(partial))
+		die(EXIT_BENCH_FAILURE, "%s: cannot remove what an earlier attempt left: %s", partial, strerror(errno));
+	if (jm_mkdirs(partial))
+		die(EXIT_BAD_INPUT, "-O: cannot create %s: %s", partial, strerror(errno));
 
 	jm_env_read(&env);
 	mcl_config(&cfg, &opt, &ds);
@@ -130,6 +149,7 @@ int main(int argc, char **argv)
 			die(EXIT_BENCH_FAILURE, "out of memory");
 		if (run_timeline(&mcl, &tl, &opt, &sched))
 			die(EXIT_BENCH_FAILURE, "the warm-up failed (out of memory or no threads)");
+		sched.warmup_events = tl.n;
 		jm_timeline_free(&tl);
 		jm_mcl_free(&mcl);
 	}
@@ -149,22 +169,6 @@ int main(int argc, char **argv)
 	run.env = &env;
 	run.argc = argc;
 	run.argv = argv;
-	snprintf(parent, sizeof(parent), "%s", final_dir);
-	slash = strrchr(parent, '/');
-	if (slash)
-		*slash = '\0';
-	if (slash && jm_mkdirs(parent)) {
-		fprintf(stderr, "jmclbench: %s: cannot create: %s\n", parent, strerror(errno));
-		goto out;
-	}
-	if (stat(partial, &st) == 0 && jm_remove_tree(partial)) {
-		fprintf(stderr, "jmclbench: %s: cannot remove a stale folder: %s\n", partial, strerror(errno));
-		goto out;
-	}
-	if (jm_mkdirs(partial)) {
-		fprintf(stderr, "jmclbench: %s: cannot create: %s\n", partial, strerror(errno));
-		goto out;
-	}
 	if (opt.gc_log && write_gc_note(partial)) {
 		fprintf(stderr, "jmclbench: %s/gc.log: cannot write: %s\n", partial, strerror(errno));
 		goto out;
@@ -177,12 +181,15 @@ int main(int argc, char **argv)
 		if (!opt.force) {
 			/* another process completed the same run meanwhile: keep its folder */
 			jm_remove_tree(partial);
-			fprintf(stderr, "jmclbench: %s: run folder exists (use --force to overwrite)\n", final_dir);
+			fprintf(stderr, "jmclbench: %s: a complete run folder exists (use --force to overwrite)\n",
+				final_dir);
 			ret = EXIT_BAD_INPUT;
 			goto out;
 		}
-		if (jm_remove_tree(final_dir)) {
-			fprintf(stderr, "jmclbench: %s: cannot remove: %s\n", final_dir, strerror(errno));
+		/* the old folder aside first, so that the new one appears in one rename */
+		snprintf(replaced, sizeof(replaced), "%s.replaced.partial", final_dir);
+		if ((stat(replaced, &st) == 0 && jm_remove_tree(replaced)) || rename(final_dir, replaced)) {
+			fprintf(stderr, "jmclbench: %s: cannot move aside: %s\n", final_dir, strerror(errno));
 			goto out;
 		}
 	}
@@ -190,6 +197,10 @@ int main(int argc, char **argv)
 		fprintf(stderr, "jmclbench: %s: cannot rename to %s: %s\n", partial, final_dir, strerror(errno));
 		goto out;
 	}
+	if (replaced[0] && jm_remove_tree(replaced))
+		fprintf(stderr, "jmclbench: %s: cannot remove: %s\n", replaced, strerror(errno));
+	/* the complete run folder, the one line a script needs */
+	printf("%s\n", final_dir);
 	ret = 0;
 out:
 	jm_timeline_free(&tl);

@@ -15,7 +15,7 @@
 enum opt_id {
 	OPT_PARTICLES, OPT_NUMBER, OPT_RUNTIME, OPT_OUT, OPT_ODO, OPT_LASER, OPT_REAL, OPT_DATASET,
 	OPT_T, OPT_POLICY, OPT_IDEAL, OPT_COV, OPT_MEMORY, OPT_ESTIMATE, OPT_RESAMPLE, OPT_INIT,
-	OPT_SEED, OPT_TIME_SCALE, OPT_WARMUP, OPT_SPIN, OPT_GC_LOG, OPT_FORCE, OPT_NO_FIFO, OPT_HELP,
+	OPT_SEED, OPT_TIME_SCALE, OPT_WARMUP, OPT_SPIN, OPT_GC_LOG, OPT_FORCE, OPT_NO_FIFO, OPT_VERSION, OPT_HELP,
 };
 
 struct opt {
@@ -52,6 +52,7 @@ static const struct opt options[] = {
 	{ NULL, "--gc-log", NULL, "keep the runtime's GC log (accepted; C has no GC) (default off)", OPT_GC_LOG },
 	{ NULL, "--force", NULL, "overwrite a complete run folder (default off)", OPT_FORCE },
 	{ NULL, "--no-fifo", NULL, "do not ask for SCHED_FIFO and mlockall (C only) (default: ask)", OPT_NO_FIFO },
+	{ NULL, "--version", NULL, "print the build (compiler and flags) on one line and exit", OPT_VERSION },
 	{ "-h", "--help", NULL, "this help", OPT_HELP },
 };
 
@@ -349,12 +350,15 @@ int jm_options_parse(jm_options *o, int argc, char **argv, char *err, size_t err
 		case OPT_NO_FIFO:
 			o->fifo = 0;
 			break;
+		case OPT_VERSION:
+			o->version = 1;
+			break;
 		case OPT_HELP:
 			o->help = 1;
 			break;
 		}
 	}
-	if (o->help)
+	if (o->help || o->version)
 		return 0;
 	if (terminate_flag) {
 		if (policy_given && o->policy != JM_POLICY_TERMINATE) {

@@ -33,6 +33,7 @@ typedef struct {
 	int force;
 	int fifo;     /* ask for SCHED_FIFO and mlockall (C only; --no-fifo clears it) */
 	int help;
+	int version;  /* --version: print the build and exit */
 } jm_options;
 
 /*

@@ -434,6 +434,22 @@ static void json_environment(jm_json *j, const jm_run *r)
 	jm_json_close(j, '}');
 }
 
+/* Facts of the real-time release engine: how far the numbers can be trusted (FORMATS.md 4). */
+static void json_engine(jm_json *j, const jm_run *r)
+{
+	const jm_sched_info *s = r->sched;
+
+	jm_json_open(j, "engine", '{');
+	jm_json_i64(j, "dispatcherPriority", s->dispatcher_priority);
+	jm_json_i64(j, "handlerPriority", s->handler_priority);
+	jm_json_bool(j, "prioritiesApplied", s->fifo);
+	jm_json_str(j, "cpuTime", "used (CLOCK_THREAD_CPUTIME_ID)");
+	jm_json_str(j, "gcLog", r->opt->gc_log ? "none: the native runtime has no garbage collector" : NULL);
+	jm_json_i64(j, "warmupEvents", s->warmup_events);
+	jm_json_null(j, "allocatedBytes"); /* not counted in C; --memory allocating mallocs per job */
+	jm_json_close(j, '}');
+}
+
 static void json_deviation(jm_json *j, const char *key, const struct deviation *d, int q)
 {
 	jm_json_open(j, key, '{');
@@ -527,6 +543,8 @@ int jm_output_write(const jm_run *r, const char *dir, char *err, size_t errlen)
 	json_task(&j, "all", &t[2]);
 	jm_json_close(&j, '}');
 	json_stats(&j, "dispatcherLatenessNs", &lateness);
+	if (!r->opt->ideal)
+		json_engine(&j, r);
 	jm_json_open(&j, "deviation", '{');
 	json_deviation(&j, "xy", &dev, 2);
 	json_deviation(&j, "x", &dev, 0);

@@ -218,6 +218,16 @@ static void test_bad_data(void)
 		snprintf(want, sizeof(want), "jmclbench: %s: no such file", nofile);
 		expect_bad(args, want);
 	}
+	{
+		/* a place that cannot be written fails before the run */
+		char file[160], want2[400];
+		const char *args[] = { "--dataset", dir, "-O", file, "--ideal", NULL };
+
+		snprintf(file, sizeof(file), "%s/a-file", tmp);
+		write_text(file, "not a folder\n");
+		snprintf(want2, sizeof(want2), "jmclbench: -O: cannot create %s/native/nocov/400/IdealTest/1.partial: ", file);
+		expect_bad(args, want2);
+	}
 	/* nothing was recorded as a result */
 	{
 		char results[160];
@@ -244,6 +254,14 @@ static void test_bad_options(void)
 	expect_bad(a4, "jmclbench: --policy: 'never' is not one of skip|terminate|queue");
 	expect_bad(a5, "jmclbench: -laser: missing");
 	expect_bad(a6, "jmclbench: --time-scale: '-1' must be a finite number > 0");
+	{
+		const char *version[] = { "--version", NULL };
+
+		CHECK_INT(run(version), 0);
+		CHECK_STR_PREFIX(out_text, "jmclbench-native ");
+		CHECK_CONTAINS(out_text, "-ffp-contract=off");
+		CHECK_INT(count_lines(out_text), 1);
+	}
 	CHECK_INT(run(help), 0);
 	CHECK_CONTAINS(out_text, "-p, --particles N");
 	CHECK_CONTAINS(out_text, "(default 400)");
@@ -418,14 +436,22 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 		CHECK_INT(run(args), 0);
 		CHECK_INT(strlen(err_text), 0);
 		snprintf(dir, sizeof(dir), "%s/native/nocov/%d/IdealTest/1", out, particles);
+		/* the one line on stdout: the complete run folder */
+		{
+			char want[420];
+
+			snprintf(want, sizeof(want), "%s\n", dir);
+			CHECK(!strcmp(out_text, want));
+		}
 		dev = check_run_dir(dir, 1, 0, nodo, nlaser, &miss);
 		printf("%s: ideal run, %d particles: deviationXY %.4f m\n", label, particles, dev);
 		ideal_dev = dev;
 		CHECK(dev >= 0 && dev < 0.10);
 		CHECK_INT(miss, 0);
+		CHECK(!strstr(out_text, "\"engine\"")); /* no release engine in an ideal run */
 		/* a complete folder is not overwritten without --force */
 		CHECK_INT(run(args), 2);
-		CHECK_CONTAINS(err_text, "run folder exists");
+		CHECK_CONTAINS(err_text, "a complete run folder exists (use --force to overwrite)");
 	}
 	{
 		const char *args[] = { "--dataset", dataset, "-O", out, "-p", pstr, "--ideal", "--force",
@@ -478,6 +504,9 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 				snprintf(gc, sizeof(gc), "%s/gc.log", dir);
 				CHECK(stat(gc, &st) == 0);
 			}
+			CHECK_CONTAINS(out_text, "\"engine\": {");
+			CHECK_CONTAINS(out_text, "\"warmupEvents\": ");
+			CHECK(!strstr(out_text, "\"warmupEvents\": 0,"));
 			printf("%s: %s, %d particles, time scale %s: missCount %d, deviationXY %.4f m\n",
 			       label, policies[i], particles, scale, miss, dev);
 			CHECK(isfinite(dev) && dev >= 0);

@@ -76,7 +76,8 @@ class AttributionEndToEndTest {
         args.addAll(List.of("-p", "300000"));
         RunEvidence run = run(tmp, List.of("-Xmx512m"), args);
         List<JobAttribution> a = run.attribute(Attribution.Settings.defaults());
-        assertTrue(a.stream().anyMatch(j -> j.primary().kind().equals("compute")),
+        // Among its causes, not necessarily the largest: on a busy machine preemption can outweigh it.
+        assertTrue(a.stream().anyMatch(j -> j.causes().stream().anyMatch(c -> c.kind().equals("compute"))),
                 "300,000 particles cannot be predicted within 50 ms; causes: " + Attribution.countCauses(a));
     }
 }

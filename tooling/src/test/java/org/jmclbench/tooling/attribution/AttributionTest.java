@@ -174,6 +174,16 @@ class AttributionTest {
     }
 
     @Test
+    void aTerminatedJobIsExplainedOverItsReleaseToItsAbort() {
+        // update#0 aborted at 40 by the next release; it had used 38 ms of CPU for a 35 ms deadline.
+        List<JobRecord> jobs = List.of(job("update", 0, 0, 0, 40, 35, "terminated", 38));
+        JobAttribution a = Attribution.attribute(jobs, List.of(ev(VmEventKind.GC_PAUSE, 50, 60, null, "later")), DEFAULTS).get(0);
+        assertEquals("terminated", a.outcome());
+        assertEquals(40 * MS, a.windowEndNs());
+        assertEquals(List.of("compute"), a.causes().stream().map(Cause::kind).toList());
+    }
+
+    @Test
     void nothingFoundIsUnknownAndDoneJobsAreNotAttributed() {
         List<JobRecord> jobs = new ArrayList<>(List.of(job("predict", 0, 0, 0, 51, 50, "late", 50),
                 job("predict", 1, 50, 51, 60, 100, "done", 9)));

@@ -31,6 +31,11 @@ public final class IdealRun {
         this.records = records;
         threads = ManagementFactory.getThreadMXBean();
         cpuTime = threads.isCurrentThreadCpuTimeSupported() && threads.isThreadCpuTimeEnabled();
+        // First calls resolve and load what the clocks need: before the measured window.
+        if (cpuTime) {
+            threads.getCurrentThreadCpuTime();
+        }
+        System.nanoTime();
     }
 
     /** Replays the whole timeline into the records. */

@@ -14,6 +14,7 @@ import org.jmclbench.workload.output.Environment;
 import org.jmclbench.workload.output.RunFolder;
 import org.jmclbench.workload.output.RunWriter;
 import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.workload.release.GcLog;
 import org.jmclbench.workload.release.RealTimeRun;
 
 /**
@@ -90,7 +91,18 @@ public final class WorkloadMain {
         Localizer localizer = newLocalizer(config, dataset);
         java.util.Map<String, Object> engineFacts = null;
         if (options.ideal) {
-            IdealRun.run(dataset, timeline, localizer, records);
+            // The GC log covers the measured replay only, as in real-time runs.
+            GcLog gcLog = options.gcLog ? GcLog.start(new File(partial, "gc.log")) : null;
+            if (gcLog != null && !gcLog.active()) {
+                err.println("jmclbench: --gc-log: " + gcLog.status());
+            }
+            try {
+                IdealRun.run(dataset, timeline, localizer, records);
+            } finally {
+                if (gcLog != null) {
+                    gcLog.stop();
+                }
+            }
         } else {
             engineFacts = RealTimeRun.run(options, dataset, timeline, localizer, records, partial, err);
         }

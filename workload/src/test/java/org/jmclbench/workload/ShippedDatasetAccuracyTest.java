@@ -51,12 +51,11 @@ class ShippedDatasetAccuracyTest {
     @Test
     void matchWithAThousandParticlesFromTheKnownStartStaysWithinFiveCentimetres() throws BadInputException {
         // Measured (seeds 1-5): mean xy 0.95-1.15 cm, max 2.6-3.4 cm; mean angle 0.011 rad.
+        // (The allocating style gives bit-identical estimates, tested elsewhere: not repeated here.)
         for (long seed = 1; seed <= 3; seed++) {
-            for (MclConfig.Memory m : MclConfig.Memory.values()) {
-                Deviation v = idealRun("match", MclConfig.builder().particles(1000).seed(seed).memory(m).build());
-                assertTrue(v.meanXY() < 0.05, "seed " + seed + " " + m + ": mean xy " + v.meanXY());
-                assertTrue(v.meanAbsTheta() < 0.05, "seed " + seed + ": mean angle " + v.meanAbsTheta());
-            }
+            Deviation v = idealRun("match", MclConfig.builder().particles(1000).seed(seed).build());
+            assertTrue(v.meanXY() < 0.05, "seed " + seed + ": mean xy " + v.meanXY());
+            assertTrue(v.meanAbsTheta() < 0.05, "seed " + seed + ": mean angle " + v.meanAbsTheta());
         }
     }
 

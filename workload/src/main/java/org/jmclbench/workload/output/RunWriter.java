@@ -31,14 +31,6 @@ public final class RunWriter {
     private final Environment environment;
     private java.util.Map<String, Object> engine;
 
-    private java.util.Map<String, ?> engineFacts;
-
-    /** Facts about the release engine (priorities, CPU clock, ...) written as summary.json's "engine" object. */
-    public RunWriter engineFacts(java.util.Map<String, ?> facts) {
-        engineFacts = facts;
-        return this;
-    }
-
     public RunWriter(RunOptions options, Dataset dataset, Timeline timeline, JobRecords records,
             Environment environment) {
         this.options = options;
@@ -163,9 +155,6 @@ public final class RunWriter {
         j.endObject();
         j.name("environment");
         environment.writeTo(j);
-        if (engineFacts != null) {
-            j.name("engine").any(engineFacts);
-        }
         j.name("durationS").value(records.durationNs < 0 ? Double.NaN : records.durationNs / 1e9);
         j.name("missCount").value(all.missCount);
         j.name("tasks").beginObject();

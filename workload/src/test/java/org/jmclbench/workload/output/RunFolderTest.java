@@ -192,7 +192,9 @@ class RunFolderTest {
         assertEquals(0, main("run", "--ideal", "-p", "150", "--dataset", ds.getPath(), "-O", out.getPath(), "-j",
                 "j", "-n", "1"), err());
         assertEquals(0, main("run", "--ideal", "-p", "150", "--dataset", ds.getPath(), "-O", out.getPath(), "-j",
-                "j", "-n", "2", "--warmup", "2"), err());
+                "j", "-n", "2", "--warmup", "2", "--gc-log"), err());
+        // JDK 9+ turns the GC log on at run time; the tests run on 17 or later.
+        assertTrue(new File(out, "j/nocov/150/IdealTest/2/gc.log").isFile());
         File a = new File(out, "j/nocov/150/IdealTest/1/position.txt");
         File b = new File(out, "j/nocov/150/IdealTest/2/position.txt");
         assertEquals(Files.readAllLines(a.toPath()), Files.readAllLines(b.toPath()));

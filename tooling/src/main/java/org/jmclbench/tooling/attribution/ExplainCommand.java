@@ -66,6 +66,17 @@ public final class ExplainCommand implements Callable<Integer> {
         out.println("events:  " + run.eventSource() + " (" + run.events().size() + ")");
         long released = run.jobs().size();
         out.printf(Locale.ROOT, "missed or late: %d of %d jobs%n", attributions.size(), released);
+        Map<String, Double> split = new LinkedHashMap<>();
+        for (MetricRow m : WarmupSplit.metrics(run.jobs(), WarmupSplit.DEFAULT_BOUNDARY_NS)) {
+            if (m.task().equals("all")) {
+                split.put(m.metric() + "/" + m.stat(), m.value());
+            }
+        }
+        out.printf(Locale.ROOT, "warm-up: first %.0f s: %.0f of %.0f jobs missed or late, task latency p99 %s; after: %.0f of %.0f, p99 %s%n",
+                WarmupSplit.DEFAULT_BOUNDARY_NS / 1e9, split.getOrDefault("missedOrLate.warm/value", 0.0),
+                split.getOrDefault("released.warm/value", 0.0), msOrDash(split.get("taskLatencyNs.warm/p99")),
+                split.getOrDefault("missedOrLate.steady/value", 0.0), split.getOrDefault("released.steady/value", 0.0),
+                msOrDash(split.get("taskLatencyNs.steady/p99")));
         if (attributions.isEmpty()) {
             return;
         }
@@ -92,6 +103,10 @@ public final class ExplainCommand implements Callable<Integer> {
                     String.format(Locale.ROOT, "%.1f-%.1f", a.windowStartNs() / 1e6, a.windowEndNs() / 1e6),
                     a.blockedBy() == null ? "" : "behind " + a.blockedBy() + ": ", String.join("; ", causes));
         }
+    }
+
+    private static String msOrDash(Double ns) {
+        return ns == null ? "-" : String.format(Locale.ROOT, "%.2f ms", ns / 1e6);
     }
 
     private static void printJson(RunEvidence run, List<JobAttribution> attributions, PrintStream out) throws Exception {

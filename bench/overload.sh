@@ -6,7 +6,9 @@
 # the job latency, response time and CPU time per task.
 #
 # usage: bench/overload.sh [--particles "400 1000 ..."] [--policies "skip queue"]
-#                          [--dataset DIR] [--warmup S] [--out DIR] [-- extra run options]
+#                          [--dataset DIR] [--warmup S] [--out DIR] [--fifo] [-- extra run options]
+#   --fifo   run the workload under SCHED_FIFO 80 (chrt -f 80): the machine's capacity rather
+#            than its share of a machine that other processes also load
 set -euo pipefail
 home=$(cd "$(dirname "$0")/.." && pwd)
 particles="400 1000 2000 5000 10000 20000 50000"
@@ -14,6 +16,7 @@ policies="skip"
 warmup=2
 dataset=
 out=
+prefix=()
 while [ $# -gt 0 ]; do
     case "$1" in
         --particles) particles=${2:?--particles: needs a list}; shift 2 ;;
@@ -21,8 +24,9 @@ while [ $# -gt 0 ]; do
         --dataset) dataset=${2:?--dataset: needs a folder}; shift 2 ;;
         --warmup) warmup=${2:?--warmup: needs seconds}; shift 2 ;;
         --out) out=${2:?--out: needs a folder}; shift 2 ;;
+        --fifo) prefix=(chrt -f 80); shift ;;
         --) shift; break ;;
-        -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "jmclbench: $1: unknown option" >&2; exit 2 ;;
     esac
 done
@@ -35,7 +39,8 @@ printf '%-9s %-6s %5s %5s %5s %5s %5s | %9s %9s | %9s %9s | %9s %9s | %9s\n' \
 echo "# times in ms; lat = job end - start, resp = end - scheduled release, cpuP/cpuU = CPU per predict/update job, disp = dispatcher lateness"
 for policy in $policies; do
     for n in $particles; do
-        "$home/jmclbench" run -p "$n" -n 1 -j sweep -O "$out" --policy "$policy" --warmup "$warmup" --force \
+        "$home/jmclbench" build
+        "${prefix[@]}" "$home/jmclbench" run -p "$n" -n 1 -j sweep -O "$out" --policy "$policy" --warmup "$warmup" --force \
             "${ds[@]}" "${extra[@]}" >/dev/null
         summary=$(find "$out/sweep" -path "*/$n/*/1/summary.json" -newer "$0" | head -1)
         python3 - "$summary" "$policy" "$n" <<'PY'

@@ -183,6 +183,7 @@ class Filter:
         self.covariance_on = covariance
         self.playground = playground
         self.margin = math.inf  # smallest distance of any discrete decision from flipping
+        self.fallbacks = 0  # updates whose likelihoods summed to zero
         x0, y0, t0 = start
         self.x, self.y, self.t = [], [], []
         if init == "known":
@@ -225,6 +226,7 @@ class Filter:
         for v in w:
             total = total + v
         if total == 0.0 or math.isnan(total) or math.isinf(total):
+            self.fallbacks += 1
             w = [1.0 / n] * n
         else:
             w = [v / total for v in w]
@@ -242,7 +244,7 @@ class Filter:
                 if w[i] > w[best]:
                     best = i
             ranked = sorted(w, reverse=True)
-            if n > 1:
+            if n > 1 and ranked[0] != ranked[-1]:  # all equal (the 1/N fallback): an exact tie, index 0
                 self.margin = min(self.margin, (ranked[0] - ranked[1]) / ranked[0])
             est = (self.x[best], self.y[best], self.t[best])
         if self.covariance_on:
@@ -443,6 +445,15 @@ SCENARIOS = [
      [(0.01, 0.0, 0.0), (0.01, 0.0, 0.1)], [1, 2]),
     ("blocks", 70, 1234567890123456789, "mean", "multinomial", "known", True, (2.0, 0.7, 4.0),
      [(0.03, 0.0, -0.04), (0.0, 0.0, 0.2)], [0, 2]),
+    # A start heading outside [0, 2pi): the initial estimate is reported wrapped, like every heading.
+    ("wrapstart", 8, 11, "mean", "systematic", "known", False, (1.0, 1.5, -1.0),
+     [(0.01, 0.0, 0.02)], [1]),
+]
+# Steps given directly: a measured angle no particle can explain (every term of every
+# likelihood underflows to 0), so the weights fall back to 1/N and 'best' is an exact tie.
+SCENARIOS_LOST = [
+    ("lost", 8, 21, "best", "systematic", "known", True, (0.1, 1.8, 0.0),
+     [("predict", 0.0, 0.0, 0.0), ("update", 2.35), ("predict", 0.01, 0.0, 0.0), ("update", 2.35)]),
 ]
 
 
@@ -464,7 +475,10 @@ def write_mcl(out):
               "#   covariance CXX CXY CXT CYY CYT CTT              after an update, when COV is 1\n"
               "#   margin M                                       after the last step of a scenario (informative)\n"
               "#   end\n")
-    for name, n, seed, est, res, init, cov, start, moves, order in SCENARIOS:
+    scenarios = [(name, n, seed, est, res, init, cov, start, scenario_steps(start, moves, order))
+                 for name, n, seed, est, res, init, cov, start, moves, order in SCENARIOS]
+    scenarios += SCENARIOS_LOST
+    for name, n, seed, est, res, init, cov, start, steps in scenarios:
         f = Filter(n, seed, est, res, init, cov, THESIS, start)
         out.write("scenario %s %d %s %s %s %s %d %s %s %s\n" % (name, n, hexu(seed), est, res, init, int(cov),
                                                                  g17(start[0]), g17(start[1]), g17(start[2])))
@@ -476,7 +490,7 @@ def write_mcl(out):
 
         out.write("init\n")
         state()
-        for step in scenario_steps(start, moves, order):
+        for step in steps:
             if step[0] == "predict":
                 f.predict(step[1], step[2], step[3])
                 out.write("predict %s %s %s\n" % (g17(step[1]), g17(step[2]), g17(step[3])))
@@ -487,6 +501,8 @@ def write_mcl(out):
                 state()
                 if cov:
                     out.write("covariance %s\n" % " ".join(g17(v) for v in f.cov))
+        if name == "lost" and f.fallbacks != 2:
+            raise SystemExit("scenario lost: the likelihoods did not underflow as intended")
         if f.margin < 1e-6:
             raise SystemExit("scenario %s: a discrete decision is only %g from flipping; choose another seed"
                              % (name, f.margin))

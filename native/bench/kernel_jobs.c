@@ -9,9 +9,10 @@
  * the score is the mean of the measured iterations. A benchmark, not a test.
  *
  * Output: one '#' header line, then per configuration
- *   job particles memory ns_per_job min_iteration_ns max_iteration_ns jobs cpu_share
+ *   job particles memory ns_per_job min_iteration_ns max_iteration_ns jobs cpu_share cpu_ns_per_job
  * cpu_share is the thread's CPU time over the wall time of the measured iterations: below
- * about 0.95 the machine was busy and the times include preemption.
+ * about 0.95 the machine was busy and the wall times include waiting for a CPU, which
+ * cpu_ns_per_job (the thread's CPU time per job) does not.
  */
 #ifndef _POSIX_C_SOURCE
 #define _POSIX_C_SOURCE 200809L
@@ -32,6 +33,7 @@ struct bench_opts {
 	int counts[MAX_COUNTS];
 	int ncounts;
 	int memory_mask; /* bit 0 preallocated, bit 1 allocating */
+	int job_mask;    /* bit 0 predict, bit 1 update */
 	int warmup;
 	int iterations;
 	double seconds;
@@ -47,6 +49,7 @@ static void usage(FILE *out)
 		"  -d, --dataset DIR        dataset folder (default ../datasets/match-short)\n"
 		"  -p, --particles N[,N..]  particle counts (default 1000,4000)\n"
 		"  -m, --memory STYLE       preallocated, allocating or both (default both)\n"
+		"  -j, --job KIND           predict, update or both (default both)\n"
 		"  -w, --warmup N           warm-up iterations (default 3)\n"
 		"  -i, --iterations N       measured iterations (default 5)\n"
 		"  -r, --time S             seconds per iteration (default 1)\n"
@@ -136,9 +139,9 @@ static int bench_one(const struct bench_opts *o, const jm_dataset *ds, int updat
 			max = per;
 	}
 	jm_mcl_free(&m);
-	printf("%s %d %s %.1f %.1f %.1f %ld %.3f\n", update ? "update" : "predict", n,
+	printf("%s %d %s %.1f %.1f %.1f %ld %.3f %.1f\n", update ? "update" : "predict", n,
 	       memory == JM_MEMORY_PREALLOCATED ? "preallocated" : "allocating", sum / o->iterations,
-	       min, max, total, (double)cpu / (double)wall);
+	       min, max, total, (double)cpu / (double)wall, (double)cpu / (double)total);
 	fflush(stdout);
 	return 0;
 }
@@ -149,18 +152,19 @@ int main(int argc, char **argv)
 		{ "dataset", required_argument, NULL, 'd' },
 		{ "particles", required_argument, NULL, 'p' },
 		{ "memory", required_argument, NULL, 'm' },
+		{ "job", required_argument, NULL, 'j' },
 		{ "warmup", required_argument, NULL, 'w' },
 		{ "iterations", required_argument, NULL, 'i' },
 		{ "time", required_argument, NULL, 'r' },
 		{ "help", no_argument, NULL, 'h' },
 		{ NULL, 0, NULL, 0 },
 	};
-	struct bench_opts o = { "../datasets/match-short", { 1000, 4000 }, 2, 3, 3, 5, 1.0 };
+	struct bench_opts o = { "../datasets/match-short", { 1000, 4000 }, 2, 3, 3, 3, 5, 1.0 };
 	jm_dataset ds;
 	char err[PATH_MAX + 256];
 	int opt, rc = 0;
 
-	while ((opt = getopt_long(argc, argv, "d:p:m:w:i:r:h", longopts, NULL)) != -1) {
+	while ((opt = getopt_long(argc, argv, "d:p:m:j:w:i:r:h", longopts, NULL)) != -1) {
 		char *end = NULL;
 
 		switch (opt) {
@@ -178,6 +182,16 @@ int main(int argc, char **argv)
 				o.memory_mask = 2;
 			else if (!strcmp(optarg, "both"))
 				o.memory_mask = 3;
+			else
+				goto bad;
+			break;
+		case 'j':
+			if (!strcmp(optarg, "predict"))
+				o.job_mask = 1;
+			else if (!strcmp(optarg, "update"))
+				o.job_mask = 2;
+			else if (!strcmp(optarg, "both"))
+				o.job_mask = 3;
 			else
 				goto bad;
 			break;
@@ -212,13 +226,13 @@ bad:
 		fprintf(stderr, "kernel-jobs: %s\n", err);
 		return 2;
 	}
-	printf("# job particles memory ns_per_job min_iteration_ns max_iteration_ns jobs cpu_share"
+	printf("# job particles memory ns_per_job min_iteration_ns max_iteration_ns jobs cpu_share cpu_ns_per_job"
 	       "  (dataset %s, %d warm-up + %d x %.3g s)\n", o.dataset, o.warmup, o.iterations,
 	       o.seconds);
 	for (int update = 0; update <= 1 && !rc; update++)
 		for (int c = 0; c < o.ncounts && !rc; c++)
 			for (int mem = 0; mem <= 1 && !rc; mem++)
-				if (o.memory_mask & (1 << mem) &&
+				if (o.job_mask & (1 << update) && o.memory_mask & (1 << mem) &&
 				    bench_one(&o, &ds, update, o.counts[c],
 					      mem ? JM_MEMORY_ALLOCATING : JM_MEMORY_PREALLOCATED)) {
 					fprintf(stderr, "kernel-jobs: out of memory\n");

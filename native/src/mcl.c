@@ -137,7 +137,7 @@ int jm_mcl_init(jm_mcl *m, const jm_mcl_config *cfg, const jm_playground *pg)
 		}
 		m->ex = cfg->start_x;
 		m->ey = cfg->start_y;
-		m->et = cfg->start_theta;
+		m->et = jm_wrap2pi(cfg->start_theta); /* headings are reported in [0, 2pi) */
 	} else {
 		for (i = 0; i < n; i++) {
 			p->x[i] = pg->width * jm_rng_uniform(&m->rng);

@@ -1,0 +1,110 @@
+package org.jmclbench.tooling.runner;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.jmclbench.tooling.runtime.LaunchPlan;
+import org.jmclbench.tooling.runtime.ProcessRunner;
+import org.jmclbench.tooling.runtime.RuntimeInfo;
+import org.jmclbench.tooling.store.MachineInfo;
+import org.jmclbench.tooling.store.StoreMerger;
+
+/**
+ * Trains the {@code aot} profile's cache once per JVM and flag set, on a short run of the workload
+ * with the run's own policy (100 particles, the dataset replayed 10x faster, so that the classes
+ * of that release engine are in the cache): JDK 25+ an AOT cache ({@code -XX:AOTCacheOutput},
+ * then {@code -XX:AOTCache} with {@code -XX:AOTMode=on} so that an unusable cache fails loudly),
+ * JDK 13-24 a dynamic AppCDS archive ({@code -XX:ArchiveClassesAtExit}, then {@code -XX:SharedArchiveFile}).
+ * Caches live in {@code <db dir>/aot/}; a training that fails makes the profile unsupported.
+ */
+final class AotTrainer {
+
+    /** The JVM flags that use the trained cache, or why there is none. */
+    record Result(List<String> flags, String unsupported) {
+    }
+
+    private final Path dir;
+    private final Path home;
+    private final Path jar;
+    private final Map<String, Result> done = new HashMap<>();
+
+    AotTrainer(Path dir, Path home, Path jar) {
+        this.dir = dir;
+        this.home = home;
+        this.jar = jar;
+    }
+
+    Result ensure(RuntimeInfo rt, LaunchPlan plan, Dataset dataset, String policy) {
+        String id = rt.name() + "-" + policy + "-" + MachineInfo.sha256Hex(rt.realPath() + "\n" + rt.version() + "\n"
+                + String.join(" ", plan.jvmFlags())).substring(0, 12);
+        return done.computeIfAbsent(id, k -> train(k, rt, plan, dataset, policy));
+    }
+
+    private Result train(String id, RuntimeInfo rt, LaunchPlan plan, Dataset dataset, String policy) {
+        boolean aotCache = rt.major() >= 25;
+        if (rt.major() < 13) {
+            return new Result(List.of(), "aot: needs JDK 13+ (AppCDS dynamic archive) or 25+ (AOT cache)");
+        }
+        Path cache = dir.resolve(id + (aotCache ? ".aot" : ".jsa"));
+        List<String> use = aotCache ? List.of("-XX:AOTCache=" + cache, "-XX:AOTMode=on")
+                : List.of("-XX:SharedArchiveFile=" + cache);
+        if (Files.isRegularFile(cache)) {
+            return new Result(use, null);
+        }
+        Path work = null;
+        try {
+            Files.createDirectories(dir);
+            work = Files.createTempDirectory(dir, id + ".training");
+            Path partial = work.resolve(cache.getFileName());
+            List<String> cmd = new ArrayList<>();
+            cmd.add(rt.path().toString());
+            cmd.addAll(plan.jvmFlags());
+            cmd.add(aotCache ? "-XX:AOTCacheOutput=" + partial : "-XX:ArchiveClassesAtExit=" + partial);
+            cmd.addAll(List.of("-Djmclbench.home=" + home, "-cp", jar.toString(), WorkloadCommand.MAIN_CLASS, "run",
+                    "-p", "100", "-n", "1", "-j", "aot-training", "-O", work.resolve("out").toString(),
+                    "--dataset", dataset.dir().toString()));
+            if (policy.equals("ideal")) {
+                cmd.add("--ideal");
+            } else {
+                cmd.addAll(List.of("--policy", policy, "--time-scale", "0.1"));
+            }
+            long timeoutMs = (long) ((dataset.durationS() * 0.1 * 3 + 120) * 1000);
+            ProcessRunner.Result r = ProcessRunner.run(cmd, timeoutMs);
+            if (!r.ok() || !Files.isRegularFile(partial)) {
+                return new Result(List.of(), "aot: training run failed (" + (r.timedOut() ? "timed out" : "exit " + r.exitCode())
+                        + "): "
+                        + lastLine(r.output()));
+            }
+            Files.move(partial, cache, StandardCopyOption.ATOMIC_MOVE);
+            return new Result(use, null);
+        } catch (IOException e) {
+            return new Result(List.of(), "aot: cannot train the cache: " + e.getMessage());
+        } finally {
+            if (work != null) {
+                try {
+                    StoreMerger.deleteTree(work);
+                } catch (IOException ignored) {
+                    // a leftover training folder is harmless
+                }
+            }
+        }
+    }
+
+    /** The last line that says something (not the JVM's "Picked up JAVA_TOOL_OPTIONS" echo). */
+    private static String lastLine(String s) {
+        String[] l = s.strip().split("\n");
+        for (int i = l.length - 1; i >= 0; i--) {
+            String t = l[i].strip();
+            if (!t.isEmpty() && !t.startsWith("Picked up ")) {
+                return t.length() > 200 ? t.substring(0, 200) : t;
+            }
+        }
+        return "no message";
+    }
+}

@@ -1,0 +1,224 @@
+package org.jmclbench.tooling.runner;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.stream.Stream;
+
+import org.jmclbench.tooling.runtime.ProcessTree;
+import org.jmclbench.tooling.store.RunRecord;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+/**
+ * Runs one workload process, JMH-fork style: the host builds the whole command line, the child
+ * gets its configuration from arguments only, its stdout and stderr go to files in the run folder,
+ * a timeout kills the whole process tree, and a run counts as ok only when it exited 0 and left a
+ * complete folder with a valid summary.json. Anything else is that run's recorded failure.
+ */
+public final class ForkedRun {
+
+    /** The summary schema this runner understands (docs/FORMATS.md section 4). */
+    public static final String SUMMARY_SCHEMA = "jmclbench-run/1";
+    static final int STDERR_TAIL_LINES = 20;
+    static final int STDERR_TAIL_CHARS = 4000;
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+    /** The child in progress, killed by the shutdown hook if the runner is interrupted (Ctrl-C). */
+    static final AtomicReference<Process> CURRENT = new AtomicReference<>();
+
+    static {
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            Process p = CURRENT.get();
+            if (p != null) {
+                ProcessTree.kill(p);
+            }
+        }, "jmclbench-kill-run"));
+    }
+
+    private ForkedRun() {
+    }
+
+    /**
+     * Runs {@code command} with its output in {@code folder} (which must exist), {@code out} being
+     * where the command was told to write its run tree.
+     */
+    public static RunOutcome execute(List<String> command, Path folder, Path out, double timeoutS,
+                                     java.util.Map<String, String> env) throws IOException {
+        Path stdout = folder.resolve("stdout.txt");
+        Path stderr = folder.resolve("stderr.txt");
+        ProcessBuilder pb = new ProcessBuilder(command);
+        pb.redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
+        pb.redirectOutput(stdout.toFile());
+        pb.redirectError(stderr.toFile());
+        pb.environment().putAll(env);
+        long t0 = System.nanoTime();
+        Process p;
+        try {
+            p = pb.start();
+        } catch (IOException e) {
+            return new RunOutcome(RunRecord.FAILED, null, "cannot start " + command.get(0) + ": " + e.getMessage(), "", 0,
+                    null, null, null);
+        }
+        CURRENT.set(p);
+        writePidFile(folder, p);
+        boolean finished;
+        try {
+            finished = p.waitFor((long) Math.ceil(timeoutS * 1000), TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            ProcessTree.kill(p);
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted");
+        } finally {
+            if (!p.isAlive()) {
+                CURRENT.set(null);
+            }
+        }
+        if (!finished) {
+            ProcessTree.kill(p);
+            CURRENT.set(null);
+        }
+        double wall = (System.nanoTime() - t0) / 1e9;
+        String tail = tail(stderr);
+        if (!finished) {
+            return new RunOutcome(RunRecord.TIMEOUT, null, String.format(java.util.Locale.ROOT,
+                    "timed out after %.0f s: process tree killed", timeoutS), tail, wall, null, null, null);
+        }
+        int code = p.exitValue();
+        if (code != 0) {
+            return new RunOutcome(RunRecord.FAILED, code, describeExit(code, tail), tail, wall, null, null, null);
+        }
+        Path leaf;
+        try {
+            leaf = findLeaf(out);
+        } catch (IOException e) {
+            return new RunOutcome(RunRecord.FAILED, code, e.getMessage(), tail, wall, null, null, null);
+        }
+        Path summaryFile = leaf.resolve("summary.json");
+        String text = org.jmclbench.tooling.runtime.ProcessRunner.readText(summaryFile);
+        JsonNode summary;
+        try {
+            summary = JSON.readTree(text);
+        } catch (IOException e) {
+            return new RunOutcome(RunRecord.FAILED, code, "garbage output: summary.json is not JSON ("
+                    + firstLine(e.getMessage()) + ")", tail, wall, leaf, null, null);
+        }
+        if (summary == null || !summary.isObject() || !SUMMARY_SCHEMA.equals(summary.path("schema").asText())
+                || !"complete".equals(summary.path("status").asText()) || !summary.path("tasks").isObject()) {
+            return new RunOutcome(RunRecord.FAILED, code, "garbage output: summary.json is not a complete "
+                    + SUMMARY_SCHEMA + " summary", tail, wall, leaf, null, null);
+        }
+        return new RunOutcome(RunRecord.OK, code, null, tail, wall, leaf, text, summary);
+    }
+
+    static final String PID_FILE = "runner.pid";
+
+    /** Notes the child's pid and start time, so that a later runner can kill it if this one dies first. */
+    private static void writePidFile(Path folder, Process p) {
+        String started = p.toHandle().info().startInstant().map(Object::toString).orElse("");
+        try {
+            Files.writeString(folder.resolve(PID_FILE), p.pid() + " " + started + "\n");
+        } catch (IOException ignored) {
+            // only a help for cleaning up after a killed runner
+        }
+    }
+
+    /**
+     * Kills the process left running by a runner that was killed mid-run (SIGKILL leaves its child
+     * orphaned), identified by the pid file in its run folder and checked by its start time.
+     */
+    public static void killOrphan(Path folder) {
+        Path f = folder.resolve(PID_FILE);
+        if (!Files.isRegularFile(f)) {
+            return;
+        }
+        try {
+            String[] w = Files.readString(f).strip().split(" ");
+            long pid = Long.parseLong(w[0]);
+            String started = w.length > 1 ? w[1] : "";
+            ProcessHandle.of(pid).ifPresent(h -> {
+                if (h.isAlive() && h.info().startInstant().map(Object::toString).orElse("-").equals(started)) {
+                    h.descendants().forEach(ProcessHandle::destroyForcibly);
+                    h.destroyForcibly();
+                    h.onExit().orTimeout(10, TimeUnit.SECONDS).exceptionally(e -> h).join();
+                }
+            });
+        } catch (IOException | RuntimeException ignored) {
+            // a damaged pid file: nothing to kill
+        }
+    }
+
+    /** The one complete run folder (no {@code .partial}) holding a summary.json under {@code out}. */
+    static Path findLeaf(Path out) throws IOException {
+        if (!Files.isDirectory(out)) {
+            throw new IOException("garbage output: exited 0 but wrote no run folder");
+        }
+        List<Path> found = new ArrayList<>();
+        try (Stream<Path> s = Files.walk(out, 8)) {
+            s.filter(p -> p.getFileName().toString().equals("summary.json"))
+                    .filter(p -> !p.getParent().getFileName().toString().endsWith(".partial"))
+                    .forEach(p -> found.add(p.getParent()));
+        }
+        if (found.isEmpty()) {
+            throw new IOException("garbage output: exited 0 but left no complete run folder with a summary.json");
+        }
+        if (found.size() > 1) {
+            throw new IOException("garbage output: " + found.size() + " run folders where one was expected");
+        }
+        return found.get(0);
+    }
+
+    static String describeExit(int code, String tail) {
+        String why = "exit code " + code;
+        if (tail.contains("OutOfMemoryError")) {
+            return why + ": out of memory (OutOfMemoryError)";
+        }
+        if (code > 128 && code < 160) {
+            int sig = code - 128;
+            String name = switch (sig) {
+                case 6 -> "SIGABRT (JVM crash?)";
+                case 9 -> "SIGKILL (out of memory killer?)";
+                case 11 -> "SIGSEGV (crash)";
+                case 15 -> "SIGTERM";
+                default -> "signal " + sig;
+            };
+            return why + ": killed by " + name;
+        }
+        if (code == 2) {
+            return why + ": the workload rejected its input: " + lastLine(tail);
+        }
+        return why + (tail.isBlank() ? "" : ": " + lastLine(tail));
+    }
+
+    /** The last lines of a file (the end of a stack trace says most). */
+    static String tail(Path file) {
+        try {
+            List<String> lines = org.jmclbench.tooling.runtime.ProcessRunner.readText(file).lines().toList();
+            String t = String.join("\n", lines.subList(Math.max(0, lines.size() - STDERR_TAIL_LINES), lines.size()));
+            return t.length() > STDERR_TAIL_CHARS ? t.substring(t.length() - STDERR_TAIL_CHARS) : t;
+        } catch (IOException e) {
+            return "";
+        }
+    }
+
+    private static String lastLine(String text) {
+        String[] l = text.strip().split("\n");
+        String s = l[l.length - 1].strip();
+        return s.length() > 200 ? s.substring(0, 200) : s;
+    }
+
+    private static String firstLine(String s) {
+        if (s == null) {
+            return "";
+        }
+        int nl = s.indexOf('\n');
+        return nl < 0 ? s : s.substring(0, nl);
+    }
+}

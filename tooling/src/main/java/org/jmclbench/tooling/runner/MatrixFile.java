@@ -1,0 +1,61 @@
+package org.jmclbench.tooling.runner;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.jmclbench.tooling.runtime.BadUsageException;
+
+/**
+ * Reads a matrix file: one {@code key = value} a line, the keys being the long options of
+ * {@code matrix} without their dashes ({@code runtimes}, {@code java}, {@code profiles}, {@code policies},
+ * {@code particles}, {@code datasets}, {@code repeat}, {@code shard}, {@code order-seed}, {@code seed},
+ * {@code timeout}, {@code time-scale}, {@code pin-cpu}, {@code workload-arg}, {@code db}, {@code native});
+ * list values are comma-separated and a repeated list key adds to the list; {@code #} starts a comment.
+ * Errors name {@code file:line}.
+ *
+ * <pre>
+ * # two JVMs and C, three sizes, three repetitions
+ * runtimes  = temurin-25, native
+ * profiles  = g1, zgc+pretouch
+ * policies  = skip, terminate
+ * particles = 100, 400, 1600
+ * datasets  = match-short
+ * repeat    = 3
+ * </pre>
+ */
+public final class MatrixFile {
+    private MatrixFile() {
+    }
+
+    /** Adds the file's settings to {@code spec}. */
+    public static void read(Path file, MatrixSpec spec) {
+        List<String> lines;
+        try {
+            lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new BadUsageException("--matrix: " + file + ": cannot read (" + e.getClass().getSimpleName() + ")");
+        }
+        int n = 0;
+        for (String raw : lines) {
+            n++;
+            String where = file + ":" + n;
+            String line = raw.strip();
+            if (line.isEmpty() || line.startsWith("#")) {
+                continue;
+            }
+            int eq = line.indexOf('=');
+            if (eq <= 0) {
+                throw new BadUsageException(where + ": expected 'key = value'");
+            }
+            String key = line.substring(0, eq).strip();
+            String value = line.substring(eq + 1).strip();
+            if (value.isEmpty()) {
+                throw new BadUsageException(where + ": " + key + ": empty value");
+            }
+            MatrixOptions.apply(spec, key, value, where);
+        }
+    }
+}

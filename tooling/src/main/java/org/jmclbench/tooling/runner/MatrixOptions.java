@@ -1,0 +1,130 @@
+package org.jmclbench.tooling.runner;
+
+import java.nio.file.Path;
+import java.util.List;
+
+import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.runtime.CpuList;
+
+/** Parses one matrix setting, from the command line or a matrix file, into a {@link MatrixSpec}. */
+final class MatrixOptions {
+
+    /** The keys a matrix file accepts (the long options without dashes). */
+    static final List<String> KEYS = List.of("runtimes", "java", "profiles", "policies", "particles", "datasets",
+            "repeat", "shard", "order-seed", "seed", "timeout", "time-scale", "pin-cpu", "workload-arg", "db", "native");
+
+    private MatrixOptions() {
+    }
+
+    /** Clears a list setting (a command-line list replaces the matrix file's). */
+    static void clear(MatrixSpec spec, String key) {
+        switch (key) {
+            case "runtimes" -> spec.runtimes.clear();
+            case "java" -> spec.javas.clear();
+            case "profiles" -> spec.profiles.clear();
+            case "policies" -> spec.policies.clear();
+            case "particles" -> spec.particles.clear();
+            case "datasets" -> spec.datasets.clear();
+            case "workload-arg" -> spec.workloadArgs.clear();
+            default -> { }
+        }
+    }
+
+    static void apply(MatrixSpec spec, String key, String value, String where) {
+        String at = where.startsWith("--") ? where : where + ": " + key;
+        switch (key) {
+            case "runtimes" -> items(value, at).forEach(v -> spec.runtimes.add(new Sourced<>(v, at)));
+            case "java" -> spec.javas.add(new Sourced<>(value.strip(), at));
+            case "profiles" -> items(value, at).forEach(v -> spec.profiles.add(new Sourced<>(v, at)));
+            case "policies" -> items(value, at).forEach(v -> {
+                if (!MatrixDefaults.KNOWN_POLICIES.contains(v)) {
+                    throw new BadUsageException(at + ": unknown policy '" + v + "' (known: "
+                            + String.join(", ", MatrixDefaults.KNOWN_POLICIES) + ")");
+                }
+                spec.policies.add(new Sourced<>(v, at));
+            });
+            case "particles" -> items(value, at).forEach(v -> spec.particles.add(new Sourced<>(positiveInt(v, at), at)));
+            case "datasets" -> items(value, at).forEach(v -> spec.datasets.add(new Sourced<>(v, at)));
+            case "workload-arg" -> spec.workloadArgs.add(new Sourced<>(value, at));
+            case "repeat" -> spec.repeat = positiveInt(value.strip(), at);
+            case "shard" -> spec.shard = shard(value.strip(), at);
+            case "order-seed" -> spec.orderSeed = parseLong(value.strip(), at);
+            case "seed" -> spec.seed = parseLong(value.strip(), at);
+            case "timeout" -> spec.timeoutS = positiveDouble(value.strip(), at);
+            case "time-scale" -> spec.timeScale = positiveDouble(value.strip(), at);
+            case "pin-cpu" -> {
+                try {
+                    if (CpuList.parse(value).isEmpty()) {
+                        throw new IllegalArgumentException("empty");
+                    }
+                } catch (IllegalArgumentException e) {
+                    throw new BadUsageException(at + ": '" + value + "' is not a CPU list like 1 or 2-3");
+                }
+                spec.pinCpu = value.strip();
+            }
+            case "db" -> spec.db = Path.of(value.strip());
+            case "native" -> spec.nativeBinary = Path.of(value.strip());
+            default -> throw new BadUsageException(where + ": unknown key '" + key + "' (known: " + String.join(", ", KEYS) + ")");
+        }
+    }
+
+    private static List<String> items(String value, String at) {
+        List<String> out = new java.util.ArrayList<>();
+        for (String s : value.split(",")) {
+            String t = s.strip();
+            if (t.isEmpty()) {
+                throw new BadUsageException(at + ": empty item in '" + value + "'");
+            }
+            out.add(t);
+        }
+        return out;
+    }
+
+    private static int positiveInt(String v, String at) {
+        try {
+            int i = Integer.parseInt(v);
+            if (i > 0) {
+                return i;
+            }
+        } catch (NumberFormatException ignored) {
+            // reported below
+        }
+        throw new BadUsageException(at + ": '" + v + "' is not a positive integer");
+    }
+
+    private static long parseLong(String v, String at) {
+        try {
+            return Long.parseLong(v);
+        } catch (NumberFormatException e) {
+            throw new BadUsageException(at + ": '" + v + "' is not an integer");
+        }
+    }
+
+    private static double positiveDouble(String v, String at) {
+        try {
+            double d = Double.parseDouble(v);
+            if (d > 0 && Double.isFinite(d)) {
+                return d;
+            }
+        } catch (NumberFormatException ignored) {
+            // reported below
+        }
+        throw new BadUsageException(at + ": '" + v + "' is not a positive number");
+    }
+
+    private static int[] shard(String v, String at) {
+        String[] p = v.split("/");
+        try {
+            if (p.length == 2) {
+                int k = Integer.parseInt(p[0].strip());
+                int n = Integer.parseInt(p[1].strip());
+                if (n >= 1 && k >= 1 && k <= n) {
+                    return new int[] {k, n};
+                }
+            }
+        } catch (NumberFormatException ignored) {
+            // reported below
+        }
+        throw new BadUsageException(at + ": '" + v + "' is not a shard K/N with 1 <= K <= N");
+    }
+}

@@ -1,0 +1,202 @@
+package org.jmclbench.tooling.runner;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.Set;
+import java.util.function.Supplier;
+import java.util.stream.Collectors;
+
+import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.runtime.LaunchPlan;
+import org.jmclbench.tooling.runtime.Profile;
+import org.jmclbench.tooling.runtime.RuntimeDiscovery;
+import org.jmclbench.tooling.runtime.RuntimeInfo;
+import org.jmclbench.tooling.store.MachineInfo;
+
+/**
+ * Resolves a {@link MatrixSpec} against this machine and plans its runs: every combination of
+ * runtime x profile x policy x particles x dataset x repetition, each with a run key (a hash of
+ * machine, configuration and repetition, so that a rerun finds what is done), this shard's share,
+ * in an order shuffled within each repetition round from a recorded seed, so that machine drift
+ * does not favour one configuration and round 1 of every configuration ends before round 2 starts.
+ * A native runtime keeps only the OS part of each profile (fifo, pinned); its duplicates are dropped.
+ */
+public final class MatrixPlanner {
+
+    /** Options the runner sets itself, which {@code --workload-arg} may not repeat. */
+    static final Set<String> RESERVED_ARGS = Set.of("-p", "--particles", "-n", "--number", "-j", "--runtime-name",
+            "-O", "--out", "--dataset", "-odo", "-laser", "-real", "-T", "--policy", "--ideal", "--seed",
+            "--time-scale", "--force", "-h", "--help");
+
+    private MatrixPlanner() {
+    }
+
+    /**
+     * @param discovery finds the installed runtimes (called only when a name needs it)
+     * @throws BadUsageException on anything wrong with the spec, naming where it came from
+     */
+    public static ResolvedMatrix resolve(MatrixSpec spec, Supplier<RuntimeDiscovery> discovery, Path home,
+                                         MachineInfo machine) {
+        Path nativeBinary = spec.nativeBinary != null ? spec.nativeBinary.toAbsolutePath()
+                : home.resolve("native/build/jmclbench-native");
+        List<RuntimeInfo> runtimes = resolveRuntimes(spec, discovery, nativeBinary);
+        List<Profile> profiles = new ArrayList<>();
+        if (spec.profiles.isEmpty()) {
+            MatrixDefaults.PROFILES.forEach(p -> profiles.add(Profile.parse(p, "--profiles")));
+        }
+        for (Sourced<String> p : spec.profiles) {
+            Profile parsed = Profile.parse(p.value(), p.where());
+            if (profiles.stream().noneMatch(q -> q.name().equals(parsed.name()))) {
+                profiles.add(parsed);
+            }
+        }
+        List<String> policies = distinct(spec.policies.isEmpty() ? MatrixDefaults.POLICIES
+                : spec.policies.stream().map(Sourced::value).toList());
+        List<Integer> particles = distinct(spec.particles.isEmpty() ? MatrixDefaults.PARTICLES
+                : spec.particles.stream().map(Sourced::value).toList());
+        List<Dataset> datasets = new ArrayList<>();
+        List<Sourced<String>> ds = spec.datasets.isEmpty()
+                ? MatrixDefaults.DATASETS.stream().map(d -> new Sourced<>(d, "--datasets")).toList() : spec.datasets;
+        for (Sourced<String> d : ds) {
+            Dataset resolved = Dataset.resolve(d.value(), home, d.where());
+            if (datasets.stream().noneMatch(x -> x.dir().equals(resolved.dir()))) {
+                datasets.add(resolved);
+            }
+        }
+        List<String> workloadArgs = new ArrayList<>();
+        for (Sourced<String> a : spec.workloadArgs) {
+            for (String w : a.value().strip().split("\\s+")) {
+                if (RESERVED_ARGS.contains(w)) {
+                    throw new BadUsageException(a.where() + ": '" + w + "' is set by the runner (use the matrix option)");
+                }
+                workloadArgs.add(w);
+            }
+        }
+        int repeat = spec.repeat != null ? spec.repeat : MatrixDefaults.REPEAT;
+        long seed = spec.seed != null ? spec.seed : MatrixDefaults.SEED;
+        long orderSeed = spec.orderSeed != null ? spec.orderSeed : new Random().nextLong();
+        double timeScale = spec.timeScale != null ? spec.timeScale : MatrixDefaults.TIME_SCALE;
+        String pinCpu = spec.pinCpu != null ? spec.pinCpu : LaunchPlan.defaultPinCpu();
+        Path db = (spec.db != null ? spec.db : Path.of(MatrixDefaults.DB)).toAbsolutePath().normalize();
+
+        Map<String, PlannedRun> all = new LinkedHashMap<>();
+        for (RuntimeInfo rt : runtimes) {
+            for (Profile prof : profiles) {
+                Profile effective = rt.isJvm() ? prof : prof.forNative();
+                for (String policy : policies) {
+                    for (int n : particles) {
+                        for (Dataset d : datasets) {
+                            for (int rep = 1; rep <= repeat; rep++) {
+                                long runSeed = seed + rep - 1;
+                                String key = runKey(machine, rt, effective, policy, n, d, rep, runSeed, timeScale, workloadArgs);
+                                all.putIfAbsent(key, new PlannedRun(rt, effective, policy, n, d, rep, runSeed, key));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        List<PlannedRun> mine = new ArrayList<>(all.values());
+        if (spec.shard != null) {
+            List<PlannedRun> byKey = new ArrayList<>(all.values());
+            byKey.sort(Comparator.comparing(PlannedRun::runKey));
+            mine = new ArrayList<>();
+            for (int i = 0; i < byKey.size(); i++) {
+                if (i % spec.shard[1] == spec.shard[0] - 1) {
+                    mine.add(byKey.get(i));
+                }
+            }
+        }
+        List<PlannedRun> ordered = order(mine, repeat, orderSeed);
+        return new ResolvedMatrix(runtimes, profiles, policies, particles, datasets, repeat, seed, orderSeed, timeScale,
+                spec.timeoutS, pinCpu, List.copyOf(workloadArgs), db, nativeBinary, spec.shard, ordered, all.size());
+    }
+
+    /** Shuffles each repetition round with {@code orderSeed}; rounds run in order. */
+    static List<PlannedRun> order(List<PlannedRun> runs, int repeat, long orderSeed) {
+        Random rnd = new Random(orderSeed);
+        List<PlannedRun> out = new ArrayList<>();
+        for (int rep = 1; rep <= repeat; rep++) {
+            final int r = rep;
+            List<PlannedRun> round = new ArrayList<>(runs.stream().filter(p -> p.repetition() == r)
+                    .sorted(Comparator.comparing(PlannedRun::runKey)).toList());
+            java.util.Collections.shuffle(round, rnd);
+            out.addAll(round);
+        }
+        return out;
+    }
+
+    static String runKey(MachineInfo m, RuntimeInfo rt, Profile p, String policy, int particles, Dataset d, int rep,
+                         long seed, double timeScale, List<String> workloadArgs) {
+        String text = String.join("\n", "jmclbench-run-key/1", "machine=" + m.machineId(), "runtime=" + rt.name(),
+                "runtimeVersion=" + rt.version(), "profile=" + p.name(), "policy=" + policy, "particles=" + particles,
+                "dataset=" + d.label() + "@" + d.digest(), "load=none", "repetition=" + rep, "seed=" + seed,
+                "timeScale=" + timeScale, "workloadArgs=" + String.join(" ", workloadArgs));
+        return MachineInfo.sha256Hex(text).substring(0, 20);
+    }
+
+    private static List<RuntimeInfo> resolveRuntimes(MatrixSpec spec, Supplier<RuntimeDiscovery> discovery, Path nativeBinary) {
+        boolean needDiscovery = spec.runtimes.isEmpty() && spec.javas.isEmpty()
+                || spec.runtimes.stream().anyMatch(r -> !r.value().equals("native"));
+        RuntimeDiscovery d = needDiscovery ? discovery.get() : RuntimeDiscovery.discover(List.of(), null);
+        Map<String, RuntimeInfo> out = new LinkedHashMap<>();
+        for (Sourced<String> j : spec.javas) {
+            RuntimeInfo r;
+            try {
+                r = d.addJava(j.value());
+            } catch (BadUsageException e) {
+                throw new BadUsageException(e.getMessage().replaceFirst("^--java", j.where()));
+            }
+            out.putIfAbsent(r.name(), r);
+        }
+        RuntimeInfo nat = Files.isExecutable(nativeBinary) && !Files.isDirectory(nativeBinary)
+                ? RuntimeDiscovery.nativeRuntime(nativeBinary) : null;
+        if (spec.runtimes.isEmpty() && spec.javas.isEmpty()) {
+            d.jvms().forEach(r -> out.putIfAbsent(r.name(), r));
+            if (nat != null) {
+                out.putIfAbsent("native", nat);
+            }
+            if (out.isEmpty()) {
+                throw new BadUsageException("--runtimes: no runtime found on this machine (./jmclbench jvms; --java PATH)");
+            }
+        }
+        for (Sourced<String> r : spec.runtimes) {
+            String name = r.value();
+            if (name.equals("native")) {
+                if (nat == null) {
+                    throw new BadUsageException(r.where() + ": native: the native baseline is not built (" + nativeBinary + ")");
+                }
+                out.putIfAbsent("native", nat);
+            } else if (name.equals("jvms") || name.equals("all")) {
+                d.jvms().forEach(x -> out.putIfAbsent(x.name(), x));
+                if (name.equals("all") && nat != null) {
+                    out.putIfAbsent("native", nat);
+                }
+            } else {
+                RuntimeInfo found = d.find(name).orElseThrow(() -> new BadUsageException(r.where() + ": unknown runtime '"
+                        + name + "' (found: " + known(d, nat) + "; or --java PATH)"));
+                out.putIfAbsent(found.name(), found);
+            }
+        }
+        return List.copyOf(out.values());
+    }
+
+    private static String known(RuntimeDiscovery d, RuntimeInfo nat) {
+        Set<String> names = new LinkedHashSet<>(d.jvms().stream().map(RuntimeInfo::name).toList());
+        if (nat != null) {
+            names.add("native");
+        }
+        return names.isEmpty() ? "none" : names.stream().collect(Collectors.joining(", "));
+    }
+
+    private static <T> List<T> distinct(List<T> l) {
+        return List.copyOf(new LinkedHashSet<>(l));
+    }
+}

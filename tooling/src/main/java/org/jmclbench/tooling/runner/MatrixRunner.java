@@ -1,0 +1,186 @@
+package org.jmclbench.tooling.runner;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.sql.SQLException;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+import org.jmclbench.tooling.runtime.LaunchPlan;
+import org.jmclbench.tooling.runtime.ProfileComponent;
+import org.jmclbench.tooling.runtime.ProfileProbe;
+import org.jmclbench.tooling.store.MachineInfo;
+import org.jmclbench.tooling.store.ResultStore;
+import org.jmclbench.tooling.store.RunData;
+import org.jmclbench.tooling.store.RunIngest;
+import org.jmclbench.tooling.store.RunRecord;
+import org.jmclbench.tooling.store.StoreMerger;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+/**
+ * Executes the runs of a resolved matrix one after another (never two at once: they would disturb
+ * each other's timing), skipping those the store already holds with a final status, and commits
+ * each run in one transaction as soon as it ends.
+ */
+public final class MatrixRunner {
+
+    /** What this invocation did. */
+    public record Summary(int planned, int alreadyDone, int ran, int ok, int failed, int timedOut, int unsupported,
+                          List<String> problems) {
+    }
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    private final ResolvedMatrix matrix;
+    private final ResultStore store;
+    private final MachineInfo machine;
+    private final String matrixId;
+    private final Path home;
+    private final Path jar;
+    private final ProfileProbe probe;
+
+    public MatrixRunner(ResolvedMatrix matrix, ResultStore store, MachineInfo machine, String matrixId, Path home,
+                        Path jar, ProfileProbe probe) {
+        this.matrix = matrix;
+        this.store = store;
+        this.machine = machine;
+        this.matrixId = matrixId;
+        this.home = home;
+        this.jar = jar;
+        this.probe = probe;
+    }
+
+    /** The runs still to do: not in the store, or failed/timed out when {@code retryFailed}. */
+    public List<PlannedRun> remaining(boolean retryFailed) throws SQLException {
+        Map<String, String> status = store.runStatuses();
+        List<PlannedRun> todo = new ArrayList<>();
+        for (PlannedRun r : matrix.plan()) {
+            String s = status.get(r.runKey());
+            if (s == null || retryFailed && (s.equals(RunRecord.FAILED) || s.equals(RunRecord.TIMEOUT))) {
+                todo.add(r);
+            }
+        }
+        return todo;
+    }
+
+    public Summary run(List<PlannedRun> todo, Progress progress) throws SQLException, IOException {
+        AotTrainer aot = new AotTrainer(store.baseDir().resolve("aot"), home, jar);
+        int ok = 0;
+        int failed = 0;
+        int timedOut = 0;
+        int unsupported = 0;
+        List<String> problems = new ArrayList<>();
+        progress.start(todo.size());
+        for (PlannedRun run : todo) {
+            progress.started(run);
+            Finished f = execute(run, aot);
+            RunRecord rec = f.record();
+            store.saveRun(rec, f.data());
+            switch (rec.status()) {
+                case RunRecord.OK -> ok++;
+                case RunRecord.TIMEOUT -> timedOut++;
+                case RunRecord.UNSUPPORTED -> unsupported++;
+                default -> failed++;
+            }
+            if (!rec.status().equals(RunRecord.OK)) {
+                problems.add(String.format("%-11s %s: %s%s", rec.status(), run.label(), rec.failure(),
+                        rec.runDir() == null ? "" : " [" + store.baseDir().resolve(rec.runDir()) + "]"));
+            }
+            progress.ended(run, rec.status(), rec.wallS() == null ? 0 : rec.wallS(), rec.failure());
+        }
+        progress.finish();
+        return new Summary(matrix.plan().size(), matrix.plan().size() - todo.size(), todo.size(), ok, failed, timedOut,
+                unsupported, problems);
+    }
+
+    /** A run's row and what the store keeps beside it. */
+    private record Finished(RunRecord record, RunData data) {
+    }
+
+    private Finished execute(PlannedRun run, AotTrainer aot) throws IOException {
+        String startedAt = Instant.now().toString();
+        ProfileProbe.Support support = probe.check(run.runtime(), run.profile(), matrix.pinCpu());
+        LaunchPlan plan = LaunchPlan.of(run.runtime(), run.profile(), matrix.pinCpu());
+        List<String> extra = List.of();
+        if (support.supported() && run.runtime().isJvm() && run.profile().has(ProfileComponent.AOT)) {
+            AotTrainer.Result a = aot.ensure(run.runtime(), plan, run.dataset(), run.policy());
+            if (a.unsupported() != null) {
+                support = ProfileProbe.Support.no(a.unsupported());
+            }
+            extra = a.flags();
+        }
+        Path folder = store.runFolder(run.runKey());
+        // a folder without a row is the remains of a runner killed mid-run: start it afresh
+        ForkedRun.killOrphan(folder);
+        StoreMerger.deleteTree(folder);
+        if (!support.supported()) {
+            return new Finished(record(run, RunRecord.UNSUPPORTED, null, support.reason(), null, startedAt, null, null,
+                    null, List.of()), RunData.empty());
+        }
+        Files.createDirectories(folder);
+        List<String> cmd = WorkloadCommand.build(run, plan, extra, home, jar, folder, matrix.timeScale(), matrix.workloadArgs());
+        RunOutcome o = ForkedRun.execute(cmd, folder, folder, matrix.timeoutFor(run), Map.of("JMCLBENCH_HOME", home.toString()));
+        String status = o.status();
+        String failure = o.failure();
+        RunData data = RunData.empty();
+        if (status.equals(RunRecord.OK)) {
+            String mismatch = describesAnotherRun(o.summary(), run);
+            if (mismatch != null) {
+                status = RunRecord.FAILED;
+                failure = "garbage output: summary.json describes another run (" + mismatch + ")";
+            }
+        }
+        if (status.equals(RunRecord.OK)) {
+            try {
+                data = RunIngest.ingest(o.leaf(), o.summary(), run.dataset().dir().resolve("real.txt"));
+            } catch (IOException | RuntimeException e) {
+                status = RunRecord.FAILED;
+                failure = "garbage output: " + e.getMessage();
+                data = RunData.empty();
+            }
+        }
+        Path dir = o.leaf() != null ? o.leaf() : folder;
+        return new Finished(record(run, status, o.exitCode(), failure, o.stderrTail(), startedAt, o.wallS(),
+                store.baseDir().relativize(dir).toString(), status.equals(RunRecord.OK) ? o.summaryText() : null, cmd), data);
+    }
+
+    /**
+     * What in the summary's parameters contradicts the run asked for (null when it matches), so
+     * that a workload that ignored an option cannot report a result for it.
+     */
+    static String describesAnotherRun(com.fasterxml.jackson.databind.JsonNode summary, PlannedRun run) {
+        com.fasterxml.jackson.databind.JsonNode p = summary.path("parameters");
+        if (p.path("particles").asLong(-1) != run.particles()) {
+            return "particles " + p.path("particles").asText("missing") + ", asked " + run.particles();
+        }
+        boolean ideal = run.policy().equals("ideal");
+        if (ideal != p.path("ideal").asBoolean(false)) {
+            return "ideal " + p.path("ideal").asText("missing") + ", asked policy " + run.policy();
+        }
+        if (!ideal && !run.policy().equals(p.path("policy").asText())) {
+            return "policy " + p.path("policy").asText("missing") + ", asked " + run.policy();
+        }
+        if (p.has("seed") && p.path("seed").asLong() != run.seed()) {
+            return "seed " + p.path("seed").asText() + ", asked " + run.seed();
+        }
+        return null;
+    }
+
+    private RunRecord record(PlannedRun run, String status, Integer exitCode, String failure, String stderrTail,
+                             String startedAt, Double wallS, String runDir, String summary, List<String> cmd) {
+        String cmdJson;
+        try {
+            cmdJson = JSON.writeValueAsString(cmd);
+        } catch (IOException e) {
+            cmdJson = null;
+        }
+        return new RunRecord(run.runKey(), matrixId, machine.machineId(), run.runtime().name(), run.runtime().version(),
+                run.profile().name(), run.policy(), run.particles(), run.dataset().label(), "none", run.repetition(), status,
+                exitCode, failure, stderrTail, startedAt, Instant.now().toString(), wallS, runDir, summary, run.seed(), cmdJson);
+    }
+}

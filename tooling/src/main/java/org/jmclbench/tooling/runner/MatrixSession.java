@@ -1,0 +1,129 @@
+package org.jmclbench.tooling.runner;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.channels.FileChannel;
+import java.nio.channels.FileLock;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.time.Instant;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.UUID;
+import java.util.function.Supplier;
+
+import org.jmclbench.tooling.doctor.Doctor;
+import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.runtime.JmclbenchPaths;
+import org.jmclbench.tooling.runtime.Profile;
+import org.jmclbench.tooling.runtime.ProfileProbe;
+import org.jmclbench.tooling.runtime.RuntimeDiscovery;
+import org.jmclbench.tooling.runtime.RuntimeInfo;
+import org.jmclbench.tooling.store.MachineInfo;
+import org.jmclbench.tooling.store.ResultStore;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+/**
+ * One invocation of {@code matrix} or {@code quick}: resolve the spec (all bad input is found here,
+ * before anything runs), take the database's lock, record the machine (with the doctor's checks)
+ * and the invocation, run what is left, and print what failed.
+ */
+public final class MatrixSession {
+
+    private MatrixSession() {
+    }
+
+    /** The result of a session: the exit code and, when it ran, the database. */
+    public record Result(int exitCode, Path db) {
+    }
+
+    /**
+     * @throws BadUsageException for bad input (nothing has run then)
+     */
+    public static Result execute(MatrixSpec spec, String commandText, PrintStream out,
+                                 Supplier<RuntimeDiscovery> discovery) throws IOException, java.sql.SQLException {
+        Path home = JmclbenchPaths.home();
+        MachineInfo machine = MachineInfo.current();
+        ResolvedMatrix m = MatrixPlanner.resolve(spec, discovery, home, machine);
+        Path jar = JmclbenchPaths.workloadJar();
+        boolean anyJvm = m.runtimes().stream().anyMatch(RuntimeInfo::isJvm);
+        if (anyJvm && !Files.isRegularFile(jar)) {
+            System.err.println("jmclbench: the workload jar is not built (" + jar + "): ./jmclbench build");
+            return new Result(1, m.db());
+        }
+        if (spec.dryRun) {
+            out.printf("%d runs planned%s, order seed %d:%n", m.plan().size(), shardText(m), m.orderSeed());
+            for (PlannedRun r : m.plan()) {
+                out.println("  " + r.runKey() + "  " + r.label());
+            }
+            return new Result(0, m.db());
+        }
+        Path lockFile = m.db().resolveSibling(m.db().getFileName() + ".lock");
+        FileChannel ch;
+        try {
+            Files.createDirectories(m.db().getParent());
+            ch = FileChannel.open(lockFile, StandardOpenOption.CREATE, StandardOpenOption.WRITE);
+        } catch (IOException e) {
+            throw new BadUsageException("--db: " + m.db() + ": cannot write there (" + e.getClass().getSimpleName() + ")");
+        }
+        try (ch; FileLock lock = ch.tryLock()) {
+            if (lock == null) {
+                throw new BadUsageException("--db: " + m.db() + ": another matrix is writing to it");
+            }
+            ResultStore opened;
+            try {
+                opened = ResultStore.open(m.db());
+            } catch (java.sql.SQLException e) {
+                throw new BadUsageException("--db: " + m.db() + ": not a usable results store (" + e.getMessage() + ")");
+            }
+            try (ResultStore store = opened) {
+                store.saveMachine(machine, Doctor.toJson(Doctor.system().run()));
+                String matrixId = UUID.randomUUID().toString();
+                store.saveMatrix(matrixId, machine.machineId(), commandText, m.orderSeed(), Instant.now().toString(),
+                        specJson(m));
+                MatrixRunner runner = new MatrixRunner(m, store, machine, matrixId, home, jar, ProfileProbe.withUserCache());
+                List<PlannedRun> todo = runner.remaining(spec.retryFailed);
+                out.printf("matrix %s: %d runs%s, %d already in %s, %d to run (order seed %d)%n", matrixId.substring(0, 8),
+                        m.plan().size(), shardText(m), m.plan().size() - todo.size(), m.db(), todo.size(), m.orderSeed());
+                out.flush();
+                MatrixRunner.Summary s = runner.run(todo, Progress.forConsole(out));
+                out.printf("matrix done: %d ran (%d ok, %d failed, %d timed out, %d unsupported); results in %s%n", s.ran(),
+                        s.ok(), s.failed(), s.timedOut(), s.unsupported(), m.db());
+                if (!s.problems().isEmpty()) {
+                    out.println("runs that did not succeed:");
+                    s.problems().forEach(p -> out.println("  " + p));
+                }
+                return new Result(0, m.db());
+            }
+        }
+    }
+
+    private static String shardText(ResolvedMatrix m) {
+        return m.shard() == null ? "" : " (shard " + m.shard()[0] + "/" + m.shard()[1] + " of " + m.planned() + ")";
+    }
+
+    static String specJson(ResolvedMatrix m) throws IOException {
+        Map<String, Object> j = new LinkedHashMap<>();
+        j.put("runtimes", m.runtimes().stream().map(r -> Map.of("name", r.name(), "kind", r.kind().name().toLowerCase(),
+                "vendor", r.vendor(), "version", r.version(), "path", r.realPath().toString())).toList());
+        j.put("profiles", m.profiles().stream().map(Profile::name).toList());
+        j.put("policies", m.policies());
+        j.put("particles", m.particles());
+        j.put("datasets", m.datasets().stream().map(d -> Map.of("label", d.label(), "path", d.dir().toString(),
+                "digest", d.digest(), "durationS", d.durationS())).toList());
+        j.put("repeat", m.repeat());
+        j.put("seed", m.seed());
+        j.put("orderSeed", m.orderSeed());
+        j.put("timeScale", m.timeScale());
+        j.put("timeoutS", m.timeoutS());
+        j.put("pinCpu", m.pinCpu());
+        j.put("workloadArgs", m.workloadArgs());
+        j.put("shard", m.shard() == null ? null : m.shard()[0] + "/" + m.shard()[1]);
+        j.put("planned", m.planned());
+        j.put("thisShard", m.plan().size());
+        return new ObjectMapper().writeValueAsString(j);
+    }
+}

@@ -1,0 +1,52 @@
+package org.jmclbench.tooling.runner;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+import org.jmclbench.tooling.runtime.LaunchPlan;
+import org.jmclbench.tooling.runtime.RuntimeInfo;
+
+/** Builds the command line of one workload process (docs/FORMATS.md section 2), as an argument list. */
+public final class WorkloadCommand {
+
+    /** The workload's entry point in the workload jar. */
+    public static final String MAIN_CLASS = "org.jmclbench.workload.WorkloadMain";
+
+    private WorkloadCommand() {
+    }
+
+    /**
+     * {@code [prefix] <java> <flags> -Djmclbench.home=H -cp JAR WorkloadMain run <args>} for a JVM,
+     * {@code [prefix] <native> run <args>} for the native baseline.
+     */
+    public static List<String> build(PlannedRun run, LaunchPlan plan, List<String> extraJvmFlags, Path home, Path jar,
+                                     Path out, double timeScale, List<String> workloadArgs) {
+        List<String> cmd = new ArrayList<>(plan.prefix());
+        RuntimeInfo rt = run.runtime();
+        cmd.add(rt.path().toString());
+        if (rt.isJvm()) {
+            cmd.addAll(plan.jvmFlags());
+            cmd.addAll(extraJvmFlags);
+            cmd.add("-Djmclbench.home=" + home);
+            cmd.add("-cp");
+            cmd.add(jar.toString());
+            cmd.add(MAIN_CLASS);
+        }
+        cmd.add("run");
+        cmd.addAll(List.of("-p", String.valueOf(run.particles()), "-n", String.valueOf(run.repetition()),
+                "-j", rt.name(), "-O", out.toString(), "--dataset", run.dataset().dir().toString()));
+        if (run.policy().equals("ideal")) {
+            cmd.add("--ideal");
+        } else {
+            cmd.addAll(List.of("--policy", run.policy()));
+        }
+        cmd.addAll(List.of("--seed", String.valueOf(run.seed())));
+        if (timeScale != 1.0) {
+            cmd.addAll(List.of("--time-scale", String.format(Locale.ROOT, "%s", timeScale)));
+        }
+        cmd.addAll(workloadArgs);
+        return cmd;
+    }
+}

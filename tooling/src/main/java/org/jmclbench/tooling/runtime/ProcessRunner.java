@@ -1,0 +1,84 @@
+package org.jmclbench.tooling.runtime;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+/** Runs a short helper process (a probe) from an argument list, with a timeout, capturing its output. */
+public final class ProcessRunner {
+
+    /** What a finished (or killed) helper process left: exit code, output, whether it timed out. */
+    public record Result(int exitCode, String stdout, String stderr, boolean timedOut) {
+        /** Standard output and error together, for parsers that accept either. */
+        public String output() {
+            return stdout + stderr;
+        }
+
+        public boolean ok() {
+            return !timedOut && exitCode == 0;
+        }
+    }
+
+    private ProcessRunner() {
+    }
+
+    /**
+     * Runs {@code command} with a timeout; output goes to temporary files (not pipes) so that a
+     * chatty child can never block on a full pipe. A start failure is reported as exit code 127.
+     */
+    public static Result run(List<String> command, long timeoutMs) {
+        Path out = null;
+        Path err = null;
+        try {
+            out = Files.createTempFile("jmclbench-probe", ".out");
+            err = Files.createTempFile("jmclbench-probe", ".err");
+            ProcessBuilder pb = new ProcessBuilder(command);
+            pb.redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")));
+            pb.redirectOutput(out.toFile());
+            pb.redirectError(err.toFile());
+            Process p;
+            try {
+                p = pb.start();
+            } catch (IOException e) {
+                return new Result(127, "", e.getMessage() == null ? "cannot start" : e.getMessage(), false);
+            }
+            boolean finished = p.waitFor(timeoutMs, TimeUnit.MILLISECONDS);
+            if (!finished) {
+                ProcessTree.kill(p);
+            }
+            int code = finished ? p.exitValue() : -1;
+            return new Result(code, readText(out), readText(err), !finished);
+        } catch (IOException e) {
+            return new Result(127, "", String.valueOf(e.getMessage()), false);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return new Result(130, "", "interrupted", false);
+        } finally {
+            deleteQuietly(out);
+            deleteQuietly(err);
+        }
+    }
+
+    /**
+     * A whole file as UTF-8, malformed bytes replaced (a crashing child may print anything), read
+     * through a stream because procfs files report size 0 and {@code Files.readString} trusts it.
+     */
+    public static String readText(Path p) throws IOException {
+        try (java.io.InputStream in = Files.newInputStream(p)) {
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+    }
+
+    private static void deleteQuietly(Path p) {
+        if (p != null) {
+            try {
+                Files.deleteIfExists(p);
+            } catch (IOException ignored) {
+                // a temporary file left behind is harmless
+            }
+        }
+    }
+}

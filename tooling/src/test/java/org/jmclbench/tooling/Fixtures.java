@@ -1,0 +1,84 @@
+package org.jmclbench.tooling;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+
+import org.jmclbench.tooling.cli.JmclbenchCli;
+
+/** Test fixtures: a project home with a tiny dataset, fake runtimes, and a CLI call that captures output. */
+public final class Fixtures {
+
+    private Fixtures() {
+    }
+
+    /** A project home with {@code datasets/tiny} (1 s) and a stand-in workload jar; sets the system properties. */
+    public static Path home(Path dir) throws IOException {
+        Path ds = dir.resolve("datasets/tiny");
+        Files.createDirectories(ds);
+        StringBuilder odo = new StringBuilder();
+        StringBuilder real = new StringBuilder();
+        for (int i = 0; i < 20; i++) {
+            odo.append(String.format(java.util.Locale.ROOT, "%.16e  %.16e  %.16e  %.16e%n", i * 0.05, 0.001, 0.0, 0.0));
+            real.append(String.format(java.util.Locale.ROOT, "%.16e  %.16e  %.16e  %.16e%n", i * 0.05, 0.4 + i * 0.001, 0.4, 0.0));
+        }
+        Files.writeString(ds.resolve("odometry.txt"), odo);
+        Files.writeString(ds.resolve("real.txt"), real);
+        Files.writeString(ds.resolve("laser.txt"), "1.0e-01  1.0e+00\n5.0e-01  2.0e+00\n");
+        Files.writeString(ds.resolve("dataset.properties"), "format=jmclbench-dataset/1\nduration=1.0\n");
+        Path jar = dir.resolve("workload/target/jmclbench-workload.jar");
+        Files.createDirectories(jar.getParent());
+        Files.writeString(jar, "stand-in: the fake runtimes never read it");
+        System.setProperty("jmclbench.home", dir.toString());
+        System.setProperty("jmclbench.cache", dir.resolve("cache").toString());
+        return dir;
+    }
+
+    /** A fake {@code java} doing {@code mode} after {@code sleepS} seconds; {@code reject} is a flag it refuses. */
+    public static Path fakeJava(Path dir, String name, String mode, double sleepS, String reject, int major) throws IOException {
+        String script;
+        try (InputStream in = Fixtures.class.getResourceAsStream("fake-java.sh")) {
+            script = new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+        script = script.replace("@MODE@", mode).replace("@SLEEP@", String.valueOf(sleepS))
+                .replace("@REJECT@", reject == null ? "" : reject).replace("@MAJOR@", String.valueOf(major))
+                .replace("@HANGMARK@", hangMark(dir));
+        Path bin = dir.resolve(name).resolve("bin");
+        Files.createDirectories(bin);
+        Path java = bin.resolve("java");
+        Files.writeString(java, script);
+        Files.setPosixFilePermissions(java, PosixFilePermissions.fromString("rwxr-xr-x"));
+        return java;
+    }
+
+    /** A sleep length unique to this test folder, so that a test can find a leftover hung process. */
+    public static String hangMark(Path dir) {
+        return "1000." + Math.abs(dir.toString().hashCode());
+    }
+
+    /** What a CLI call printed and returned. */
+    public record CliResult(int exitCode, String out, String err) {
+    }
+
+    /** Runs the CLI in this JVM, capturing stdout and stderr. */
+    public static synchronized CliResult cli(String... args) {
+        PrintStream oldOut = System.out;
+        PrintStream oldErr = System.err;
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        try {
+            System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
+            System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+            int rc = JmclbenchCli.execute(args);
+            return new CliResult(rc, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+        } finally {
+            System.setOut(oldOut);
+            System.setErr(oldErr);
+        }
+    }
+}

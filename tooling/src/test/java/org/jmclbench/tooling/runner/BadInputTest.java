@@ -1,0 +1,126 @@
+package org.jmclbench.tooling.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import org.jmclbench.tooling.Fixtures;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Bad input is one line naming the option or file:line, exit code 2, and nothing run or recorded. */
+class BadInputTest {
+
+    @TempDir
+    Path dir;
+    Path db;
+    Path fake;
+
+    @BeforeEach
+    void setUp() throws Exception {
+        Fixtures.home(dir);
+        db = dir.resolve("out/results.db");
+        fake = Fixtures.fakeJava(dir, "jvm", "ok", 0, null, 21);
+    }
+
+    private void assertRejected(String expected, String... args) {
+        Fixtures.CliResult r = Fixtures.cli(args);
+        assertEquals(2, r.exitCode(), r.out() + r.err());
+        String err = r.err().strip();
+        assertEquals(1, err.lines().count(), "one line: " + err);
+        assertTrue(err.startsWith("jmclbench: "), err);
+        assertTrue(err.contains(expected), err + " should contain " + expected);
+        assertFalse(Files.exists(db), "nothing may be recorded");
+        assertFalse(Files.exists(dir.resolve("out/runs")), "nothing may run");
+    }
+
+    @Test
+    void unknownProfile() {
+        assertRejected("--profiles: unknown profile component 'g2'", "matrix", "--java", fake.toString(),
+                "--profiles", "g1,g2+fifo", "--datasets", "tiny", "--db", db.toString());
+    }
+
+    @Test
+    void conflictingProfile() {
+        assertRejected("two gc settings: g1 and zgc", "matrix", "--java", fake.toString(),
+                "--profiles", "g1+zgc", "--datasets", "tiny", "--db", db.toString());
+    }
+
+    @Test
+    void unknownRuntime() {
+        assertRejected("--runtimes: unknown runtime 'nosuch-99'", "matrix", "--java", fake.toString(),
+                "--runtimes", "nosuch-99", "--datasets", "tiny", "--db", db.toString());
+    }
+
+    @Test
+    void pathThatIsNotAJvm() throws Exception {
+        Path notJvm = dir.resolve("not-java");
+        Files.writeString(notJvm, "#!/bin/sh\necho hello\n");
+        notJvm.toFile().setExecutable(true);
+        assertRejected("--java: " + notJvm + ": not a JVM", "matrix", "--java", notJvm.toString(),
+                "--datasets", "tiny", "--db", db.toString());
+        assertRejected("--java: /no/such/java: not a JVM (no such file)", "matrix", "--java", "/no/such/java",
+                "--datasets", "tiny", "--db", db.toString());
+    }
+
+    @Test
+    void badMatrixFileNamesFileAndLine() throws Exception {
+        Path m = dir.resolve("m.properties");
+        Files.writeString(m, "# a matrix\nprofiles = g1\nparticles = 100, many\n");
+        assertRejected(m + ":3: particles: 'many' is not a positive integer", "matrix", "--matrix", m.toString(),
+                "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
+        Files.writeString(m, "profiles = g1\n\ncolour = blue\n");
+        assertRejected(m + ":3: unknown key 'colour'", "matrix", "--matrix", m.toString(), "--java", fake.toString(),
+                "--datasets", "tiny", "--db", db.toString());
+        Files.writeString(m, "java = " + fake + "\nprofiles = g1\nruntimes = fake-21, nosuch-1\ndatasets = tiny\n");
+        assertRejected(m + ":3: runtimes: unknown runtime 'nosuch-1'", "matrix", "--matrix", m.toString(),
+                "--db", db.toString());
+        Files.writeString(m, "java = " + fake + "\nprofiles = g1\nthis line has no equals sign\n");
+        assertRejected(m + ":3: expected 'key = value'", "matrix", "--matrix", m.toString(), "--db", db.toString());
+        assertRejected("--matrix: " + dir.resolve("missing") + ": cannot read", "matrix", "--matrix",
+                dir.resolve("missing").toString(), "--db", db.toString());
+    }
+
+    @Test
+    void badOptionValues() {
+        assertRejected("--particles: '0' is not a positive integer", "matrix", "--java", fake.toString(),
+                "--particles", "100,0", "--datasets", "tiny", "--db", db.toString());
+        assertRejected("--policies: unknown policy 'drop'", "matrix", "--java", fake.toString(),
+                "--policies", "skip,drop", "--datasets", "tiny", "--db", db.toString());
+        assertRejected("--shard: '3/2' is not a shard", "matrix", "--java", fake.toString(),
+                "--shard", "3/2", "--datasets", "tiny", "--db", db.toString());
+        assertRejected("--datasets: dataset 'nosuch': no such folder", "matrix", "--java", fake.toString(),
+                "--datasets", "nosuch", "--db", db.toString());
+        assertRejected("--workload-arg: '--seed' is set by the runner", "matrix", "--java", fake.toString(),
+                "--datasets", "tiny", "--workload-arg", "--seed 3", "--db", db.toString());
+    }
+
+    @Test
+    void databaseThatIsNotOne() throws Exception {
+        Files.createDirectories(db.getParent());
+        Files.writeString(db, "not a database, just text that happens to sit here");
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
+        assertEquals(2, r.exitCode(), r.out() + r.err());
+        assertTrue(r.err().strip().startsWith("jmclbench: --db: " + db + ": not a usable results store"), r.err());
+        assertEquals("not a database, just text that happens to sit here", Files.readString(db));
+        assertFalse(Files.exists(dir.resolve("out/runs")));
+    }
+
+    @Test
+    void matrixFileAndCommandLineCombine() throws Exception {
+        Path m = dir.resolve("m.properties");
+        Files.writeString(m, "java = " + fake + "\nprofiles = g1, zgc\nparticles = 100\nparticles = 200\n"
+                + "policies = skip\ndatasets = tiny\nrepeat = 2\n");
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--matrix", m.toString(), "--particles", "300", "--dry-run",
+                "--db", db.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        // 2 profiles x 1 size (the command line replaced the file's two) x 2 repetitions
+        assertTrue(r.out().startsWith("4 runs planned"), r.out());
+        assertTrue(r.out().contains("fake-21 zgc skip 300p tiny #2"), r.out());
+        assertFalse(Files.exists(db));
+    }
+}

@@ -1,0 +1,88 @@
+package org.jmclbench.tooling.runtime;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.jmclbench.tooling.Fixtures;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** A flag the JVM rejects makes the profile unsupported (cached), never a crash. */
+class ProfileProbeTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void fakeJvmRejectingShenandoahMarksOnlyThatUnsupported() throws Exception {
+        Path java = Fixtures.fakeJava(dir, "jvm", "ok", 0, "-XX:+UseShenandoahGC", 21);
+        RuntimeInfo rt = JvmProber.probe(java, new String[1]).orElseThrow();
+        Path cache = dir.resolve("probes.properties");
+        ProfileProbe probe = new ProfileProbe(cache);
+        ProfileProbe.Support shen = probe.check(rt, Profile.parse("shenandoah+pretouch", "t"), "0");
+        assertFalse(shen.supported());
+        assertTrue(shen.reason().contains("Unrecognized VM option 'UseShenandoahGC'"), shen.reason());
+        assertTrue(probe.check(rt, Profile.parse("g1", "t"), "0").supported());
+        assertTrue(probe.check(rt, Profile.parse("zgc+pretouch", "t"), "0").supported());
+        // the answers are cached on disk: a new probe does not ask again
+        assertTrue(Files.readString(cache).contains("UseShenandoahGC"));
+        ProfileProbe again = new ProfileProbe(cache);
+        assertFalse(again.check(rt, Profile.parse("shenandoah+pretouch", "t"), "0").supported());
+    }
+
+    @Test
+    void realJvmRejectsABogusFlag() {
+        Path java = Path.of(ProcessHandle.current().info().command().orElseThrow());
+        RuntimeInfo rt = JvmProber.probe(java, new String[1]).orElseThrow();
+        assertEquals(Runtime.version().feature(), rt.major());
+        ProfileProbe probe = new ProfileProbe(dir.resolve("p.properties"));
+        ProfileProbe.Support bogus = probe.checkFlags(rt, List.of("-XX:+UseJmclbenchBogusFlag"));
+        assertFalse(bogus.supported());
+        assertTrue(bogus.reason().contains("UseJmclbenchBogusFlag"), bogus.reason());
+        assertTrue(probe.checkFlags(rt, List.of("-XX:+UseSerialGC")).supported());
+    }
+
+    @Test
+    void unsupportedProfileIsRecordedAsUnsupportedInTheMatrix() throws Exception {
+        Fixtures.home(dir);
+        Path fake = Fixtures.fakeJava(dir, "jvm", "ok", 0, "-XX:+UseShenandoahGC", 21);
+        Path db = dir.resolve("out/r.db");
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--profiles", "g1,shenandoah",
+                "--datasets", "tiny", "--particles", "100", "--db", db.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.out().contains("1 ok, 0 failed, 0 timed out, 1 unsupported"), r.out());
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + db); var s = c.createStatement();
+             var rs = s.executeQuery("SELECT status, failure, run_dir FROM runs WHERE profile = 'shenandoah'")) {
+            assertTrue(rs.next());
+            assertEquals("unsupported", rs.getString(1));
+            assertTrue(rs.getString(2).contains("UseShenandoahGC"));
+        }
+    }
+
+    @Test
+    void profilesParseAndBuildTheirFlags() {
+        Profile p = Profile.parse("epsilon+pretouch+fifo+pinned", "--profiles");
+        RuntimeInfo jvm = new RuntimeInfo("x-21", RuntimeInfo.Kind.JVM, "x", "21", 21, Path.of("/j"), Path.of("/j"));
+        LaunchPlan plan = LaunchPlan.of(jvm, p, "1");
+        assertEquals(List.of("chrt", "-f", "80", "taskset", "-c", "1"), plan.prefix());
+        assertEquals(List.of("-XX:+UnlockExperimentalVMOptions", "-XX:+UseEpsilonGC", "-XX:+AlwaysPreTouch",
+                "-Xms2048m", "-Xmx2048m"), plan.jvmFlags());
+        assertEquals(List.of("-XX:TieredStopAtLevel=1", "-XX:+AlwaysPreTouch", "-Xms512m", "-Xmx512m"),
+                LaunchPlan.of(jvm, Profile.parse("c1+pretouch", "t"), "0").jvmFlags());
+        RuntimeInfo jdk11 = new RuntimeInfo("x-11", RuntimeInfo.Kind.JVM, "x", "11", 11, Path.of("/j"), Path.of("/j"));
+        assertEquals(List.of("-XX:+UnlockExperimentalVMOptions", "-XX:+UseZGC"),
+                LaunchPlan.of(jdk11, Profile.parse("zgc", "t"), "0").jvmFlags());
+        assertEquals("fifo+pinned", p.forNative().name());
+        assertEquals("default", Profile.parse("g1+int", "t").forNative().name());
+        assertThrows(BadUsageException.class, () -> Profile.parse("int+c1", "t"));
+        assertThrows(BadUsageException.class, () -> Profile.parse("g1+", "t"));
+        assertThrows(BadUsageException.class, () -> Profile.parse("fifo+fifo", "t"));
+        assertEquals("zgc+fifo", Profile.parse(" zgc + fifo ", "t").name());
+    }
+}

@@ -1,0 +1,121 @@
+package org.jmclbench.tooling.store;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.ResultSet;
+import java.sql.Statement;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.HdrHistogram.Histogram;
+import org.jmclbench.tooling.Fixtures;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+/** Merge keeps every run once with its folder; series are down-sampled keeping latency peaks. */
+class StoreTest {
+
+    @TempDir
+    Path dir;
+
+    private void matrix(Path db, String particles, String... javas) {
+        List<String> a = new ArrayList<>(List.of("matrix", "--datasets", "tiny", "--particles", particles, "--db", db.toString()));
+        for (String j : javas) {
+            a.add("--java");
+            a.add(j);
+        }
+        Fixtures.CliResult r = Fixtures.cli(a.toArray(String[]::new));
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+    }
+
+    @Test
+    void mergeKeepsEveryRunOnceAndCopiesFolders() throws Exception {
+        Fixtures.home(dir);
+        String a = Fixtures.fakeJava(dir, "a", "ok", 0, null, 17).toString();
+        String b = Fixtures.fakeJava(dir, "b", "ok", 0, null, 21).toString();
+        String bad = Fixtures.fakeJava(dir, "bad", "crash", 0, null, 11).toString();
+        Path dbA = dir.resolve("A/results.db");
+        Path dbB = dir.resolve("B/results.db");
+        matrix(dbA, "100,200", a, bad);        // fake-17 x2, fake-11 x2 (failed)
+        matrix(dbB, "200,300", a, b);          // fake-17 200 overlaps A's; fake-21 x2
+        Path dbC = dir.resolve("C/results.db");
+        Fixtures.CliResult r = Fixtures.cli("merge", dbA.toString(), dbB.toString(), "--into", dbC.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.out().contains("B/results.db: 3 runs merged, 1 already in"), r.out());
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + dbC); Statement s = c.createStatement()) {
+            try (ResultSet rs = s.executeQuery("SELECT count(*), count(DISTINCT run_key), sum(status='ok') FROM runs")) {
+                rs.next();
+                assertEquals(7, rs.getInt(1));
+                assertEquals(7, rs.getInt(2));
+                assertEquals(5, rs.getInt(3));
+            }
+            try (ResultSet rs = s.executeQuery("SELECT count(*) FROM (SELECT DISTINCT run_key FROM metrics)")) {
+                rs.next();
+                assertEquals(5, rs.getInt(1), "metrics of every ok run came along");
+            }
+            try (ResultSet rs = s.executeQuery("SELECT run_dir FROM runs WHERE status = 'ok'")) {
+                while (rs.next()) {
+                    assertTrue(Files.isRegularFile(dbC.getParent().resolve(rs.getString(1)).resolve("summary.json")), rs.getString(1));
+                }
+            }
+            try (ResultSet rs = s.executeQuery("SELECT count(*) FROM matrices")) {
+                rs.next();
+                assertEquals(2, rs.getInt(1));
+            }
+        }
+        // merging again changes nothing
+        Fixtures.CliResult again = Fixtures.cli("merge", dbA.toString(), dbB.toString(), "--into", dbC.toString());
+        assertTrue(again.out().contains("0 runs merged, 4 already in"), again.out());
+        assertEquals(2, Fixtures.cli("merge", dir.resolve("nope.db").toString(), "--into", dbC.toString()).exitCode());
+        Path notDb = dir.resolve("not.db");
+        Files.writeString(notDb, "hello");
+        Path dbD = dir.resolve("D/results.db");
+        Fixtures.CliResult rejected = Fixtures.cli("merge", dbA.toString(), notDb.toString(), "--into", dbD.toString());
+        assertEquals(2, rejected.exitCode(), rejected.err());
+        assertTrue(rejected.err().strip().startsWith("jmclbench: " + notDb + ": not a jmclbench results store"), rejected.err());
+        assertTrue(!Files.exists(dbD), "nothing is merged when a source is bad");
+    }
+
+    @Test
+    void latencySeriesKeepsPeaksWhenDownSampled() throws Exception {
+        List<RunIngest.Job> jobs = new ArrayList<>();
+        for (int i = 0; i < 5000; i++) {
+            long lat = i == 3333 ? 99_000_000 : 1_000_000 + i;
+            jobs.add(new RunIngest.Job(i, i * 50_000_000L, i * 50_000_000L + 1000, i * 50_000_000L + 1000 + lat,
+                    i * 50_000_000L + 50_000_000L, "done", lat));
+        }
+        JsonNode s = new ObjectMapper().readTree(RunIngest.latencySeries(jobs));
+        assertTrue(s.get("rows").size() <= RunIngest.MAX_SERIES_ROWS);
+        boolean peak = false;
+        for (JsonNode row : s.get("rows")) {
+            peak |= row.get(2).asLong() == 99_000_000;
+        }
+        assertTrue(peak, "the slowest job survives down-sampling");
+        List<double[]> rows = new ArrayList<>();
+        for (int i = 0; i < 4501; i++) {
+            rows.add(new double[] {i});
+        }
+        List<double[]> kept = RunIngest.strided(rows);
+        assertTrue(kept.size() <= RunIngest.MAX_SERIES_ROWS, "" + kept.size());
+        assertEquals(4500, kept.get(kept.size() - 1)[0]);
+    }
+
+    @Test
+    void histogramsRoundTrip() {
+        Histogram h = new Histogram(3);
+        for (int i = 1; i <= 1000; i++) {
+            h.recordValue(i * 1000L);
+        }
+        Histogram back = RunIngest.decode(RunIngest.encode(h));
+        assertEquals(1000, back.getTotalCount());
+        assertEquals(h.getValueAtPercentile(99), back.getValueAtPercentile(99));
+    }
+}

@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# A fake runtime for the runner's tests: answers like a JVM to probes and, as the workload, does
+# what MODE says (ok, crash, hang, garbage, badjson, oom, badexit, wrongrun: a valid folder for
+# another particle count). Tests copy it with the
+# placeholders replaced. Never a real measurement.
+MODE=@MODE@
+SLEEP=@SLEEP@
+REJECT='@REJECT@'
+MAJOR=@MAJOR@
+for a in "$@"; do
+    if [ -n "$REJECT" ] && [ "$a" = "$REJECT" ]; then
+        echo "Unrecognized VM option '${a#-XX:+}'" >&2
+        echo "Error: Could not create the Java Virtual Machine." >&2
+        exit 1
+    fi
+done
+if [ "${1:-}" = "-XshowSettings:properties" ]; then
+    cat >&2 <<PROPS
+Property settings:
+    java.runtime.name = Fake Runtime Environment
+    java.runtime.version = $MAJOR.0.1+fake
+    java.specification.version = $MAJOR
+    java.vendor = Fake Systems
+    java.version = $MAJOR.0.1
+    java.vm.name = Fake 64-Bit VM
+    sun.boot.library.path = /nonexistent
+        /continued/line
+
+fake version "$MAJOR.0.1"
+PROPS
+    exit 0
+fi
+if [ "${*: -1}" = "-version" ]; then
+    echo "fake version \"$MAJOR.0.1\"" >&2
+    exit 0
+fi
+p=400 n=1 j=fake O=results policy=skip ideal=false seed=1
+while [ $# -gt 0 ]; do
+    case "$1" in
+        -p) p=$2; shift ;;
+        -n) n=$2; shift ;;
+        -j) j=$2; shift ;;
+        -O) O=$2; shift ;;
+        --policy) policy=$2; shift ;;
+        --ideal) policy=ideal; ideal=true ;;
+        --seed) seed=$2; shift ;;
+    esac
+    shift
+done
+if [ "$MODE" = wrongrun ]; then p=$((p + 1)); fi
+case $policy in skip) T=SkipTest ;; terminate) T=TermTest ;; queue) T=QueueTest ;; *) T=IdealTest ;; esac
+sleep "$SLEEP"
+echo "fake workload: $p particles, policy $policy"
+case $MODE in
+    crash)
+        echo "# A fatal error has been detected by the Java Runtime Environment:" >&2
+        echo "#  SIGSEGV (0xb) at pc=0x0000deadbeef" >&2
+        kill -SEGV $$ ;;
+    hang)
+        sleep @HANGMARK@ ;;
+    garbage)
+        echo "%%%% not a run %%%%"; exit 0 ;;
+    oom)
+        echo 'Exception in thread "main" java.lang.OutOfMemoryError: Java heap space' >&2; exit 1 ;;
+    badexit)
+        echo "jmclbench: something broke" >&2; exit 1 ;;
+esac
+leaf=$O/$j/nocov/$p/$T/$n
+mkdir -p "$leaf.partial"
+{
+    echo "# index release_ns start_ns end_ns deadline_ns outcome cpu_ns"
+    for i in 0 1 2 3 4 5 6 7 8 9; do
+        r=$((i * 50000000))
+        if [ $i = 7 ]; then
+            echo "$i $r -1 -1 $((r + 50000000)) skipped -1"
+        else
+            echo "$i $r $((r + 100000 + i * 1000)) $((r + 2100000 + i * 10000)) $((r + 50000000)) done 1900000"
+        fi
+    done
+} > "$leaf.partial/odoData.txt"
+{
+    echo "# index release_ns start_ns end_ns deadline_ns outcome cpu_ns"
+    for i in 0 1 2 3; do
+        r=$((i * 110000000 + 7000000))
+        echo "$i $r $((r + 200000)) $((r + 9200000)) $((r + 110000000)) done 8900000"
+    done
+} > "$leaf.partial/laserData.txt"
+for i in 0 1 2 3 4 5 6 7 8 9; do
+    echo "$i.0000000000000000e-02  4.0e-01  4.0e-01  0.0e+00"
+done > "$leaf.partial/position.txt"
+for i in 0 1 2 3 4 5 6 7 8 9; do
+    echo "$i.0000000000000000e-02  1.0e-03  2.0e-03  3.0e-03  1.0e-02"
+done > "$leaf.partial/positionDeviation.txt"
+printf 'deviationXY 0.003\nmissCount 1\n' > "$leaf.partial/data.txt"
+if [ "$MODE" = badjson ]; then
+    echo '{"schema": "jmclbench-run/1", "status": "comp' > "$leaf.partial/summary.json"
+else
+    S='{"count": 9, "mean": 2000000.0, "stdev": 1000.0, "min": 100000, "p50": 2000000, "p90": 2100000, "p99": 2200000, "p999": 2200000, "max": 2200000}'
+    cat > "$leaf.partial/summary.json" <<JSON
+{"schema": "jmclbench-run/1", "status": "complete",
+ "parameters": {"runtimeName": "$j", "particles": $p, "number": $n, "policy": "$policy", "ideal": $ideal, "seed": $seed},
+ "environment": {"runtime": {"language": "java", "name": "$j"}},
+ "durationS": 0.5, "missCount": 1,
+ "tasks": {"predict": {"released": 10, "completed": 9, "done": 9, "late": 0, "skipped": 1, "terminated": 0, "missCount": 1,
+                       "releaseJitterNs": $S, "taskLatencyNs": $S, "responseTimeNs": $S, "cpuNs": $S},
+           "update": {"released": 4, "completed": 4, "done": 4, "late": 0, "skipped": 0, "terminated": 0, "missCount": 0,
+                       "releaseJitterNs": $S, "taskLatencyNs": $S, "responseTimeNs": $S, "cpuNs": $S},
+           "all": {"released": 14, "completed": 13, "done": 13, "late": 0, "skipped": 1, "terminated": 0, "missCount": 1,
+                       "releaseJitterNs": $S, "taskLatencyNs": $S, "responseTimeNs": $S, "cpuNs": $S}},
+ "dispatcherLatenessNs": $S,
+ "deviation": {"xy": {"mean": 0.003, "max": 0.01}, "x": {"mean": 0.001, "max": 0.002}, "y": {"mean": 0.002, "max": 0.003}, "angle": {"mean": 0.01, "max": 0.02}}}
+JSON
+fi
+mv "$leaf.partial" "$leaf"
+exit 0

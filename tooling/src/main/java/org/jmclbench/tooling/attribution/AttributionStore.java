@@ -23,6 +23,22 @@ public final class AttributionStore {
     private AttributionStore() {
     }
 
+    /** Inserts {@code attributions} rows (the table must exist: {@link #SCHEMA}). */
+    public static void insertRows(Connection conn, String runKey, java.util.List<AttributionData.Row> rows) throws SQLException {
+        try (PreparedStatement ps = conn.prepareStatement(
+                "INSERT INTO attributions (run_key, task, job_index, outcome, causes_json) VALUES (?,?,?,?,?)")) {
+            for (AttributionData.Row r : rows) {
+                ps.setString(1, runKey);
+                ps.setString(2, r.task());
+                ps.setInt(3, r.jobIndex());
+                ps.setString(4, r.outcome());
+                ps.setString(5, r.causesJson());
+                ps.addBatch();
+            }
+            ps.executeBatch();
+        }
+    }
+
     /** Creates the {@code attributions} table when the store has none. */
     public static void createSchema(Connection conn) throws SQLException {
         try (Statement s = conn.createStatement()) {
@@ -33,18 +49,7 @@ public final class AttributionStore {
     /** Inserts the run's attribution rows, metrics and pause series. */
     public static void write(Connection conn, String runKey, AttributionData data) throws SQLException {
         createSchema(conn);
-        try (PreparedStatement ps = conn.prepareStatement(
-                "INSERT INTO attributions (run_key, task, job_index, outcome, causes_json) VALUES (?,?,?,?,?)")) {
-            for (AttributionData.Row r : data.rows()) {
-                ps.setString(1, runKey);
-                ps.setString(2, r.task());
-                ps.setInt(3, r.jobIndex());
-                ps.setString(4, r.outcome());
-                ps.setString(5, r.causesJson());
-                ps.addBatch();
-            }
-            ps.executeBatch();
-        }
+        insertRows(conn, runKey, data.rows());
         try (PreparedStatement ps = conn.prepareStatement(
                 "INSERT INTO metrics (run_key, task, metric, stat, value) VALUES (?,?,?,?,?)")) {
             for (MetricRow m : data.metrics()) {

@@ -15,6 +15,7 @@ public final class MatrixSpec {
     public final List<Sourced<String>> policies = new ArrayList<>();
     public final List<Sourced<Integer>> particles = new ArrayList<>();
     public final List<Sourced<String>> datasets = new ArrayList<>();
+    public final List<Sourced<String>> loads = new ArrayList<>();
     public final List<Sourced<String>> workloadArgs = new ArrayList<>();
     public Integer repeat;
     public int[] shard; // {k, n}, 1-based k

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.List;
 
 import org.jmclbench.tooling.load.LoadScenario;
+import org.jmclbench.tooling.load.LoadSettings;
 import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.CpuList;
 
@@ -12,7 +13,7 @@ final class MatrixOptions {
 
     /** The keys a matrix file accepts (the long options without dashes). */
     static final List<String> KEYS = List.of("runtimes", "java", "profiles", "policies", "particles", "datasets",
-            "load", "repeat", "shard", "order-seed", "seed", "timeout", "time-scale", "pin-cpu", "workload-arg", "db", "native");
+            "load", "load-alloc", "repeat", "shard", "order-seed", "seed", "timeout", "time-scale", "pin-cpu", "workload-arg", "db", "native");
 
     private MatrixOptions() {
     }
@@ -62,6 +63,22 @@ final class MatrixOptions {
             case "seed" -> spec.seed = parseLong(value.strip(), at);
             case "timeout" -> spec.timeoutS = positiveDouble(value.strip(), at);
             case "time-scale" -> spec.timeScale = positiveDouble(value.strip(), at);
+            case "load-alloc" -> {
+                String[] f = value.strip().split(",");
+                if (f.length != 2) {
+                    throw new BadUsageException(at + ": '" + value.strip() + "' must be MBPS,LIVEMB (e.g. 100,16)");
+                }
+                int live;
+                try {
+                    live = Integer.parseInt(f[1].strip());
+                } catch (NumberFormatException e) {
+                    live = -1;
+                }
+                if (live < 0) {
+                    throw new BadUsageException(at + ": live set '" + f[1].strip() + "' must be an integer >= 0");
+                }
+                spec.loadSettings = new LoadSettings(LoadSettings.defaults().cpuWorkers(), positiveInt(f[0].strip(), at), live);
+            }
             case "pin-cpu" -> {
                 try {
                     if (CpuList.parse(value).isEmpty()) {

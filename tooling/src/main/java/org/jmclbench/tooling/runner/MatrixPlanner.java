@@ -85,6 +85,8 @@ public final class MatrixPlanner {
         if (loads.isEmpty()) {
             loads.add(LoadScenario.NONE);
         }
+        org.jmclbench.tooling.load.LoadSettings loadSettings = spec.loadSettings != null ? spec.loadSettings
+                : org.jmclbench.tooling.load.LoadSettings.defaults();
         List<String> workloadArgs = new ArrayList<>();
         for (Sourced<String> a : spec.workloadArgs) {
             for (String w : a.value().strip().split("\\s+")) {
@@ -111,7 +113,7 @@ public final class MatrixPlanner {
                             for (LoadScenario load : loads) {
                                 for (int rep = 1; rep <= repeat; rep++) {
                                     long runSeed = seed + rep - 1;
-                                    String key = runKey(machine, rt, effective, policy, n, d, load, rep, runSeed, timeScale,
+                                    String key = runKey(machine, rt, effective, policy, n, d, load, loadSettings, rep, runSeed, timeScale,
                                             workloadArgs);
                                     all.putIfAbsent(key, new PlannedRun(rt, effective, policy, n, d, rep, runSeed, load, key));
                                 }
@@ -133,7 +135,7 @@ public final class MatrixPlanner {
             }
         }
         List<PlannedRun> ordered = order(mine, repeat, orderSeed);
-        return new ResolvedMatrix(runtimes, profiles, policies, particles, datasets, List.copyOf(loads), repeat, seed, orderSeed, timeScale,
+        return new ResolvedMatrix(runtimes, profiles, policies, particles, datasets, List.copyOf(loads), loadSettings, repeat, seed, orderSeed, timeScale,
                 spec.timeoutS, pinCpu, List.copyOf(workloadArgs), db, nativeBinary, spec.shard, ordered, all.size());
     }
 
@@ -152,10 +154,11 @@ public final class MatrixPlanner {
     }
 
     static String runKey(MachineInfo m, RuntimeInfo rt, Profile p, String policy, int particles, Dataset d,
-                         LoadScenario load, int rep, long seed, double timeScale, List<String> workloadArgs) {
+                         LoadScenario load, org.jmclbench.tooling.load.LoadSettings loadSettings, int rep, long seed,
+                         double timeScale, List<String> workloadArgs) {
         String text = String.join("\n", "jmclbench-run-key/1", "machine=" + m.machineId(), "runtime=" + rt.name(),
                 "runtimeVersion=" + rt.version(), "profile=" + p.name(), "policy=" + policy, "particles=" + particles,
-                "dataset=" + d.label() + "@" + d.digest(), "load=" + load.label(), "repetition=" + rep, "seed=" + seed,
+                "dataset=" + d.label() + "@" + d.digest(), "load=" + load.label() + (load.alloc() ? " alloc=" + loadSettings.allocMbPerS() + "," + loadSettings.allocLiveMb() : ""), "repetition=" + rep, "seed=" + seed,
                 "timeScale=" + timeScale, "workloadArgs=" + String.join(" ", workloadArgs));
         return MachineInfo.sha256Hex(text).substring(0, 20);
     }

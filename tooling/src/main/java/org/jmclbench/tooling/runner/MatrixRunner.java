@@ -12,7 +12,6 @@ import java.util.Map;
 
 import org.jmclbench.tooling.attribution.AttributionData;
 import org.jmclbench.tooling.attribution.RunInstrumentation;
-import org.jmclbench.tooling.load.LoadSettings;
 import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.ProfileComponent;
 import org.jmclbench.tooling.runtime.ProfileProbe;
@@ -134,7 +133,7 @@ public final class MatrixRunner {
         RunOutcome o;
         // Event capture and load (docs/FORMATS.md sections 3 and 5): the load ends with the run.
         try (RunInstrumentation inst = RunInstrumentation.start(run.runtime().isJvm() ? run.runtime().major() : 0,
-                run.load(), LoadSettings.defaults(), folder, java.time.Duration.ofMillis((long) (matrix.timeoutFor(run) * 1000)))) {
+                run.load(), matrix.loadSettings(), folder, java.time.Duration.ofMillis((long) (matrix.timeoutFor(run) * 1000)))) {
             List<String> jvmFlags = new ArrayList<>(extra);
             jvmFlags.addAll(inst.jvmArgs());
             List<String> workloadArgs = new ArrayList<>(matrix.workloadArgs());

@@ -43,6 +43,14 @@ class LoadMatrixTest {
     }
 
     @Test
+    void aBadAllocLoadIsBadUsage() {
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--load", "alloc", "--load-alloc", "50",
+                "--datasets", "tiny", "--db", db.toString());
+        assertEquals(2, r.exitCode(), r.out() + r.err());
+        assertEquals("jmclbench: --load-alloc: '50' must be MBPS,LIVEMB (e.g. 100,16)", r.err().strip());
+    }
+
+    @Test
     void eachLoadIsOneMoreRunOfEachConfiguration() {
         Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--load", "none,cpu,alloc",
                 "--datasets", "tiny", "--dry-run", "--db", db.toString());
@@ -55,7 +63,7 @@ class LoadMatrixTest {
     @Test
     void theLoadIsRecordedPassedToTheWorkloadAndEndsWithTheRun() throws Exception {
         Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--load", "cpu,alloc",
-                "--datasets", "tiny", "--db", db.toString());
+                "--load-alloc", "50,8", "--datasets", "tiny", "--db", db.toString());
         assertEquals(0, r.exitCode(), r.out() + r.err());
         Map<String, String> commands = new HashMap<>();
         try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db);
@@ -67,7 +75,7 @@ class LoadMatrixTest {
             }
         }
         assertEquals(2, commands.size(), commands.toString());
-        assertTrue(commands.get("alloc").contains("\"--load-alloc\""), commands.get("alloc"));
+        assertTrue(commands.get("alloc").contains("\"--load-alloc\",\"50,8\""), commands.get("alloc"));
         assertTrue(commands.get("cpu").contains("\"--load-name\",\"cpu\""), commands.get("cpu"));
         assertTrue(commands.get("cpu").contains("-XX:StartFlightRecording=filename="), "JDK 11+: a JFR recording");
         assertTrue(ProcessHandle.current().descendants().noneMatch(p -> p.info().command().orElse("").endsWith("stress-ng")),

@@ -37,6 +37,8 @@ import java.util.TreeMap;
  *     waits do not explain the difference: its thread was runnable but not running;</li>
  * <li>{@code compute}: the job's CPU time alone exceeds its relative deadline (for a skipped
  *     job: the blocker's CPU time alone, from its own release, reaches past this release);</li>
+ * <li>{@code overlap}: a skipped job whose blocker ran normally: the two events came closer
+ *     together than the blocker's ordinary response time (no anomaly: the timeline's own collision);</li>
  * <li>{@code unknown}: none of these.</li>
  * </ul>
  * Without runtime events (the C baseline, or a JVM run without capture) only
@@ -125,6 +127,13 @@ public final class Attribution {
                 if (b.cpuNs() >= 0 && b.releaseNs() + b.cpuNs() > j.releaseNs()) {
                     causes.add(new Cause("compute", b.cpuNs(), String.format(Locale.ROOT,
                             "the blocking job %s needs %s of CPU, past this release", blockedBy, ms(b.cpuNs()))));
+                }
+                if (causes.isEmpty()) {
+                    // Nothing went wrong with the blocker: the two events came closer together than
+                    // its ordinary response time (release jitter below the thresholds plus compute).
+                    causes.add(new Cause("overlap", we - j.releaseNs(), String.format(Locale.ROOT,
+                            "released %s after %s, which ran normally (response %s)", ms(j.releaseNs() - b.releaseNs()),
+                            blockedBy, ms(b.endNs() - b.releaseNs()))));
                 }
             } else {
                 ws = j.releaseNs();

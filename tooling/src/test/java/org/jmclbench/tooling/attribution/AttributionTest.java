@@ -146,6 +146,17 @@ class AttributionTest {
     }
 
     @Test
+    void aSkippedJobBehindABlockerThatRanNormallyIsAnOverlap() {
+        // predict#0: released at 0, started 0.25 ms late, 0.25 ms of CPU; update#0 released at 0.35 ms.
+        List<JobRecord> jobs = List.of(new JobRecord("predict", 0, 0, 250_000, 510_000, 50 * MS, "done", 250_000),
+                new JobRecord("update", 0, 350_000, -1, -1, 100 * MS, "skipped", -1));
+        JobAttribution a = Attribution.attribute(jobs, List.of(), DEFAULTS).get(0);
+        assertEquals(List.of("overlap"), a.causes().stream().map(Cause::kind).toList());
+        assertEquals(160_000, a.primary().ns());
+        assertTrue(a.primary().detail().contains("predict#0"), a.primary().detail());
+    }
+
+    @Test
     void aSkippedJobBehindABlockerStalledByAPauseIsTheGc() {
         List<JobRecord> jobs = List.of(job("update", 0, 0, 0, 70, 200, "done", 5),
                 job("predict", 1, 50, -1, -1, 100, "skipped", -1));

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The Java/C kernel comparison of SPEC section 11, run once: JMH (bench/, with -prof gc) and
 # the C timing loop (native/bench/kernel_jobs.c) on the same dataset, particle counts and
-# jobs, then one table: ns per job in Java and C, the Java/C ratio and the bytes Java
-# allocates per job, for both memory styles. A benchmark, not a test: numbers depend on the
+# jobs, then one table: wall and CPU ns per job in Java and C, the Java/C ratios and the
+# bytes Java allocates per job, for both memory styles. A benchmark, not a test: numbers depend on the
 # machine and on what else it runs; the raw outputs are kept beside the table.
 #
 # usage: bench/kernel-ratio.sh [--java PATH] [--dataset DIR] [--particles N,N] [--out DIR]
@@ -21,13 +21,17 @@ build=1
 jmh_opts=(-f 1 -wi 3 -i 5 -w 1s -r 1s)
 while [ $# -gt 0 ]; do
     case "$1" in
+        --java|--dataset|--particles|--out)
+            [ $# -ge 2 ] || { echo "kernel-ratio: $1: needs a value" >&2; exit 2; } ;;
+    esac
+    case "$1" in
         --java) java=$2; shift 2 ;;
         --dataset) dataset=$(readlink -f "$2"); shift 2 ;;
         --particles) particles=$2; shift 2 ;;
         --out) out=$2; shift 2 ;;
         --no-build) build=0; shift ;;
         --) shift; jmh_opts=("$@"); break ;;
-        -h|--help) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "kernel-ratio: $1: unknown option (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -62,6 +66,7 @@ for job in predict update; do
         for memory in preallocated allocating; do
             echo "kernel-ratio: $job, $n particles, $memory: JMH ($java), then C..." >&2
             "$java" -jar "$home/bench/target/benchmarks.jar" "KernelBenchmark.$job\$" "${jmh_opts[@]}" -prof gc \
+                -prof org.jmclbench.bench.CpuTimeProfiler \
                 -p "particles=$n" -p "memory=$memory" -p "dataset=$dataset" \
                 -rf json -rff "$out/jmh-$job-$n-$memory.json" >>"$out/jmh.txt" 2>&1 \
                 || { tail -20 "$out/jmh.txt" >&2; echo "kernel-ratio: JMH failed (log: $out/jmh.txt)" >&2; exit 1; }
@@ -70,9 +75,9 @@ for job in predict update; do
         done
     done
 done
-echo "kernel-ratio: per-job counters (exact allocation, thread CPU time)..." >&2
-"$java" -cp "$home/bench/target/benchmarks.jar" org.jmclbench.bench.JobCounters "$dataset" "$particles" \
-    >"$out/counters.txt"
+echo "kernel-ratio: exact allocation count..." >&2
+"$java" -cp "$home/bench/target/benchmarks.jar" org.jmclbench.bench.AllocationCheck "$dataset" "$particles" \
+    >"$out/alloc.txt"
 "$java" -version >"$out/java-version.txt" 2>&1 || true
 
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
@@ -80,18 +85,20 @@ python3 - "$out" "$load_before" "$load_after" "$(nproc)" <<'PY'
 import glob, json, os, sys
 out, load_before, load_after, cpus = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
 java = {}  # (job, n, memory) -> (ns, error, bytes per job)
+jcpu = {}  # (job, n, memory) -> CPU ns per job of JMH's worker thread (CpuTimeProfiler)
 for r in [r for f in sorted(glob.glob(os.path.join(out, "jmh-*.json"))) for r in json.load(open(f))]:
     job = r["benchmark"].rsplit(".", 1)[1]
     key = (job, int(r["params"]["particles"]), r["params"]["memory"])
-    alloc = r.get("secondaryMetrics", {}).get("gc.alloc.rate.norm", {}).get("score")
+    secondary = r.get("secondaryMetrics", {})
+    alloc = secondary.get("gc.alloc.rate.norm", {}).get("score")
     java[key] = (float(r["primaryMetric"]["score"]), float(r["primaryMetric"]["scoreError"]),  # "NaN" for 1 iteration
                  None if alloc is None else float(alloc))
-exact, jcpu = {}, {}  # (job, n, memory) -> exact bytes per job; thread CPU ns per job
-for line in open(os.path.join(out, "counters.txt")):
+    jcpu[key] = float(secondary.get("cpu.time.norm", {}).get("score", "nan"))
+exact = {}  # (job, n, memory) -> exact bytes per job
+for line in open(os.path.join(out, "alloc.txt")):
     if not line.startswith("#") and line.strip():
-        job, n, memory, b, cpu = line.split()
+        job, n, memory, b = line.split()
         exact[(job, int(n), memory)] = None if b == "n/a" else float(b)
-        jcpu[(job, int(n), memory)] = float("nan") if cpu == "n/a" else float(cpu)
 c = {}  # (job, n, memory) -> (ns, min, max, cpu share, cpu ns per job)
 for line in open(os.path.join(out, "c.txt")):
     if line.startswith("#") or not line.strip():
@@ -101,7 +108,7 @@ for line in open(os.path.join(out, "c.txt")):
 
 nan = float("nan")
 print("wall time per job (JMH; C loop), Java/C, Java bytes per job (JMH; exact),"
-      " and thread CPU time per job (Java JobCounters; C loop), Java/C")
+      " and thread CPU time per job (JMH worker, CpuTimeProfiler; C loop), Java/C")
 print("%-8s %6s %-13s %20s %28s %6s %21s %19s %6s" % ("job", "N", "memory", "Java ns (+-99.9%)",
       "C ns [min..max] cpu-share", "Java/C", "Java B/job JMH exact", "CPU ns Java  C", "Java/C"))
 rows = []
@@ -136,5 +143,5 @@ if known:
           % (most, "zero" if most == 0 else "NOT zero"))
 else:
     print("SPEC 11, preallocated style: this JVM has no per-thread allocation counter; see JMH's column")
-print("raw outputs: %s/{jmh.txt,jmh-*.json,counters.txt,c.txt}" % out)
+print("raw outputs: %s/{jmh.txt,jmh-*.json,alloc.txt,c.txt}" % out)
 PY

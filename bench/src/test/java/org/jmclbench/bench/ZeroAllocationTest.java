@@ -28,10 +28,10 @@ class ZeroAllocationTest {
     @Test
     void preallocatedJobsAllocateNothingOnceWarm() throws Exception {
         Dataset d = dataset();
-        double control = JobCounters.bytesPerJob(d, 200, MclConfig.Memory.ALLOCATING, false);
+        double control = AllocationCheck.bytesPerJob(d, 200, MclConfig.Memory.ALLOCATING, false);
         Assumptions.assumeFalse(Double.isNaN(control), "this JVM has no per-thread allocation counter");
         assertTrue(control >= 200 * 16, "the counter misses the allocating style's particles: " + control);
-        assertEquals(0.0, JobCounters.bytesPerJob(d, 200, MclConfig.Memory.PREALLOCATED, false), "predict");
-        assertEquals(0.0, JobCounters.bytesPerJob(d, 200, MclConfig.Memory.PREALLOCATED, true), "update");
+        assertEquals(0.0, AllocationCheck.bytesPerJob(d, 200, MclConfig.Memory.PREALLOCATED, false), "predict");
+        assertEquals(0.0, AllocationCheck.bytesPerJob(d, 200, MclConfig.Memory.PREALLOCATED, true), "update");
     }
 }

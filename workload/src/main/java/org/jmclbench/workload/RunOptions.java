@@ -51,6 +51,12 @@ public final class RunOptions {
     /** Park until this many microseconds before each release, then spin. */
     public long spinUs = 0;
     public boolean gcLog;
+    /** Background allocation load in MB/s ({@code --load-alloc}); 0 = none. */
+    public int loadAllocMbPerS;
+    /** Live set of the background allocation load in MB. */
+    public int loadAllocLiveMb;
+    /** The load scenario the run was started under, recorded in summary.json ({@code --load-name}). */
+    public String loadName;
     public boolean force;
     public boolean help;
 
@@ -58,6 +64,11 @@ public final class RunOptions {
     public MclConfig mclConfig() {
         return MclConfig.builder().particles(particles).estimate(estimate).resample(resample).init(init)
                 .memory(memory).seed(seed).covariance(covariance).build();
+    }
+
+    /** The load scenario recorded with the run: {@code --load-name}, else {@code alloc} or {@code none}. */
+    public String effectiveLoadName() {
+        return loadName != null ? loadName : loadAllocMbPerS > 0 ? "alloc" : "none";
     }
 
     /** The runtime name used in the output path: the option, else derived from the JVM. */

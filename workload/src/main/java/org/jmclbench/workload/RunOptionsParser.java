@@ -33,6 +33,8 @@ public final class RunOptionsParser {
             "  --warmup S               replay the first S seconds of data first and discard them (default 0)",
             "  --spin-us N              park until N us before each release, then spin (default 0)",
             "  --gc-log                 keep the runtime's GC log as gc.log in the run folder",
+            "  --load-alloc MBPS,LIVEMB background allocation load: MB/s allocated, MB kept live (default off)",
+            "  --load-name NAME         load scenario recorded with the run (default alloc with --load-alloc, else none)",
             "  --force                  overwrite a complete run folder",
             "  -h, --help               this help");
 
@@ -156,6 +158,21 @@ public final class RunOptionsParser {
                 case "--gc-log":
                     noValue(name, inline);
                     o.gcLog = true;
+                    break;
+                case "--load-alloc": {
+                    String v = value(name, inline, args, i);
+                    i += inline == null ? 1 : 0;
+                    String[] parts = v.split(",", -1);
+                    if (parts.length != 2) {
+                        throw BadInputException.ofOption(name, "'" + v + "' must be MBPS,LIVEMB (e.g. 200,32)");
+                    }
+                    o.loadAllocMbPerS = intIn(name, parts[0], 1, 100_000);
+                    o.loadAllocLiveMb = intIn(name, parts[1], 0, 1_000_000);
+                    break;
+                }
+                case "--load-name":
+                    o.loadName = pathComponent(name, value(name, inline, args, i));
+                    i += inline == null ? 1 : 0;
                     break;
                 case "--force":
                     noValue(name, inline);

@@ -2,6 +2,7 @@ package org.jmclbench.tooling.cli;
 
 import java.util.concurrent.Callable;
 
+import org.jmclbench.tooling.attribution.ExplainCommand;
 import org.jmclbench.tooling.doctor.DoctorCommand;
 import org.jmclbench.tooling.generator.GenerateCommand;
 import org.jmclbench.tooling.report.CompareCommand;
@@ -26,7 +27,7 @@ import picocli.CommandLine.Command;
                 "Exit codes: 0 success, 2 bad usage or bad input, 1 a failure of the benchmark."},
         subcommands = {GenerateCommand.class, QuickCommand.class, MatrixCommand.class,
                 JvmsCommand.class, JvmCommand.class, DoctorCommand.class, ReportCommand.class,
-                CompareCommand.class, MergeCommand.class})
+                CompareCommand.class, MergeCommand.class, ExplainCommand.class})
 public final class JmclbenchCli implements Callable<Integer> {
 
     /** Exit code for bad usage or bad input. */

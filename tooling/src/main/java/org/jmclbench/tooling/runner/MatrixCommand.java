@@ -43,6 +43,10 @@ public final class MatrixCommand implements Callable<Integer> {
     List<String> particles = new ArrayList<>();
     @Option(names = "--datasets", paramLabel = "LIST", description = "dataset names under datasets/ or folders (default: match-short)")
     List<String> datasets = new ArrayList<>();
+    @Option(names = "--load", paramLabel = "LIST", description = "load scenarios beside each run: none, cpu (stress-ng, else own busy processes), alloc (allocation thread in the JVM under test), mixed (default: none)")
+    List<String> loads = new ArrayList<>();
+    @Option(names = "--load-alloc", paramLabel = "MBPS,LIVEMB", description = "the alloc load: MB/s allocated and MB kept live (default: 100,16)")
+    String loadAlloc;
     @Option(names = "--repeat", paramLabel = "N", description = "repetitions of each configuration (default: 1)")
     String repeat;
     @Option(names = "--shard", paramLabel = "K/N", description = "run only the K-th of N shares of the matrix (merge the databases afterwards)")
@@ -90,6 +94,7 @@ public final class MatrixCommand implements Callable<Integer> {
         list(spec, "policies", policies);
         list(spec, "particles", particles);
         list(spec, "datasets", datasets);
+        list(spec, "load", loads);
         list(spec, "workload-arg", workloadArgs);
         one(spec, "repeat", repeat);
         one(spec, "shard", shard);
@@ -97,6 +102,7 @@ public final class MatrixCommand implements Callable<Integer> {
         one(spec, "seed", seed);
         one(spec, "timeout", timeout);
         one(spec, "time-scale", timeScale);
+        one(spec, "load-alloc", loadAlloc);
         one(spec, "pin-cpu", pinCpu);
         one(spec, "db", db);
         one(spec, "native", nativeBinary);

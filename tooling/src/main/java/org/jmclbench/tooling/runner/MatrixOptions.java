@@ -3,6 +3,8 @@ package org.jmclbench.tooling.runner;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.jmclbench.tooling.load.LoadScenario;
+import org.jmclbench.tooling.load.LoadSettings;
 import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.CpuList;
 
@@ -11,7 +13,7 @@ final class MatrixOptions {
 
     /** The keys a matrix file accepts (the long options without dashes). */
     static final List<String> KEYS = List.of("runtimes", "java", "profiles", "policies", "particles", "datasets",
-            "repeat", "shard", "order-seed", "seed", "timeout", "time-scale", "pin-cpu", "workload-arg", "db", "native");
+            "load", "load-alloc", "repeat", "shard", "order-seed", "seed", "timeout", "time-scale", "pin-cpu", "workload-arg", "db", "native");
 
     private MatrixOptions() {
     }
@@ -25,6 +27,7 @@ final class MatrixOptions {
             case "policies" -> spec.policies.clear();
             case "particles" -> spec.particles.clear();
             case "datasets" -> spec.datasets.clear();
+            case "load" -> spec.loads.clear();
             case "workload-arg" -> spec.workloadArgs.clear();
             default -> { }
         }
@@ -45,6 +48,14 @@ final class MatrixOptions {
             });
             case "particles" -> items(value, at).forEach(v -> spec.particles.add(new Sourced<>(positiveInt(v, at), at)));
             case "datasets" -> items(value, at).forEach(v -> spec.datasets.add(new Sourced<>(v, at)));
+            case "load" -> items(value, at).forEach(v -> {
+                try {
+                    LoadScenario.parse(at, v);
+                } catch (org.jmclbench.workload.BadInputException e) {
+                    throw new BadUsageException(e.getMessage());
+                }
+                spec.loads.add(new Sourced<>(v, at));
+            });
             case "workload-arg" -> spec.workloadArgs.add(new Sourced<>(value, at));
             case "repeat" -> spec.repeat = positiveInt(value.strip(), at);
             case "shard" -> spec.shard = shard(value.strip(), at);
@@ -52,6 +63,22 @@ final class MatrixOptions {
             case "seed" -> spec.seed = parseLong(value.strip(), at);
             case "timeout" -> spec.timeoutS = positiveDouble(value.strip(), at);
             case "time-scale" -> spec.timeScale = positiveDouble(value.strip(), at);
+            case "load-alloc" -> {
+                String[] f = value.strip().split(",");
+                if (f.length != 2) {
+                    throw new BadUsageException(at + ": '" + value.strip() + "' must be MBPS,LIVEMB (e.g. 100,16)");
+                }
+                int live;
+                try {
+                    live = Integer.parseInt(f[1].strip());
+                } catch (NumberFormatException e) {
+                    live = -1;
+                }
+                if (live < 0) {
+                    throw new BadUsageException(at + ": live set '" + f[1].strip() + "' must be an integer >= 0");
+                }
+                spec.loadSettings = new LoadSettings(LoadSettings.defaults().cpuWorkers(), positiveInt(f[0].strip(), at), live);
+            }
             case "pin-cpu" -> {
                 try {
                     if (CpuList.parse(value).isEmpty()) {

@@ -13,6 +13,7 @@ import java.util.Set;
 import java.util.function.Supplier;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.load.LoadScenario;
 import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.Profile;
@@ -70,6 +71,22 @@ public final class MatrixPlanner {
                 datasets.add(resolved);
             }
         }
+        List<LoadScenario> loads = new ArrayList<>();
+        for (Sourced<String> l : spec.loads) {
+            try {
+                LoadScenario s = LoadScenario.parse(l.where(), l.value());
+                if (!loads.contains(s)) {
+                    loads.add(s);
+                }
+            } catch (org.jmclbench.workload.BadInputException e) {
+                throw new BadUsageException(e.getMessage());
+            }
+        }
+        if (loads.isEmpty()) {
+            loads.add(LoadScenario.NONE);
+        }
+        org.jmclbench.tooling.load.LoadSettings loadSettings = spec.loadSettings != null ? spec.loadSettings
+                : org.jmclbench.tooling.load.LoadSettings.defaults();
         List<String> workloadArgs = new ArrayList<>();
         for (Sourced<String> a : spec.workloadArgs) {
             for (String w : a.value().strip().split("\\s+")) {
@@ -93,10 +110,13 @@ public final class MatrixPlanner {
                 for (String policy : policies) {
                     for (int n : particles) {
                         for (Dataset d : datasets) {
-                            for (int rep = 1; rep <= repeat; rep++) {
-                                long runSeed = seed + rep - 1;
-                                String key = runKey(machine, rt, effective, policy, n, d, rep, runSeed, timeScale, workloadArgs);
-                                all.putIfAbsent(key, new PlannedRun(rt, effective, policy, n, d, rep, runSeed, key));
+                            for (LoadScenario load : loads) {
+                                for (int rep = 1; rep <= repeat; rep++) {
+                                    long runSeed = seed + rep - 1;
+                                    String key = runKey(machine, rt, effective, policy, n, d, load, loadSettings, rep, runSeed, timeScale,
+                                            workloadArgs);
+                                    all.putIfAbsent(key, new PlannedRun(rt, effective, policy, n, d, rep, runSeed, load, key));
+                                }
                             }
                         }
                     }
@@ -115,7 +135,7 @@ public final class MatrixPlanner {
             }
         }
         List<PlannedRun> ordered = order(mine, repeat, orderSeed);
-        return new ResolvedMatrix(runtimes, profiles, policies, particles, datasets, repeat, seed, orderSeed, timeScale,
+        return new ResolvedMatrix(runtimes, profiles, policies, particles, datasets, List.copyOf(loads), loadSettings, repeat, seed, orderSeed, timeScale,
                 spec.timeoutS, pinCpu, List.copyOf(workloadArgs), db, nativeBinary, spec.shard, ordered, all.size());
     }
 
@@ -133,11 +153,12 @@ public final class MatrixPlanner {
         return out;
     }
 
-    static String runKey(MachineInfo m, RuntimeInfo rt, Profile p, String policy, int particles, Dataset d, int rep,
-                         long seed, double timeScale, List<String> workloadArgs) {
+    static String runKey(MachineInfo m, RuntimeInfo rt, Profile p, String policy, int particles, Dataset d,
+                         LoadScenario load, org.jmclbench.tooling.load.LoadSettings loadSettings, int rep, long seed,
+                         double timeScale, List<String> workloadArgs) {
         String text = String.join("\n", "jmclbench-run-key/1", "machine=" + m.machineId(), "runtime=" + rt.name(),
                 "runtimeVersion=" + rt.version(), "profile=" + p.name(), "policy=" + policy, "particles=" + particles,
-                "dataset=" + d.label() + "@" + d.digest(), "load=none", "repetition=" + rep, "seed=" + seed,
+                "dataset=" + d.label() + "@" + d.digest(), "load=" + load.label() + (load.alloc() ? " alloc=" + loadSettings.allocMbPerS() + "," + loadSettings.allocLiveMb() : ""), "repetition=" + rep, "seed=" + seed,
                 "timeScale=" + timeScale, "workloadArgs=" + String.join(" ", workloadArgs));
         return MachineInfo.sha256Hex(text).substring(0, 20);
     }

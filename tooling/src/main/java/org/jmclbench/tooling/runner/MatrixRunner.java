@@ -10,6 +10,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
+import org.jmclbench.tooling.attribution.AttributionData;
+import org.jmclbench.tooling.attribution.RunInstrumentation;
 import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.ProfileComponent;
 import org.jmclbench.tooling.runtime.ProfileProbe;
@@ -118,13 +120,27 @@ public final class MatrixRunner {
         // a folder without a row is the remains of a runner killed mid-run: start it afresh
         ForkedRun.killOrphan(folder);
         StoreMerger.deleteTree(folder);
+        String loadProblem = RunInstrumentation.unsupported(run.runtime().isJvm(), run.load());
+        if (support.supported() && loadProblem != null) {
+            support = ProfileProbe.Support.no(loadProblem);
+        }
         if (!support.supported()) {
             return new Finished(record(run, RunRecord.UNSUPPORTED, null, support.reason(), null, startedAt, null, null,
                     null, List.of()), RunData.empty());
         }
         Files.createDirectories(folder);
-        List<String> cmd = WorkloadCommand.build(run, plan, extra, home, jar, folder, matrix.timeScale(), matrix.workloadArgs());
-        RunOutcome o = ForkedRun.execute(cmd, folder, folder, matrix.timeoutFor(run), Map.of("JMCLBENCH_HOME", home.toString()));
+        List<String> cmd;
+        RunOutcome o;
+        // Event capture and load (docs/FORMATS.md sections 3 and 5): the load ends with the run.
+        try (RunInstrumentation inst = RunInstrumentation.start(run.runtime().isJvm() ? run.runtime().major() : 0,
+                run.load(), matrix.loadSettings(), folder, java.time.Duration.ofMillis((long) (matrix.timeoutFor(run) * 1000)))) {
+            List<String> jvmFlags = new ArrayList<>(extra);
+            jvmFlags.addAll(inst.jvmArgs());
+            List<String> workloadArgs = new ArrayList<>(matrix.workloadArgs());
+            workloadArgs.addAll(inst.workloadArgs());
+            cmd = WorkloadCommand.build(run, plan, jvmFlags, home, jar, folder, matrix.timeScale(), workloadArgs);
+            o = ForkedRun.execute(cmd, folder, folder, matrix.timeoutFor(run), Map.of("JMCLBENCH_HOME", home.toString()));
+        }
         String status = o.status();
         String failure = o.failure();
         RunData data = RunData.empty();
@@ -142,6 +158,21 @@ public final class MatrixRunner {
                 status = RunRecord.FAILED;
                 failure = "garbage output: " + e.getMessage();
                 data = RunData.empty();
+            }
+        }
+        if (status.equals(RunRecord.OK)) {
+            try {
+                AttributionData a = RunInstrumentation.attribute(o.leaf());
+                for (org.jmclbench.tooling.attribution.MetricRow m : a.metrics()) {
+                    if (Double.isFinite(m.value())) {
+                        data.metrics.add(new RunData.Metric(m.task(), m.metric(), m.stat(), m.value()));
+                    }
+                }
+                data.series.add(new RunData.Series("pauses", a.pauses()));
+                data.attributions.addAll(a.rows());
+            } catch (IOException | org.jmclbench.workload.BadInputException | RuntimeException e) {
+                // The run stands on its own; only its attribution is missing (explain says why).
+                System.err.println("jmclbench: " + run.label() + ": no attribution: " + e.getMessage());
             }
         }
         Path dir = o.leaf() != null ? o.leaf() : folder;
@@ -180,7 +211,7 @@ public final class MatrixRunner {
             cmdJson = null;
         }
         return new RunRecord(run.runKey(), matrixId, machine.machineId(), run.runtime().name(), run.runtime().version(),
-                run.profile().name(), run.policy(), run.particles(), run.dataset().label(), "none", run.repetition(), status,
+                run.profile().name(), run.policy(), run.particles(), run.dataset().label(), run.load().label(), run.repetition(), status,
                 exitCode, failure, stderrTail, startedAt, Instant.now().toString(), wallS, runDir, summary, run.seed(), cmdJson);
     }
 }

@@ -112,6 +112,8 @@ public final class MatrixSession {
         j.put("profiles", m.profiles().stream().map(Profile::name).toList());
         j.put("policies", m.policies());
         j.put("particles", m.particles());
+        j.put("loads", m.loads().stream().map(l -> l.label()).toList());
+        j.put("loadAlloc", m.loadSettings().allocMbPerS() + "," + m.loadSettings().allocLiveMb());
         j.put("datasets", m.datasets().stream().map(d -> Map.of("label", d.label(), "path", d.dir().toString(),
                 "digest", d.digest(), "durationS", d.durationS())).toList());
         j.put("repeat", m.repeat());

@@ -15,6 +15,9 @@ public final class MatrixSpec {
     public final List<Sourced<String>> policies = new ArrayList<>();
     public final List<Sourced<Integer>> particles = new ArrayList<>();
     public final List<Sourced<String>> datasets = new ArrayList<>();
+    public final List<Sourced<String>> loads = new ArrayList<>();
+    /** {@code --load-alloc}: the allocation load's rate and live set (null: the defaults). */
+    public org.jmclbench.tooling.load.LoadSettings loadSettings;
     public final List<Sourced<String>> workloadArgs = new ArrayList<>();
     public Integer repeat;
     public int[] shard; // {k, n}, 1-based k

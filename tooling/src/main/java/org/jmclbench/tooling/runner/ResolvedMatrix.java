@@ -3,6 +3,8 @@ package org.jmclbench.tooling.runner;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.jmclbench.tooling.load.LoadScenario;
+
 import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.RuntimeInfo;
 
@@ -14,7 +16,8 @@ import org.jmclbench.tooling.runtime.RuntimeInfo;
  * @param planned     runs of the whole matrix (all shards)
  */
 public record ResolvedMatrix(List<RuntimeInfo> runtimes, List<Profile> profiles, List<String> policies,
-                             List<Integer> particles, List<Dataset> datasets, int repeat, long seed, long orderSeed,
+                             List<Integer> particles, List<Dataset> datasets, List<LoadScenario> loads,
+                             org.jmclbench.tooling.load.LoadSettings loadSettings, int repeat, long seed, long orderSeed,
                              double timeScale, Double timeoutS, String pinCpu, List<String> workloadArgs, Path db,
                              Path nativeBinary, int[] shard, List<PlannedRun> plan, int planned) {
 

@@ -9,6 +9,8 @@ import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Statement;
+
+import org.jmclbench.tooling.attribution.AttributionStore;
 import java.sql.Types;
 import java.util.HashMap;
 import java.util.Map;
@@ -188,6 +190,7 @@ public final class ResultStore implements AutoCloseable {
                 }
                 ps.executeBatch();
             }
+            AttributionStore.insertRows(conn, r.runKey(), data.attributions);
             conn.commit();
         } catch (SQLException e) {
             conn.rollback();

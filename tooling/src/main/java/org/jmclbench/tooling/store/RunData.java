@@ -3,6 +3,8 @@ package org.jmclbench.tooling.store;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.jmclbench.tooling.attribution.AttributionData;
+
 /** What the store keeps of an ok run beside its row: flattened metrics, histograms and small series. */
 public final class RunData {
 
@@ -21,6 +23,8 @@ public final class RunData {
     public final List<Metric> metrics = new ArrayList<>();
     public final List<Hdr> histograms = new ArrayList<>();
     public final List<Series> series = new ArrayList<>();
+    /** One row per missed or late job: why it missed (org.jmclbench.tooling.attribution). */
+    public final List<AttributionData.Row> attributions = new ArrayList<>();
 
     /** Nothing beside the row (failed, timed-out and unsupported runs). */
     public static RunData empty() {

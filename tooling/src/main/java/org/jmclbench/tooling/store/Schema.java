@@ -46,10 +46,11 @@ final class Schema {
           PRIMARY KEY (run_key, name)
         )""",
         "CREATE INDEX IF NOT EXISTS runs_by_config ON runs (runtime, profile, policy, particles, dataset)",
+        org.jmclbench.tooling.attribution.AttributionStore.SCHEMA,
     };
 
     /** Tables keyed by run, in the order a run's rows are copied or deleted. */
-    static final String[] RUN_TABLES = {"runs", "metrics", "histograms", "series"};
+    static final String[] RUN_TABLES = {"runs", "metrics", "histograms", "series", "attributions"};
 
     private Schema() {
     }

@@ -137,6 +137,13 @@ public final class RunWriter {
         j.name("timeScale").value(options.timeScale);
         j.name("warmupS").value(options.warmupS);
         j.name("spinUs").value(options.spinUs);
+        j.name("load").beginObject();
+        j.name("scenario").value(options.effectiveLoadName());
+        if (options.loadAllocMbPerS > 0) {
+            j.name("allocMbPerS").value(options.loadAllocMbPerS);
+            j.name("allocLiveMb").value(options.loadAllocLiveMb);
+        }
+        j.endObject();
         j.name("dataset").beginObject();
         j.name("path").value(dataset.folder == null ? null : dataset.folder.getPath());
         j.name("name").value(dataset.name);
@@ -163,19 +170,8 @@ public final class RunWriter {
         if (engine != null) {
             j.name("engine").beginObject();
             for (java.util.Map.Entry<String, Object> e : engine.entrySet()) {
-                j.name(e.getKey());
-                Object v = e.getValue();
-                if (v == null) {
-                    j.nullValue();
-                } else if (v instanceof Boolean) {
-                    j.value((Boolean) v);
-                } else if (v instanceof Long || v instanceof Integer) {
-                    j.value(((Number) v).longValue());
-                } else if (v instanceof Number) {
-                    j.value(((Number) v).doubleValue());
-                } else {
-                    j.value(v.toString());
-                }
+                // Json.any: nested maps (engine.clock, engine.loadAlloc) stay JSON objects.
+                j.name(e.getKey()).any(e.getValue());
             }
             j.endObject();
         }

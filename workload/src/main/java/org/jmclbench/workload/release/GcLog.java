@@ -28,8 +28,8 @@ public final class GcLog {
     /** Starts logging GC events to {@code file}; never throws, see {@link #status()}. */
     public static GcLog start(File file) {
         try {
-            vmLog("output=" + file.getAbsolutePath(), "what=gc*", "decorators=uptime,level,tags");
-            return new GcLog(file, true, "logging gc* to " + file.getName() + " via VM.log");
+            vmLog("output=" + file.getAbsolutePath(), "what=gc*,safepoint", "decorators=uptime,timenanos,level,tags");
+            return new GcLog(file, true, "logging gc*,safepoint to " + file.getName() + " via VM.log");
         } catch (Exception | LinkageError e) {
             String why = e.getCause() != null ? e.getCause().toString() : e.toString();
             return new GcLog(file, false, "not available at run time on this runtime (" + why

@@ -13,6 +13,7 @@ import java.util.Map;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.workload.load.AllocationNoise;
 import org.jmclbench.workload.mcl.AbortSignal;
 import org.jmclbench.workload.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
@@ -45,6 +46,7 @@ public final class RealTimeRun {
         facts.put("handlerPriority", ReleaseEngine.HANDLER_PRIORITY);
         facts.put("prioritiesApplied", prioritiesApplied());
         GcLog gcLog = options.gcLog ? GcLog.start(new File(runDir, "gc.log")) : null;
+        AllocationNoise noise = null;
         try {
             if (gcLog != null && !gcLog.active()) {
                 err.println("jmclbench: --gc-log: " + gcLog.status());
@@ -60,6 +62,9 @@ public final class RealTimeRun {
             long spinNs = options.spinUs * 1000L;
             OverrunPolicy policy = OverrunPolicy.forName(options.policy.label);
 
+            if (options.loadAllocMbPerS > 0) {
+                noise = AllocationNoise.start(options.loadAllocMbPerS, options.loadAllocLiveMb);
+            }
             int warmupEvents = options.warmupS > 0 ? schedule.countBefore(options.warmupS, options.timeScale) : 0;
             facts.put("warmupEvents", warmupEvents);
             if (options.warmupS > 0 && warmupEvents > 0) {
@@ -78,8 +83,10 @@ public final class RealTimeRun {
             records.setInitialEstimate(localizer.estimateX(), localizer.estimateY(), localizer.estimateTheta());
             ReleaseEngine engine = new ReleaseEngine(schedule, policy,
                     new LocalizerJob(dataset, timeline, localizer, records), records, cpuClock, spinNs);
+            ClockAnchor anchor = ClockAnchor.now();
             engine.run();
             records.durationNs = System.nanoTime() - engine.runStartNanoTime();
+            facts.put("clock", anchor.forRunStart(engine.runStartNanoTime()));
             facts.put("allocatedBytes", engine.allocatedBytes() < 0 ? null : engine.allocatedBytes());
             if (options.memory == MclConfig.Memory.PREALLOCATED && engine.allocatedBytes() > 0) {
                 err.println("jmclbench: warning: the measured window allocated " + engine.allocatedBytes()
@@ -90,6 +97,14 @@ public final class RealTimeRun {
             Thread.currentThread().interrupt();
             throw new IllegalStateException("the run was interrupted", e);
         } finally {
+            if (noise != null) {
+                noise.stop();
+                Map<String, Object> load = new LinkedHashMap<>();
+                load.put("allocMbPerS", options.loadAllocMbPerS);
+                load.put("allocLiveMb", options.loadAllocLiveMb);
+                load.put("allocatedBytes", noise.allocatedBytes());
+                facts.put("loadAlloc", load);
+            }
             if (gcLog != null) {
                 gcLog.stop();
             }

@@ -1,0 +1,78 @@
+package org.jmclbench.tooling.attribution;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.List;
+
+/**
+ * The JVM flags that capture a run's runtime events, for a Java feature version: a JFR
+ * recording with our low-overhead settings ({@code jmclbench.jfc}) where the JVM has JFR
+ * (JDK 11 and newer), else the GC log with the decorations {@link GcLogParser} places exactly.
+ */
+public final class JfrFlags {
+    /** The recording's file name in the run directory. */
+    public static final String RECORDING = "recording.jfr";
+    /** The GC log's file name in the run directory (JVMs without JFR). */
+    public static final String GC_LOG = "gc.log";
+    /** Our JFR settings' file name in the run directory. */
+    public static final String SETTINGS = "jmclbench.jfc";
+
+    private JfrFlags() {
+    }
+
+    /** True when a JVM of this feature version has JDK Flight Recorder. */
+    public static boolean hasJfr(int javaFeatureVersion) {
+        return javaFeatureVersion >= 11;
+    }
+
+    /**
+     * The capture for a JVM of {@code javaFeatureVersion} (8, 11, 17, ...) writing into
+     * {@code runDir} (created if needed). For JFR this writes our settings file into the run
+     * directory, so that the run folder says exactly what was recorded.
+     *
+     * @throws IllegalArgumentException when {@code runDir} holds a comma or an equals sign,
+     *         which the JVM's {@code -XX:StartFlightRecording} option syntax cannot carry
+     */
+    public static EventCapture forJava(int javaFeatureVersion, Path runDir) {
+        Path dir = runDir.toAbsolutePath().normalize();
+        if (javaFeatureVersion >= 11) {
+            if (dir.toString().contains(",") || dir.toString().contains("=")) {
+                throw new IllegalArgumentException("run directory " + dir + ": a JFR file name cannot contain ',' or '='");
+            }
+            Path settings = dir.resolve(SETTINGS);
+            Path recording = dir.resolve(RECORDING);
+            writeSettings(settings);
+            return new EventCapture(EventCapture.Mode.JFR, List.of(
+                    "-XX:StartFlightRecording=filename=" + recording + ",settings=" + settings + ",dumponexit=true"),
+                    recording);
+        }
+        Path log = dir.resolve(GC_LOG);
+        if (javaFeatureVersion >= 9) {
+            return new EventCapture(EventCapture.Mode.UNIFIED_GC_LOG, List.of(
+                    "-Xlog:gc,gc+phases,safepoint:file=" + log + ":uptime,timenanos,level,tags"), log);
+        }
+        if (javaFeatureVersion == 8) {
+            return new EventCapture(EventCapture.Mode.LEGACY_GC_LOG, List.of("-verbose:gc", "-Xloggc:" + log,
+                    "-XX:+PrintGCDetails", "-XX:+PrintGCDateStamps", "-XX:+PrintGCTimeStamps",
+                    "-XX:+PrintGCApplicationStoppedTime"), log);
+        }
+        return new EventCapture(EventCapture.Mode.NONE, List.of(), null);
+    }
+
+    /** Copies our JFR settings to {@code target}. */
+    public static void writeSettings(Path target) {
+        try (InputStream in = JfrFlags.class.getResourceAsStream(SETTINGS)) {
+            if (in == null) {
+                throw new IllegalStateException("resource " + SETTINGS + " missing from the tooling jar");
+            }
+            Files.createDirectories(target.getParent());
+            Files.copy(in, target, StandardCopyOption.REPLACE_EXISTING);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+}

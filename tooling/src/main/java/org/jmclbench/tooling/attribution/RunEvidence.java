@@ -1,0 +1,132 @@
+package org.jmclbench.tooling.attribution;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+import org.jmclbench.workload.BadInputException;
+
+/**
+ * Everything one run folder says about its jobs and its runtime: the job lines of both tasks,
+ * summary.json with its clock, and the runtime's events from the JFR recording or else the
+ * GC log (looked for in the run folder, then in its parents, because the runner keeps the
+ * recording beside the run tree: {@code runs/<run_key>/recording.jfr}).
+ *
+ * @param runDir      the run folder (holding summary.json and the job files)
+ * @param summary     summary.json
+ * @param clock       the run's clock, or null when summary.json has none (events cannot be placed)
+ * @param jobs        every job of both tasks
+ * @param events      the runtime's events on the run's timeline (empty when none could be read)
+ * @param eventSource where the events came from, e.g. {@code JFR runs/ab12/recording.jfr}, or why there are none
+ */
+public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<JobRecord> jobs, List<VmEvent> events,
+        String eventSource) {
+
+    /** Job file of each task, as FORMATS.md section 3 names them. */
+    public static final String PREDICT_FILE = "odoData.txt";
+    /** Job file of the update task. */
+    public static final String UPDATE_FILE = "laserData.txt";
+
+    /**
+     * Loads the run in {@code dir}: either the run folder itself, or a folder holding exactly
+     * one run folder somewhere below it (such as the runner's {@code runs/<run_key>/}).
+     */
+    public static RunEvidence load(Path dir) throws IOException, BadInputException {
+        if (!Files.isDirectory(dir)) {
+            throw new BadInputException(dir + ": not a folder");
+        }
+        Path runDir = findRunDir(dir);
+        JsonNode summary;
+        try {
+            summary = new ObjectMapper().readTree(runDir.resolve("summary.json").toFile());
+        } catch (IOException e) {
+            throw new BadInputException(runDir.resolve("summary.json") + ": unreadable: " + e.getMessage());
+        }
+        List<JobRecord> jobs = new ArrayList<>();
+        for (String[] f : new String[][] {{PREDICT_FILE, "predict"}, {UPDATE_FILE, "update"}}) {
+            Path p = runDir.resolve(f[0]);
+            if (!Files.isRegularFile(p)) {
+                throw new BadInputException(p + ": missing");
+            }
+            jobs.addAll(JobFileReader.read(p, f[1]));
+        }
+        RunClock clock = RunClock.fromSummary(summary);
+        List<VmEvent> events = List.of();
+        String source;
+        Path jfr = findUp(runDir, dir, JfrFlags.RECORDING);
+        Path gcLog = findUp(runDir, dir, JfrFlags.GC_LOG);
+        if (jfr == null && gcLog == null) {
+            source = "none (no " + JfrFlags.RECORDING + " or " + JfrFlags.GC_LOG + "): only os, queued, preemption and compute can be told";
+        } else if (clock == null) {
+            source = "not used: summary.json has no \"clock\", so the runtime's events cannot be placed on the jobs' timeline";
+        } else if (jfr != null) {
+            events = readJfr(jfr, clock);
+            source = "JFR " + jfr;
+            if (events == null) {
+                events = gcLog != null ? GcLogParser.parse(gcLog, clock) : List.of();
+                source = "JFR " + jfr + " unreadable (the run may have crashed before dumping it)"
+                        + (gcLog != null ? "; GC log " + gcLog : "");
+            }
+        } else {
+            events = GcLogParser.parse(gcLog, clock);
+            source = "GC log " + gcLog;
+        }
+        return new RunEvidence(runDir, summary, clock, List.copyOf(jobs), List.copyOf(events), source);
+    }
+
+    /** The attributions of this run's missed and late jobs. */
+    public List<JobAttribution> attribute(Attribution.Settings settings) {
+        return Attribution.attribute(jobs, events, settings);
+    }
+
+    private static List<VmEvent> readJfr(Path jfr, RunClock clock) {
+        try {
+            return JfrEventReader.read(jfr, clock);
+        } catch (IOException | RuntimeException e) {
+            return null;
+        }
+    }
+
+    private static Path findRunDir(Path dir) throws IOException, BadInputException {
+        if (Files.isRegularFile(dir.resolve("summary.json"))) {
+            return dir;
+        }
+        List<Path> found;
+        try (Stream<Path> s = Files.find(dir, 8, (p, a) -> a.isRegularFile() && p.getFileName().toString().equals("summary.json"))) {
+            found = s.map(Path::getParent).filter(p -> !p.getFileName().toString().endsWith(".partial")).sorted().toList();
+        }
+        if (found.isEmpty()) {
+            throw new BadInputException(dir + ": no run folder (summary.json) in it");
+        }
+        if (found.size() > 1) {
+            throw new BadInputException(dir + ": " + found.size() + " run folders in it; name one, e.g. " + found.get(0));
+        }
+        return found.get(0);
+    }
+
+    /**
+     * {@code name} in {@code from} or one of its parents, up to {@code root} when the run was
+     * found below it, else up to five levels (the depth of the run tree below the runner's
+     * {@code runs/<run_key>/}); null when there is none.
+     */
+    private static Path findUp(Path from, Path root, String name) {
+        Path top = root.toAbsolutePath().normalize();
+        Path start = from.toAbsolutePath().normalize();
+        int levels = start.equals(top) ? 5 : Integer.MAX_VALUE;
+        for (Path p = start; p != null && levels-- >= 0; p = p.getParent()) {
+            if (Files.isRegularFile(p.resolve(name))) {
+                return p.resolve(name);
+            }
+            if (p.equals(top) && !start.equals(top)) {
+                break;
+            }
+        }
+        return null;
+    }
+}

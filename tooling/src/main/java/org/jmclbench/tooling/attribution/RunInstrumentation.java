@@ -1,0 +1,80 @@
+package org.jmclbench.tooling.attribution;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+
+import org.jmclbench.tooling.load.LoadScenario;
+import org.jmclbench.tooling.load.LoadSession;
+import org.jmclbench.tooling.load.LoadSettings;
+import org.jmclbench.workload.BadInputException;
+
+/**
+ * What the runner adds around one workload process for attribution and load: the event
+ * capture flags, the load (started here, ended by {@link #close()}), the workload options of
+ * the load, and afterwards the run's {@link AttributionData}. One object per run, used with
+ * try-with-resources on the thread that waits for the run (see {@link org.jmclbench.tooling.load.CpuLoad}).
+ */
+public final class RunInstrumentation implements AutoCloseable {
+    private final EventCapture capture;
+    private final LoadSession load;
+    private final boolean jvm;
+
+    private RunInstrumentation(EventCapture capture, LoadSession load, boolean jvm) {
+        this.capture = capture;
+        this.load = load;
+        this.jvm = jvm;
+    }
+
+    /**
+     * Why a runtime cannot run under a load scenario, or null when it can: the {@code alloc}
+     * part runs inside a JVM, so the native runtime has no {@code alloc} or {@code mixed}.
+     */
+    public static String unsupported(boolean jvm, LoadScenario scenario) {
+        return !jvm && scenario.alloc() ? "load " + scenario.label() + ": the allocation load runs inside a JVM" : null;
+    }
+
+    /**
+     * Prepares the capture in {@code runFolder} (the runner's {@code runs/<run_key>/}) and starts
+     * the load's CPU hogs, which stop by themselves shortly after {@code runTimeout} at the latest.
+     *
+     * @param javaMajor the JVM's feature version, or 0 for the native runtime
+     */
+    public static RunInstrumentation start(int javaMajor, LoadScenario scenario, LoadSettings settings, Path runFolder,
+                                           Duration runTimeout) throws IOException {
+        boolean jvm = javaMajor > 0;
+        EventCapture capture = jvm ? JfrFlags.forJava(javaMajor, runFolder)
+                : new EventCapture(EventCapture.Mode.NONE, List.of(), null);
+        return new RunInstrumentation(capture, LoadSession.start(scenario, settings, runTimeout), jvm);
+    }
+
+    /** JVM flags: the event capture. */
+    public List<String> jvmArgs() {
+        return capture.jvmArgs();
+    }
+
+    /** Workload options: the load scenario's name and, on a JVM, its allocation load. */
+    public List<String> workloadArgs() {
+        return jvm ? load.workloadArgs() : List.of();
+    }
+
+    /** The load, e.g. for progress lines. */
+    public LoadSession load() {
+        return load;
+    }
+
+    /** Ends the load's processes. */
+    @Override
+    public void close() {
+        load.close();
+    }
+
+    /**
+     * The attribution of the finished run in {@code runFolder}: the store's rows. Never fails
+     * the run: a run whose events cannot be read is attributed from its job lines alone.
+     */
+    public static AttributionData attribute(Path runFolder) throws IOException, BadInputException {
+        return AttributionData.of(runFolder);
+    }
+}

@@ -1,0 +1,85 @@
+package org.jmclbench.tooling.attribution;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class ExplainCommandTest {
+
+    /** A runner-style folder: runs/<key>/recording.jfr beside the run tree, built from the jdk17 fixture. */
+    static Path runnerStyleRun(Path root, boolean withClock) throws Exception {
+        Path fx = Fixtures.dir("jdk17");
+        Path key = root.resolve("runs/ab12");
+        Path leaf = key.resolve("local/nocov/400/QueueTest/1");
+        Files.createDirectories(leaf);
+        Files.copy(fx.resolve("recording.jfr"), key.resolve("recording.jfr"));
+        Files.copy(fx.resolve("jobs.txt"), leaf.resolve("odoData.txt"));
+        Files.writeString(leaf.resolve("laserData.txt"), "# index release_ns start_ns end_ns deadline_ns outcome cpu_ns\n");
+        RunClock c = RunClock.fromText(fx.resolve("clock.txt"));
+        String clock = withClock ? ", \"clock\": {\"runStartEpochNs\": " + c.runStartEpochNs() + ", \"runStartNanoTime\": "
+                + c.runStartNanoTime() + ", \"jvmStartEpochMs\": " + c.jvmStartEpochMs() + "}" : "";
+        Files.writeString(leaf.resolve("summary.json"), "{\"schema\": \"jmclbench-run/1\", \"status\": \"complete\", "
+                + "\"parameters\": {\"policy\": \"queue\", \"particles\": 400, \"load\": {\"scenario\": \"alloc\"}}, "
+                + "\"environment\": {\"runtime\": {\"vmName\": \"OpenJDK 64-Bit Server VM\", \"version\": \"17\", \"gcNames\": [\"Copy\"]}}"
+                + clock + "}");
+        return key;
+    }
+
+    private static String[] run(String... args) {
+        PrintStream out = System.out;
+        PrintStream err = System.err;
+        ByteArrayOutputStream o = new ByteArrayOutputStream();
+        ByteArrayOutputStream e = new ByteArrayOutputStream();
+        try {
+            System.setOut(new PrintStream(o, true, StandardCharsets.UTF_8));
+            System.setErr(new PrintStream(e, true, StandardCharsets.UTF_8));
+            int code = JmclbenchCli.execute(args);
+            return new String[] {Integer.toString(code), o.toString(StandardCharsets.UTF_8), e.toString(StandardCharsets.UTF_8)};
+        } finally {
+            System.setOut(out);
+            System.setErr(err);
+        }
+    }
+
+    @Test
+    void explainsEachLateJobOfARunFromTheRecordingBesideItsTree(@TempDir Path tmp) throws Exception {
+        Path key = runnerStyleRun(tmp, true);
+        String[] r = run("explain", "--limit", "0", key.toString());
+        assertEquals("0", r[0], r[2]);
+        String out = r[1];
+        assertTrue(out.contains("events:  JFR " + key.resolve("recording.jfr")), out);
+        assertTrue(out.contains("load alloc"), out);
+        assertTrue(out.matches("(?s).*causes:  .*gc \\d+ \\[\\d+\\].*"), out);
+        assertTrue(out.matches("(?s).*\\npredict +40 late .*compute 4\\d\\.\\d ms.*"), "the slow job is compute:\n" + out);
+        // The leaf given directly finds the same recording five levels up.
+        String[] leaf = run("explain", "--json", key.resolve("local/nocov/400/QueueTest/1").toString());
+        assertEquals("0", leaf[0], leaf[2]);
+        assertTrue(leaf[1].contains("\"kind\" : \"gc\""), leaf[1]);
+    }
+
+    @Test
+    void withoutAClockTheRecordingIsNotUsedAndSaysSo(@TempDir Path tmp) throws Exception {
+        Path key = runnerStyleRun(tmp, false);
+        String[] r = run("explain", key.toString());
+        assertEquals("0", r[0], r[2]);
+        assertTrue(r[1].contains("has no \"clock\""), r[1]);
+        assertTrue(!r[1].matches("(?s).*causes:  .*gc \\d+.*"), r[1]);
+    }
+
+    @Test
+    void aFolderWithoutARunIsBadInput(@TempDir Path tmp) {
+        String[] r = run("explain", tmp.toString());
+        assertEquals("2", r[0]);
+        assertTrue(r[2].startsWith("jmclbench: " + tmp + ": no run folder"), r[2]);
+        assertEquals(1, r[2].strip().lines().count());
+    }
+}

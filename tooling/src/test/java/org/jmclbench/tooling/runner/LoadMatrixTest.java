@@ -1,0 +1,84 @@
+package org.jmclbench.tooling.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.ResultSet;
+import java.sql.Statement;
+import java.util.HashMap;
+import java.util.Map;
+
+import org.jmclbench.tooling.Fixtures;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The load dimension of the matrix: planned, recorded with each run, passed to the workload, ended with the run. */
+class LoadMatrixTest {
+
+    @TempDir
+    Path dir;
+    Path db;
+    Path fake;
+
+    @BeforeEach
+    void setUp() throws Exception {
+        Fixtures.home(dir);
+        db = dir.resolve("out/results.db");
+        fake = Fixtures.fakeJava(dir, "jvm", "ok", 0, null, 21);
+    }
+
+    @Test
+    void anUnknownLoadIsBadUsage() {
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--load", "none,gpu",
+                "--datasets", "tiny", "--db", db.toString());
+        assertEquals(2, r.exitCode(), r.out() + r.err());
+        assertEquals("jmclbench: --load: 'gpu' is not one of none, cpu, alloc, mixed", r.err().strip());
+        assertFalse(Files.exists(db));
+    }
+
+    @Test
+    void aBadAllocLoadIsBadUsage() {
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--load", "alloc", "--load-alloc", "50",
+                "--datasets", "tiny", "--db", db.toString());
+        assertEquals(2, r.exitCode(), r.out() + r.err());
+        assertEquals("jmclbench: --load-alloc: '50' must be MBPS,LIVEMB (e.g. 100,16)", r.err().strip());
+    }
+
+    @Test
+    void eachLoadIsOneMoreRunOfEachConfiguration() {
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--load", "none,cpu,alloc",
+                "--datasets", "tiny", "--dry-run", "--db", db.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.out().startsWith("3 runs planned"), r.out());
+        assertTrue(r.out().contains("fake-21 default skip 400p tiny load=cpu #1"), r.out());
+        assertTrue(r.out().contains("fake-21 default skip 400p tiny #1"), r.out());
+    }
+
+    @Test
+    void theLoadIsRecordedPassedToTheWorkloadAndEndsWithTheRun() throws Exception {
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--load", "cpu,alloc",
+                "--load-alloc", "50,8", "--datasets", "tiny", "--db", db.toString());
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+        Map<String, String> commands = new HashMap<>();
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db);
+             Statement s = c.createStatement();
+             ResultSet rs = s.executeQuery("SELECT load, status, command_json FROM runs")) {
+            while (rs.next()) {
+                assertEquals("ok", rs.getString(2), rs.getString(1));
+                commands.put(rs.getString(1), rs.getString(3));
+            }
+        }
+        assertEquals(2, commands.size(), commands.toString());
+        assertTrue(commands.get("alloc").contains("\"--load-alloc\",\"50,8\""), commands.get("alloc"));
+        assertTrue(commands.get("cpu").contains("\"--load-name\",\"cpu\""), commands.get("cpu"));
+        assertTrue(commands.get("cpu").contains("-XX:StartFlightRecording=filename="), "JDK 11+: a JFR recording");
+        assertTrue(ProcessHandle.current().descendants().noneMatch(p -> p.info().command().orElse("").endsWith("stress-ng")),
+                "no CPU hog outlives its run");
+    }
+}

@@ -22,10 +22,14 @@ import picocli.CommandLine.Parameters;
  * B/A with a bootstrap interval, and a Mann-Whitney U test per metric.
  */
 @Command(name = "compare", mixinStandardHelpOptions = true,
-        description = {"Compares two result sets metric by metric: A and B means (95% CI), the ratio B/A with its",
-                "bootstrap 95% CI (fixed seed) and whether the difference is significant (Mann-Whitney U, alpha 0.05).",
-                "  compare A.db B.db                       the same configurations in two databases (two machines)",
-                "  compare --db X.db --a RT[/PROFILE] --b RT[/PROFILE]   two runtimes of one database"})
+        description = {"Compares two result sets metric by metric, like benchstat: A and B (95%% CI),",
+                "the ratio B/A with its bootstrap 95%% CI (fixed seed) and whether the difference",
+                "is significant (Mann-Whitney U, alpha 0.05; \"n too small\" below 3 runs a side).",
+                "",
+                "  compare A.db B.db      the same configurations in two databases (two machines)",
+                "  compare --db X.db --a RUNTIME[/PROFILE] --b RUNTIME[/PROFILE]",
+                "                         two configurations of one database",
+                ""})
 public final class CompareCommand implements Callable<Integer> {
 
     /** The metrics compared, in table order. */

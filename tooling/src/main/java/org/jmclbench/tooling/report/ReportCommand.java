@@ -12,8 +12,10 @@ import picocli.CommandLine.Option;
 
 /** Builds the HTML report (charts, comparison tables, SVG/PNG exports) from the results database. */
 @Command(name = "report", mixinStandardHelpOptions = true,
-        description = {"Builds the HTML report from the results database: a self-contained index.html (works offline",
-                "from file://) with the comparison tables and charts, and every chart as SVG and PNG in charts/."})
+        description = {"Builds the report from the results database: a self-contained index.html (works",
+                "offline from file://) with the comparison tables and charts, and every chart as",
+                "SVG and PNG in charts/. See docs/REPORT.md.",
+                ""})
 public final class ReportCommand implements Callable<Integer> {
 
     @Option(names = "--db", paramLabel = "FILE", description = "results database (default: ${DEFAULT-VALUE})")

@@ -174,7 +174,8 @@ class ReleaseEngineTest {
             SpinJob job = new SpinJob(MS / 10);
             JobRecords r = run(policy, 20, 20 * MS, job);
             int misses = 20 - count(r, JobRecords.DONE);
-            assertTrue(misses <= 3, policy + ": " + misses + " of 20 missed");
+            // wide margin: a loaded 2-core VM can delay a few releases; overload misses 10 or more
+            assertTrue(misses <= 8, policy + ": " + misses + " of 20 missed");
         }
     }
 

@@ -116,7 +116,23 @@ public final class ReportModel {
         public List<double[]> trajectory = new ArrayList<>();
         public List<double[]> real = new ArrayList<>();
         public List<Failure> failures = new ArrayList<>();
+        /** Cause kind to the mean over repetitions of {@code run/cause.<kind>/primary} (jobs per run); empty without attribution. */
+        public Map<String, Double> causes = new LinkedHashMap<>();
+        /** [start, end] event index of the first repetition's GC/safepoint pauses, and their kind. */
+        public List<double[]> pauses = new ArrayList<>();
+        public List<String> pauseKinds = new ArrayList<>();
+    }
 
+    /** Extra per-cell aggregates (not {@link Metric}s): the warm-up split of the attribution, in ms and jobs per run. */
+    static final Map<String, String[]> WARMUP_METRICS = warmupMetrics();
+
+    private static Map<String, String[]> warmupMetrics() {
+        Map<String, String[]> m = new LinkedHashMap<>();
+        m.put("WARM_P99", new String[] {"all/taskLatencyNs.warm/p99", "1e-6"});
+        m.put("STEADY_P99", new String[] {"all/taskLatencyNs.steady/p99", "1e-6"});
+        m.put("WARM_MISSES", new String[] {"all/missedOrLate.warm/value", "1"});
+        m.put("STEADY_MISSES", new String[] {"all/missedOrLate.steady/value", "1"});
+        return m;
     }
 
     /** Builds the model, reporting progress through {@code progress} (one line a step). */
@@ -196,6 +212,18 @@ public final class ReportModel {
             }
             c.metrics.put(metric.name(), Agg.of(values));
         }
+        for (Map.Entry<String, String[]> e : WARMUP_METRICS.entrySet()) {
+            double scale = Double.parseDouble(e.getValue()[1]);
+            List<Double> values = new ArrayList<>();
+            for (ResultsStore.Run r : ok) {
+                Double v = r.metric(e.getValue()[0]);
+                if (v != null) {
+                    values.add(v * scale);
+                }
+            }
+            c.metrics.put(e.getKey(), Agg.of(values));
+        }
+        c.causes = causes(ok);
         if (ok.isEmpty()) {
             return c;
         }
@@ -226,12 +254,99 @@ public final class ReportModel {
                 c.deviationRepetitions.add(r.repetition);
             }
         }
+        pauses(c, store.series(rep.runKey, "pauses"), store.series(rep.runKey, "taskLatency.predict"),
+                store.series(rep.runKey, "taskLatency.update"));
         SeriesTable t = SeriesTable.parse(store.series(rep.runKey, "trajectory"));
         if (t != null) {
             c.trajectory = t.points(t.column("x", "estX", "estimateX", "xEst"), 1, t.column("y", "estY", "estimateY", "yEst"), 1, MAX_POINTS);
             c.real = t.points(t.column("realX", "trueX", "xReal"), 1, t.column("realY", "trueY", "yReal"), 1, MAX_POINTS);
         }
         return c;
+    }
+
+    /**
+     * Mean over the attributed repetitions of each cause's primary count. A run without
+     * attribution rows counts as no evidence, not as zero causes, so it is left out.
+     */
+    static Map<String, Double> causes(List<ResultsStore.Run> ok) {
+        Map<String, Double> sum = new java.util.TreeMap<>();
+        int attributed = 0;
+        for (ResultsStore.Run r : ok) {
+            boolean any = false;
+            for (Map.Entry<String, Double> e : r.metrics.entrySet()) {
+                String k = e.getKey();
+                if (k.startsWith("run/cause.") && k.endsWith("/primary")) {
+                    String kind = k.substring("run/cause.".length(), k.length() - "/primary".length());
+                    sum.merge(kind, e.getValue(), Double::sum);
+                    any = true;
+                }
+            }
+            if (any || r.metrics.containsKey("run/cause.jobs/count")) {
+                attributed++;
+            }
+        }
+        Map<String, Double> out = new LinkedHashMap<>();
+        for (Map.Entry<String, Double> e : sum.entrySet()) {
+            out.put(e.getKey(), SeriesTable.round(e.getValue() / attributed));
+        }
+        return out;
+    }
+
+    /**
+     * The pauses (seconds on the run's timeline) as event-index intervals, through the release
+     * times of the latency series, so that they can be drawn on the task latency vs event index chart.
+     */
+    private static void pauses(Cell c, String pausesJson, String... latencyJson) {
+        SeriesTable p = SeriesTable.parse(pausesJson);
+        if (p == null || p.size() == 0) {
+            return;
+        }
+        java.util.TreeMap<Double, Double> indexAt = new java.util.TreeMap<>();
+        for (String json : latencyJson) {
+            SeriesTable t = SeriesTable.parse(json);
+            if (t == null) {
+                continue;
+            }
+            int index = t.column("index", "i", "job");
+            int release = t.column("releaseS", "release");
+            if (index < 0 || release < 0) {
+                continue;
+            }
+            for (int i = 0; i < t.size(); i++) {
+                double s = t.value(i, release);
+                double x = t.value(i, index);
+                if (Double.isFinite(s) && Double.isFinite(x)) {
+                    indexAt.put(s, x);
+                }
+            }
+        }
+        int start = p.column("start");
+        int end = p.column("end");
+        int kind = p.column("kind");
+        if (indexAt.size() < 2 || start < 0 || end < 0) {
+            return;
+        }
+        for (int i = 0; i < p.size(); i++) {
+            double a = indexAt(indexAt, p.value(i, start));
+            double b = indexAt(indexAt, p.value(i, end));
+            if (Double.isFinite(a) && Double.isFinite(b)) {
+                c.pauses.add(new double[] {SeriesTable.round(a), SeriesTable.round(b)});
+                c.pauseKinds.add(kind >= 0 ? p.text(i, kind) : "pause");
+            }
+        }
+    }
+
+    /** The event index at time {@code s}, interpolated between the nearest releases (NaN outside them). */
+    private static double indexAt(java.util.TreeMap<Double, Double> indexAt, double s) {
+        Map.Entry<Double, Double> lo = indexAt.floorEntry(s);
+        Map.Entry<Double, Double> hi = indexAt.ceilingEntry(s);
+        if (lo == null || hi == null) {
+            return Double.NaN;
+        }
+        if (hi.getKey().equals(lo.getKey())) {
+            return lo.getValue();
+        }
+        return lo.getValue() + (hi.getValue() - lo.getValue()) * (s - lo.getKey()) / (hi.getKey() - lo.getKey());
     }
 
     private static List<double[]> latencyPoints(String json) {

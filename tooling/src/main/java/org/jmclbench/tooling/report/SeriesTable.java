@@ -61,6 +61,15 @@ final class SeriesTable {
         return rows.size();
     }
 
+    /** The text at a row and column; empty when missing. */
+    String text(int row, int column) {
+        JsonNode r = rows.get(row);
+        if (r == null || column < 0 || column >= r.size() || r.get(column).isNull()) {
+            return "";
+        }
+        return r.get(column).asText();
+    }
+
     /** The value at a row and column; NaN when missing or not a number. */
     double value(int row, int column) {
         JsonNode r = rows.get(row);

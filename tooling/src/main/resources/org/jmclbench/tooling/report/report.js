@@ -163,6 +163,10 @@
     { key: 'jitMean', label: 'jitter mean', metric: 'JITTER_MEAN', ci: true, best: 'min' },
     { key: 'jitP99', label: 'jitter p99', metric: 'JITTER_P99', best: 'min' },
     { key: 'jitMax', label: 'jitter max', metric: 'JITTER_MAX', stat: 'max', best: 'min' },
+    { key: 'warmP99', label: 'latency p99 warm-up', metric: 'WARM_P99', best: 'min', title: 'task latency p99 (ms) of the jobs released in the first seconds of the run (class loading, JIT)' },
+    { key: 'steadyP99', label: 'latency p99 steady', metric: 'STEADY_P99', best: 'min', title: 'task latency p99 (ms) of the jobs released after the warm-up' },
+    { key: 'warmMiss', label: 'missed warm-up', metric: 'WARM_MISSES', best: 'min', title: 'jobs missed or late per run, released in the warm-up' },
+    { key: 'steadyMiss', label: 'missed steady', metric: 'STEADY_MISSES', best: 'min', title: 'jobs missed or late per run, released after the warm-up' },
     { key: 'dev', label: 'deviation', metric: 'DEVIATION', ci: true, best: 'min' },
     { key: 'vsNative', label: 'lat. \u00d7 native', best: 'min' },
     { key: 'failures', label: 'failures', best: 'min' },
@@ -179,7 +183,7 @@
       row.texts.runs = c.ok + '/' + c.runs; row.values.runs = c.ok;
       COLUMNS.forEach(function (col) {
         if (!col.metric) { return; }
-        var agg = c.metrics[col.metric];
+        var agg = c.metrics[col.metric] || { mean: null, max: null, half: null };
         var v = col.stat === 'max' ? agg.max : agg.mean;
         row.values[col.key] = v;
         row.texts[col.key] = col.ci ? fmtCi(agg) : fmt(v);
@@ -216,6 +220,7 @@
     var thead = el('thead'), tr = el('tr');
     COLUMNS.forEach(function (col) {
       var th = el('th', { scope: 'col', 'data-key': col.key, 'class': col.key === 'config' ? 'name' : '' }, col.label);
+      if (col.title) { th.title = col.title; }
       if (sortState.column === col.key) { th.setAttribute('aria-sort', sortState.dir > 0 ? 'ascending' : 'descending'); }
       th.onclick = function () {
         sortState.dir = sortState.column === col.key ? -sortState.dir : 1;
@@ -348,15 +353,38 @@
       ctx.restore();
     }
   };
-  Chart.register(errorBars, playgroundFrame);
+  // GC and safepoint pauses of the first repetition as shaded bands on an event-index axis.
+  var PAUSE_COLORS = { gc: 'rgba(214, 39, 40, 0.16)', safepoint: 'rgba(148, 103, 189, 0.16)' };
+  var pauseBands = {
+    id: 'jmclbenchPauses',
+    beforeDatasetsDraw: function (chart) {
+      var bands = chart.options.plugins.jmclbenchPauses;
+      if (!bands || !bands.length) { return; }
+      var x = chart.scales.x, area = chart.chartArea, ctx = chart.ctx;
+      ctx.save();
+      bands.forEach(function (b) {
+        var a = Math.max(area.left, x.getPixelForValue(b.from)), e = Math.min(area.right, x.getPixelForValue(b.to));
+        if (e < area.left || a > area.right) { return; }
+        ctx.fillStyle = PAUSE_COLORS[b.kind] || 'rgba(127, 127, 127, 0.16)';
+        ctx.fillRect(a, area.top, Math.max(1, e - a), area.bottom - area.top); // a pause shorter than a pixel still shows
+      });
+      ctx.restore();
+    }
+  };
+  Chart.register(errorBars, playgroundFrame, pauseBands);
   Chart.defaults.animation = false;
   Chart.defaults.font.size = 12;
 
+  /** Cause kinds of docs/FORMATS.md 5, VM causes first, in a stable order and colour across settings. */
+  var CAUSE_ORDER = ['gc', 'safepoint', 'jit', 'deopt', 'classload', 'lock', 'os', 'preemption', 'compute', 'queued', 'overlap', 'unknown'];
+  var CAUSE_COLORS = { gc: '#d62728', safepoint: '#9467bd', jit: '#ff7f0e', deopt: '#ffbb78', classload: '#e7ba52', lock: '#393b79', os: '#8c564b',
+    preemption: '#e377c2', compute: '#1f77b4', queued: '#17becf', overlap: '#bcbd22', unknown: '#7f7f7f' };
   var FIGURES = [
     { id: 'misses', title: 'Deadline misses vs particles', caption: 'missCount per run (skipped + terminated jobs; late jobs under queue), mean over repetitions with 95% CI error bars, per runtime. The thesis\u2019s histogram with errors.', particles: false },
     { id: 'deviation', title: 'Mean localisation deviation vs particles', caption: 'Mean Euclidean xy deviation of the estimate from the ground truth (m), mean over repetitions with 95% CI error bars.', particles: false },
     { id: 'latency-jitter', title: 'Average task latency and release jitter vs particles', caption: 'Mean over all jobs, then over repetitions (ms). Solid: task latency (end \u2212 start); dashed: release jitter (start \u2212 release).', particles: false },
-    { id: 'latency-index', title: 'Task latency vs event index', caption: 'Every job of the first repetition (down-sampled): predict (odometry, every 50 ms) as dots, update (laser) as triangles. The thesis\u2019s XY points graph.', particles: true },
+    { id: 'causes', title: 'Why deadlines were missed', caption: 'Jobs missed or late per run (mean over the attributed repetitions), split by each job\u2019s largest cause (the primary cause of ./jmclbench explain): gc, safepoint, jit, os, preemption, compute, queued, overlap, unknown. Runs without attribution evidence are left out.', particles: true },
+    { id: 'latency-index', title: 'Task latency vs event index', caption: 'Every job of the first repetition (down-sampled): predict (odometry, every 50 ms) as dots, update (laser) as triangles. The thesis\u2019s XY points graph. Shaded bands: the GC (red) and safepoint (violet) pauses of that repetition, placed on the event index through the jobs\u2019 release times (shown when one runtime is selected or the runtimes\u2019 pauses are those of the first listed).', particles: true },
     { id: 'deviation-time', title: 'Deviation over time, repeated runs', caption: 'Euclidean xy deviation (m) over the run, one line per repetition (up to five) per runtime. The thesis\u2019s XY lines graph.', particles: true },
     { id: 'trajectory', title: 'Estimated vs real trajectory', caption: 'On the playground (dashed frame, metres); black: ground truth; triangles: the beacons; one estimate per runtime (first repetition).', particles: true },
     { id: 'spectrum', title: 'Task latency percentile spectrum', caption: 'HdrHistogram style: every job of every repetition merged; x = 1/(1\u2212p) on a log axis (10 = 90%, 100 = 99%, 1000 = 99.9%), latency (ms) on a log axis.', particles: true },
@@ -462,8 +490,35 @@
       if (c.latencyPredict.length) { li.push({ label: c.config + ' predict', data: points(c.latencyPredict), pointRadius: 2, pointStyle: 'circle', borderColor: colorOf[c.config], backgroundColor: colorOf[c.config] }); }
       if (c.latencyUpdate.length) { li.push({ label: c.config + ' update', data: points(c.latencyUpdate), pointRadius: 3, pointStyle: 'triangle', borderColor: colorOf[c.config], backgroundColor: 'transparent' }); }
     });
+    var withPauses = cells.filter(function (c) { return c.pauses && c.pauses.length; });
+    var bands = [];
+    withPauses.slice(0, 1).forEach(function (c) {
+      c.pauses.forEach(function (p, i) { bands.push({ from: p[0], to: p[1], kind: c.pauseKinds[i] }); });
+    });
     draw('latency-index', { type: 'scatter', data: { datasets: li },
-      options: xyOptions('Task latency vs event index (' + where(true) + ')', 'event index', 'task latency (ms)') });
+      options: xyOptions('Task latency vs event index (' + where(true) + ')' + (bands.length ? ', pauses of ' + withPauses[0].config : ''),
+        'event index', 'task latency (ms)', function (o) { o.plugins.jmclbenchPauses = bands; }) });
+    document.getElementById('chart-latency-index').setAttribute('data-pauses', String(bands.length));
+
+    var kinds = [];
+    var attributed = configOrder(cells).filter(function (c) { return c.causes && Object.keys(c.causes).length; });
+    attributed.forEach(function (c) { Object.keys(c.causes).forEach(function (k) { if (kinds.indexOf(k) < 0) { kinds.push(k); } }); });
+    kinds.sort(function (a, b) { return CAUSE_ORDER.indexOf(a) - CAUSE_ORDER.indexOf(b) || (a < b ? -1 : a > b ? 1 : 0); });
+    draw('causes', {
+      type: 'bar',
+      data: { labels: attributed.map(function (c) { return c.config; }),
+        datasets: kinds.map(function (k, i) {
+          return { label: k, backgroundColor: CAUSE_COLORS[k] || PALETTE[i % PALETTE.length],
+            data: attributed.map(function (c) { return c.causes[k] === undefined ? 0 : c.causes[k]; }) };
+        }) },
+      options: {
+        responsive: true, maintainAspectRatio: false,
+        plugins: { title: { display: true, text: 'Why deadlines were missed (' + where(true) + ')' },
+          legend: { position: 'bottom', labels: { boxWidth: 12 } } },
+        scales: { x: { stacked: true, title: axisTitle('runtime/profile') },
+          y: { stacked: true, beginAtZero: true, title: axisTitle('jobs missed or late per run, by primary cause (mean)') } }
+      }
+    });
 
     var dt = [];
     cells.forEach(function (c) {

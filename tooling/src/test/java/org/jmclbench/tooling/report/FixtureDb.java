@@ -242,6 +242,7 @@ public final class FixtureDb {
                 i -> new double[] {i, i * 0.05, predict[i].latencyNs, predict[i].latencyNs + predict[i].jitterNs, 0});
         addSeries(series, key, "taskLatency.update", latencyColumns, update.length,
                 i -> new double[] {i, i / 3.6, update[i].latencyNs, update[i].latencyNs + update[i].jitterNs, 0});
+        addAttribution(metric, series, key, cfg, missCount, predict);
         double phase = rng.nextDouble();
         addSeries(series, key, "deviation", List.of("time", "dx", "dy", "dxy", "dtheta"), predictJobs, i -> {
             double d = deviation * (1 + 0.8 * Math.sin(i * 0.02 + phase * 6));
@@ -255,6 +256,52 @@ public final class FixtureDb {
             return new double[] {i * 0.05, rx + e, ry - e, a, rx, ry, a};
         });
     }
+
+    /** The attribution's rows as the runner writes them: causes (the primary split of the misses), the warm-up split, the pauses. */
+    private static void addAttribution(PreparedStatement metric, PreparedStatement series, String key, Config cfg, int missCount,
+                                       Job[] predict) throws SQLException {
+        boolean java = !"native".equals(cfg.runtime());
+        List<String> kinds = java ? CAUSES_JAVA : CAUSES_NATIVE;
+        int left = missCount;
+        for (int k = 0; k < kinds.size(); k++) {
+            int share = k == kinds.size() - 1 ? left : left / 2; // halves: compute, then the VM's causes, ...
+            left -= share;
+            addMetric(metric, key, "run", "cause." + kinds.get(k), "primary", (double) share);
+            addMetric(metric, key, "run", "cause." + kinds.get(k), "count", (double) share + 1);
+        }
+        addMetric(metric, key, "run", "cause.jobs", "count", (double) missCount);
+        int warmJobs = Math.min(40, predict.length);
+        double warmP99 = 0;
+        double steadyP99 = 0;
+        for (int i = 0; i < predict.length; i++) {
+            if (i < warmJobs) {
+                warmP99 = Math.max(warmP99, predict[i].latencyNs);
+            } else {
+                steadyP99 = Math.max(steadyP99, predict[i].latencyNs);
+            }
+        }
+        addMetric(metric, key, "all", "taskLatencyNs.warm", "p99", warmP99 * (java ? 3 : 1));
+        addMetric(metric, key, "all", "taskLatencyNs.steady", "p99", steadyP99);
+        addMetric(metric, key, "all", "missedOrLate.warm", "value", (double) (java ? missCount / 2 : 0));
+        addMetric(metric, key, "all", "missedOrLate.steady", "value", (double) (missCount - (java ? missCount / 2 : 0)));
+        if (java) {
+            ObjectNode o = JSON.createObjectNode();
+            o.putArray("columns").add("start").add("end").add("kind").add("detail");
+            ArrayNode rows = o.putArray("rows");
+            for (double t = 0.4; t < predict.length * 0.05; t += 7.5) {
+                rows.addArray().add(t).add(t + 0.6).add("gc").add("G1 Evacuation Pause");
+                rows.addArray().add(t + 3).add(t + 3.3).add("safepoint").add("Deoptimize");
+            }
+            series.setString(1, key);
+            series.setString(2, "pauses");
+            series.setString(3, o.toString());
+            series.addBatch();
+        }
+    }
+
+    /** The cause kinds the fixture attributes misses to (FORMATS.md 5), in the order their shares halve. */
+    static final List<String> CAUSES_JAVA = List.of("compute", "gc", "jit", "safepoint", "os");
+    static final List<String> CAUSES_NATIVE = List.of("compute", "os");
 
     private record Job(double latencyNs, double jitterNs) {
     }

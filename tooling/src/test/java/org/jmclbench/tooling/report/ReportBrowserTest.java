@@ -127,6 +127,7 @@ class ReportBrowserTest {
         m.put("misses", configs);
         m.put("deviation", configs);
         m.put("latency-jitter", 2 * configs);       // task latency and release jitter per runtime
+        m.put("causes", FixtureDb.CAUSES_JAVA.size()); // one stack segment per cause kind (the JVMs' kinds include native's)
         m.put("latency-index", 2 * configs);        // predict and update per runtime
         m.put("deviation-time", configs * repetitions);
         m.put("trajectory", configs + 2);           // the real trajectory, one estimate per runtime, the beacons
@@ -149,6 +150,20 @@ class ReportBrowserTest {
         throw new AssertionError("no row for " + config);
     }
 
+    @SuppressWarnings("unchecked")
+    static List<String> causeBars() {
+        return (List<String>) js().executeScript("return window.jmclbenchCharts['causes'].data.labels");
+    }
+
+    /** The stack segment of one cause kind in one runtime's bar (jobs per run). */
+    static double causeOf(String config, String kind) {
+        Number v = (Number) js().executeScript("var c = window.jmclbenchCharts['causes'].data;"
+                + "var i = c.labels.indexOf(arguments[0]), k = arguments[1];"
+                + "var d = c.datasets.filter(function (x) { return x.label === k; })[0];"
+                + "return d ? d.data[i] : -1;", config, kind);
+        return v.doubleValue();
+    }
+
     @Test
     void loadsWithoutErrorOrRequestAndDrawsEveryChart() throws Exception {
         List<LogEntry> severe = driver.manage().logs().get(LogType.BROWSER).getAll().stream()
@@ -157,7 +172,7 @@ class ReportBrowserTest {
         Number requests = (Number) js().executeScript("return performance.getEntriesByType('resource').length");
         assertEquals(0, requests.intValue(), "the page fetched something");
         Number chartJs = (Number) js().executeScript("return Object.keys(window.jmclbenchCharts).length");
-        assertEquals(8, chartJs.intValue());
+        assertEquals(9, chartJs.intValue());
         // Four runtimes completed runs (the unsupported and the crashed one draw nothing), three repetitions each.
         assertEquals(expected(4, 3), seriesPerChart());
         Number datasets = (Number) js().executeScript("return window.jmclbenchCharts['spectrum'].data.datasets.length");
@@ -170,6 +185,10 @@ class ReportBrowserTest {
         // The best (lowest) mean latency is native's and it is marked.
         WebElement best = driver.findElement(By.cssSelector("#results-table tr[data-config=native] td[data-key=latMean]"));
         assertTrue(best.getAttribute("class").contains("best"));
+
+        // Warm-up vs steady state: the JVMs' first seconds are slower in the fixture, native's are not.
+        assertNotEquals("\u2013", cell("temurin-17/g1", "warmP99"));
+        assertNotEquals("", cell("native", "steadyMiss"));
 
         byte[] png = ((TakesScreenshot) driver).getScreenshotAs(OutputType.BYTES);
         Files.write(ARTIFACTS.resolve("report.png"), png);
@@ -213,6 +232,11 @@ class ReportBrowserTest {
         waitForRender(before);
         assertFalse(tableConfigs().contains("temurin-17/g1"));
         assertEquals(expected(3, 3), seriesPerChart());
+        assertEquals(List.of(XSS_CONFIG, "native", "temurin-25/zgc"), causeBars(), "the cause chart follows the runtimes chosen (legend order)");
+        assertEquals(0.0, causeOf("native", "gc"), "native has no GC to blame");
+        assertTrue(causeOf("temurin-25/zgc", "gc") > 0, "the fixture's JVM misses include GC-caused ones");
+        assertTrue(Integer.parseInt(driver.findElement(By.id("chart-latency-index")).getAttribute("data-pauses")) > 0,
+                "the first JVM's pauses are drawn as bands");
 
         // Sorting: ascending mean latency puts native first, descending puts it last among those with values.
         before = renderCount();

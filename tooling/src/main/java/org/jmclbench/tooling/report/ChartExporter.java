@@ -92,6 +92,7 @@ final class ChartExporter {
                         continue;
                     }
                     String at = where + ", " + particles + " particles";
+                    jobs.add(() -> write(stem("causes", dataset, policy, particles), causes(at, setting)));
                     jobs.add(() -> write(stem("latency-index", dataset, policy, particles), latencyIndex(at, setting)));
                     jobs.add(() -> write(stem("deviation-time", dataset, policy, particles), deviationTime(at, setting)));
                     jobs.add(() -> write(stem("trajectory", dataset, policy, particles), trajectory(at, dataset, setting)));
@@ -233,6 +234,53 @@ final class ChartExporter {
         return chart;
     }
 
+    /** Cause kinds in the page's order and colours (report.js CAUSE_ORDER, CAUSE_COLORS). */
+    static final Map<String, Color> CAUSE_COLORS = causeColors();
+
+    private static Map<String, Color> causeColors() {
+        Map<String, Color> m = new LinkedHashMap<>();
+        String[][] kinds = {{"gc", "d62728"}, {"safepoint", "9467bd"}, {"jit", "ff7f0e"}, {"deopt", "ffbb78"},
+                {"classload", "e7ba52"}, {"lock", "393b79"}, {"os", "8c564b"}, {"preemption", "e377c2"},
+                {"compute", "1f77b4"}, {"queued", "17becf"}, {"overlap", "bcbd22"}, {"unknown", "7f7f7f"}};
+        for (String[] k : kinds) {
+            m.put(k[0], new Color(Integer.parseInt(k[1], 16)));
+        }
+        return m;
+    }
+
+    /** Stacked bars: per runtime, the jobs missed or late per run by primary cause. */
+    private JFreeChart causes(String at, List<ReportModel.Cell> cells) {
+        List<String> kinds = new ArrayList<>(CAUSE_COLORS.keySet());
+        for (ReportModel.Cell c : cells) {
+            c.causes.keySet().stream().filter(k -> !kinds.contains(k)).forEach(kinds::add);
+        }
+        org.jfree.data.category.DefaultCategoryDataset data = new org.jfree.data.category.DefaultCategoryDataset();
+        List<String> used = new ArrayList<>();
+        for (String kind : kinds) {
+            if (cells.stream().noneMatch(c -> c.causes.containsKey(kind))) {
+                continue;
+            }
+            used.add(kind);
+            for (ReportModel.Cell c : cells) {
+                if (!c.causes.isEmpty()) {
+                    data.addValue(c.causes.getOrDefault(kind, 0.0), kind, c.config);
+                }
+            }
+        }
+        org.jfree.chart.renderer.category.StackedBarRenderer renderer = new org.jfree.chart.renderer.category.StackedBarRenderer();
+        renderer.setShadowVisible(false);
+        renderer.setBarPainter(new org.jfree.chart.renderer.category.StandardBarPainter());
+        for (int i = 0; i < used.size(); i++) {
+            Color c = CAUSE_COLORS.get(used.get(i));
+            if (c != null) {
+                renderer.setSeriesPaint(i, c);
+            }
+        }
+        CategoryPlot plot = new CategoryPlot(data, new CategoryAxis("runtime/profile"),
+                new NumberAxis("jobs missed or late per run, by primary cause (mean)"), renderer);
+        return finish(new JFreeChart("Why deadlines were missed (" + at + ")", JFreeChart.DEFAULT_TITLE_FONT, plot, true));
+    }
+
     private JFreeChart latencyIndex(String at, List<ReportModel.Cell> cells) {
         Map<String, XYSeries> series = new LinkedHashMap<>();
         for (ReportModel.Cell c : cells) {
@@ -252,6 +300,14 @@ final class ChartExporter {
                 ((XYLineAndShapeRenderer) chart.getXYPlot().getRenderer()).setSeriesShape(i, triangle);
             }
         }
+        // The pauses of the first runtime that has some, as on the page.
+        cells.stream().filter(c -> !c.pauses.isEmpty()).findFirst().ifPresent(c -> {
+            for (int i = 0; i < c.pauses.size(); i++) {
+                Color k = CAUSE_COLORS.getOrDefault(c.pauseKinds.get(i), Color.GRAY);
+                chart.getXYPlot().addDomainMarker(new org.jfree.chart.plot.IntervalMarker(c.pauses.get(i)[0], c.pauses.get(i)[1],
+                        new Color(k.getRed(), k.getGreen(), k.getBlue(), 48)), org.jfree.chart.ui.Layer.BACKGROUND);
+            }
+        });
         return chart;
     }
 

@@ -119,7 +119,7 @@ class ReportCommandTest {
                 assertChart(charts, "match-short-" + policy + "-" + kind);
             }
             for (int p : List.of(100, 400, 1600)) {
-                for (String kind : List.of("latency-index", "deviation-time", "trajectory", "spectrum", "jitter-cdf")) {
+                for (String kind : List.of("causes", "latency-index", "deviation-time", "trajectory", "spectrum", "jitter-cdf")) {
                     assertChart(charts, "match-short-" + policy + "-" + p + "-" + kind);
                 }
             }
@@ -128,6 +128,8 @@ class ReportCommandTest {
         assertTrue(svg.contains("Deadline misses vs particles"), "title in the SVG");
         assertTrue(svg.contains("&lt;script&gt;alert(1)&lt;/script&gt;/g1"), "legend escaped in the SVG");
         assertFalse(svg.contains(ReportFixtures.XSS_RUNTIME));
+        String causes = Files.readString(charts.resolve("match-short-skip-400-causes.svg"));
+        assertTrue(causes.contains("Why deadlines were missed") && causes.contains("safepoint"), "title and the cause legend in the SVG");
     }
 
     private static void assertChart(Path charts, String stem) throws Exception {

@@ -294,7 +294,8 @@ public final class ReportModel {
 
     /**
      * The pauses (seconds on the run's timeline) as event-index intervals, through the release
-     * times of the latency series, so that they can be drawn on the task latency vs event index chart.
+     * times of the latency series (predict's, else update's: one task, so that indices never mix),
+     * so that they can be drawn on the task latency vs event index chart.
      */
     private static void pauses(Cell c, String pausesJson, String... latencyJson) {
         SeriesTable p = SeriesTable.parse(pausesJson);
@@ -303,6 +304,9 @@ public final class ReportModel {
         }
         java.util.TreeMap<Double, Double> indexAt = new java.util.TreeMap<>();
         for (String json : latencyJson) {
+            if (indexAt.size() >= 2) {
+                break; // one task's jobs only: the regular predict releases, update's when predict has none
+            }
             SeriesTable t = SeriesTable.parse(json);
             if (t == null) {
                 continue;

@@ -46,6 +46,11 @@ public final class WorkloadCommand {
         if (timeScale != 1.0) {
             cmd.addAll(List.of("--time-scale", String.format(Locale.ROOT, "%s", timeScale)));
         }
+        if (!rt.isJvm() && !plan.prefix().contains("chrt")) {
+            // the C program raises itself to SCHED_FIFO when permitted; without the fifo profile it
+            // must run under the same scheduling as the JVMs it is compared with
+            cmd.add("--no-fifo");
+        }
         cmd.addAll(workloadArgs);
         return cmd;
     }

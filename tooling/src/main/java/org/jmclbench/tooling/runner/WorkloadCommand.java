@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Locale;
 
 import org.jmclbench.tooling.runtime.LaunchPlan;
+import org.jmclbench.tooling.runtime.ProfileComponent;
 import org.jmclbench.tooling.runtime.RuntimeInfo;
 
 /** Builds the command line of one workload process (docs/FORMATS.md section 2), as an argument list. */
@@ -46,7 +47,7 @@ public final class WorkloadCommand {
         if (timeScale != 1.0) {
             cmd.addAll(List.of("--time-scale", String.format(Locale.ROOT, "%s", timeScale)));
         }
-        if (!rt.isJvm() && !plan.prefix().contains("chrt")) {
+        if (!rt.isJvm() && !run.profile().has(ProfileComponent.FIFO)) {
             // the C program raises itself to SCHED_FIFO when permitted; without the fifo profile it
             // must run under the same scheduling as the JVMs it is compared with
             cmd.add("--no-fifo");

@@ -106,14 +106,14 @@ public abstract class MissionSequencer extends ManagedEventHandler {
                 t.exit();
             }
         } catch (Throwable e) {
-            run.fail(m.getClass().getSimpleName() + ".initialize", e);
+            run.fail(label(m) + ".initialize", e);
         }
         if (!run.failed()) {
             m.phase = Phase.RUN;
             try {
                 execute(m, run, t);
             } catch (Throwable e) {
-                run.fail(m.getClass().getSimpleName() + " execute", e);
+                run.fail(label(m) + " execute", e);
             }
         }
         m.phase = Phase.CLEANUP;
@@ -129,12 +129,17 @@ public abstract class MissionSequencer extends ManagedEventHandler {
                 t.exit();
             }
         } catch (Throwable e) {
-            run.fail(m.getClass().getSimpleName() + ".cleanUp", e);
+            run.fail(label(m) + ".cleanUp", e);
             next = false;
         }
         Mission.setCurrent(null);
         currentMission = null;
         return next;
+    }
+
+    private static String label(Mission m) {
+        String s = m.getClass().getSimpleName();
+        return s.isEmpty() ? m.getClass().getName() : s;
     }
 
     private void execute(Mission m, RunState run, ScjThread t) {

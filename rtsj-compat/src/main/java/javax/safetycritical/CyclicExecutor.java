@@ -13,7 +13,7 @@ final class CyclicExecutor {
     private CyclicExecutor() {
     }
 
-    static void run(Mission m, ScjThread t, Area missionArea, TimeSource time) {
+    static void run(Mission m, ScjThread t, Area missionArea, TimeSource time) throws Throwable {
         if (!(m instanceof CyclicExecutive)) {
             throw new IllegalStateException("a Level 0 mission must be a CyclicExecutive");
         }

@@ -5,6 +5,7 @@ import org.jmclbench.rtsjcompat.Area;
 import org.jmclbench.rtsjcompat.Priorities;
 import org.jmclbench.rtsjcompat.RunReport;
 import org.jmclbench.rtsjcompat.RunState;
+import org.jmclbench.rtsjcompat.ScjRuntime;
 import org.jmclbench.rtsjcompat.ScjThread;
 
 /**
@@ -27,6 +28,7 @@ final class Launch implements Runnable {
         if (app == null) {
             throw new IllegalArgumentException("safelet is null");
         }
+        ScjRuntime.preloadRuntime();
         RunState run = RunState.begin(level);
         ScjThread launcher = new ScjThread(new Launch(app, run), "SCJ launcher",
                 Priorities.toJava(javax.safetycritical.PriorityScheduler.instance().getNormPriority()));

@@ -142,7 +142,7 @@ public abstract class MissionSequencer extends ManagedEventHandler {
         return s.isEmpty() ? m.getClass().getName() : s;
     }
 
-    private void execute(Mission m, RunState run, ScjThread t) {
+    private void execute(Mission m, RunState run, ScjThread t) throws Throwable {
         MissionControl control;
         HandlerRuntime[] runtimes;
         ScjThread.pauseAccounting();

@@ -48,7 +48,7 @@ public final class AperiodicRuntime extends HandlerRuntime {
     }
 
     @Override
-    protected void releaseLoop() {
+    protected void releaseLoop() throws Throwable {
         while (true) {
             long release;
             synchronized (this) {

@@ -73,7 +73,7 @@ public abstract class HandlerRuntime implements Runnable {
     public abstract String kind();
 
     /** The release loop; returns when the mission terminates. */
-    protected abstract void releaseLoop();
+    protected abstract void releaseLoop() throws Throwable;
 
     /** Releases accepted but not started. */
     protected abstract long pendingReleases();
@@ -166,17 +166,27 @@ public abstract class HandlerRuntime implements Runnable {
      * Runs one release released at {@code releaseTime}: handleAsyncEvent in the private
      * memory, which is then charged, checked and emptied; counts completion and deadline miss.
      */
-    protected final void runRelease(long releaseTime) {
+    protected final void runRelease(long releaseTime) throws Throwable {
         ScjThread t = thread;
         t.enter(privateArea);
         try {
             handler.handleAsyncEvent();
-        } finally {
+        } catch (Throwable failure) {
+            // The release's own failure is the one to report; building it may itself have
+            // pushed the area over its size, which would otherwise hide the cause.
             try {
                 t.exit();
+            } catch (Throwable alsoOverflow) {
+                failure.addSuppressed(alsoOverflow);
             } finally {
                 privateArea.empty();
             }
+            throw failure;
+        }
+        try {
+            t.exit();
+        } finally {
+            privateArea.empty();
         }
         long end = time.nanoTime();
         synchronized (this) {
@@ -191,7 +201,7 @@ public abstract class HandlerRuntime implements Runnable {
      * Runs one release on the calling thread (Level 0: the cyclic executive releases its
      * handlers itself, frame by frame).
      */
-    public final void runInline(long releaseTime) {
+    public final void runInline(long releaseTime) throws Throwable {
         if (thread == null) {
             thread = ScjThread.self();
         }

@@ -58,8 +58,26 @@ public final class MissionControl {
         return true;
     }
 
-    /** Blocks the sequencer until every handler has ended. */
-    public synchronized void awaitEnd() {
+    /** Blocks the sequencer until every handler has ended and its thread has terminated. */
+    public void awaitEnd() {
+        awaitHandlersEnded();
+        boolean interrupted = false;
+        for (HandlerRuntime h : handlers) {
+            Thread t = h.thread;
+            while (t != null && t.isAlive()) {
+                try {
+                    t.join();
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private synchronized void awaitHandlersEnded() {
         TimeSource time = RunState.current().time();
         while (running > 0) {
             if (!sequencerIdle) {

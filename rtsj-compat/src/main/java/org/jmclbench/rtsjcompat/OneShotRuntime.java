@@ -80,7 +80,7 @@ public final class OneShotRuntime extends HandlerRuntime {
     }
 
     @Override
-    protected void releaseLoop() {
+    protected void releaseLoop() throws Throwable {
         while (true) {
             long release;
             synchronized (this) {

@@ -37,7 +37,7 @@ public final class PeriodicRuntime extends HandlerRuntime {
     }
 
     @Override
-    protected void releaseLoop() {
+    protected void releaseLoop() throws Throwable {
         long k = 0;
         while (!terminating()) {
             long release = base + k * period;

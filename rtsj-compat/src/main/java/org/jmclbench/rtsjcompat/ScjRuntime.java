@@ -54,6 +54,20 @@ public final class ScjRuntime {
         return h.stats();
     }
 
+    /**
+     * Loads and initialises the named classes now, on the calling thread, so that the JVM's
+     * class-loading allocations are not charged to the areas of the next launch (an SCJ VM
+     * has its classes ready before the program starts). Call it before {@link #launch}.
+     */
+    public static void preload(String... classNames) {
+        Preload.run(classNames);
+    }
+
+    /** Loads this layer's own classes (done by every launch; exposed for the launch's caller). */
+    public static void preloadRuntime() {
+        Preload.run();
+    }
+
     /** Installs what tells the area of an arbitrary object (a verification listener); null removes it. */
     public static void installResolver(ObjectAreaResolver resolver) {
         RunState.installResolver(resolver);

@@ -2,7 +2,7 @@ package org.jmclbench.workload;
 
 import java.util.Locale;
 
-import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.core.mcl.MclConfig;
 
 /**
  * Every option of one workload run (docs/FORMATS.md section 2), with the defaults filled in;

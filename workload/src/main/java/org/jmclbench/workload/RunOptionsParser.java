@@ -2,7 +2,7 @@ package org.jmclbench.workload;
 
 import java.util.Locale;
 
-import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.core.mcl.MclConfig;
 
 /**
  * Parses the workload's command line (docs/FORMATS.md section 2): the thesis's short flags
@@ -19,7 +19,7 @@ public final class RunOptionsParser {
             "  -j, --runtime-name NAME  runtime name in the output path (default: <java.vendor>-<java version>)",
             "  -O, --out DIR            output root (default results)",
             "  -odo F -laser F -real F  thesis-format data files (all three together)",
-            "  --dataset DIR            dataset folder (default datasets/match-short under the project home)",
+            "  --dataset DIR            dataset folder (default data/match-short under the project home)",
             "  -T                       same as --policy terminate",
             "  --policy skip|terminate|queue   event released while a job runs (default skip)",
             "  --ideal                  one thread, no timing: the infinitely fast computer",

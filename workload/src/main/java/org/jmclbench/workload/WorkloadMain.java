@@ -6,14 +6,14 @@ import java.io.PrintStream;
 
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
-import org.jmclbench.workload.data.Timeline;
-import org.jmclbench.workload.mcl.Localizer;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
-import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.workload.output.Environment;
 import org.jmclbench.workload.output.RunFolder;
 import org.jmclbench.workload.output.RunWriter;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.release.GcLog;
 import org.jmclbench.workload.release.RealTimeRun;
 
@@ -70,7 +70,7 @@ public final class WorkloadMain {
     private static int execute(RunOptions options, PrintStream out, PrintStream err)
             throws BadInputException, IOException {
         Dataset dataset = load(options);
-        Timeline timeline = Timeline.of(dataset);
+        Timeline timeline = dataset.timeline();
         MclConfig config = options.mclConfig();
         RunFolder folder = RunFolder.of(options);
         folder.checkNotComplete();
@@ -118,7 +118,7 @@ public final class WorkloadMain {
         return Localizers.create(config, d.playground, d.startX, d.startY, d.startTheta);
     }
 
-    /** The dataset the options name: -odo/-laser/-real, --dataset, else datasets/match-short under the home. */
+    /** The dataset the options name: -odo/-laser/-real, --dataset, else data/match-short under the home. */
     static Dataset load(RunOptions o) throws BadInputException {
         if (o.odo != null) {
             return DatasetReader.readFiles(new File(o.odo), new File(o.laser), new File(o.real));
@@ -128,6 +128,6 @@ public final class WorkloadMain {
         }
         String home = System.getProperty("jmclbench.home");
         File base = home != null ? new File(home) : new File(".");
-        return DatasetReader.readFolder(new File(base, "datasets" + File.separator + "match-short"));
+        return DatasetReader.readFolder(new File(base, "data" + File.separator + "match-short"));
     }
 }

@@ -1,5 +1,12 @@
 package org.jmclbench.workload.mcl;
 
+import org.jmclbench.core.mcl.MotionModel;
+import org.jmclbench.core.mcl.Playground;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.PreallocatedLocalizer;
+
 /** Creates the localizer of the configured memory style, initialised per ALGORITHM 5. */
 public final class Localizers {
     private Localizers() {

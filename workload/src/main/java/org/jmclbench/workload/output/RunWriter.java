@@ -11,9 +11,9 @@ import java.util.Locale;
 
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
-import org.jmclbench.workload.data.Timeline;
-import org.jmclbench.workload.record.Deviation;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.core.record.Deviation;
+import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.record.Stats;
 
 /**
@@ -52,7 +52,7 @@ public final class RunWriter {
 
     /** Writes every file of the run into dir. */
     public void writeAll(File dir) throws IOException {
-        Deviation dev = Deviation.of(dataset, timeline, records);
+        Deviation dev = dataset.deviation(timeline, records);
         writeJobs(new File(dir, "odoData.txt"), Timeline.PREDICT);
         writeJobs(new File(dir, "laserData.txt"), Timeline.UPDATE);
         writePositions(new File(dir, "position.txt"), new File(dir, "positionDeviation.txt"), dev);

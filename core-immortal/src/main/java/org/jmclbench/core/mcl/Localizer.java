@@ -1,4 +1,4 @@
-package org.jmclbench.workload.mcl;
+package org.jmclbench.core.mcl;
 
 /**
  * The robot's Monte-Carlo localizer (docs/ALGORITHM.md): one shared resource on which at

@@ -1,6 +1,4 @@
-package org.jmclbench.workload.mcl;
-
-import java.util.Arrays;
+package org.jmclbench.core.mcl;
 
 /** The field the robot moves on: its size and the beacons the laser sees, in a fixed order. */
 public final class Playground {
@@ -59,12 +57,24 @@ public final class Playground {
             return false;
         }
         Playground p = (Playground) o;
-        return p.width == width && p.height == height && Arrays.equals(p.beaconX, beaconX)
-                && Arrays.equals(p.beaconY, beaconY);
+        return p.width == width && p.height == height && sameValues(p.beaconX, beaconX)
+                && sameValues(p.beaconY, beaconY);
     }
 
     @Override
     public int hashCode() {
-        return Double.hashCode(width) * 31 + Double.hashCode(height) * 17 + Arrays.hashCode(beaconX);
+        return Double.hashCode(width) * 31 + Double.hashCode(height) * 17 + beaconX.length;
+    }
+
+    private static boolean sameValues(double[] a, double[] b) {
+        if (a.length != b.length) {
+            return false;
+        }
+        for (int i = 0; i < a.length; i++) {
+            if (Double.doubleToLongBits(a[i]) != Double.doubleToLongBits(b[i])) {
+                return false;
+            }
+        }
+        return true;
     }
 }

@@ -1,4 +1,4 @@
-package org.jmclbench.workload.mcl;
+package org.jmclbench.core.mcl;
 
 /** The filter's parameters for one run (docs/FORMATS.md section 2); immutable, built with {@link Builder}. */
 public final class MclConfig {

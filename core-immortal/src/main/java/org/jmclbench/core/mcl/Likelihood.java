@@ -1,4 +1,4 @@
-package org.jmclbench.workload.mcl;
+package org.jmclbench.core.mcl;
 
 /** The laser's measurement model (ALGORITHM 7.1): a sum over beacons, since the beacon seen is not reported. */
 public final class Likelihood {

@@ -1,8 +1,6 @@
-package org.jmclbench.workload.record;
+package org.jmclbench.core.record;
 
-import java.util.Arrays;
-
-import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.core.timeline.Timeline;
 
 /**
  * Every job's timestamps, outcome and committed estimate, in arrays allocated before the run
@@ -64,18 +62,23 @@ public final class JobRecords {
 
     /** Back to the state before a run (every time -1, every outcome PENDING), without allocating. */
     public void clear() {
-        Arrays.fill(releaseNs, -1);
-        Arrays.fill(startNs, -1);
-        Arrays.fill(endNs, -1);
-        Arrays.fill(deadlineNs, -1);
-        Arrays.fill(cpuNs, -1);
-        Arrays.fill(wakeNs, -1);
-        Arrays.fill(outcome, PENDING);
-        Arrays.fill(estX, Double.NaN);
-        Arrays.fill(estY, Double.NaN);
-        Arrays.fill(estTheta, Double.NaN);
+        // plain loops: no java.util in code an SCJ VM runs
+        for (int k = 0; k < outcome.length; k++) {
+            releaseNs[k] = -1;
+            startNs[k] = -1;
+            endNs[k] = -1;
+            deadlineNs[k] = -1;
+            cpuNs[k] = -1;
+            wakeNs[k] = -1;
+            outcome[k] = PENDING;
+            estX[k] = Double.NaN;
+            estY[k] = Double.NaN;
+            estTheta[k] = Double.NaN;
+        }
         if (cov != null) {
-            Arrays.fill(cov, Double.NaN);
+            for (int i = 0; i < cov.length; i++) {
+                cov[i] = Double.NaN;
+            }
         }
         durationNs = -1;
     }

@@ -1,4 +1,4 @@
-package org.jmclbench.workload.mcl;
+package org.jmclbench.core.mcl;
 
 /**
  * Asks a job in progress to stop: the localizer polls it before each block of

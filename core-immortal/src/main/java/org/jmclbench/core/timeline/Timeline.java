@@ -1,4 +1,4 @@
-package org.jmclbench.workload.data;
+package org.jmclbench.core.timeline;
 
 /**
  * The dataset's odometry and laser events merged by time (ties: odometry first), the order in
@@ -23,11 +23,6 @@ public final class Timeline {
         this.taskIndex = taskIndex;
         this.predictCount = predictCount;
         this.updateCount = updateCount;
-    }
-
-    /** Merges the dataset's odometry and laser events. */
-    public static Timeline of(Dataset d) {
-        return merge(d.odoTime, d.laserTime);
     }
 
     /** Merges two sorted time series: odometry (PREDICT) and laser (UPDATE), odometry first on ties. */

@@ -1,11 +1,11 @@
-package org.jmclbench.workload.mcl;
+package org.jmclbench.core.mcl;
 
 /**
  * The {@code preallocated} memory style (ALGORITHM 9): flat arrays allocated once, two
  * particle buffers and a working copy of the generator, so that a job writes only into the
  * spare buffer and commits by swapping references. No allocation once constructed.
  */
-final class PreallocatedLocalizer implements Localizer {
+public final class PreallocatedLocalizer implements Localizer {
     private final int n;
     private final Playground playground;
     private final MclConfig config;
@@ -31,7 +31,7 @@ final class PreallocatedLocalizer implements Localizer {
     private double estTheta;
     private final double[] cov = new double[6];
 
-    PreallocatedLocalizer(MclConfig config, Playground playground, double startX, double startY, double startTheta) {
+    public PreallocatedLocalizer(MclConfig config, Playground playground, double startX, double startY, double startTheta) {
         this.n = config.particles;
         this.config = config;
         this.playground = playground;

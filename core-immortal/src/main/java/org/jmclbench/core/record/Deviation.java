@@ -1,8 +1,7 @@
-package org.jmclbench.workload.record;
+package org.jmclbench.core.record;
 
-import org.jmclbench.workload.data.Dataset;
-import org.jmclbench.workload.data.Timeline;
-import org.jmclbench.workload.mcl.Angles;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.core.mcl.Angles;
 
 /**
  * Localisation error per docs/ALGORITHM.md section 10: at each ground-truth time t_i, the
@@ -33,16 +32,20 @@ public final class Deviation {
         dtheta = new double[n];
     }
 
-    /** The deviation series of a run's records against the dataset's ground truth. */
-    public static Deviation of(Dataset d, Timeline t, JobRecords r) {
-        int n = d.realTime.length;
+    /**
+     * The deviation series of a run's records against the ground truth (realTime, realX,
+     * realY, realTheta: one row each, as the dataset's real-position file).
+     */
+    public static Deviation of(double[] realTime, double[] realX, double[] realY, double[] realTheta,
+                               Timeline t, JobRecords r) {
+        int n = realTime.length;
         Deviation v = new Deviation(n);
         double ex = r.initialX;
         double ey = r.initialY;
         double et = r.initialTheta;
         int k = 0;
         for (int i = 0; i < n; i++) {
-            double ti = d.realTime[i];
+            double ti = realTime[i];
             while (k < t.size() && t.time(k) <= ti) {
                 if (r.completed(k)) {
                     ex = r.estX[k];
@@ -55,12 +58,12 @@ public final class Deviation {
             v.x[i] = ex;
             v.y[i] = ey;
             v.theta[i] = et;
-            double ddx = ex - d.realX[i];
-            double ddy = ey - d.realY[i];
+            double ddx = ex - realX[i];
+            double ddy = ey - realY[i];
             v.dx[i] = ddx;
             v.dy[i] = ddy;
             v.dxy[i] = Math.sqrt(ddx * ddx + ddy * ddy);
-            v.dtheta[i] = Angles.wrapPi(et - d.realTheta[i]);
+            v.dtheta[i] = Angles.wrapPi(et - realTheta[i]);
         }
         return v;
     }

@@ -1,4 +1,4 @@
-package org.jmclbench.workload.mcl;
+package org.jmclbench.core.mcl;
 
 /**
  * The project's random generator: xoshiro256** seeded with splitmix64, with the uniform and

@@ -1,4 +1,4 @@
-package org.jmclbench.workload.mcl;
+package org.jmclbench.core.mcl;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

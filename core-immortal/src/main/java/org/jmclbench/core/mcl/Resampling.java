@@ -1,4 +1,4 @@
-package org.jmclbench.workload.mcl;
+package org.jmclbench.core.mcl;
 
 /**
  * Resampling of normalised weights into particle indices (ALGORITHM 7.5). The variants taking

@@ -1,4 +1,4 @@
-package org.jmclbench.workload.mcl;
+package org.jmclbench.core.mcl;
 
 /** Angle arithmetic of docs/ALGORITHM.md section 3: headings in [0, 2pi), differences in [-pi, pi). */
 public final class Angles {

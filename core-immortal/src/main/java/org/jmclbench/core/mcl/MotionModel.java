@@ -1,4 +1,4 @@
-package org.jmclbench.workload.mcl;
+package org.jmclbench.core.mcl;
 
 /** The constants of the motion and sensor models (docs/ALGORITHM.md sections 5 to 8), shared by both memory styles. */
 public final class MotionModel {

@@ -20,6 +20,7 @@ public class MclSafelet implements Safelet {
     private final MissionOutput output;
     private final MissionSizes sizes;
     private ImmortalEntry entry;
+    private MclMission mission;
 
     public MclSafelet(MissionConfiguration configuration, MissionInput input, MissionOutput output) {
         this.configuration = configuration;
@@ -37,10 +38,11 @@ public class MclSafelet implements Safelet {
     @Override
     public MissionSequencer getSequencer() {
         int norm = PriorityScheduler.instance().getNormPriority();
+        mission = new MclMission(this);
         return new LinearMissionSequencer(new PriorityParameters(norm),
                 new ScopeParameters(sizes.size(MissionSizes.MISSION), 0, 0, sizes.backingStore()),
                 new ConfigurationParameters(-1, -1, new long[] {MissionSizes.STACK_WORDS}),
-                new MclMission(this), false, "mcl");
+                mission, false, "mcl");
     }
 
     @Override
@@ -65,6 +67,11 @@ public class MclSafelet implements Safelet {
     /** The immortal state; null before {@code initializeApplication}. */
     public ImmortalEntry entry() {
         return entry;
+    }
+
+    /** The mission, once the sequencer has been asked for (for tests, after the run). */
+    public MclMission mission() {
+        return mission;
     }
 
     /** The run's configuration. */

@@ -92,8 +92,9 @@ public final class ImmortalEntry {
     /** Relative deadline of the last update job (s), as in the Java SE engine. */
     public static final double LAST_UPDATE_DEADLINE_S = 0.250;
 
+    /** Seconds (times the time scale) to ns, rounded half up; times are never negative. */
     static long toNs(double seconds, double scale) {
-        return Math.round(seconds * scale * 1e9);
+        return (long) Math.floor(seconds * scale * 1e9 + 0.5);
     }
 
     /** The number of events. */

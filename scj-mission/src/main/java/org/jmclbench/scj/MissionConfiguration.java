@@ -43,7 +43,7 @@ public class MissionConfiguration {
     /** Sets the size (bytes, positive) of one memory area, overriding the computed size; see {@link MissionSizes#AREA_NAMES}. */
     public MissionConfiguration areaSize(int area, long bytes) {
         if (bytes <= 0) {
-            throw new IllegalArgumentException("area size must be positive: " + bytes);
+            throw new IllegalArgumentException("area size must be positive");
         }
         areaSizes[area] = bytes;
         return this;

@@ -32,6 +32,7 @@ public final class Area {
     private final int kind;
     private final int depth;
     private final Area parent;
+    private final boolean enforced;
     private MemoryArea memoryArea;
     private long size;
     private long used;
@@ -39,8 +40,13 @@ public final class Area {
     private long total;
     private long cycles;
 
-    /** A new area; {@code parent} is the next longer-lived area (null for immortal). */
+    /** A new area whose budget is enforced; {@code parent} is the next longer-lived area (null for immortal). */
     public Area(String name, int kind, long size, Area parent) {
+        this(name, kind, size, parent, true);
+    }
+
+    /** A new area; when not {@code enforced}, overflows are measured but raise nothing (warm-up launches). */
+    public Area(String name, int kind, long size, Area parent, boolean enforced) {
         if (name == null) {
             throw new IllegalArgumentException("name is null");
         }
@@ -52,6 +58,12 @@ public final class Area {
         this.parent = parent;
         this.depth = parent == null ? 0 : parent.depth + 1;
         this.size = size;
+        this.enforced = enforced;
+    }
+
+    /** Whether exceeding the size raises {@link AreaOverflowError}. */
+    public boolean enforced() {
+        return enforced;
     }
 
     /** The stable name, as reported in summary.json. */

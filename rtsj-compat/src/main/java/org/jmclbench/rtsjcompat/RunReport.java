@@ -6,6 +6,7 @@ import java.util.List;
 /** The outcome of one launch: success or the failure, each area's use, each handler's counts. */
 public final class RunReport {
     private final int level;
+    private final boolean budgetsEnforced;
     private final MissionFailure failure;
     private final List<AreaUsage> areas;
     private final List<HandlerStats> handlers;
@@ -14,9 +15,10 @@ public final class RunReport {
     private final boolean prioritiesApplied;
     private final String timeSource;
 
-    RunReport(int level, MissionFailure failure, List<AreaUsage> areas, List<HandlerStats> handlers,
+    RunReport(int level, boolean budgetsEnforced, MissionFailure failure, List<AreaUsage> areas, List<HandlerStats> handlers,
             AllocationMeter meter, boolean prioritiesApplied, TimeSource time) {
         this.level = level;
+        this.budgetsEnforced = budgetsEnforced;
         this.failure = failure;
         this.areas = Collections.unmodifiableList(areas);
         this.handlers = Collections.unmodifiableList(handlers);
@@ -29,6 +31,11 @@ public final class RunReport {
     /** The SCJ compliance level the application was launched at (0 or 1). */
     public int level() {
         return level;
+    }
+
+    /** Whether area overflows raised OutOfMemoryError (false for {@link ScjRuntime#warmUp}). */
+    public boolean budgetsEnforced() {
+        return budgetsEnforced;
     }
 
     /** Whether the launch ran to its end with no failure. */

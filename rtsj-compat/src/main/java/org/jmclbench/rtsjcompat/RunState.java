@@ -12,8 +12,10 @@ public final class RunState {
     private static RunState current;
     private static RunReport lastReport;
     private static ObjectAreaResolver resolver;
+    private static boolean nextEnforced = true;
 
     private final int level;
+    private final boolean enforced;
     private final TimeSource time;
     private final AllocationMeter meter;
     private final List<Area> areas = new ArrayList<Area>();
@@ -22,8 +24,9 @@ public final class RunState {
     private Area immortal;
     private MissionFailure failure;
 
-    private RunState(int level) {
+    private RunState(int level, boolean enforced) {
         this.level = level;
+        this.enforced = enforced;
         this.time = TimeSource.current();
         this.meter = AllocationMeter.current();
     }
@@ -33,7 +36,8 @@ public final class RunState {
         if (current != null) {
             throw new IllegalStateException("an SCJ application is already running in this JVM");
         }
-        current = new RunState(level);
+        current = new RunState(level, nextEnforced);
+        nextEnforced = true;
         return current;
     }
 
@@ -60,6 +64,11 @@ public final class RunState {
         return current;
     }
 
+    /** Whether the next launch enforces area budgets (reset to true by every launch). */
+    static synchronized void enforceNext(boolean enforce) {
+        nextEnforced = enforce;
+    }
+
     static synchronized RunReport lastReport() {
         return lastReport;
     }
@@ -80,7 +89,7 @@ public final class RunState {
 
     /** Creates and records an area. */
     public synchronized Area newArea(String name, int kind, long size, Area parent) {
-        Area a = new Area(name, kind, size, parent);
+        Area a = new Area(name, kind, size, parent, enforced);
         areas.add(a);
         if (kind == Area.IMMORTAL) {
             immortal = a;
@@ -154,6 +163,6 @@ public final class RunState {
         for (HandlerRuntime x : handlers) {
             h.add(x.stats());
         }
-        return new RunReport(level, failure, a, h, meter, Priorities.applied(), time);
+        return new RunReport(level, enforced, failure, a, h, meter, Priorities.applied(), time);
     }
 }

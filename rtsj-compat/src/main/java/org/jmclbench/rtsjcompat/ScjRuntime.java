@@ -40,6 +40,21 @@ public final class ScjRuntime {
         return RunState.lastReport();
     }
 
+    /**
+     * Runs {@code safelet} as {@link #launch} does, but with the area budgets measured and not
+     * enforced: a warm-up launch, so that the JVM's first-use costs (class loading, which a
+     * JVM charges to whatever area is current; an SCJ VM has none) are paid before the
+     * measured launch.
+     */
+    public static RunReport warmUp(Safelet safelet, int level) {
+        RunState.enforceNext(false);
+        try {
+            return launch(safelet, level);
+        } finally {
+            RunState.enforceNext(true);
+        }
+    }
+
     /** The report of the last launch that ended in this JVM, or null. */
     public static RunReport lastReport() {
         return RunState.lastReport();

@@ -133,7 +133,7 @@ public class ScjThread extends Thread {
             if (delta > 0) {
                 long held = a.charge(delta);
                 mark = now;
-                if (held > a.size()) {
+                if (held > a.size() && a.enforced()) {
                     throw a.overflow(held);
                 }
             }

@@ -143,4 +143,15 @@ class MemoryAreaTest {
         assertEquals(2, r.area("PrivateMemory:H").depth());
         assertTrue(r.allocationMeasured());
     }
+
+    @Test
+    void aWarmUpLaunchMeasuresOverflowsWithoutFailing() {
+        RunReport warm = assertTimeoutPreemptively(HANG,
+                () -> ScjRuntime.warmUp(Apps.safelet(1 << 20, oneHandler(1 << 20, 1000, 3, () -> sink = new byte[4000])), 1));
+        assertTrue(warm.succeeded(), () -> String.valueOf(warm.failure()));
+        assertFalse(warm.budgetsEnforced());
+        assertTrue(warm.area("PrivateMemory:H").peakBytes() >= 4000);
+        RunReport next = launch(1 << 20, oneHandler(1 << 20, 1000, 3, () -> sink = new byte[4000]));
+        assertTrue(next.budgetsEnforced() && !next.succeeded(), "the next launch enforces again");
+    }
 }

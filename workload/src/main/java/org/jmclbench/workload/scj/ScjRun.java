@@ -183,7 +183,7 @@ public final class ScjRun {
     }
 
     /** A PeriodicEventHandler needs a period: odometry whose intervals vary more than the tolerance is bad input. */
-    static void checkPeriodic(Dataset d) throws BadInputException {
+    public static void checkPeriodic(Dataset d) throws BadInputException {
         int i = Periodicity.firstIrregular(d.odoTime);
         if (i < 0) {
             return;

@@ -130,6 +130,7 @@ public final class WorkloadMain {
     /** The scj engine: the SCJ mission on rtsj-compat, written out through the same run writer. */
     private static int executeScj(RunOptions options, Dataset dataset, PrintStream out)
             throws BadInputException, IOException, RunFailure {
+        ScjRun.checkPeriodic(dataset); // bad input: before anything is written
         RunFolder folder = RunFolder.of(options);
         folder.checkNotComplete();
         Environment environment = Environment.capture();

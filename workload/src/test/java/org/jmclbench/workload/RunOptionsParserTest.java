@@ -108,7 +108,7 @@ class RunOptionsParserTest {
         assertEquals("-p: not an integer: 'many'", error("-p", "many"));
         assertEquals("-p: 0 is out of range [1, 100000000]", error("-p", "0"));
         assertEquals("--policy: 'later' is not one of skip|terminate|queue", error("--policy", "later"));
-        assertEquals("--memory: 'pooled' is not one of preallocated|allocating", error("--memory", "pooled"));
+        assertEquals("--memory: 'pooled' is not one of preallocated|allocating|scoped", error("--memory", "pooled"));
         assertTrue(error("--time-scale", "0").startsWith("--time-scale:"));
         assertTrue(error("--time-scale", "NaN").startsWith("--time-scale:"));
         assertTrue(error("--warmup", "-1").startsWith("--warmup:"));

@@ -137,9 +137,7 @@ public final class ScjRun {
     }
 
     private static RunReport launch(MclSafelet safelet, String what) throws RunFailure {
-        // The warm-up and class-loading missions pay the JVM's first-use costs (class loading is
-        // charged to whatever area is current): measured, not enforced, so they cannot fail on it.
-        RunReport report = what.equals("the mission") ? ScjRuntime.launch(safelet, 1) : ScjRuntime.warmUp(safelet, 1);
+        RunReport report = ScjRuntime.launch(safelet, 1);
         if (report == null) {
             throw new RunFailure(what + " did not run (no report from rtsj-compat)");
         }

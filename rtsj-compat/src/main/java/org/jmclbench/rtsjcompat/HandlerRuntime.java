@@ -24,10 +24,10 @@ public abstract class HandlerRuntime implements Runnable {
 
     /** The time source of the launch. */
     protected final TimeSource time;
-    /** This handler's thread (set at mission start). */
-    protected ScjThread thread;
+    /** This handler's thread (set at mission start; read by the threads that wake it). */
+    protected volatile ScjThread thread;
     /** The mission it belongs to (set at mission start). */
-    protected MissionControl mission;
+    protected volatile MissionControl mission;
     /** Whether this handler waits with no deadline (guarded by this). */
     protected boolean idle;
 

@@ -154,4 +154,34 @@ class MemoryAreaTest {
         RunReport next = launch(1 << 20, oneHandler(1 << 20, 1000, 3, () -> sink = new byte[4000]));
         assertTrue(next.budgetsEnforced() && !next.succeeded(), "the next launch enforces again");
     }
+
+    @Test
+    void theApiAReleaseUsesAllocatesNothing() {
+        int[] n = new int[1];
+        Mission m = Apps.mission("M", 1 << 20, mission -> {
+            javax.realtime.AbsoluteTime now = new javax.realtime.AbsoluteTime();
+            javax.realtime.AbsoluteTime next = new javax.realtime.AbsoluteTime();
+            javax.realtime.RelativeTime later = Apps.ms(1000);
+            javax.safetycritical.AperiodicEventHandler a = Apps.aperiodic("A", 10_000, () -> { });
+            javax.safetycritical.OneShotEventHandler o = Apps.oneShot("O", 1000, h -> { });
+            Apps.periodic("User", 1, 10_000, () -> {
+                javax.realtime.Clock.getRealtimeClock().getTime(now);
+                now.add(later, next);
+                a.release();
+                o.scheduleNextReleaseTime(next);
+                o.getNextReleaseTime(next);
+                if (++n[0] == 50) {
+                    Mission.getMission().requestTermination();
+                }
+            });
+        });
+        RunReport r = launch(1 << 20, m);
+        assertTrue(r.succeeded(), () -> String.valueOf(r.failure()));
+        for (String area : new String[] {"PrivateMemory:User", "PrivateMemory:A"}) {
+            AreaUsage p = r.area(area);
+            // The first release may load classes; all the others together stay within the slack.
+            assertTrue(p.totalBytes() - p.peakBytes() <= SLACK, p.toString());
+        }
+        assertTrue(r.handler("A").completed() >= 1, r.handler("A").toString());
+    }
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Compiles core-immortal and scj-mission against the icecap SDK's own javax.safetycritical and
 # javax.realtime (SCJ draft 0.111, from source), not against rtsj-compat: the mission must be
-# plain SCJ. Then compiles a seeded source that uses an rtsj-compat-only method and expects that
+# plain SCJ; so does rtsj-compat's probe program. Then compiles a seeded source that uses an rtsj-compat-only method and expects that
 # to FAIL, so that the check cannot pass vacuously (e.g. by reaching rtsj-compat after all).
 #
 #   HVM_SRC=/path/to/hvm-scj-4d31e23.tar.gz scripts/check-icecap-api.sh
@@ -43,11 +43,16 @@ echo "check-icecap-api: scj-mission against $sdk"
 # icecap's sources call Thread-like yield(): JDK 17 warns; the warnings are icecap's, not ours.
 ant -q -f "$home/build.xml" -Dscj.api="$sdk" jars
 
-# The seeded source: ImmortalMemory.instance() exists in rtsj-compat (and RTSJ) but not in
-# icecap's javax.realtime, so compiling it against icecap must fail.
+# The probe program, which rtsj-compat's ProbeProgramTest compiles and runs, compiles against icecap too.
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-mkdir -p "$tmp/src/seeded" "$tmp/out"
+mkdir -p "$tmp/probe" "$tmp/src/seeded" "$tmp/out"
+javac --release 8 -nowarn -implicit:none -d "$tmp/probe" -sourcepath "$sdk" \
+    "$home/rtsj-compat/src/test/scj-probe/probe/ProbeSafelet.java" \
+    || { echo "check-icecap-api: FAILED: the probe program does not compile against $sdk" >&2; exit 1; }
+
+# The seeded source: ImmortalMemory.instance() exists in rtsj-compat (and RTSJ) but not in
+# icecap's javax.realtime, so compiling it against icecap must fail.
 cat > "$tmp/src/seeded/NotIcecap.java" <<'JAVA'
 package seeded;
 
@@ -63,4 +68,4 @@ if javac --release 8 -nowarn -implicit:none -d "$tmp/out" -sourcepath "$sdk" "$t
     exit 1
 fi
 grep -q "cannot find symbol" "$tmp/seeded.log" || { cat "$tmp/seeded.log" >&2; exit 1; }
-echo "check-icecap-api: ok (core-immortal and scj-mission compile against icecap's SCJ API; the seeded misuse is caught)"
+echo "check-icecap-api: ok (core-immortal, scj-mission and the probe program compile against icecap's SCJ API; the seeded misuse is caught)"

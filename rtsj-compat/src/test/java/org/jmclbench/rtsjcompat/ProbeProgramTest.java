@@ -10,6 +10,7 @@ import java.net.URLClassLoader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.stream.Stream;
 import javax.safetycritical.Safelet;
 import javax.tools.JavaCompiler;
 import javax.tools.ToolProvider;
@@ -36,7 +37,21 @@ class ProbeProgramTest {
         assertEquals(0, rc, "the probe compiles against rtsj-compat");
         try (URLClassLoader loader = new URLClassLoader(new URL[] {out.toUri().toURL()}, getClass().getClassLoader())) {
             Class<?> c = loader.loadClass("probe.ProbeSafelet");
-            // First launch pays the JVM's class loading, which the probe's small areas cannot hold.
+            // Class loading allocates in whatever area is current and the probe's areas are
+            // small: load every probe class now (a handler that never ran in the warm-up would
+            // otherwise load its classes in its first measured release), then warm up.
+            String[] names;
+            try (Stream<Path> files = Files.walk(out)) {
+                names = files.map(f -> out.relativize(f).toString()).filter(n -> n.endsWith(".class"))
+                        .map(n -> n.substring(0, n.length() - 6).replace(File.separatorChar, '.'))
+                        .toArray(String[]::new);
+            }
+            Thread.currentThread().setContextClassLoader(loader);
+            try {
+                ScjRuntime.preload(names);
+            } finally {
+                Thread.currentThread().setContextClassLoader(getClass().getClassLoader());
+            }
             RunReport warm = assertTimeoutPreemptively(Duration.ofSeconds(60),
                     () -> ScjRuntime.warmUp((Safelet) c.getDeclaredConstructor().newInstance(), 1));
             assertTrue(warm.succeeded(), () -> String.valueOf(warm.failure()));

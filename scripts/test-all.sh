@@ -16,3 +16,12 @@ echo "== Java tests (Maven) =="
 java17=/usr/lib/jvm/java-17-openjdk-amd64
 if [ -z "${JAVA_HOME:-}" ] && [ -d "$java17" ]; then export JAVA_HOME=$java17; fi
 mvn -B -ntp verify "$@"
+
+echo "== Ant build of the SCJ variant (build.xml) =="
+ant -q -f "$home/build.xml" clean jars
+if [ -n "${HVM_SRC:-}" ]; then
+    echo "== scj-mission against the icecap SDK's SCJ API =="
+    "$home/scripts/check-icecap-api.sh"
+else
+    echo "== skipped: scj-mission against the icecap SDK (set HVM_SRC to the hvm-scj folder or tarball) =="
+fi

@@ -16,6 +16,9 @@ import org.jmclbench.workload.output.RunWriter;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.release.GcLog;
 import org.jmclbench.workload.release.RealTimeRun;
+import org.jmclbench.workload.output.HeapUse;
+import org.jmclbench.workload.output.MemoryArea;
+import org.jmclbench.workload.scj.ScjRun;
 
 /**
  * Entry point of the workload process: {@code run [options]} reads a dataset, runs one test
@@ -57,6 +60,9 @@ public final class WorkloadMain {
         } catch (BadInputException e) {
             err.println("jmclbench: " + e.getMessage());
             return BAD_INPUT;
+        } catch (RunFailure e) {
+            err.println("jmclbench: failure: " + e.getMessage());
+            return FAILURE;
         } catch (IOException e) {
             err.println("jmclbench: I/O failure: " + e);
             return FAILURE;
@@ -68,8 +74,11 @@ public final class WorkloadMain {
     }
 
     private static int execute(RunOptions options, PrintStream out, PrintStream err)
-            throws BadInputException, IOException {
+            throws BadInputException, IOException, RunFailure {
         Dataset dataset = load(options);
+        if (options.engine == RunOptions.Engine.SCJ && !options.ideal) {
+            return executeScj(options, dataset, out);
+        }
         Timeline timeline = dataset.timeline();
         MclConfig config = options.mclConfig();
         RunFolder folder = RunFolder.of(options);
@@ -90,6 +99,7 @@ public final class WorkloadMain {
         }
         Localizer localizer = newLocalizer(config, dataset);
         java.util.Map<String, Object> engineFacts = null;
+        HeapUse heap = HeapUse.begin();
         if (options.ideal) {
             // The GC log covers the measured replay only, as in real-time runs.
             GcLog gcLog = options.gcLog ? GcLog.start(new File(partial, "gc.log")) : null;
@@ -107,11 +117,45 @@ public final class WorkloadMain {
             engineFacts = RealTimeRun.run(options, dataset, timeline, localizer, records, partial, err);
         }
 
-        new RunWriter(options, dataset, timeline, records, environment).engine(engineFacts).writeAll(partial);
+        java.util.List<MemoryArea> areas = java.util.Collections.singletonList(heap.end(
+                engineFacts == null ? null : (Long) engineFacts.get("allocatedBytes"), released(records)));
+        new RunWriter(options, dataset, timeline, records, environment).engine(engineFacts).memory(areas)
+                .writeAll(partial);
         folder.commit();
         // The complete run folder, the one line a script needs.
         out.println(folder.dir.getPath());
         return OK;
+    }
+
+    /** The scj engine: the SCJ mission on rtsj-compat, written out through the same run writer. */
+    private static int executeScj(RunOptions options, Dataset dataset, PrintStream out)
+            throws BadInputException, IOException, RunFailure {
+        ScjRun.checkPeriodic(dataset); // bad input: before anything is written
+        RunFolder folder = RunFolder.of(options);
+        folder.checkNotComplete();
+        Environment environment = Environment.capture();
+        File partial;
+        try {
+            partial = folder.begin();
+        } catch (IOException e) {
+            throw BadInputException.ofOption("-O", "cannot create " + folder.partial.getPath() + ": " + e);
+        }
+        ScjRun.Result result = ScjRun.run(options, dataset);
+        new RunWriter(options, dataset, result.records.timeline, result.records, environment).engine(result.facts)
+                .memory(result.areas).writeAll(partial);
+        folder.commit();
+        out.println(folder.dir.getPath());
+        return OK;
+    }
+
+    private static int released(JobRecords r) {
+        int n = 0;
+        for (int k = 0; k < r.size(); k++) {
+            if (r.startNs[k] >= 0) {
+                n++;
+            }
+        }
+        return n;
     }
 
     private static Localizer newLocalizer(MclConfig config, Dataset d) {

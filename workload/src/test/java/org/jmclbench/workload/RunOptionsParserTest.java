@@ -36,6 +36,20 @@ class RunOptionsParserTest {
     }
 
     @Test
+    void theEngineDefaultsToJavaSeAndTheScjEnginesRunsGetTheirOwnRuntimeName() throws BadInputException {
+        RunOptions se = RunOptionsParser.parse(new String[] {"run"});
+        assertEquals(RunOptions.Engine.JAVASE, se.engine);
+        RunOptions scj = RunOptionsParser.parse(new String[] {"run", "--engine", "scj", "--memory", "scoped",
+                "--area-size", "mission=300000", "--area-size=update=4096"});
+        assertEquals(RunOptions.Engine.SCJ, scj.engine);
+        assertEquals(MclConfig.Memory.SCOPED, scj.memory);
+        assertEquals(se.effectiveRuntimeName() + "-scj", scj.effectiveRuntimeName());
+        assertEquals(300000L, scj.areaSizes.get("mission"));
+        assertEquals(4096L, scj.areaSizes.get("update"));
+        assertEquals("mine", RunOptionsParser.parse(new String[] {"--engine", "scj", "-j", "mine"}).effectiveRuntimeName());
+    }
+
+    @Test
     void thesisFlags() throws BadInputException {
         RunOptions o = RunOptionsParser.parse(new String[] {"-p", "1000", "-n", "7", "-j", "sun-rts", "-O", "out",
             "-odo", "a.txt", "-laser", "b.txt", "-real", "c.txt", "-T", "-c"});
@@ -94,7 +108,7 @@ class RunOptionsParserTest {
         assertEquals("-p: not an integer: 'many'", error("-p", "many"));
         assertEquals("-p: 0 is out of range [1, 100000000]", error("-p", "0"));
         assertEquals("--policy: 'later' is not one of skip|terminate|queue", error("--policy", "later"));
-        assertEquals("--memory: 'pooled' is not one of preallocated|allocating", error("--memory", "pooled"));
+        assertEquals("--memory: 'pooled' is not one of preallocated|allocating|scoped", error("--memory", "pooled"));
         assertTrue(error("--time-scale", "0").startsWith("--time-scale:"));
         assertTrue(error("--time-scale", "NaN").startsWith("--time-scale:"));
         assertTrue(error("--warmup", "-1").startsWith("--warmup:"));

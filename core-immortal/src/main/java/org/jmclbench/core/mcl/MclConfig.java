@@ -11,8 +11,12 @@ public final class MclConfig {
     /** How particles start (ALGORITHM 5). */
     public enum Init { KNOWN, UNIFORM }
 
-    /** Memory style (ALGORITHM 9). */
-    public enum Memory { PREALLOCATED, ALLOCATING }
+    /**
+     * Memory style (ALGORITHM 9): {@code preallocated} and {@code allocating} on the Java SE
+     * engine; {@code preallocated} and {@code scoped} (per-job temporaries in the release's private
+     * memory, see {@link ScopedLocalizer}) on the SCJ engine.
+     */
+    public enum Memory { PREALLOCATED, ALLOCATING, SCOPED }
 
     /** Particle count N (at least 1). */
     public final int particles;
@@ -24,6 +28,11 @@ public final class MclConfig {
     public final long seed;
     /** Whether each update computes the covariance (the thesis's -c). */
     public final boolean covariance;
+    /**
+     * Particles between two polls of the abort signal: a power of two, {@link MotionModel#ABORT_BLOCK}
+     * (64) unless a verification run makes it small.
+     */
+    public final int pollInterval;
 
     private MclConfig(Builder b) {
         if (b.particles < 1) {
@@ -36,6 +45,15 @@ public final class MclConfig {
         memory = b.memory;
         seed = b.seed;
         covariance = b.covariance;
+        if (b.pollInterval < 1 || (b.pollInterval & (b.pollInterval - 1)) != 0) {
+            throw new IllegalArgumentException("poll interval must be a power of two: " + b.pollInterval);
+        }
+        pollInterval = b.pollInterval;
+    }
+
+    /** {@code pollInterval - 1}: a job polls when {@code (i & pollMask()) == 0}. */
+    public int pollMask() {
+        return pollInterval - 1;
     }
 
     /** A builder with the defaults of FORMATS section 2 (400 particles, mean, systematic, known, preallocated, seed 1). */
@@ -51,13 +69,14 @@ public final class MclConfig {
     /** A builder starting from this configuration. */
     public Builder toBuilder() {
         return new Builder().particles(particles).estimate(estimate).resample(resample).init(init)
-                .memory(memory).seed(seed).covariance(covariance);
+                .memory(memory).seed(seed).covariance(covariance).pollInterval(pollInterval);
     }
 
     @Override
     public String toString() {
         return "MclConfig[particles=" + particles + ", estimate=" + estimate + ", resample=" + resample
-                + ", init=" + init + ", memory=" + memory + ", seed=" + seed + ", covariance=" + covariance + "]";
+                + ", init=" + init + ", memory=" + memory + ", seed=" + seed + ", covariance=" + covariance
+                + ", pollInterval=" + pollInterval + "]";
     }
 
     /** Collects the parameters of an {@link MclConfig}. */
@@ -69,6 +88,7 @@ public final class MclConfig {
         private Memory memory = Memory.PREALLOCATED;
         private long seed = 1;
         private boolean covariance;
+        private int pollInterval = MotionModel.ABORT_BLOCK;
 
         public Builder particles(int v) {
             particles = v;
@@ -102,6 +122,11 @@ public final class MclConfig {
 
         public Builder covariance(boolean v) {
             covariance = v;
+            return this;
+        }
+
+        public Builder pollInterval(int v) {
+            pollInterval = v;
             return this;
         }
 

@@ -7,6 +7,7 @@ package org.jmclbench.core.mcl;
  */
 public final class PreallocatedLocalizer implements Localizer {
     private final int n;
+    private final int pollMask;
     private final Playground playground;
     private final MclConfig config;
 
@@ -26,13 +27,15 @@ public final class PreallocatedLocalizer implements Localizer {
     private Rng rng;
     private Rng work;
 
-    private double estX;
-    private double estY;
-    private double estTheta;
+    // The committed estimate (x, y, theta) and covariance, and an update's results before its commit.
+    private final double[] est = new double[3];
     private final double[] cov = new double[6];
+    private final double[] newEst = new double[3];
+    private final double[] newCov = new double[6];
 
     public PreallocatedLocalizer(MclConfig config, Playground playground, double startX, double startY, double startTheta) {
         this.n = config.particles;
+        this.pollMask = config.pollMask();
         this.config = config;
         this.playground = playground;
         x = new double[n];
@@ -46,177 +49,50 @@ public final class PreallocatedLocalizer implements Localizer {
         cumulative = config.resample == MclConfig.Resample.MULTINOMIAL ? new double[n] : null;
         rng = new Rng(config.seed);
         work = new Rng(config.seed);
-        if (config.init == MclConfig.Init.KNOWN) {
-            for (int i = 0; i < n; i++) {
-                x[i] = startX + MotionModel.INIT_SIGMA * rng.gaussian();
-                y[i] = startY + MotionModel.INIT_SIGMA * rng.gaussian();
-                theta[i] = Angles.wrap2pi(startTheta + MotionModel.INIT_SIGMA * rng.gaussian());
-            }
-            estX = startX;
-            estY = startY;
-            estTheta = Angles.wrap2pi(startTheta);
-        } else {
-            for (int i = 0; i < n; i++) {
-                x[i] = playground.width * rng.uniform();
-                y[i] = playground.height * rng.uniform();
-                theta[i] = Angles.TWO_PI * rng.uniform();
-            }
-            estX = playground.width / 2;
-            estY = playground.height / 2;
-            estTheta = 0.0;
-        }
+        Initialisation.place(config, playground, startX, startY, startTheta, rng, x, y, theta, est);
     }
 
     @Override
     public boolean predict(double dx, double dy, double dtheta, AbortSignal abort) {
         Rng r = work;
         r.copyFrom(rng);
-        double d = Math.sqrt(dx * dx + dy * dy);
-        double sigmaXY = MotionModel.sigmaXY(d);
-        double sigmaTheta = MotionModel.sigmaTheta(d, dtheta);
-        double[] px = x;
-        double[] py = y;
-        double[] pt = theta;
-        double[] qx = spareX;
-        double[] qy = spareY;
-        double[] qt = spareTheta;
-        for (int i = 0; i < n; i++) {
-            if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
-                return false;
-            }
-            double ndx = dx + sigmaXY * r.gaussian();
-            double ndy = dy + sigmaXY * r.gaussian();
-            double ndt = dtheta + sigmaTheta * r.gaussian();
-            double c = Math.cos(pt[i]);
-            double s = Math.sin(pt[i]);
-            qx[i] = px[i] + (ndx * c - ndy * s);
-            qy[i] = py[i] + (ndx * s + ndy * c);
-            qt[i] = Angles.wrap2pi(pt[i] + ndt);
+        if (!FilterSteps.predict(x, y, theta, spareX, spareY, spareTheta, n, dx, dy, dtheta, r, abort, pollMask)) {
+            return false;
         }
         // Commit: swap the buffers and the generator, then move the estimate without noise.
         swapBuffers();
         work = rng;
         rng = r;
-        double c = Math.cos(estTheta);
-        double s = Math.sin(estTheta);
-        estX += dx * c - dy * s;
-        estY += dx * s + dy * c;
-        estTheta = Angles.wrap2pi(estTheta + dtheta);
+        FilterSteps.moveEstimate(est, dx, dy, dtheta);
         return true;
     }
 
     @Override
     public boolean update(double angle, AbortSignal abort) {
-        double[] px = x;
-        double[] py = y;
-        double[] pt = theta;
         double[] w = weight;
-        for (int i = 0; i < n; i++) {
-            if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
-                return false;
-            }
-            w[i] = Likelihood.of(px[i], py[i], pt[i], angle, playground);
-        }
-        double total = 0.0;
-        for (int i = 0; i < n; i++) {
-            total += w[i];
-        }
-        if (total == 0.0 || Double.isNaN(total) || Double.isInfinite(total)) {
-            double uniform = 1.0 / n;
-            for (int i = 0; i < n; i++) {
-                w[i] = uniform;
-            }
-        } else {
-            for (int i = 0; i < n; i++) {
-                w[i] = w[i] / total;
-            }
-        }
-
-        double ex;
-        double ey;
-        double et;
-        if (config.estimate == MclConfig.Estimate.MEAN) {
-            double sx = 0.0;
-            double sy = 0.0;
-            double ss = 0.0;
-            double sc = 0.0;
-            for (int i = 0; i < n; i++) {
-                sx += w[i] * px[i];
-                sy += w[i] * py[i];
-                ss += w[i] * Math.sin(pt[i]);
-                sc += w[i] * Math.cos(pt[i]);
-            }
-            ex = sx;
-            ey = sy;
-            et = Angles.wrap2pi(Math.atan2(ss, sc));
-        } else {
-            int best = 0;
-            for (int i = 1; i < n; i++) {
-                if (w[i] > w[best]) {
-                    best = i;
-                }
-            }
-            ex = px[best];
-            ey = py[best];
-            et = pt[best];
-        }
-
-        double cxx = 0.0;
-        double cxy = 0.0;
-        double cxt = 0.0;
-        double cyy = 0.0;
-        double cyt = 0.0;
-        double ctt = 0.0;
-        if (config.covariance) {
-            for (int i = 0; i < n; i++) {
-                double ux = px[i] - ex;
-                double uy = py[i] - ey;
-                double ut = Angles.wrapPi(pt[i] - et);
-                cxx += w[i] * ux * ux;
-                cxy += w[i] * ux * uy;
-                cxt += w[i] * ux * ut;
-                cyy += w[i] * uy * uy;
-                cyt += w[i] * uy * ut;
-                ctt += w[i] * ut * ut;
-            }
-        }
-
-        Rng r = work;
-        r.copyFrom(rng);
-        boolean completed;
-        if (config.resample == MclConfig.Resample.SYSTEMATIC) {
-            completed = Resampling.systematic(w, n, r.uniform() / n, index, abort);
-        } else {
-            completed = Resampling.multinomial(w, n, r, index, cumulative, abort);
-        }
-        if (!completed) {
+        if (!FilterSteps.weigh(x, y, theta, w, n, angle, playground, abort, pollMask)) {
             return false;
         }
-        double[] qx = spareX;
-        double[] qy = spareY;
-        double[] qt = spareTheta;
-        for (int m = 0; m < n; m++) {
-            if ((m & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
-                return false;
-            }
-            int k = index[m];
-            qx[m] = px[k];
-            qy[m] = py[k];
-            qt[m] = pt[k];
+        FilterSteps.estimate(x, y, theta, w, n, config.estimate, newEst);
+        if (config.covariance) {
+            FilterSteps.covariance(x, y, theta, w, n, newEst, newCov);
+        }
+        Rng r = work;
+        r.copyFrom(rng);
+        if (!FilterSteps.resample(x, y, theta, w, n, config.resample, r, index, cumulative, spareX, spareY,
+                spareTheta, abort, pollMask)) {
+            return false;
         }
         // Commit.
         swapBuffers();
         work = rng;
         rng = r;
-        estX = ex;
-        estY = ey;
-        estTheta = et;
-        cov[0] = cxx;
-        cov[1] = cxy;
-        cov[2] = cxt;
-        cov[3] = cyy;
-        cov[4] = cyt;
-        cov[5] = ctt;
+        est[0] = newEst[0];
+        est[1] = newEst[1];
+        est[2] = newEst[2];
+        for (int i = 0; i < 6; i++) {
+            cov[i] = config.covariance ? newCov[i] : 0.0;
+        }
         return true;
     }
 
@@ -234,17 +110,17 @@ public final class PreallocatedLocalizer implements Localizer {
 
     @Override
     public double estimateX() {
-        return estX;
+        return est[0];
     }
 
     @Override
     public double estimateY() {
-        return estY;
+        return est[1];
     }
 
     @Override
     public double estimateTheta() {
-        return estTheta;
+        return est[2];
     }
 
     @Override

@@ -19,10 +19,15 @@ public final class Resampling {
 
     /** {@link #systematic(double[], int, double, int[])} with abort polling; false when aborted. */
     public static boolean systematic(double[] w, int n, double u, int[] outIndex, AbortSignal abort) {
+        return systematic(w, n, u, outIndex, abort, MotionModel.ABORT_BLOCK - 1);
+    }
+
+    /** Systematic resampling polling the abort signal when {@code (m & pollMask) == 0}; false when aborted. */
+    public static boolean systematic(double[] w, int n, double u, int[] outIndex, AbortSignal abort, int pollMask) {
         double c = w[0];
         int i = 0;
         for (int m = 0; m < n; m++) {
-            if ((m & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+            if ((m & pollMask) == 0 && abort.abortRequested()) {
                 return false;
             }
             double t = u + (double) m / n;
@@ -47,13 +52,19 @@ public final class Resampling {
     /** Multinomial resampling with a caller-provided cumulative scratch array (length >= n) and abort polling. */
     public static boolean multinomial(double[] w, int n, Rng rng, int[] outIndex, double[] cumulative,
             AbortSignal abort) {
+        return multinomial(w, n, rng, outIndex, cumulative, abort, MotionModel.ABORT_BLOCK - 1);
+    }
+
+    /** Multinomial resampling polling the abort signal when {@code (m & pollMask) == 0}; false when aborted. */
+    public static boolean multinomial(double[] w, int n, Rng rng, int[] outIndex, double[] cumulative,
+            AbortSignal abort, int pollMask) {
         double c = 0.0;
         for (int k = 0; k < n; k++) {
             c += w[k];
             cumulative[k] = c;
         }
         for (int m = 0; m < n; m++) {
-            if ((m & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+            if ((m & pollMask) == 0 && abort.abortRequested()) {
                 return false;
             }
             outIndex[m] = smallestAbove(cumulative, n, rng.uniform());

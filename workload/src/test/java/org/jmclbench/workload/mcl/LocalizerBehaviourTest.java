@@ -88,14 +88,16 @@ class LocalizerBehaviourTest {
     }
 
     @Test
-    void bothMemoryStylesAreBitIdentical() {
+    void everyMemoryStyleIsBitIdentical() {
         for (MclConfig c : variants(150)) {
             long[] pre = trace(c.toBuilder().memory(MclConfig.Memory.PREALLOCATED).build());
-            long[] alloc = trace(c.toBuilder().memory(MclConfig.Memory.ALLOCATING).build());
-            for (int i = 0; i < pre.length; i++) {
-                if (pre[i] != alloc[i]) {
-                    throw new AssertionError(c + ": value " + i + " (event " + i / 9 + ") differs: "
-                            + Double.longBitsToDouble(pre[i]) + " vs " + Double.longBitsToDouble(alloc[i]));
+            for (MclConfig.Memory other : new MclConfig.Memory[] {MclConfig.Memory.ALLOCATING, MclConfig.Memory.SCOPED}) {
+                long[] alloc = trace(c.toBuilder().memory(other).build());
+                for (int i = 0; i < pre.length; i++) {
+                    if (pre[i] != alloc[i]) {
+                        throw new AssertionError(c + " " + other + ": value " + i + " (event " + i / 9 + ") differs: "
+                                + Double.longBitsToDouble(pre[i]) + " vs " + Double.longBitsToDouble(alloc[i]));
+                    }
                 }
             }
         }

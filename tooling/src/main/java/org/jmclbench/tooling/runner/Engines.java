@@ -35,7 +35,7 @@ public final class Engines {
     /** The memory styles of an engine; {@code preallocated} (the default) is every engine's. */
     public static List<String> memoryStyles(String engine) {
         return switch (engine) {
-            case SCJ -> List.of(PREALLOCATED, "scoped");
+            case SCJ, "hvm" -> List.of(PREALLOCATED, "scoped"); // the SCJ mission, on the JVM or on an SCJ VM
             default -> List.of(PREALLOCATED, "allocating");
         };
     }

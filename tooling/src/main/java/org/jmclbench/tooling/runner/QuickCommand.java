@@ -41,6 +41,9 @@ public final class QuickCommand implements Callable<Integer> {
      * shared 2-core VM at load average 9 (1.2-3 s for the Java SE engine on a quiet one).
      */
     static final double JVM_OVERHEAD_S = 4.0;
+    /** What the estimate leaves out (measured 15-50 s on the 2-core VM, more under heavy load). */
+    static final String REPORT_NOTE = ", then the report";
+
     /** The native baseline starts in milliseconds. */
     static final double NATIVE_OVERHEAD_S = 0.1;
 
@@ -129,13 +132,14 @@ public final class QuickCommand implements Callable<Integer> {
         double overhead = jvmRuns * JVM_OVERHEAD_S + nativeRuns * NATIVE_OVERHEAD_S;
         double scale = Math.floor((BUDGET_S - overhead) / (runs * durationS) * 20) / 20;
         if (scale >= 1.0) {
-            out.printf(Locale.ROOT, "quick: %d runs (%d JVM x %d engines x %d settings%s) of %.0f s: about %.0f s in real time%n",
+            out.printf(Locale.ROOT, "quick: %d runs (%d JVM x %d engines x %d settings%s) of %.0f s: about %.0f s in real time"
+                            + REPORT_NOTE + "%n",
                     runs, jvms, ENGINES.size(), cells, nat ? " + native" : "", durationS, runs * durationS + overhead);
             return 1.0;
         }
         double chosen = Math.max(0.25, scale);
         out.printf(Locale.ROOT, "quick: %d runs of %.0f s would take about %.0f s; replaying at --time-scale %.2f"
-                        + " (about %.0f s; deadlines scale too)%n", runs, durationS, runs * durationS + overhead, chosen,
+                        + " (about %.0f s; deadlines scale too)" + REPORT_NOTE + "%n", runs, durationS, runs * durationS + overhead, chosen,
                 runs * durationS * chosen + overhead);
         return chosen;
     }

@@ -348,6 +348,7 @@ static void json_parameters(jm_json *j, const jm_run *r)
 
 	jm_json_open(j, "parameters", '{');
 	jm_json_str(j, "runtimeName", o->runtime_name);
+	jm_json_str(j, "engine", "native");
 	jm_json_i64(j, "particles", o->particles);
 	jm_json_i64(j, "number", o->number);
 	jm_json_str(j, "policy", jm_policy_name(o->policy));
@@ -434,12 +435,20 @@ static void json_environment(jm_json *j, const jm_run *r)
 	jm_json_close(j, '}');
 }
 
-/* Facts of the real-time release engine: how far the numbers can be trusted (FORMATS.md 4). */
+/*
+ * The engine (its kind in every run) and, in real-time runs, the facts of the release engine:
+ * how far the numbers can be trusted (FORMATS.md 4).
+ */
 static void json_engine(jm_json *j, const jm_run *r)
 {
 	const jm_sched_info *s = r->sched;
 
 	jm_json_open(j, "engine", '{');
+	jm_json_str(j, "kind", "native");
+	if (r->opt->ideal) {
+		jm_json_close(j, '}');
+		return;
+	}
 	jm_json_i64(j, "dispatcherPriority", s->dispatcher_priority);
 	jm_json_i64(j, "handlerPriority", s->handler_priority);
 	jm_json_bool(j, "prioritiesApplied", s->fifo);
@@ -543,8 +552,12 @@ int jm_output_write(const jm_run *r, const char *dir, char *err, size_t errlen)
 	json_task(&j, "all", &t[2]);
 	jm_json_close(&j, '}');
 	json_stats(&j, "dispatcherLatenessNs", &lateness);
-	if (!r->opt->ideal)
-		json_engine(&j, r);
+	json_engine(&j, r);
+	/* no memory areas: C has one heap and the tooling compares areas of the Java engines only */
+	jm_json_open(&j, "memory", '{');
+	jm_json_open(&j, "areas", '[');
+	jm_json_close(&j, ']');
+	jm_json_close(&j, '}');
 	jm_json_open(&j, "deviation", '{');
 	json_deviation(&j, "xy", &dev, 2);
 	json_deviation(&j, "x", &dev, 0);

@@ -448,7 +448,11 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 		ideal_dev = dev;
 		CHECK(dev >= 0 && dev < 0.10);
 		CHECK_INT(miss, 0);
-		CHECK(!strstr(out_text, "\"engine\"")); /* no release engine in an ideal run */
+		/* the engine's kind in every run, no release engine facts in an ideal run */
+		CHECK_CONTAINS(out_text, "\"engine\": {\n    \"kind\": \"native\"\n  }");
+		CHECK(!strstr(out_text, "\"dispatcherPriority\""));
+		CHECK_CONTAINS(out_text, "\"engine\": \"native\"");
+		CHECK_CONTAINS(out_text, "\"areas\": []");
 		/* a complete folder is not overwritten without --force */
 		CHECK_INT(run(args), 2);
 		CHECK_CONTAINS(err_text, "a complete run folder exists (use --force to overwrite)");

@@ -34,7 +34,9 @@ if [ "${*: -1}" = "-version" ]; then
     echo "fake version \"$MAJOR.0.1\"" >&2
     exit 0
 fi
-p=400 n=1 j=fake O=results policy=skip ideal=false seed=1
+p=400 n=1 j=fake O=results policy=skip ideal=false seed=1 engine=javase memory=preallocated
+# started as the native baseline (no JVM flags before "run"), it is the native engine
+if [ "${1:-}" = run ]; then engine=native; fi
 while [ $# -gt 0 ]; do
     case "$1" in
         -p) p=$2; shift ;;
@@ -44,6 +46,8 @@ while [ $# -gt 0 ]; do
         --policy) policy=$2; shift ;;
         --ideal) policy=ideal; ideal=true ;;
         --seed) seed=$2; shift ;;
+        --engine) engine=$2; shift ;;
+        --memory) memory=$2; shift ;;
     esac
     shift
 done
@@ -95,10 +99,24 @@ printf 'deviationXY 0.003\nmissCount 1\n' > "$leaf.partial/data.txt"
 if [ "$MODE" = badjson ]; then
     echo '{"schema": "jmclbench-run/1", "status": "comp' > "$leaf.partial/summary.json"
 else
+    # memory areas as the engines report them (made-up sizes that grow with the particles)
+    if [ "$engine" = scj ]; then
+        priv=0; if [ "$memory" = scoped ]; then priv=$((p * 40)); fi
+        AREAS='{"name": "immortal", "size": 1048576, "peakBytes": 100000, "bytesPerRelease": null},
+   {"name": "mission", "size": 4194304, "peakBytes": '$((p * 100 + 5000))', "bytesPerRelease": null},
+   {"name": "predict", "size": 262144, "peakBytes": '$priv', "bytesPerRelease": '$priv'},
+   {"name": "update", "size": 262144, "peakBytes": '$((priv * 2))', "bytesPerRelease": '$((priv * 2))'}'
+    elif [ "$engine" = native ]; then
+        AREAS=''
+    else
+        AREAS='{"name": "heap", "size": 536870912, "peakBytes": '$((p * 1000 + 2000000))', "bytesPerRelease": null}'
+    fi
     S='{"count": 9, "mean": 2000000.0, "stdev": 1000.0, "min": 100000, "p50": 2000000, "p90": 2100000, "p99": 2200000, "p999": 2200000, "max": 2200000}'
     cat > "$leaf.partial/summary.json" <<JSON
 {"schema": "jmclbench-run/1", "status": "complete",
- "parameters": {"runtimeName": "$j", "particles": $p, "number": $n, "policy": "$policy", "ideal": $ideal, "seed": $seed},
+ "parameters": {"runtimeName": "$j", "engine": "$engine", "memory": "$memory", "particles": $p, "number": $n, "policy": "$policy", "ideal": $ideal, "seed": $seed},
+ "engine": {"kind": "$engine"},
+ "memory": {"areas": [$AREAS]},
  "environment": {"runtime": {"language": "java", "name": "$j"}},
  "durationS": 0.5, "missCount": 1,
  "tasks": {"predict": {"released": 10, "completed": 9, "done": 9, "late": 0, "skipped": 1, "terminated": 0, "missCount": 1,

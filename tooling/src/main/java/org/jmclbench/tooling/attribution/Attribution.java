@@ -60,7 +60,7 @@ public final class Attribution {
 
         /** The defaults quoted above. */
         public static Settings defaults() {
-            return new Settings(1_000_000L, 100_000L, 1.5, 1_000_000L, "org.jmclbench.workload.mcl.");
+            return new Settings(1_000_000L, 100_000L, 1.5, 1_000_000L, "org.jmclbench.core.");
         }
     }
 

@@ -98,6 +98,7 @@ final class ChartExporter {
                     jobs.add(() -> write(stem("trajectory", dataset, policy, particles), trajectory(at, dataset, setting)));
                     jobs.add(() -> write(stem("spectrum", dataset, policy, particles), spectrum(at, setting)));
                     jobs.add(() -> write(stem("jitter-cdf", dataset, policy, particles), jitterCdf(at, setting)));
+                    jobs.add(() -> write(stem("memory", dataset, policy, particles), memory(at, setting)));
                 }
             }
         }
@@ -279,6 +280,93 @@ final class ChartExporter {
         CategoryPlot plot = new CategoryPlot(data, new CategoryAxis("runtime/profile"),
                 new NumberAxis("jobs missed or late per run, by primary cause (mean)"), renderer);
         return finish(new JFreeChart("Why deadlines were missed (" + at + ")", JFreeChart.DEFAULT_TITLE_FONT, plot, true));
+    }
+
+    /** Area colours as on the page (report.js AREA_COLORS, PRIVATE_COLORS). */
+    static final Map<String, Color> AREA_COLORS = Map.of("heap", new Color(0x7f7f7f), "immortal", new Color(0x393b79),
+            "mission", new Color(0x2ca02c));
+    static final Color[] PRIVATE_COLORS = {new Color(0xff7f0e), new Color(0xe377c2), new Color(0x17becf), new Color(0xbcbd22),
+        new Color(0x8c564b), new Color(0x9467bd)};
+
+    /**
+     * Grouped bars on a log axis: per configuration (runtime, engine, memory style), the peak bytes of
+     * each memory area; an area with a peak of 0 has no bar (as on the page).
+     */
+    private JFreeChart memory(String at, List<ReportModel.Cell> cells) {
+        List<ReportModel.Cell> withAreas = cells.stream().filter(c -> !c.memoryAreas.isEmpty())
+                .sorted(java.util.Comparator.comparingInt(c -> configIndex(c.config))).toList();
+        List<String> names = new ArrayList<>();
+        for (ReportModel.Cell c : withAreas) {
+            c.memoryAreas.stream().map(ReportModel.MemoryArea::name).filter(n -> !names.contains(n)).forEach(names::add);
+        }
+        names.sort(java.util.Comparator.comparingInt(n -> {
+            int i = ReportModel.AREA_ORDER.indexOf(n);
+            return i < 0 ? ReportModel.AREA_ORDER.size() : i;
+        }));
+        org.jfree.data.category.DefaultCategoryDataset data = new org.jfree.data.category.DefaultCategoryDataset();
+        for (String n : names) {
+            for (ReportModel.Cell c : withAreas) {
+                Long peak = c.memoryAreas.stream().filter(a -> a.name().equals(n)).map(ReportModel.MemoryArea::peakBytes)
+                        .filter(v -> v != null).findFirst().orElse(null);
+                data.addValue(peak == null || peak <= 0 ? null : peak.doubleValue(), n, c.config);
+            }
+        }
+        org.jfree.chart.renderer.category.BarRenderer renderer = new org.jfree.chart.renderer.category.BarRenderer();
+        renderer.setShadowVisible(false);
+        renderer.setBarPainter(new org.jfree.chart.renderer.category.StandardBarPainter());
+        int privateIndex = 0;
+        for (int i = 0; i < names.size(); i++) {
+            Color c = AREA_COLORS.get(names.get(i));
+            renderer.setSeriesPaint(i, c != null ? c : PRIVATE_COLORS[privateIndex++ % PRIVATE_COLORS.length]);
+        }
+        ValueAxis y;
+        if (data.getRowCount() > 0) {
+            LogAxis log = logAxis("peak bytes (log)", new ByteFormat());
+            log.setSmallestValue(1);
+            y = log;
+        } else {
+            y = new NumberAxis("peak bytes (no memory areas reported)");
+        }
+        CategoryAxis x = new CategoryAxis("runtime / engine memory style");
+        x.setMaximumCategoryLabelLines(3); // long names wrap: temurin-25/default / scj scoped
+        CategoryPlot plot = new CategoryPlot(data, x, y, renderer);
+        return finish(new JFreeChart("Peak bytes per memory area (" + at + ")", JFreeChart.DEFAULT_TITLE_FONT, plot, true));
+    }
+
+    /** Bytes in decimal units, as on the page: 1 B, 10 kB, 2 MB. */
+    static final class ByteFormat extends java.text.NumberFormat {
+        private static final long serialVersionUID = 1L;
+        private static final String[] UNITS = {"B", "kB", "MB", "GB"};
+
+        @Override
+        public StringBuffer format(double v, StringBuffer to, java.text.FieldPosition pos) {
+            int i = 0;
+            while (Math.abs(v) >= 1000 && i < UNITS.length - 1) {
+                v /= 1000;
+                i++;
+            }
+            return to.append(new java.math.BigDecimal(v).round(new java.math.MathContext(3)).stripTrailingZeros().toPlainString())
+                    .append(' ').append(UNITS[i]);
+        }
+
+        @Override
+        public StringBuffer format(long v, StringBuffer to, java.text.FieldPosition pos) {
+            return format((double) v, to, pos);
+        }
+
+        @Override
+        public Number parse(String source, java.text.ParsePosition pos) {
+            throw new UnsupportedOperationException();
+        }
+    }
+
+    private int configIndex(String config) {
+        for (int i = 0; i < model.configs.size(); i++) {
+            if (model.configs.get(i).id().equals(config)) {
+                return i;
+            }
+        }
+        return Integer.MAX_VALUE;
     }
 
     private JFreeChart latencyIndex(String at, List<ReportModel.Cell> cells) {

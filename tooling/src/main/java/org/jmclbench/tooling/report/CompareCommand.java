@@ -27,8 +27,9 @@ import picocli.CommandLine.Parameters;
                 "is significant (Mann-Whitney U, alpha 0.05; \"n too small\" below 3 runs a side).",
                 "",
                 "  compare A.db B.db      the same configurations in two databases (two machines)",
-                "  compare --db X.db --a RUNTIME[/PROFILE] --b RUNTIME[/PROFILE]",
-                "                         two configurations of one database",
+                "  compare --db X.db --a RUNTIME[/PROFILE][/ENGINE][/MEMORY] --b ...",
+                "                         two configurations of one database, e.g.",
+                "                         --a temurin-25 --b temurin-25/scj (Java SE vs SCJ engine)",
                 ""})
 public final class CompareCommand implements Callable<Integer> {
 
@@ -42,10 +43,12 @@ public final class CompareCommand implements Callable<Integer> {
     @Option(names = "--db", paramLabel = "FILE", description = "one database holding both A and B")
     Path db;
 
-    @Option(names = "--a", paramLabel = "RUNTIME[/PROFILE]", description = "configuration A (with --db; with two databases: A's filter)")
+    @Option(names = "--a", paramLabel = "RUNTIME[/PROFILE][/ENGINE][/MEMORY]",
+            description = "configuration A (with --db; with two databases: A's filter); ENGINE javase, scj, ...; MEMORY preallocated, allocating, scoped")
     String a;
 
-    @Option(names = "--b", paramLabel = "RUNTIME[/PROFILE]", description = "configuration B (with --db; with two databases: B's filter)")
+    @Option(names = "--b", paramLabel = "RUNTIME[/PROFILE][/ENGINE][/MEMORY]",
+            description = "configuration B (with --db; with two databases: B's filter)")
     String b;
 
     @Option(names = "--policy", paramLabel = "POLICY", description = "only this policy (skip, terminate, queue)")
@@ -90,6 +93,10 @@ public final class CompareCommand implements Callable<Integer> {
                 runsA = filtered(sa.runs());
                 runsB = filtered(sb.runs());
             }
+            // one labelling for both sides, so that a configuration is named alike in A and B
+            List<ResultsStore.Run> both = new ArrayList<>(runsA);
+            both.addAll(runsB);
+            ResultsStore.labelEngines(both);
             if (a != null) {
                 runsA = select(runsA, a, "--a", databases.get(0));
             }
@@ -137,17 +144,50 @@ public final class CompareCommand implements Callable<Integer> {
                 .collect(Collectors.toList());
     }
 
-    /** The runs of one configuration: an exact runtime/profile, or a runtime with a single profile. */
+    /**
+     * The runs of one configuration: an exact label ({@code temurin-25/g1 / scj}), or a runtime
+     * followed by any of a profile, an engine and a memory style, separated by {@code /}
+     * ({@code temurin-25/scj}, {@code temurin-25/g1/scj/scoped}), which must leave one configuration.
+     * What is not named defaults to the Java SE engine and the preallocated style when the runtime
+     * has them, so that {@code temurin-25} is the Java SE engine beside {@code temurin-25/scj}.
+     */
     static List<ResultsStore.Run> select(List<ResultsStore.Run> runs, String spec, String option, Path file)
             throws BadInputException {
         List<ResultsStore.Run> exact = runs.stream().filter(r -> r.config().equals(spec)).toList();
         if (!exact.isEmpty()) {
             return exact;
         }
-        List<ResultsStore.Run> byRuntime = runs.stream().filter(r -> r.runtime.equals(spec)).toList();
+        String[] parts = spec.split("\\s*/\\s*");
+        String runtime = parts[0].strip();
+        String engine = null;
+        String memory = null;
+        String profile = null;
+        for (int i = 1; i < parts.length; i++) {
+            String p = parts[i].strip();
+            if (ENGINES.contains(p)) {
+                engine = p;
+            } else if (MEMORY_STYLES.contains(p)) {
+                memory = p;
+            } else if (!p.isEmpty()) {
+                profile = p;
+            }
+        }
+        final String e = engine;
+        final String m = memory;
+        final String pr = profile;
+        List<ResultsStore.Run> byRuntime = runs.stream().filter(r -> r.runtime.equals(runtime))
+                .filter(r -> pr == null || pr.equals(r.profile))
+                .filter(r -> e == null || e.equals(r.engine))
+                .filter(r -> m == null || m.equals(r.memory)).toList();
+        if (e == null && byRuntime.stream().anyMatch(r -> "javase".equals(r.engine))) {
+            byRuntime = byRuntime.stream().filter(r -> "javase".equals(r.engine)).toList();
+        }
+        if (m == null && byRuntime.stream().anyMatch(r -> "preallocated".equals(r.memory))) {
+            byRuntime = byRuntime.stream().filter(r -> "preallocated".equals(r.memory)).toList();
+        }
         TreeSet<String> configs = byRuntime.stream().map(ResultsStore.Run::config).collect(Collectors.toCollection(TreeSet::new));
         if (configs.size() > 1) {
-            throw new BadInputException(option + ": " + spec + " has several profiles in " + file + ", say which: "
+            throw new BadInputException(option + ": " + spec + " has several configurations in " + file + ", say which: "
                     + String.join(", ", configs));
         }
         if (byRuntime.isEmpty()) {
@@ -157,6 +197,10 @@ public final class CompareCommand implements Callable<Integer> {
         }
         return byRuntime;
     }
+
+    /** Engines and memory styles a configuration can name (the rest of a name is a profile). */
+    static final List<String> ENGINES = List.of("javase", "scj", "native", "hvm");
+    static final List<String> MEMORY_STYLES = List.of("preallocated", "allocating", "scoped");
 
     private static Map<String, List<ResultsStore.Run>> group(List<ResultsStore.Run> runs, boolean withConfig) {
         Map<String, List<ResultsStore.Run>> out = new LinkedHashMap<>();

@@ -41,6 +41,8 @@ public final class ReportModel {
     public List<String> datasets = new ArrayList<>();
     public List<String> policies = new ArrayList<>();
     public List<Integer> particles = new ArrayList<>();
+    /** The engines of the runs (javase, scj, native, ...), for the engine filter. */
+    public List<String> engines = new ArrayList<>();
     public List<ConfigInfo> configs = new ArrayList<>();
     public List<MachineInfo> machines = new ArrayList<>();
     public List<Cell> cells = new ArrayList<>();
@@ -48,9 +50,20 @@ public final class ReportModel {
     public Selection defaults;
 
     /** A runtime/profile as shown in the legend and the tables. */
-    public record ConfigInfo(String id, String runtime, String profile, boolean nativeBaseline, List<String> versions,
-                             List<String> flags, List<String> machines, List<String> facts) {
+    public record ConfigInfo(String id, String runtime, String profile, String engine, String memory, boolean nativeBaseline,
+                             List<String> versions, List<String> flags, List<String> machines, List<String> facts) {
     }
+
+    /**
+     * A memory area of a configuration over its completed repetitions: the largest size and peak
+     * (bytes; for a handler's private memory, the peak of one release), the mean bytes allocated per
+     * release; null where no run told.
+     */
+    public record MemoryArea(String name, Long size, Long peakBytes, Double bytesPerRelease, int runs) {
+    }
+
+    /** Areas in the order of the memory chart: the heap, then SCJ's from the longest-lived, then the handlers' private ones. */
+    static final List<String> AREA_ORDER = List.of("heap", "immortal", "mission");
 
     /** A machine with the doctor's facts. */
     public record MachineInfo(String id, String hostname, String kernel, String cpu, Integer processors,
@@ -96,6 +109,8 @@ public final class ReportModel {
         public String policy;
         public int particles;
         public String config;
+        public String engine;
+        public String memory;
         public int runs;
         public int ok;
         public int failed;
@@ -121,6 +136,8 @@ public final class ReportModel {
         /** [start, end] event index of the first repetition's GC/safepoint pauses, and their kind. */
         public List<double[]> pauses = new ArrayList<>();
         public List<String> pauseKinds = new ArrayList<>();
+        /** The configuration's memory areas (empty when its runs reported none). */
+        public List<MemoryArea> memoryAreas = new ArrayList<>();
     }
 
     /** Extra per-cell aggregates (not {@link Metric}s): the warm-up split of the attribution, in ms and jobs per run. */
@@ -160,6 +177,7 @@ public final class ReportModel {
         m.datasets = runs.stream().map(r -> r.dataset).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
         m.policies = runs.stream().map(r -> r.policy).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
         m.particles = runs.stream().map(r -> r.particles).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
+        m.engines = runs.stream().map(r -> r.engine).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
         m.configs = configs(runs);
         m.machines = machines(store, runs);
         for (String d : m.datasets) {
@@ -188,6 +206,8 @@ public final class ReportModel {
         c.policy = first.policy;
         c.particles = first.particles;
         c.config = first.configOnMachine();
+        c.engine = first.engine;
+        c.memory = first.memory;
         c.runs = group.size();
         List<ResultsStore.Run> ok = new ArrayList<>();
         for (ResultsStore.Run r : group) {
@@ -224,6 +244,7 @@ public final class ReportModel {
             c.metrics.put(e.getKey(), Agg.of(values));
         }
         c.causes = causes(ok);
+        c.memoryAreas = memoryAreas(ok);
         if (ok.isEmpty()) {
             return c;
         }
@@ -262,6 +283,31 @@ public final class ReportModel {
             c.real = t.points(t.column("realX", "trueX", "xReal"), 1, t.column("realY", "trueY", "yReal"), 1, MAX_POINTS);
         }
         return c;
+    }
+
+    /** Each area's largest size and peak over the runs, and its mean bytes per release, in {@link #AREA_ORDER}. */
+    static List<MemoryArea> memoryAreas(List<ResultsStore.Run> ok) {
+        Map<String, List<ResultsStore.Area>> byName = new LinkedHashMap<>();
+        for (ResultsStore.Run r : ok) {
+            for (ResultsStore.Area a : r.areas) {
+                byName.computeIfAbsent(a.name(), k -> new ArrayList<>()).add(a);
+            }
+        }
+        List<MemoryArea> out = new ArrayList<>();
+        for (Map.Entry<String, List<ResultsStore.Area>> e : byName.entrySet()) {
+            List<ResultsStore.Area> as = e.getValue();
+            Long size = as.stream().map(ResultsStore.Area::size).filter(v -> v != null).max(Long::compare).orElse(null);
+            Long peak = as.stream().map(ResultsStore.Area::peakBytes).filter(v -> v != null).max(Long::compare).orElse(null);
+            List<Double> perRelease = as.stream().map(ResultsStore.Area::bytesPerRelease).filter(v -> v != null).toList();
+            Double mean = perRelease.isEmpty() ? null
+                    : SeriesTable.round(perRelease.stream().mapToDouble(Double::doubleValue).average().orElse(0));
+            out.add(new MemoryArea(e.getKey(), size, peak, mean, as.size()));
+        }
+        out.sort(Comparator.comparingInt((MemoryArea a) -> {
+            int i = AREA_ORDER.indexOf(a.name());
+            return i < 0 ? AREA_ORDER.size() : i;
+        }));
+        return out;
     }
 
     /**
@@ -408,7 +454,7 @@ public final class ReportModel {
             List<String> flags = new ArrayList<>(); // a list: an argument may repeat ("-n 1 ... --seed 1")
             Set<String> machines = new LinkedHashSet<>();
             List<String> facts = new ArrayList<>();
-            boolean nativeBaseline = "native".equals(first.runtime);
+            boolean nativeBaseline = "native".equals(first.runtime) || "native".equals(first.engine);
             for (ResultsStore.Run r : e.getValue()) {
                 if (r.runtimeVersion != null) {
                     versions.add(r.runtimeVersion);
@@ -430,7 +476,8 @@ public final class ReportModel {
                     }
                 }
             }
-            out.add(new ConfigInfo(e.getKey(), first.runtime, first.profile, nativeBaseline, List.copyOf(versions),
+            out.add(new ConfigInfo(e.getKey(), first.runtime, first.profile, first.engine, first.memory, nativeBaseline,
+                    List.copyOf(versions),
                     List.copyOf(flags), List.copyOf(machines), List.copyOf(facts)));
         }
         return out;
@@ -442,6 +489,10 @@ public final class ReportModel {
         JsonNode params = summary.path("parameters");
         if (params.hasNonNull("timeScale") && params.get("timeScale").asDouble() != 1.0) {
             out.add("replayed at time scale " + params.get("timeScale").asText() + " (deadlines scaled too)");
+        }
+        JsonNode kind = summary.at("/engine/kind");
+        if (kind.isTextual()) {
+            out.add("engine " + kind.asText() + (summary.at("/engine/level").isInt() ? " (SCJ level " + summary.at("/engine/level").asInt() + ")" : ""));
         }
         if (params.hasNonNull("memory")) {
             out.add("memory " + params.get("memory").asText());

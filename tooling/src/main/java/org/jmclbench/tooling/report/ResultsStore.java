@@ -73,6 +73,12 @@ public final class ResultsStore implements AutoCloseable {
         public int particles;
         public String dataset;
         public String load;
+        /** javase | scj | native (later hvm); from the column, else the summary, else the runtime (a store before engines). */
+        public String engine;
+        /** preallocated | allocating | scoped. */
+        public String memory;
+        /** The run's memory areas (summary.json memory.areas), in the order the run reported them. */
+        public final List<Area> areas = new ArrayList<>();
         public int repetition;
         public String status;
         public Integer exitCode;
@@ -89,10 +95,25 @@ public final class ResultsStore implements AutoCloseable {
 
         /** Set by the report when the store holds several machines: the same runtime on two machines is two configurations. */
         String machineLabel;
+        /** Set by {@link #labelEngines} when the runs have several engines or memory styles. */
+        boolean showEngine;
+        boolean showMemory;
 
-        /** The configuration under test: runtime, and profile when there is one. */
+        /**
+         * The configuration under test: runtime, and profile when there is one; then, when the runs
+         * shown together have several engines or memory styles, the engine and memory style:
+         * {@code temurin-25/default / scj scoped}, {@code native / allocating}.
+         */
         public String config() {
-            return profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
+            String c = profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
+            List<String> parts = new ArrayList<>();
+            if (showEngine && !"native".equals(engine)) {
+                parts.add(engine);
+            }
+            if (showMemory) {
+                parts.add(memory);
+            }
+            return parts.isEmpty() ? c : c + " / " + String.join(" ", parts);
         }
 
         /** {@link #config()}, with " @host" when the report tells machines apart. */
@@ -116,6 +137,24 @@ public final class ResultsStore implements AutoCloseable {
         }
     }
 
+    /** One memory area of a run (FORMATS.md 4, {@code memory.areas}); null where the engine does not tell. */
+    public record Area(String name, Long size, Long peakBytes, Double bytesPerRelease) {
+    }
+
+    /**
+     * Marks the runs' labels to show the engine when the JVM runs among them have more than one,
+     * and the memory style when they have more than one, so that a store of one engine keeps its
+     * short labels ({@code temurin-25/g1}).
+     */
+    public static void labelEngines(java.util.Collection<Run> runs) {
+        boolean engines = runs.stream().filter(r -> !"native".equals(r.engine)).map(r -> r.engine).distinct().count() > 1;
+        boolean memory = runs.stream().map(r -> r.memory).distinct().count() > 1;
+        for (Run r : runs) {
+            r.showEngine = engines;
+            r.showMemory = memory;
+        }
+    }
+
     /** One row of {@code machines}. */
     public record Machine(String machineId, String hostname, String kernel, String cpuModel, Integer processors,
                           String doctorJson) {
@@ -124,9 +163,11 @@ public final class ResultsStore implements AutoCloseable {
     /** Every run, in a stable order (configuration, then repetition), with its metrics. */
     public List<Run> runs() {
         Map<String, Run> byKey = new LinkedHashMap<>();
+        boolean engineColumns = hasColumn("runs", "engine") && hasColumn("runs", "memory");
         String sql = "SELECT run_key, matrix_id, machine_id, runtime, runtime_version, profile, policy, particles, dataset, load,"
-                + " repetition, status, exit_code, failure, stderr_tail, started_at, wall_s, run_dir, summary_json FROM runs"
-                + " ORDER BY dataset, policy, particles, runtime, profile, repetition, started_at, run_key";
+                + " repetition, status, exit_code, failure, stderr_tail, started_at, wall_s, run_dir, summary_json,"
+                + (engineColumns ? " engine, memory" : " NULL, NULL") + " FROM runs"
+                + " ORDER BY dataset, policy, particles, runtime, profile, 20, 21, repetition, started_at, run_key";
         try (Statement st = db.createStatement(); ResultSet rs = st.executeQuery(sql)) {
             while (rs.next()) {
                 Run r = new Run();
@@ -151,6 +192,18 @@ public final class ResultsStore implements AutoCloseable {
                 r.wallS = rs.wasNull() ? null : wall;
                 r.runDir = rs.getString(18);
                 r.summaryJson = rs.getString(19);
+                r.engine = rs.getString(20);
+                r.memory = rs.getString(21);
+                if (r.engine == null || r.memory == null) {
+                    // a store before engines: what the summary says, else the Java SE engine (native for C)
+                    com.fasterxml.jackson.databind.JsonNode p = Metric.summaryOf(r).path("parameters");
+                    if (r.engine == null) {
+                        r.engine = p.path("engine").asText("native".equals(r.runtime) ? "native" : "javase");
+                    }
+                    if (r.memory == null) {
+                        r.memory = p.path("memory").asText("preallocated");
+                    }
+                }
                 byKey.put(r.runKey, r);
             }
             if (hasTable("metrics")) {
@@ -163,10 +216,45 @@ public final class ResultsStore implements AutoCloseable {
                     }
                 }
             }
+            if (hasTable("memory_areas")) {
+                try (ResultSet a = st.executeQuery("SELECT run_key, name, size, peak_bytes, bytes_per_release FROM memory_areas"
+                        + " ORDER BY run_key, rowid")) {
+                    while (a.next()) {
+                        Run r = byKey.get(a.getString(1));
+                        if (r != null) {
+                            r.areas.add(new Area(a.getString(2), (Long) nullable(a, 3, true), (Long) nullable(a, 4, true),
+                                    (Double) nullable(a, 5, false)));
+                        }
+                    }
+                }
+            }
         } catch (SQLException e) {
             throw new IllegalStateException(file + ": " + oneLine(e.getMessage()), e);
         }
-        return new ArrayList<>(byKey.values());
+        List<Run> out = new ArrayList<>(byKey.values());
+        labelEngines(out);
+        return out;
+    }
+
+    private static Object nullable(ResultSet rs, int column, boolean integer) throws SQLException {
+        if (integer) {
+            long v = rs.getLong(column);
+            return rs.wasNull() ? null : v;
+        }
+        double v = rs.getDouble(column);
+        return rs.wasNull() ? null : v;
+    }
+
+    private boolean hasColumn(String table, String column) {
+        try (PreparedStatement ps = db.prepareStatement("SELECT count(*) FROM pragma_table_info(?) WHERE name = ?")) {
+            ps.setString(1, table);
+            ps.setString(2, column);
+            try (ResultSet rs = ps.executeQuery()) {
+                return rs.next() && rs.getInt(1) > 0;
+            }
+        } catch (SQLException e) {
+            return false;
+        }
     }
 
     /** Every machine, by id. */

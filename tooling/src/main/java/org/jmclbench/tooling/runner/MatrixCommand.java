@@ -13,16 +13,17 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
-/** Runs a matrix of runtimes x profiles x policies x particles x datasets x repetitions. */
+/** Runs a matrix of runtimes x profiles x engines x memory styles x policies x particles x datasets x repetitions. */
 @Command(name = "matrix", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Runs a matrix of runtimes x profiles x policies x particles x datasets x repetitions, each run a fresh",
+        description = {"Runs a matrix of runtimes x profiles x engines x memory styles x policies x particles x datasets",
+                "x repetitions, each run a fresh",
                 "process with a timeout, into a SQLite database (raw run folders beside it under runs/). Rerunning the same",
                 "command resumes: runs already in the database are skipped. Lists take commas and repeats.",
                 "Exit code 0 when the matrix completed (failed runs are recorded and listed), 2 for bad input (nothing runs)."},
         footer = {"", "Example: matrix --runtimes temurin-25,native --java /opt/jdk/bin/java --profiles g1,zgc --policies skip,terminate \\",
                 "           --particles 100,400,1600 --datasets match-short --repeat 3 --db results/results.db",
                 "Matrix file (--matrix): 'key = value' lines, keys are these long options without dashes, e.g.",
-                "  runtimes = temurin-25, native", "  particles = 100, 400, 1600",
+                "  runtimes = temurin-25, native", "  engines = javase, scj", "  particles = 100, 400, 1600",
                 "Options on the command line replace the file's values."})
 public final class MatrixCommand implements Callable<Integer> {
 
@@ -39,6 +40,10 @@ public final class MatrixCommand implements Callable<Integer> {
     List<String> profiles = new ArrayList<>();
     @Option(names = "--policies", paramLabel = "LIST", description = "skip, terminate, queue, ideal (default: skip)")
     List<String> policies = new ArrayList<>();
+    @Option(names = "--engines", paramLabel = "LIST", description = "engines of the JVM runs: javase, scj (default: javase; native runs are engine native)")
+    List<String> engines = new ArrayList<>();
+    @Option(names = "--memory", paramLabel = "LIST", description = "memory styles: preallocated, allocating (javase, native), scoped (scj); one an engine lacks is recorded unsupported (default: preallocated)")
+    List<String> memory = new ArrayList<>();
     @Option(names = "--particles", paramLabel = "LIST", description = "particle counts (default: 400)")
     List<String> particles = new ArrayList<>();
     @Option(names = "--datasets", paramLabel = "LIST", description = "dataset names under data/ or folders (default: match-short)")
@@ -92,6 +97,8 @@ public final class MatrixCommand implements Callable<Integer> {
         list(spec, "java", javas);
         list(spec, "profiles", profiles);
         list(spec, "policies", policies);
+        list(spec, "engines", engines);
+        list(spec, "memory", memory);
         list(spec, "particles", particles);
         list(spec, "datasets", datasets);
         list(spec, "load", loads);

@@ -6,6 +6,10 @@ import java.util.List;
 public final class MatrixDefaults {
     public static final List<String> PROFILES = List.of("default");
     public static final List<String> POLICIES = List.of("skip");
+    /** The engine of JVM runs; native runs are always engine {@code native}. */
+    public static final List<String> ENGINES = List.of(Engines.JAVASE);
+    /** The memory style; every engine has it. */
+    public static final List<String> MEMORY = List.of(Engines.PREALLOCATED);
     public static final List<Integer> PARTICLES = List.of(400);
     public static final List<String> DATASETS = List.of("match-short");
     public static final int REPEAT = 1;

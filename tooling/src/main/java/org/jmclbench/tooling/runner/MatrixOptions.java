@@ -12,7 +12,7 @@ import org.jmclbench.tooling.runtime.CpuList;
 final class MatrixOptions {
 
     /** The keys a matrix file accepts (the long options without dashes). */
-    static final List<String> KEYS = List.of("runtimes", "java", "profiles", "policies", "particles", "datasets",
+    static final List<String> KEYS = List.of("runtimes", "java", "profiles", "policies", "engines", "memory", "particles", "datasets",
             "load", "load-alloc", "repeat", "shard", "order-seed", "seed", "timeout", "time-scale", "pin-cpu", "workload-arg", "db", "native");
 
     private MatrixOptions() {
@@ -25,6 +25,8 @@ final class MatrixOptions {
             case "java" -> spec.javas.clear();
             case "profiles" -> spec.profiles.clear();
             case "policies" -> spec.policies.clear();
+            case "engines" -> spec.engines.clear();
+            case "memory" -> spec.memory.clear();
             case "particles" -> spec.particles.clear();
             case "datasets" -> spec.datasets.clear();
             case "load" -> spec.loads.clear();
@@ -46,6 +48,8 @@ final class MatrixOptions {
                 }
                 spec.policies.add(new Sourced<>(v, at));
             });
+            case "engines" -> items(value, at).forEach(v -> spec.engines.add(new Sourced<>(known(v, Engines.JVM_ENGINES, "engine", at), at)));
+            case "memory" -> items(value, at).forEach(v -> spec.memory.add(new Sourced<>(known(v, Engines.MEMORY_STYLES, "memory style", at), at)));
             case "particles" -> items(value, at).forEach(v -> spec.particles.add(new Sourced<>(positiveInt(v, at), at)));
             case "datasets" -> items(value, at).forEach(v -> spec.datasets.add(new Sourced<>(v, at)));
             case "load" -> items(value, at).forEach(v -> {
@@ -93,6 +97,13 @@ final class MatrixOptions {
             case "native" -> spec.nativeBinary = Path.of(value.strip());
             default -> throw new BadUsageException(where + ": unknown key '" + key + "' (known: " + String.join(", ", KEYS) + ")");
         }
+    }
+
+    private static String known(String v, List<String> known, String what, String at) {
+        if (!known.contains(v)) {
+            throw new BadUsageException(at + ": unknown " + what + " '" + v + "' (known: " + String.join(", ", known) + ")");
+        }
+        return v;
     }
 
     private static List<String> items(String value, String at) {

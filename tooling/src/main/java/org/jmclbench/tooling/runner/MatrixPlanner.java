@@ -23,18 +23,19 @@ import org.jmclbench.tooling.store.MachineInfo;
 
 /**
  * Resolves a {@link MatrixSpec} against this machine and plans its runs: every combination of
- * runtime x profile x policy x particles x dataset x repetition, each with a run key (a hash of
+ * runtime x profile x engine x memory style x policy x particles x dataset x load x repetition, each with a run key (a hash of
  * machine, configuration and repetition, so that a rerun finds what is done), this shard's share,
  * in an order shuffled within each repetition round from a recorded seed, so that machine drift
  * does not favour one configuration and round 1 of every configuration ends before round 2 starts.
- * A native runtime keeps only the OS part of each profile (fifo, pinned); its duplicates are dropped.
+ * A native runtime keeps only the OS part of each profile (fifo, pinned) and has one engine, {@code native};
+ * its duplicates are dropped. A memory style the engine lacks is planned, and recorded unsupported.
  */
 public final class MatrixPlanner {
 
     /** Options the runner sets itself, which {@code --workload-arg} may not repeat. */
     static final Set<String> RESERVED_ARGS = Set.of("-p", "--particles", "-n", "--number", "-j", "--runtime-name",
             "-O", "--out", "--dataset", "-odo", "-laser", "-real", "-T", "--policy", "--ideal", "--seed",
-            "--time-scale", "--force", "-h", "--help");
+            "--time-scale", "--force", "-h", "--help", "--engine", "--memory");
 
     private MatrixPlanner() {
     }
@@ -60,6 +61,10 @@ public final class MatrixPlanner {
         }
         List<String> policies = distinct(spec.policies.isEmpty() ? MatrixDefaults.POLICIES
                 : spec.policies.stream().map(Sourced::value).toList());
+        List<String> engines = distinct(spec.engines.isEmpty() ? MatrixDefaults.ENGINES
+                : spec.engines.stream().map(Sourced::value).toList());
+        List<String> memory = distinct(spec.memory.isEmpty() ? MatrixDefaults.MEMORY
+                : spec.memory.stream().map(Sourced::value).toList());
         List<Integer> particles = distinct(spec.particles.isEmpty() ? MatrixDefaults.PARTICLES
                 : spec.particles.stream().map(Sourced::value).toList());
         List<Dataset> datasets = new ArrayList<>();
@@ -90,7 +95,7 @@ public final class MatrixPlanner {
         List<String> workloadArgs = new ArrayList<>();
         for (Sourced<String> a : spec.workloadArgs) {
             for (String w : a.value().strip().split("\\s+")) {
-                if (RESERVED_ARGS.contains(w)) {
+                if (RESERVED_ARGS.contains(w) || RESERVED_ARGS.contains(w.split("=", 2)[0])) {
                     throw new BadUsageException(a.where() + ": '" + w + "' is set by the runner (use the matrix option)");
                 }
                 workloadArgs.add(w);
@@ -105,17 +110,24 @@ public final class MatrixPlanner {
 
         Map<String, PlannedRun> all = new LinkedHashMap<>();
         for (RuntimeInfo rt : runtimes) {
+            // a native program has one engine: one native run per cell, whatever --engines says
+            List<String> rtEngines = distinct(engines.stream().map(e -> Engines.of(rt, e)).toList());
             for (Profile prof : profiles) {
                 Profile effective = rt.isJvm() ? prof : prof.forNative();
-                for (String policy : policies) {
-                    for (int n : particles) {
-                        for (Dataset d : datasets) {
-                            for (LoadScenario load : loads) {
-                                for (int rep = 1; rep <= repeat; rep++) {
-                                    long runSeed = seed + rep - 1;
-                                    String key = runKey(machine, rt, effective, policy, n, d, load, loadSettings, rep, runSeed, timeScale,
-                                            workloadArgs);
-                                    all.putIfAbsent(key, new PlannedRun(rt, effective, policy, n, d, rep, runSeed, load, key));
+                for (String engine : rtEngines) {
+                    for (String mem : memory) {
+                        for (String policy : policies) {
+                            for (int n : particles) {
+                                for (Dataset d : datasets) {
+                                    for (LoadScenario load : loads) {
+                                        for (int rep = 1; rep <= repeat; rep++) {
+                                            long runSeed = seed + rep - 1;
+                                            String key = runKey(machine, rt, effective, engine, mem, policy, n, d, load,
+                                                    loadSettings, rep, runSeed, timeScale, workloadArgs);
+                                            all.putIfAbsent(key, new PlannedRun(rt, effective, engine, mem, policy, n, d, rep,
+                                                    runSeed, load, key));
+                                        }
+                                    }
                                 }
                             }
                         }
@@ -135,7 +147,7 @@ public final class MatrixPlanner {
             }
         }
         List<PlannedRun> ordered = order(mine, repeat, orderSeed);
-        return new ResolvedMatrix(runtimes, profiles, policies, particles, datasets, List.copyOf(loads), loadSettings, repeat, seed, orderSeed, timeScale,
+        return new ResolvedMatrix(runtimes, profiles, engines, memory, policies, particles, datasets, List.copyOf(loads), loadSettings, repeat, seed, orderSeed, timeScale,
                 spec.timeoutS, pinCpu, List.copyOf(workloadArgs), db, nativeBinary, spec.shard, ordered, all.size());
     }
 
@@ -153,11 +165,20 @@ public final class MatrixPlanner {
         return out;
     }
 
-    static String runKey(MachineInfo m, RuntimeInfo rt, Profile p, String policy, int particles, Dataset d,
-                         LoadScenario load, org.jmclbench.tooling.load.LoadSettings loadSettings, int rep, long seed,
+    /**
+     * The run key. The engine and memory style enter it only when they are not the defaults
+     * (javase or native, preallocated), so that the runs of a store made before these dimensions
+     * keep their keys and a rerun resumes them.
+     */
+    static String runKey(MachineInfo m, RuntimeInfo rt, Profile p, String engine, String memory, String policy, int particles,
+                         Dataset d, LoadScenario load, org.jmclbench.tooling.load.LoadSettings loadSettings, int rep, long seed,
                          double timeScale, List<String> workloadArgs) {
+        boolean defaultEngine = engine.equals(Engines.JAVASE) || engine.equals(Engines.NATIVE);
         String text = String.join("\n", "jmclbench-run-key/1", "machine=" + m.machineId(), "runtime=" + rt.name(),
-                "runtimeVersion=" + rt.version(), "profile=" + p.name(), "policy=" + policy, "particles=" + particles,
+                "runtimeVersion=" + rt.version(), "profile=" + p.name())
+                + (defaultEngine ? "" : "\nengine=" + engine)
+                + (memory.equals(Engines.PREALLOCATED) ? "" : "\nmemory=" + memory)
+                + "\n" + String.join("\n", "policy=" + policy, "particles=" + particles,
                 "dataset=" + d.label() + "@" + d.digest(), "load=" + load.label() + (load.alloc() ? " alloc=" + loadSettings.allocMbPerS() + "," + loadSettings.allocLiveMb() : ""), "repetition=" + rep, "seed=" + seed,
                 "timeScale=" + timeScale, "workloadArgs=" + String.join(" ", workloadArgs));
         return MachineInfo.sha256Hex(text).substring(0, 20);

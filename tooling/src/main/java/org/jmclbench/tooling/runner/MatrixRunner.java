@@ -106,6 +106,11 @@ public final class MatrixRunner {
 
     private Finished execute(PlannedRun run, AotTrainer aot) throws IOException {
         String startedAt = Instant.now().toString();
+        String engineProblem = Engines.unsupported(run.engine(), run.memory());
+        if (engineProblem != null) {
+            return new Finished(record(run, RunRecord.UNSUPPORTED, null, engineProblem, null, startedAt, null, null, null,
+                    List.of()), RunData.empty());
+        }
         ProfileProbe.Support support = probe.check(run.runtime(), run.profile(), matrix.pinCpu());
         LaunchPlan plan = LaunchPlan.of(run.runtime(), run.profile(), matrix.pinCpu());
         List<String> extra = List.of();
@@ -199,6 +204,14 @@ public final class MatrixRunner {
         if (p.has("seed") && p.path("seed").asLong() != run.seed()) {
             return "seed " + p.path("seed").asText() + ", asked " + run.seed();
         }
+        // A summary without an engine is from a workload older than the engines: javase or native.
+        String engine = p.path("engine").asText(summary.path("engine").path("kind").asText(""));
+        if (engine.isEmpty() ? run.engine().equals(Engines.SCJ) : !engine.equals(run.engine())) {
+            return "engine " + (engine.isEmpty() ? "missing" : engine) + ", asked " + run.engine();
+        }
+        if (p.hasNonNull("memory") && !p.path("memory").asText().equals(run.memory())) {
+            return "memory " + p.path("memory").asText() + ", asked " + run.memory();
+        }
         return null;
     }
 
@@ -212,6 +225,7 @@ public final class MatrixRunner {
         }
         return new RunRecord(run.runKey(), matrixId, machine.machineId(), run.runtime().name(), run.runtime().version(),
                 run.profile().name(), run.policy(), run.particles(), run.dataset().label(), run.load().label(), run.repetition(), status,
-                exitCode, failure, stderrTail, startedAt, Instant.now().toString(), wallS, runDir, summary, run.seed(), cmdJson);
+                exitCode, failure, stderrTail, startedAt, Instant.now().toString(), wallS, runDir, summary, run.seed(), cmdJson,
+                run.engine(), run.memory());
     }
 }

@@ -110,6 +110,8 @@ public final class MatrixSession {
         j.put("runtimes", m.runtimes().stream().map(r -> Map.of("name", r.name(), "kind", r.kind().name().toLowerCase(),
                 "vendor", r.vendor(), "version", r.version(), "path", r.realPath().toString())).toList());
         j.put("profiles", m.profiles().stream().map(Profile::name).toList());
+        j.put("engines", m.engines());
+        j.put("memory", m.memory());
         j.put("policies", m.policies());
         j.put("particles", m.particles());
         j.put("loads", m.loads().stream().map(l -> l.label()).toList());

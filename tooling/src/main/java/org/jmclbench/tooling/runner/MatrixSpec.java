@@ -13,6 +13,8 @@ public final class MatrixSpec {
     public final List<Sourced<String>> javas = new ArrayList<>();
     public final List<Sourced<String>> profiles = new ArrayList<>();
     public final List<Sourced<String>> policies = new ArrayList<>();
+    public final List<Sourced<String>> engines = new ArrayList<>();
+    public final List<Sourced<String>> memory = new ArrayList<>();
     public final List<Sourced<Integer>> particles = new ArrayList<>();
     public final List<Sourced<String>> datasets = new ArrayList<>();
     public final List<Sourced<String>> loads = new ArrayList<>();

@@ -1,6 +1,8 @@
 package org.jmclbench.tooling.runner;
 
+import java.util.List;
 import java.util.Locale;
+import java.util.stream.Collectors;
 import java.util.concurrent.Callable;
 
 import org.jmclbench.tooling.cli.JmclbenchCli;
@@ -10,22 +12,38 @@ import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
-/** A first answer in minutes: every JVM found (its default GC) and native, two policies, three sizes. */
+/**
+ * A first answer in minutes: every JVM found (its default GC) with the Java SE and the SCJ engine,
+ * and native, two policies, two sizes.
+ */
 @Command(name = "quick", mixinStandardHelpOptions = true,
-        description = {"Runs every JVM found (with its default GC) and the native baseline x {skip, terminate} x",
-                "{100, 400, 1600} particles x 1 repetition on dataset " + QuickCommand.DATASET + " (10 s) into results/results.db, then",
-                "builds the report. It is a matrix: rerunning it resumes, and `matrix` can add to the same database.",
-                "With many runtimes, the replay is sped up to stay under " + QuickCommand.BUDGET_S / 60 + " minutes",
-                "(--time-scale, which scales deadlines too); the chosen scale is printed."})
+        description = {"Runs every JVM found (with its default GC) with the javase and scj engines, and the native",
+                "baseline, x {skip, terminate} x {100, 1600} particles x 1 repetition on dataset " + QuickCommand.DATASET + " (10 s)",
+                "into results/results.db, then builds the report. It is a matrix: rerunning it resumes, and",
+                "`matrix` can add to the same database. With many runtimes, the replay is sped up to stay under",
+                "5 minutes (--time-scale, which scales deadlines too); the estimate and the chosen scale are printed."})
 public final class QuickCommand implements Callable<Integer> {
+
+    /** The grid: every JVM runs both engines; native runs once per cell. */
+    static final List<String> ENGINES = List.of(Engines.JAVASE, Engines.SCJ);
+    static final List<String> POLICIES = List.of("skip", "terminate");
+    /** Two sizes, light and heavy: with both engines, three sizes would not fit 2 JVMs in 5 minutes. */
+    static final List<Integer> PARTICLES = List.of(100, 1600);
 
     /** The first 10 s of the match route: short enough that two JVMs and native replay in real time. */
     static final String DATASET = "match-quick";
 
-    /** The time quick allows its runs (the report and set-up need the rest of 5 minutes). */
-    static final int BUDGET_S = 240;
-    /** JVM start, warm-up and folder writing on top of the replay (measured 1.2-3 s on the 2-core VM). */
-    static final double JVM_OVERHEAD_S = 2.5;
+    /** The time quick allows its runs (discovery, probes and the report need the rest of 5 minutes). */
+    static final int BUDGET_S = 250;
+    /**
+     * JVM start, warm-up (the SCJ engine's class-loading mission), folder writing and attribution on
+     * top of the replay: measured 2.4-6.5 s, mean 4.2 s, for both engines during a quick on the
+     * shared 2-core VM at load average 9 (1.2-3 s for the Java SE engine on a quiet one).
+     */
+    static final double JVM_OVERHEAD_S = 4.0;
+    /** What the estimate leaves out (measured 15-50 s on the 2-core VM, more under heavy load). */
+    static final String REPORT_NOTE = ", then the report";
+
     /** The native baseline starts in milliseconds. */
     static final double NATIVE_OVERHEAD_S = 0.1;
 
@@ -42,15 +60,7 @@ public final class QuickCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         MatrixSession.Result r;
         try {
-            MatrixSpec spec = new MatrixSpec();
-            MatrixOptions.apply(spec, "runtimes", "all", "quick");
-            MatrixOptions.apply(spec, "policies", "skip,terminate", "quick");
-            MatrixOptions.apply(spec, "particles", "100,400,1600", "quick");
-            MatrixOptions.apply(spec, "datasets", DATASET, "quick");
-            MatrixOptions.apply(spec, "repeat", "1", "quick");
-            MatrixOptions.apply(spec, "db", db, "--db");
-            // the order seed is fixed so that a rerun of quick resumes in the same order
-            MatrixOptions.apply(spec, "order-seed", "1", "quick");
+            MatrixSpec spec = spec(db);
             RuntimeDiscovery d = RuntimeDiscovery.discover();
             if (timeScale != null) {
                 MatrixOptions.apply(spec, "time-scale", timeScale, "--time-scale");
@@ -79,31 +89,58 @@ public final class QuickCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** The largest scale in steps of 0.05 (at least 0.25) that keeps the runs within {@link #BUDGET_S}. */
+    /** quick's matrix: every runtime, both engines, the grid above, into {@code db}. */
+    static MatrixSpec spec(String db) {
+        MatrixSpec spec = new MatrixSpec();
+        MatrixOptions.apply(spec, "runtimes", "all", "quick");
+        MatrixOptions.apply(spec, "engines", String.join(",", ENGINES), "quick");
+        MatrixOptions.apply(spec, "policies", String.join(",", POLICIES), "quick");
+        MatrixOptions.apply(spec, "particles", PARTICLES.stream().map(String::valueOf).collect(Collectors.joining(",")), "quick");
+        MatrixOptions.apply(spec, "datasets", DATASET, "quick");
+        MatrixOptions.apply(spec, "repeat", "1", "quick");
+        MatrixOptions.apply(spec, "db", db, "--db");
+        // the order seed is fixed so that a rerun of quick resumes in the same order
+        MatrixOptions.apply(spec, "order-seed", "1", "quick");
+        return spec;
+    }
+
+    /**
+     * The largest scale in steps of 0.05 (at least 0.25) that keeps the runs within {@link #BUDGET_S};
+     * prints the estimate either way.
+     */
     static double fitScale(RuntimeDiscovery d, MatrixSpec spec) {
         boolean nat = d.nativeBaseline().isPresent()
                 || java.nio.file.Files.isExecutable(org.jmclbench.tooling.runtime.JmclbenchPaths.nativeBinary());
-        int jvmRuns = d.jvms().size() * 2 * 3;
-        int nativeRuns = nat ? 2 * 3 : 0;
         double duration;
         try {
             duration = Dataset.resolve(DATASET, org.jmclbench.tooling.runtime.JmclbenchPaths.home(), "quick").durationS();
         } catch (BadUsageException e) {
             return 1.0; // the session reports the missing dataset
         }
+        return fitScale(d.jvms().size(), nat, duration, System.out);
+    }
+
+    /** {@link #fitScale(RuntimeDiscovery, MatrixSpec)} for {@code jvms} JVMs, native or not, a dataset of {@code durationS}. */
+    static double fitScale(int jvms, boolean nat, double durationS, java.io.PrintStream out) {
+        int cells = POLICIES.size() * PARTICLES.size();
+        int jvmRuns = jvms * ENGINES.size() * cells;
+        int nativeRuns = nat ? cells : 0;
         int runs = jvmRuns + nativeRuns;
-        if (runs == 0 || duration <= 0) {
+        if (runs == 0 || durationS <= 0) {
             return 1.0;
         }
         double overhead = jvmRuns * JVM_OVERHEAD_S + nativeRuns * NATIVE_OVERHEAD_S;
-        double scale = Math.floor((BUDGET_S - overhead) / (runs * duration) * 20) / 20;
+        double scale = Math.floor((BUDGET_S - overhead) / (runs * durationS) * 20) / 20;
         if (scale >= 1.0) {
+            out.printf(Locale.ROOT, "quick: %d runs (%d JVM x %d engines x %d settings%s) of %.0f s: about %.0f s in real time"
+                            + REPORT_NOTE + "%n",
+                    runs, jvms, ENGINES.size(), cells, nat ? " + native" : "", durationS, runs * durationS + overhead);
             return 1.0;
         }
         double chosen = Math.max(0.25, scale);
-        System.out.printf(Locale.ROOT, "quick: %d runs of %.0f s would take about %.0f s; replaying at --time-scale %.2f"
-                        + " (about %.0f s; deadlines scale too)%n", runs, duration, runs * duration + overhead, chosen,
-                runs * duration * chosen + overhead);
+        out.printf(Locale.ROOT, "quick: %d runs of %.0f s would take about %.0f s; replaying at --time-scale %.2f"
+                        + " (about %.0f s; deadlines scale too)" + REPORT_NOTE + "%n", runs, durationS, runs * durationS + overhead, chosen,
+                runs * durationS * chosen + overhead);
         return chosen;
     }
 }

@@ -15,7 +15,8 @@ import org.jmclbench.tooling.runtime.RuntimeInfo;
  * @param plan        this shard's runs in execution order
  * @param planned     runs of the whole matrix (all shards)
  */
-public record ResolvedMatrix(List<RuntimeInfo> runtimes, List<Profile> profiles, List<String> policies,
+public record ResolvedMatrix(List<RuntimeInfo> runtimes, List<Profile> profiles, List<String> engines,
+                             List<String> memory, List<String> policies,
                              List<Integer> particles, List<Dataset> datasets, List<LoadScenario> loads,
                              org.jmclbench.tooling.load.LoadSettings loadSettings, int repeat, long seed, long orderSeed,
                              double timeScale, Double timeoutS, String pinCpu, List<String> workloadArgs, Path db,

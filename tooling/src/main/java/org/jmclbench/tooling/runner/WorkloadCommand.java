@@ -20,7 +20,10 @@ public final class WorkloadCommand {
 
     /**
      * {@code [prefix] <java> <flags> -Djmclbench.home=H -cp JAR WorkloadMain run <args>} for a JVM,
-     * {@code [prefix] <native> run <args>} for the native baseline.
+     * {@code [prefix] <native> run <args>} for the native baseline. The engine and memory style are
+     * passed only when they are not the defaults (javase, preallocated), so that a workload older
+     * than them still runs the default configuration; an scj run's runtime name gets the suffix
+     * {@code -scj}, as the workload's own default name does.
      */
     public static List<String> build(PlannedRun run, LaunchPlan plan, List<String> extraJvmFlags, Path home, Path jar,
                                      Path out, double timeScale, List<String> workloadArgs) {
@@ -37,13 +40,19 @@ public final class WorkloadCommand {
         }
         cmd.add("run");
         cmd.addAll(List.of("-p", String.valueOf(run.particles()), "-n", String.valueOf(run.repetition()),
-                "-j", rt.name(), "-O", out.toString(), "--dataset", run.dataset().dir().toString()));
+                "-j", rt.name() + (run.engine().equals(Engines.SCJ) ? "-scj" : ""), "-O", out.toString(), "--dataset", run.dataset().dir().toString()));
         if (run.policy().equals("ideal")) {
             cmd.add("--ideal");
         } else {
             cmd.addAll(List.of("--policy", run.policy()));
         }
         cmd.addAll(List.of("--seed", String.valueOf(run.seed())));
+        if (rt.isJvm() && !run.engine().equals(Engines.JAVASE)) {
+            cmd.addAll(List.of("--engine", run.engine()));
+        }
+        if (!run.memory().equals(Engines.PREALLOCATED)) {
+            cmd.addAll(List.of("--memory", run.memory()));
+        }
         if (timeScale != 1.0) {
             cmd.addAll(List.of("--time-scale", String.format(Locale.ROOT, "%s", timeScale)));
         }

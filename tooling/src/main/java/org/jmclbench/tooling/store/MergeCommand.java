@@ -45,14 +45,14 @@ public final class MergeCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** A source must be a results store of this tool's schema version. */
+    /** A source must be a results store of a schema version this tool reads. */
     private static void checkSchema(Path db) throws BadInputException {
         try (java.sql.Connection c = java.sql.DriverManager.getConnection("jdbc:sqlite:file:" + db.toAbsolutePath() + "?mode=ro");
              java.sql.Statement st = c.createStatement();
              java.sql.ResultSet rs = st.executeQuery("PRAGMA user_version")) {
             int v = rs.next() ? rs.getInt(1) : 0;
             try (java.sql.ResultSet t = st.executeQuery("SELECT count(*) FROM sqlite_master WHERE name = 'runs'")) {
-                if (v != Schema.VERSION || !t.next() || t.getInt(1) != 1) {
+                if (v < Schema.OLDEST || v > Schema.VERSION || !t.next() || t.getInt(1) != 1) {
                     throw new BadInputException(db + ": not a jmclbench results store (schema version " + v + ")");
                 }
             }

@@ -50,6 +50,20 @@ public final class ResultStore implements AutoCloseable {
             for (String ddl : Schema.CREATE) {
                 s.execute(ddl);
             }
+            java.util.Set<String> have = new java.util.HashSet<>();
+            try (ResultSet rs = s.executeQuery("PRAGMA table_info(runs)")) {
+                while (rs.next()) {
+                    have.add(rs.getString("name"));
+                }
+            }
+            for (String[] col : Schema.ADDED_RUN_COLUMNS) {
+                if (!have.contains(col[0])) {
+                    s.execute("ALTER TABLE runs ADD COLUMN " + col[0] + " " + col[1]); // an older store: migrate
+                }
+            }
+            for (String fill : Schema.FILL_ENGINES) {
+                s.execute(fill);
+            }
             s.execute("PRAGMA user_version = " + Schema.VERSION);
             c.commit();
         } catch (SQLException e) {
@@ -125,8 +139,8 @@ public final class ResultStore implements AutoCloseable {
             deleteRun(r.runKey());
             try (PreparedStatement ps = conn.prepareStatement("INSERT INTO runs (run_key, matrix_id, machine_id, runtime,"
                     + " runtime_version, profile, policy, particles, dataset, load, repetition, status, exit_code, failure,"
-                    + " stderr_tail, started_at, ended_at, wall_s, run_dir, summary_json, seed, command_json)"
-                    + " VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)")) {
+                    + " stderr_tail, started_at, ended_at, wall_s, run_dir, summary_json, seed, command_json, engine, memory)"
+                    + " VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)")) {
                 int i = 1;
                 ps.setString(i++, r.runKey());
                 ps.setString(i++, r.matrixId());
@@ -157,8 +171,22 @@ public final class ResultStore implements AutoCloseable {
                 ps.setString(i++, r.runDir());
                 ps.setString(i++, r.summaryJson());
                 ps.setLong(i++, r.seed());
-                ps.setString(i, r.commandJson());
+                ps.setString(i++, r.commandJson());
+                ps.setString(i++, r.engine());
+                ps.setString(i, r.memory());
                 ps.executeUpdate();
+            }
+            try (PreparedStatement ps = conn.prepareStatement(
+                    "INSERT INTO memory_areas (run_key, name, size, peak_bytes, bytes_per_release) VALUES (?,?,?,?,?)")) {
+                for (RunData.Area a : data.areas) {
+                    ps.setString(1, r.runKey());
+                    ps.setString(2, a.name());
+                    ps.setObject(3, a.size(), Types.INTEGER);
+                    ps.setObject(4, a.peakBytes(), Types.INTEGER);
+                    ps.setObject(5, a.bytesPerRelease(), Types.REAL);
+                    ps.addBatch();
+                }
+                ps.executeBatch();
             }
             try (PreparedStatement ps = conn.prepareStatement("INSERT INTO metrics (run_key, task, metric, stat, value) VALUES (?,?,?,?,?)")) {
                 for (RunData.Metric m : data.metrics) {

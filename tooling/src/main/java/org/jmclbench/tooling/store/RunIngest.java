@@ -53,6 +53,7 @@ public final class RunIngest {
     public static RunData ingest(Path dir, JsonNode summary, Path realFile) throws IOException {
         RunData d = new RunData();
         flattenSummary(summary, d);
+        d.areas.addAll(memoryAreas(summary));
         Map<String, List<Job>> jobs = new LinkedHashMap<>();
         jobs.put("predict", readJobs(dir.resolve("odoData.txt")));
         jobs.put("update", readJobs(dir.resolve("laserData.txt")));
@@ -123,6 +124,45 @@ public final class RunIngest {
                 }
             }
         }
+    }
+
+    /**
+     * The memory areas of summary.json ({@code memory.areas}; none when absent).
+     *
+     * @throws IOException when they are not an array of areas with distinct names and numbers or nulls
+     */
+    static List<RunData.Area> memoryAreas(JsonNode summary) throws IOException {
+        JsonNode areas = summary.path("memory").path("areas");
+        List<RunData.Area> out = new ArrayList<>();
+        if (areas.isMissingNode() || areas.isNull()) {
+            return out;
+        }
+        if (!areas.isArray()) {
+            throw new IOException("summary.json: memory.areas is not an array");
+        }
+        java.util.Set<String> names = new java.util.HashSet<>();
+        for (JsonNode a : areas) {
+            String name = a.path("name").isTextual() ? a.path("name").asText() : "";
+            if (name.isEmpty() || !names.add(name)) {
+                throw new IOException("summary.json: memory.areas: " + (name.isEmpty() ? "an area without a name" : "area '" + name + "' twice"));
+            }
+            Double size = bytes(a, "size", name);
+            Double peak = bytes(a, "peakBytes", name);
+            out.add(new RunData.Area(name, size == null ? null : Math.round(size), peak == null ? null : Math.round(peak),
+                    bytes(a, "bytesPerRelease", name)));
+        }
+        return out;
+    }
+
+    private static Double bytes(JsonNode area, String field, String name) throws IOException {
+        JsonNode v = area.path(field);
+        if (v.isMissingNode() || v.isNull()) {
+            return null;
+        }
+        if (!v.isNumber() || !Double.isFinite(v.asDouble()) || v.asDouble() < 0) {
+            throw new IOException("summary.json: memory area '" + name + "': " + field + " is not a byte count: " + v);
+        }
+        return v.asDouble();
     }
 
     private static void addStats(RunData d, String task, String metric, JsonNode stats) {

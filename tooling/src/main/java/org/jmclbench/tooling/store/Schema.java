@@ -1,8 +1,14 @@
 package org.jmclbench.tooling.store;
 
-/** The results store's SQL schema (docs/FORMATS.md section 5); {@code PRAGMA user_version} is {@link #VERSION}. */
+/**
+ * The results store's SQL schema (docs/FORMATS.md section 5); {@code PRAGMA user_version} is {@link #VERSION}.
+ * Version 2 added the runs' engine and memory style and the {@code memory_areas} table; a version 1
+ * store is migrated when opened for writing ({@link #ADDED_RUN_COLUMNS}, {@link #FILL_ENGINES}).
+ */
 final class Schema {
-    static final int VERSION = 1;
+    static final int VERSION = 2;
+    /** The oldest version this tool reads and migrates. */
+    static final int OLDEST = 1;
 
     static final String[] CREATE = {
         """
@@ -28,7 +34,9 @@ final class Schema {
           run_dir TEXT,
           summary_json TEXT,
           seed INTEGER,
-          command_json TEXT
+          command_json TEXT,
+          engine TEXT,
+          memory TEXT
         )""",
         """
         CREATE TABLE IF NOT EXISTS metrics (
@@ -45,12 +53,40 @@ final class Schema {
           run_key TEXT, name TEXT, json TEXT,
           PRIMARY KEY (run_key, name)
         )""",
+        """
+        CREATE TABLE IF NOT EXISTS memory_areas (
+          run_key TEXT, name TEXT, size INTEGER, peak_bytes INTEGER, bytes_per_release REAL,
+          PRIMARY KEY (run_key, name)
+        )""",
         "CREATE INDEX IF NOT EXISTS runs_by_config ON runs (runtime, profile, policy, particles, dataset)",
         org.jmclbench.tooling.attribution.AttributionStore.SCHEMA,
     };
 
     /** Tables keyed by run, in the order a run's rows are copied or deleted. */
-    static final String[] RUN_TABLES = {"runs", "metrics", "histograms", "series", "attributions"};
+    static final String[] RUN_TABLES = {"runs", "metrics", "histograms", "series", "attributions", "memory_areas"};
+
+    /**
+     * Columns of {@code runs} added after its first version, in order: a store that lacks them gets
+     * them appended (so that its column order is a new store's).
+     */
+    static final String[][] ADDED_RUN_COLUMNS = {
+        {"seed", "INTEGER"}, {"command_json", "TEXT"}, {"engine", "TEXT"}, {"memory", "TEXT"},
+    };
+
+    /**
+     * Fills the engine and memory style of runs that have none (made before version 2): the
+     * native baseline's runs are engine {@code native}, every other run was the Java SE engine;
+     * the memory style is the summary's, else the one passed on the command line
+     * ({@code --workload-arg "--memory allocating"}), else preallocated.
+     */
+    static final String[] FILL_ENGINES = {
+        "UPDATE runs SET engine = CASE WHEN runtime = 'native' THEN 'native' ELSE 'javase' END WHERE engine IS NULL",
+        """
+        UPDATE runs SET memory = COALESCE(
+          CASE WHEN json_valid(summary_json) THEN json_extract(summary_json, '$.parameters.memory') END,
+          CASE WHEN command_json LIKE '%"--memory","allocating"%' THEN 'allocating' END,
+          'preallocated') WHERE memory IS NULL""",
+    };
 
     private Schema() {
     }

@@ -19,7 +19,8 @@ import java.util.stream.Stream;
 /**
  * Merges results stores (two machines, two shards) into one: every run is kept once by its run key;
  * when both have it, an ok run wins over a failed one, otherwise the one already in the target stays.
- * Run folders are copied with their rows.
+ * Run folders are copied with their rows. A source of an older schema version (1) is read as it is:
+ * its runs get the engine and memory style the migration gives them ({@link Schema#FILL_ENGINES}).
  */
 public final class StoreMerger {
 
@@ -53,9 +54,17 @@ public final class StoreMerger {
                 try (ResultSet rs = s.executeQuery("PRAGMA src.user_version")) {
                     version = rs.next() ? rs.getInt(1) : 0;
                 }
-                if (version != Schema.VERSION) {
-                    throw new IOException(source + ": not a jmclbench results store of schema version " + Schema.VERSION
-                            + " (user_version " + version + ")");
+                if (version < Schema.OLDEST || version > Schema.VERSION) {
+                    throw new IOException(source + ": not a jmclbench results store of schema version " + Schema.OLDEST
+                            + " to " + Schema.VERSION + " (user_version " + version + ")");
+                }
+                java.util.Map<String, String> columns = new java.util.HashMap<>();
+                for (String t : Schema.RUN_TABLES) {
+                    List<String> common = columns(s, "src", t);
+                    common.retainAll(columns(s, "main", t));
+                    if (!common.isEmpty()) {
+                        columns.put(t, String.join(", ", common));
+                    }
                 }
                 s.executeUpdate("INSERT OR IGNORE INTO machines SELECT * FROM src.machines");
                 s.executeUpdate("INSERT OR IGNORE INTO matrices SELECT * FROM src.matrices");
@@ -73,15 +82,24 @@ public final class StoreMerger {
                 Path srcBase = src.getParent();
                 for (String key : take) {
                     for (String t : Schema.RUN_TABLES) {
-                        try (PreparedStatement del = conn.prepareStatement("DELETE FROM main." + t + " WHERE run_key = ?");
-                             PreparedStatement ins = conn.prepareStatement("INSERT INTO main." + t + " SELECT * FROM src." + t + " WHERE run_key = ?")) {
+                        try (PreparedStatement del = conn.prepareStatement("DELETE FROM main." + t + " WHERE run_key = ?")) {
                             del.setString(1, key);
                             del.executeUpdate();
+                        }
+                        String cols = columns.get(t);
+                        if (cols == null) {
+                            continue; // a table the source's version did not have
+                        }
+                        try (PreparedStatement ins = conn.prepareStatement("INSERT INTO main." + t + " (" + cols + ") SELECT "
+                                + cols + " FROM src." + t + " WHERE run_key = ?")) {
                             ins.setString(1, key);
                             ins.executeUpdate();
                         }
                     }
                     copyTree(srcBase.resolve("runs").resolve(key), target.runFolder(key));
+                }
+                for (String fill : Schema.FILL_ENGINES) {
+                    s.executeUpdate(fill);
                 }
                 conn.commit();
                 return new Outcome(take.size(), total - take.size());
@@ -96,6 +114,17 @@ public final class StoreMerger {
                 conn.setAutoCommit(false);
             }
         }
+    }
+
+    /** The columns of {@code schema.table}, in order (none when the table does not exist). */
+    private static List<String> columns(Statement s, String schema, String table) throws SQLException {
+        List<String> out = new ArrayList<>();
+        try (ResultSet rs = s.executeQuery("PRAGMA " + schema + ".table_info(" + table + ")")) {
+            while (rs.next()) {
+                out.add(rs.getString("name"));
+            }
+        }
+        return out;
     }
 
     /** Replaces {@code to} by a copy of {@code from} (nothing when {@code from} does not exist). */

@@ -22,7 +22,8 @@
     dataset: DATA.defaults.dataset,
     policy: DATA.defaults.policy,
     particles: DATA.defaults.particles,
-    configs: new Set(DATA.configs.map(function (c) { return c.id; }))
+    configs: new Set(DATA.configs.map(function (c) { return c.id; })),
+    engines: new Set(DATA.engines)
   };
   var sortState = { column: null, dir: 1 };
 
@@ -53,13 +54,15 @@
   }
 
   function cellsWhere(pred) { return DATA.cells.filter(pred); }
+  /** A cell is shown when both its runtime and its engine are chosen. */
+  function chosen(c) { return state.configs.has(c.config) && state.engines.has(c.engine); }
   function settingCells() {
     return cellsWhere(function (c) {
-      return c.dataset === state.dataset && c.policy === state.policy && c.particles === state.particles && state.configs.has(c.config);
+      return c.dataset === state.dataset && c.policy === state.policy && c.particles === state.particles && chosen(c);
     });
   }
   function policyCells() {
-    return cellsWhere(function (c) { return c.dataset === state.dataset && c.policy === state.policy && state.configs.has(c.config); });
+    return cellsWhere(function (c) { return c.dataset === state.dataset && c.policy === state.policy && chosen(c); });
   }
   function configOrder(cells) {
     var ids = DATA.configs.map(function (c) { return c.id; });
@@ -99,6 +102,15 @@
     }
     document.getElementById('cfg-all').onclick = function () { setAll(true); };
     document.getElementById('cfg-none').onclick = function () { setAll(false); };
+    var ef = document.getElementById('sel-engines');
+    DATA.engines.forEach(function (e) {
+      var label = el('label');
+      var box = el('input', { type: 'checkbox', value: e, 'data-engine': e });
+      box.checked = true;
+      box.onchange = function () { if (box.checked) { state.engines.add(e); } else { state.engines.delete(e); } render(); };
+      label.appendChild(box); label.appendChild(document.createTextNode(e));
+      ef.appendChild(label);
+    });
   }
 
   // ---- headline --------------------------------------------------------------------------
@@ -154,6 +166,8 @@
   // ---- table -----------------------------------------------------------------------------
   var COLUMNS = [
     { key: 'config', label: 'runtime/profile', text: true },
+    { key: 'engine', label: 'engine', text: true, title: 'javase: the Java SE release engine (heap, GC); scj: the SCJ mission (immortal, mission, private memory); native: the C baseline' },
+    { key: 'memory', label: 'memory', text: true, title: 'memory style: preallocated, allocating (Java SE, C) or scoped (SCJ private memory per release)' },
     { key: 'runs', label: 'ok/runs', text: true },
     { key: 'miss', label: 'misses/run (95% CI)', metric: 'MISS_COUNT', ci: true, best: 'min' },
     { key: 'late', label: 'late/run', metric: 'LATE', best: 'min' },
@@ -181,6 +195,8 @@
       row.values.config = c.config; row.texts.config = c.config;
       row.texts.version = cfg.versions.join(', '); row.values.version = row.texts.version;
       row.texts.runs = c.ok + '/' + c.runs; row.values.runs = c.ok;
+      row.texts.engine = c.engine; row.values.engine = c.engine;
+      row.texts.memory = c.memory; row.values.memory = c.memory;
       COLUMNS.forEach(function (col) {
         if (!col.metric) { return; }
         var agg = c.metrics[col.metric] || { mean: null, max: null, half: null };
@@ -311,7 +327,8 @@
       var box = runtimesBox;
       var p = el('p');
       p.appendChild(el('strong', null, c.id));
-      p.appendChild(document.createTextNode(' ' + (c.versions.join(', ') || '') + (c.nativeBaseline ? ' (native C baseline)' : '')));
+      p.appendChild(document.createTextNode(' ' + (c.versions.join(', ') || '') + (c.nativeBaseline ? ' (native C baseline)'
+        : ' (engine ' + c.engine + ', memory ' + c.memory + ')')));
       if (c.flags.length) { p.appendChild(el('br')); p.appendChild(el('code', null, c.flags.join(' '))); }
       if (c.facts.length) { p.appendChild(el('br')); p.appendChild(el('span', { 'class': 'facts' }, c.facts.join('; '))); }
       box.appendChild(p);
@@ -371,7 +388,24 @@
       ctx.restore();
     }
   };
-  Chart.register(errorBars, playgroundFrame, pauseBands);
+  // An area with nothing allocated (peak 0) has no bar on a log axis: a "0" marks it at the axis.
+  var zeroMarks = {
+    id: 'jmclbenchZeroMarks',
+    afterDatasetsDraw: function (chart) {
+      if (!chart.options.plugins.jmclbenchZeroMarks) { return; }
+      var ctx = chart.ctx, area = chart.chartArea;
+      ctx.save(); ctx.fillStyle = '#333'; ctx.font = '10px sans-serif'; ctx.textAlign = 'center';
+      chart.data.datasets.forEach(function (ds, i) {
+        var meta = chart.getDatasetMeta(i);
+        if (meta.hidden || !ds.areas) { return; }
+        ds.areas.forEach(function (a, j) {
+          if (a && a.peakBytes === 0 && meta.data[j]) { ctx.fillText('0', meta.data[j].x, area.bottom - 3); }
+        });
+      });
+      ctx.restore();
+    }
+  };
+  Chart.register(errorBars, playgroundFrame, pauseBands, zeroMarks);
   Chart.defaults.animation = false;
   Chart.defaults.font.size = 12;
 
@@ -379,10 +413,22 @@
   var CAUSE_ORDER = ['gc', 'safepoint', 'jit', 'deopt', 'classload', 'lock', 'os', 'preemption', 'compute', 'queued', 'overlap', 'unknown'];
   var CAUSE_COLORS = { gc: '#d62728', safepoint: '#9467bd', jit: '#ff7f0e', deopt: '#ffbb78', classload: '#e7ba52', lock: '#393b79', os: '#8c564b',
     preemption: '#e377c2', compute: '#1f77b4', queued: '#17becf', overlap: '#bcbd22', unknown: '#7f7f7f' };
+  /** Memory areas: the heap, then SCJ's from the longest-lived, then the handlers' private ones (ReportModel.AREA_ORDER). */
+  var AREA_ORDER = ['heap', 'immortal', 'mission'];
+  var AREA_COLORS = { heap: '#7f7f7f', immortal: '#393b79', mission: '#2ca02c' };
+  var PRIVATE_COLORS = ['#ff7f0e', '#e377c2', '#17becf', '#bcbd22', '#8c564b', '#9467bd'];
+  /** Bytes in decimal units (kB = 1000 B), as the log axis' powers of ten read best. */
+  function bytes(v) {
+    if (v === null || v === undefined) { return '\u2013'; }
+    var units = ['B', 'kB', 'MB', 'GB'], i = 0;
+    while (Math.abs(v) >= 1000 && i < units.length - 1) { v /= 1000; i++; }
+    return (i === 0 ? String(Math.round(v)) : String(Number(v.toPrecision(3)))) + ' ' + units[i];
+  }
   var FIGURES = [
     { id: 'misses', title: 'Deadline misses vs particles', caption: 'missCount per run (skipped + terminated jobs; late jobs under queue), mean over repetitions with 95% CI error bars, per runtime. The thesis\u2019s histogram with errors.', particles: false },
     { id: 'deviation', title: 'Mean localisation deviation vs particles', caption: 'Mean Euclidean xy deviation of the estimate from the ground truth (m), mean over repetitions with 95% CI error bars.', particles: false },
     { id: 'latency-jitter', title: 'Average task latency and release jitter vs particles', caption: 'Mean over all jobs, then over repetitions (ms). Solid: task latency (end \u2212 start); dashed: release jitter (start \u2212 release).', particles: false },
+    { id: 'memory', title: 'Memory areas: peak bytes per engine and memory style', caption: 'The memory-model experiment at a glance: for each runtime, engine and memory style, the peak use of each memory area (bytes, log axis; the largest over the repetitions). Java SE: the heap. SCJ: immortal and mission memory, and each handler\u2019s private memory, whose peak is that of one release (0 under the axis: the release allocated nothing, as the preallocated style promises). Hover a bar for the area\u2019s size and the bytes allocated per release. The native baseline reports no areas.', particles: true },
     { id: 'causes', title: 'Why deadlines were missed', caption: 'Jobs missed or late per run (mean over the attributed repetitions), split by each job\u2019s largest cause (the primary cause of ./jmclbench explain): gc, safepoint, jit, os, preemption, compute, queued, overlap, unknown. Runs without attribution evidence are left out.', particles: true },
     { id: 'latency-index', title: 'Task latency vs event index', caption: 'Every job of the first repetition (down-sampled): predict (odometry, every 50 ms) as dots, update (laser) as triangles. The thesis\u2019s XY points graph. Shaded bands: the GC (red) and safepoint (violet) pauses of that repetition, placed on the event index through the jobs\u2019 release times (shown when one runtime is selected or the runtimes\u2019 pauses are those of the first listed).', particles: true },
     { id: 'deviation-time', title: 'Deviation over time, repeated runs', caption: 'Euclidean xy deviation (m) over the run, one line per repetition (up to five) per runtime. The thesis\u2019s XY lines graph.', particles: true },
@@ -570,6 +616,42 @@
       }) });
   }
 
+  function renderMemory(cells) {
+    var withAreas = configOrder(cells).filter(function (c) { return c.memoryAreas && c.memoryAreas.length; });
+    var names = [];
+    withAreas.forEach(function (c) { c.memoryAreas.forEach(function (a) { if (names.indexOf(a.name) < 0) { names.push(a.name); } }); });
+    var rank = function (n) { var i = AREA_ORDER.indexOf(n); return i < 0 ? AREA_ORDER.length : i; };
+    names = names.map(function (n, i) { return [n, i]; })
+      .sort(function (a, b) { return rank(a[0]) - rank(b[0]) || a[1] - b[1]; }).map(function (x) { return x[0]; });
+    var privateIndex = 0;
+    var datasets = names.map(function (n) {
+      var color = AREA_COLORS[n] || PRIVATE_COLORS[privateIndex++ % PRIVATE_COLORS.length];
+      var areas = withAreas.map(function (c) { return c.memoryAreas.filter(function (a) { return a.name === n; })[0] || null; });
+      return { label: n, backgroundColor: color, borderColor: color, areas: areas,
+        data: areas.map(function (a) { return a && a.peakBytes > 0 ? a.peakBytes : null; }) };
+    });
+    draw('memory', {
+      type: 'bar', data: { labels: withAreas.map(function (c) { return c.config; }), datasets: datasets },
+      options: {
+        responsive: true, maintainAspectRatio: false,
+        plugins: { title: { display: true, text: 'Peak bytes per memory area (' + where(true) + ')' },
+          legend: { position: 'bottom', labels: { boxWidth: 12 } }, jmclbenchZeroMarks: true,
+          tooltip: { callbacks: { label: function (ctx) {
+            var a = ctx.dataset.areas[ctx.dataIndex];
+            if (!a) { return ctx.dataset.label; }
+            return a.name + ': peak ' + bytes(a.peakBytes) + (a.size !== null ? ' of ' + bytes(a.size) : '') +
+              (a.bytesPerRelease !== null ? ', ' + bytes(a.bytesPerRelease) + ' per release' : '');
+          } } } },
+        scales: { x: { title: axisTitle('runtime / engine memory style') },
+          y: { type: 'logarithmic', min: 1, title: axisTitle('peak bytes (log)'),
+            ticks: { callback: function (v) {
+              var exp = Math.log10(v);
+              return Math.abs(exp - Math.round(exp)) < 1e-9 ? bytes(v) : null;
+            } } } }
+      }
+    });
+  }
+
   var renderCount = 0;
   function render() {
     var cells = settingCells();
@@ -579,6 +661,7 @@
     renderFailures(cells);
     renderEnvironment(cells);
     renderCharts(cells, all);
+    renderMemory(cells);
     renderCount++;
     document.body.setAttribute('data-render-count', String(renderCount));
   }

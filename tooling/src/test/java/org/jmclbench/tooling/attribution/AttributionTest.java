@@ -140,7 +140,7 @@ class AttributionTest {
     void jitIsListedAfterCausesDuringWhichTheJobStoodStill() {
         List<JobRecord> jobs = List.of(job("predict", 0, 0, 0, 60, 50, "late", 20));
         List<VmEvent> ev = List.of(ev(VmEventKind.GC_PAUSE, 10, 30, null, "Serial"),
-                ev(VmEventKind.COMPILATION, 0, 60, "C2 CompilerThread0", "org.jmclbench.workload.mcl.X.y level 4"));
+                ev(VmEventKind.COMPILATION, 0, 60, "C2 CompilerThread0", "org.jmclbench.core.mcl.X.y level 4"));
         JobAttribution a = Attribution.attribute(jobs, ev, DEFAULTS).get(0);
         assertEquals(List.of("gc", "preemption", "jit"), a.causes().stream().map(Cause::kind).toList());
     }

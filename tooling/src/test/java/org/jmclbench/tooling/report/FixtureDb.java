@@ -28,24 +28,50 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  */
 public final class FixtureDb {
 
-    /** The store's schema, as written in docs/FORMATS.md section 5. */
+    /** The store's schema, as written in docs/FORMATS.md section 5 (version 2: engines and memory areas). */
     public static final String SCHEMA = """
             CREATE TABLE machines (machine_id TEXT PRIMARY KEY, hostname TEXT, kernel TEXT, cpu_model TEXT, processors INTEGER, doctor_json TEXT);
             CREATE TABLE matrices (matrix_id TEXT PRIMARY KEY, machine_id TEXT, command TEXT, order_seed INTEGER, started_at TEXT, spec_json TEXT);
             CREATE TABLE runs (run_key TEXT PRIMARY KEY, matrix_id TEXT, machine_id TEXT, runtime TEXT, runtime_version TEXT, profile TEXT,
               policy TEXT, particles INTEGER, dataset TEXT, load TEXT, repetition INTEGER, status TEXT, exit_code INTEGER, failure TEXT,
-              stderr_tail TEXT, started_at TEXT, ended_at TEXT, wall_s REAL, run_dir TEXT, summary_json TEXT);
+              stderr_tail TEXT, started_at TEXT, ended_at TEXT, wall_s REAL, run_dir TEXT, summary_json TEXT, seed INTEGER,
+              command_json TEXT, engine TEXT, memory TEXT);
+            CREATE TABLE memory_areas (run_key TEXT, name TEXT, size INTEGER, peak_bytes INTEGER, bytes_per_release REAL,
+              PRIMARY KEY (run_key, name));
             CREATE TABLE metrics (run_key TEXT, task TEXT, metric TEXT, stat TEXT, value REAL, PRIMARY KEY (run_key, task, metric, stat));
             CREATE TABLE histograms (run_key TEXT, task TEXT, metric TEXT, hdr TEXT, PRIMARY KEY (run_key, task, metric));
             CREATE TABLE series (run_key TEXT, name TEXT, json TEXT, PRIMARY KEY (run_key, name));
             """;
 
-    /** A runtime configuration of the fixture; {@code speed} multiplies the job cost (native = 1). */
-    public record Config(String runtime, String profile, String version, double speed, String status) {
+    /** The schema of a store made before engines (version 1): no engine, memory style or areas. */
+    static final String LEGACY_SCHEMA = SCHEMA
+            .replace(", seed INTEGER,\n              command_json TEXT, engine TEXT, memory TEXT);", ");")
+            .replaceAll("(?s)CREATE TABLE memory_areas.*?;\n", "");
+
+    /**
+     * A runtime configuration of the fixture; {@code speed} multiplies the job cost (native = 1).
+     *
+     * @param engine javase, scj or native (the native runtime's)
+     * @param memory preallocated, allocating or scoped
+     */
+    public record Config(String runtime, String profile, String version, double speed, String status, String engine,
+                         String memory) {
+        public Config(String runtime, String profile, String version, double speed, String status) {
+            this(runtime, profile, version, speed, status, "native".equals(runtime) ? "native" : "javase", "preallocated");
+        }
+
         public String id() {
             return profile.isEmpty() ? runtime : runtime + "/" + profile;
         }
+
+        /** {@link #id()} with the engine and memory style, so that run keys differ. */
+        String key() {
+            return id() + "-" + engine + "-" + memory;
+        }
     }
+
+    /** Write a store of schema version 1 (before engines), to check that the report still reads one. */
+    public boolean legacySchema;
 
     private static final ObjectMapper JSON = new ObjectMapper();
 
@@ -72,15 +98,21 @@ public final class FixtureDb {
         try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db.toAbsolutePath())) {
             c.setAutoCommit(false);
             try (Statement st = c.createStatement()) {
-                for (String sql : SCHEMA.split(";")) {
+                for (String sql : (legacySchema ? LEGACY_SCHEMA : SCHEMA).split(";")) {
                     if (!sql.isBlank()) {
                         st.execute(sql);
                     }
                 }
-                st.execute("PRAGMA user_version = 1");
+                st.execute("PRAGMA user_version = " + (legacySchema ? 1 : 2));
             }
             insertMachine(c);
-            try (PreparedStatement run = c.prepareStatement("INSERT INTO runs VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
+            try (PreparedStatement run = c.prepareStatement("INSERT INTO runs (run_key, matrix_id, machine_id, runtime,"
+                    + " runtime_version, profile, policy, particles, dataset, load, repetition, status, exit_code, failure,"
+                    + " stderr_tail, started_at, ended_at, wall_s, run_dir, summary_json"
+                    + (legacySchema ? ")" : ", engine, memory)") + " VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?"
+                    + (legacySchema ? ")" : ",?,?)"));
+                 PreparedStatement area = c.prepareStatement(legacySchema ? "SELECT 1"
+                         : "INSERT INTO memory_areas VALUES (?,?,?,?,?)");
                  PreparedStatement metric = c.prepareStatement("INSERT INTO metrics VALUES (?,?,?,?,?)");
                  PreparedStatement hist = c.prepareStatement("INSERT INTO histograms VALUES (?,?,?,?)");
                  PreparedStatement series = c.prepareStatement("INSERT INTO series VALUES (?,?,?)")) {
@@ -90,6 +122,9 @@ public final class FixtureDb {
                             for (Config cfg : configs) {
                                 for (int rep = 1; rep <= repetitions; rep++) {
                                     insertRun(run, metric, hist, series, rng, dataset, policy, p, cfg, rep);
+                                    if (!legacySchema && "ok".equals(cfg.status())) {
+                                        insertAreas(area, runKey(dataset, policy, p, cfg, rep), p, cfg);
+                                    }
                                     runs++;
                                 }
                             }
@@ -97,6 +132,9 @@ public final class FixtureDb {
                     }
                 }
                 run.executeBatch();
+                if (!legacySchema) {
+                    area.executeBatch();
+                }
                 metric.executeBatch();
                 hist.executeBatch();
                 series.executeBatch();
@@ -126,11 +164,47 @@ public final class FixtureDb {
         }
     }
 
+    private static String runKey(String dataset, String policy, int particles, Config cfg, int rep) {
+        return String.format(Locale.ROOT, "%s-%s-%s-%d-%s-%d", dataset, policy, cfg.key().replaceAll("[^A-Za-z0-9]", "_"),
+                particles, Integer.toHexString(cfg.key().hashCode()), rep);
+    }
+
+    /**
+     * The memory areas the engines report: the Java SE engine's heap (allocating: more), the SCJ
+     * engine's immortal, mission and the two handlers' private memories (scoped: what a release
+     * allocates there), none for native. Made-up sizes that grow with the particles.
+     */
+    static void insertAreas(PreparedStatement ps, String key, int particles, Config cfg) throws SQLException {
+        List<Object[]> areas = new ArrayList<>();
+        boolean scoped = "scoped".equals(cfg.memory());
+        switch (cfg.engine()) {
+            case "javase" -> areas.add(new Object[] {"heap", 512L << 20, 2_000_000L + particles * ("allocating".equals(cfg.memory()) ? 9000L : 1000L), null});
+            case "scj" -> {
+                areas.add(new Object[] {"immortal", 1L << 20, 120_000L, null});
+                areas.add(new Object[] {"mission", 4L << 20, 5_000L + particles * 100L, null});
+                areas.add(new Object[] {"predict", 256L << 10, scoped ? particles * 40L : 0L, scoped ? particles * 40.0 : 0.0});
+                areas.add(new Object[] {"update", 256L << 10, scoped ? particles * 80L : 0L, scoped ? particles * 80.0 : 0.0});
+            }
+            default -> { }
+        }
+        for (Object[] a : areas) {
+            ps.setString(1, key);
+            ps.setString(2, (String) a[0]);
+            ps.setLong(3, (Long) a[1]);
+            ps.setLong(4, (Long) a[2]);
+            ps.setObject(5, a[3]);
+            ps.addBatch();
+        }
+    }
+
     private void insertRun(PreparedStatement run, PreparedStatement metric, PreparedStatement hist, PreparedStatement series,
                            SplittableRandom rng, String dataset, String policy, int particles, Config cfg, int rep)
             throws Exception {
-        String key = String.format(Locale.ROOT, "%s-%s-%s-%d-%s-%d", dataset, policy, cfg.id().replaceAll("[^A-Za-z0-9]", "_"),
-                particles, Integer.toHexString(cfg.id().hashCode()), rep);
+        String key = runKey(dataset, policy, particles, cfg, rep);
+        if (!legacySchema) {
+            run.setString(21, cfg.engine());
+            run.setString(22, cfg.memory());
+        }
         run.setString(1, key);
         run.setString(2, "x-1");
         run.setString(3, "m-1");
@@ -177,9 +251,12 @@ public final class FixtureDb {
         s.put("schema", "jmclbench-run/1").put("status", "complete");
         ObjectNode params = s.putObject("parameters");
         params.put("runtimeName", cfg.runtime()).put("particles", particles).put("number", rep).put("policy", policy)
-                .put("ideal", false).put("memory", "preallocated").put("estimate", "mean").put("resample", "systematic")
+                .put("ideal", false).put("engine", cfg.engine()).put("memory", cfg.memory()).put("estimate", "mean").put("resample", "systematic")
                 .put("init", "known").put("seed", 1).put("covariance", false).put("timeScale", 1.0).put("warmupS", 0.0).put("spinUs", 0);
         params.putObject("dataset").put("path", "data/" + dataset).put("scenario", "match");
+        if (legacySchema) {
+            params.remove("engine"); // a workload before engines did not write it
+        }
         ObjectNode env = s.putObject("environment");
         ObjectNode rt = env.putObject("runtime");
         boolean nat = "native".equals(cfg.runtime());
@@ -196,7 +273,11 @@ public final class FixtureDb {
         env.putObject("cpu").put("model", "Intel(R) Xeon(R) CPU @ 2.20GHz").put("processors", 2);
         env.putObject("scheduling").put("policy", "SCHED_OTHER").put("priority", 0);
         env.put("clocksource", "kvm-clock").put("hostname", "bench-host").put("startedAt", "2026-11-22T02:10:00Z");
-        s.putObject("engine").put("dispatcherPriority", 10).put("handlerPriority", 9).put("prioritiesApplied", nat)
+        ObjectNode engineNode = s.putObject("engine");
+        if (!legacySchema) {
+            engineNode.put("kind", cfg.engine());
+        }
+        engineNode.put("dispatcherPriority", 10).put("handlerPriority", 9).put("prioritiesApplied", nat)
                 .put("cpuTime", "used (allocation-free)").putNull("gcLog").put("warmupEvents", 0).put("allocatedBytes", 0);
         s.put("durationS", durationS);
         int missCount = missPredict + missUpdate;

@@ -54,6 +54,8 @@ class ReportBrowserTest {
     static WebDriver driver;
     static ChromeDriverService service;
     static Path profile;
+    static String mixedPage;
+    static String enginesPage;
     /** Held so that the level sticks: Selenium's warning that it has no CDP binding for this Chromium is noise here. */
     static final java.util.logging.Logger SELENIUM_LOG = java.util.logging.Logger.getLogger("org.openqa.selenium");
 
@@ -68,6 +70,11 @@ class ReportBrowserTest {
         Path db = ReportFixtures.write(ReportFixtures.mixed(), ARTIFACTS, "results.db");
         Path out = ARTIFACTS.resolve("report");
         assertEquals(0, JmclbenchCli.execute("report", "--db", db.toString(), "--out", out.toString()));
+        Path enginesDb = ReportFixtures.write(ReportFixtures.engines(), ARTIFACTS, "engines.db");
+        Path enginesOut = ARTIFACTS.resolve("engines-report");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", enginesDb.toString(), "--out", enginesOut.toString(), "--no-export"));
+        mixedPage = out.resolve("index.html").toAbsolutePath().toUri().toString();
+        enginesPage = enginesOut.resolve("index.html").toAbsolutePath().toUri().toString();
 
         profile = Files.createTempDirectory("jmclbench-chromium-");
         ChromeOptions options = new ChromeOptions();
@@ -82,7 +89,7 @@ class ReportBrowserTest {
                 .withLogFile(ARTIFACTS.resolve("chromedriver.log").toFile()).build();
         driver = new ChromeDriver(service, options);
         driver.manage().timeouts().pageLoadTimeout(Duration.ofSeconds(120)).scriptTimeout(Duration.ofSeconds(60));
-        driver.get(out.resolve("index.html").toAbsolutePath().toUri().toString());
+        driver.get(mixedPage);
         waitForRender(0);
     }
 
@@ -133,6 +140,7 @@ class ReportBrowserTest {
         m.put("trajectory", configs + 2);           // the real trajectory, one estimate per runtime, the beacons
         m.put("spectrum", configs);
         m.put("jitter-cdf", configs);
+        m.put("memory", 1);                         // the Java SE engine's one area, the heap (native reports none)
         return m;
     }
 
@@ -172,7 +180,7 @@ class ReportBrowserTest {
         Number requests = (Number) js().executeScript("return performance.getEntriesByType('resource').length");
         assertEquals(0, requests.intValue(), "the page fetched something");
         Number chartJs = (Number) js().executeScript("return Object.keys(window.jmclbenchCharts).length");
-        assertEquals(9, chartJs.intValue());
+        assertEquals(10, chartJs.intValue());
         // Four runtimes completed runs (the unsupported and the crashed one draw nothing), three repetitions each.
         assertEquals(expected(4, 3), seriesPerChart());
         Number datasets = (Number) js().executeScript("return window.jmclbenchCharts['spectrum'].data.datasets.length");
@@ -209,6 +217,54 @@ class ReportBrowserTest {
         assertTrue(stderr.contains("<img src=x onerror=alert(2)>"), stderr);
         Number scripts = (Number) js().executeScript("return document.scripts.length");
         assertEquals(3, scripts.intValue());
+    }
+
+    /** The memory chart's bars: per configuration (category), the peak bytes of one area (dataset); null where none. */
+    @SuppressWarnings("unchecked")
+    static Object memoryBar(String config, String area) {
+        return js().executeScript("var c = window.jmclbenchCharts['memory'].data;"
+                + "var i = c.labels.indexOf(arguments[0]);"
+                + "var k = arguments[1], d = c.datasets.filter(function (x) { return x.label === k; })[0];"
+                + "return i < 0 || !d ? 'missing' : d.data[i];", config, area);
+    }
+
+    @Test
+    void enginesAreRowsAndFilteredAndTheMemoryChartShowsEveryArea() {
+        try {
+            driver.get(enginesPage);
+            waitForRender(0);
+            assertEquals(List.of(ReportFixtures.NATIVE, ReportFixtures.JAVASE_ALLOCATING, ReportFixtures.JAVASE,
+                    ReportFixtures.SCJ, ReportFixtures.SCJ_SCOPED), tableConfigs(), "one row per runtime, engine and memory style");
+            assertEquals("scj", cell(ReportFixtures.SCJ_SCOPED, "engine"));
+            assertEquals("scoped", cell(ReportFixtures.SCJ_SCOPED, "memory"));
+            // heap, immortal, mission and the two handlers' private memories
+            assertEquals(5, seriesPerChart().get("memory"));
+            @SuppressWarnings("unchecked")
+            List<String> categories = (List<String>) js().executeScript("return window.jmclbenchCharts['memory'].data.labels");
+            assertEquals(List.of(ReportFixtures.JAVASE_ALLOCATING, ReportFixtures.JAVASE, ReportFixtures.SCJ,
+                    ReportFixtures.SCJ_SCOPED), categories, "native reports no areas");
+            assertEquals(400L * 80, ((Number) memoryBar(ReportFixtures.SCJ_SCOPED, "update")).longValue());
+            assertEquals(null, memoryBar(ReportFixtures.SCJ, "update"), "a peak of 0 has no bar on the log axis");
+            assertEquals(null, memoryBar(ReportFixtures.JAVASE, "mission"), "the Java SE engine has no mission memory");
+            assertTrue(((Number) memoryBar(ReportFixtures.JAVASE_ALLOCATING, "heap")).longValue()
+                    > ((Number) memoryBar(ReportFixtures.JAVASE, "heap")).longValue(), "allocating needs more heap");
+
+            int before = renderCount();
+            driver.findElement(By.cssSelector("#sel-engines input[value='scj']")).click();
+            waitForRender(before);
+            assertEquals(List.of(ReportFixtures.NATIVE, ReportFixtures.JAVASE_ALLOCATING, ReportFixtures.JAVASE), tableConfigs(),
+                    "the engine filter hides the SCJ rows");
+            assertEquals(1, seriesPerChart().get("memory"), "the heap alone");
+            assertEquals(3, seriesPerChart().get("spectrum"));
+            byte[] png = ((TakesScreenshot) driver).getScreenshotAs(OutputType.BYTES);
+            Files.write(ARTIFACTS.resolve("engines-report.png"), png);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        } finally {
+            // the other tests share the first page
+            driver.get(mixedPage);
+            waitForRender(0);
+        }
     }
 
     @Test

@@ -31,6 +31,32 @@ final class ReportFixtures {
         return f;
     }
 
+    /** The labels of {@link #engines()}: the engine and memory style are part of each JVM row's name. */
+    static final String JAVASE = "temurin-25/g1 / javase preallocated";
+    static final String JAVASE_ALLOCATING = "temurin-25/g1 / javase allocating";
+    static final String SCJ = "temurin-25/g1 / scj preallocated";
+    static final String SCJ_SCOPED = "temurin-25/g1 / scj scoped";
+    static final String NATIVE = "native / preallocated";
+
+    /**
+     * The memory-model experiment: one JVM with the Java SE engine (preallocated, allocating) and
+     * the SCJ engine (preallocated, scoped), and native; skip; 100 and 400 particles; 2 repetitions.
+     */
+    static FixtureDb engines() {
+        FixtureDb f = new FixtureDb();
+        f.configs = new ArrayList<>(List.of(
+                new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.15, "ok", "javase", "preallocated"),
+                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.3, "ok", "javase", "allocating"),
+                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.2, "ok", "scj", "preallocated"),
+                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.25, "ok", "scj", "scoped")));
+        f.policies = List.of("skip");
+        f.particles = List.of(100, 400);
+        f.repetitions = 2;
+        f.durationS = 6;
+        return f;
+    }
+
     static Path write(FixtureDb f, Path dir, String name) throws Exception {
         Path db = dir.resolve(name);
         f.write(db);

@@ -1,5 +1,6 @@
 package org.jmclbench.tooling.runner;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -12,18 +13,60 @@ import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.RuntimeInfo;
 import org.junit.jupiter.api.Test;
 
-/** The native baseline is compared under the same scheduling as the JVMs unless a profile asks for FIFO. */
+/**
+ * The native baseline is compared under the same scheduling as the JVMs unless a profile asks for FIFO;
+ * the engine and memory style reach the workload only when they are not the defaults.
+ */
 class WorkloadCommandTest {
     private static final Path BIN = Path.of("/opt/jmclbench-native");
     private static final RuntimeInfo NATIVE = new RuntimeInfo("native", RuntimeInfo.Kind.NATIVE, "jmclbench", "1",
             0, BIN, BIN);
 
+    private static final Path JAVA = Path.of("/opt/jdk/bin/java");
+    private static final RuntimeInfo JVM = new RuntimeInfo("temurin-25", RuntimeInfo.Kind.JVM, "Eclipse Adoptium", "25+36",
+            25, JAVA, JAVA);
+
     private static List<String> command(String profile) {
+        return command(NATIVE, profile, Engines.NATIVE, Engines.PREALLOCATED);
+    }
+
+    private static List<String> command(RuntimeInfo rt, String profile, String engine, String memory) {
         Profile p = Profile.parse(profile, "--profiles");
-        PlannedRun run = new PlannedRun(NATIVE, p, "skip", 400, new Dataset("match-quick", Path.of("/d"), 10, "x"),
+        PlannedRun run = new PlannedRun(rt, p, engine, memory, "skip", 400, new Dataset("match-quick", Path.of("/d"), 10, "x"),
                 1, 1, LoadScenario.NONE, "key");
-        return WorkloadCommand.build(run, LaunchPlan.of(NATIVE, p, "1"), List.of(), Path.of("/h"), Path.of("/w.jar"),
+        return WorkloadCommand.build(run, LaunchPlan.of(rt, p, "1"), List.of(), Path.of("/h"), Path.of("/w.jar"),
                 Path.of("/out"), 1.0, List.of());
+    }
+
+    /** The value after {@code option} in {@code cmd}, or null. */
+    private static String valueOf(List<String> cmd, String option) {
+        int i = cmd.indexOf(option);
+        return i < 0 ? null : cmd.get(i + 1);
+    }
+
+    @Test
+    void javaSeEnginePreallocatedIsTheWorkloadsDefaultCommand() {
+        List<String> cmd = command(JVM, "default", Engines.JAVASE, Engines.PREALLOCATED);
+        assertFalse(cmd.contains("--engine"), cmd.toString());
+        assertFalse(cmd.contains("--memory"), cmd.toString());
+        assertEquals("temurin-25", valueOf(cmd, "-j"));
+    }
+
+    @Test
+    void scjEngineAndMemoryStyleArePassedAndNameTheRun() {
+        List<String> cmd = command(JVM, "default", Engines.SCJ, "scoped");
+        assertEquals("scj", valueOf(cmd, "--engine"));
+        assertEquals("scoped", valueOf(cmd, "--memory"));
+        assertEquals("temurin-25-scj", valueOf(cmd, "-j"), "the -scj suffix of the workload's own default name");
+        assertTrue(cmd.indexOf("--engine") > cmd.indexOf(WorkloadCommand.MAIN_CLASS), "a workload option, not a JVM flag");
+    }
+
+    @Test
+    void nativeGetsItsMemoryStyleButNoEngine() {
+        List<String> cmd = command(NATIVE, "default", Engines.NATIVE, "allocating");
+        assertFalse(cmd.contains("--engine"), cmd.toString());
+        assertEquals("allocating", valueOf(cmd, "--memory"));
+        assertEquals("native", valueOf(cmd, "-j"));
     }
 
     @Test

@@ -61,6 +61,14 @@ class StoreTest {
                 rs.next();
                 assertEquals(5, rs.getInt(1), "metrics of every ok run came along");
             }
+            try (ResultSet rs = s.executeQuery("SELECT count(*), count(DISTINCT run_key), min(name), max(engine) FROM memory_areas"
+                    + " JOIN runs USING (run_key)")) {
+                rs.next();
+                assertEquals(5, rs.getInt(1), "the memory area of every ok run came along");
+                assertEquals(5, rs.getInt(2));
+                assertEquals("heap", rs.getString(3));
+                assertEquals("javase", rs.getString(4));
+            }
             try (ResultSet rs = s.executeQuery("SELECT run_dir FROM runs WHERE status = 'ok'")) {
                 while (rs.next()) {
                     assertTrue(Files.isRegularFile(dbC.getParent().resolve(rs.getString(1)).resolve("summary.json")), rs.getString(1));

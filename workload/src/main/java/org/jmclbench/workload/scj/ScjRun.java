@@ -109,7 +109,28 @@ public final class ScjRun {
             handlers.put(h.name(), m);
         }
         facts.put("handlers", handlers);
+        facts.put("outOfOrderJobs", outOfOrder(records));
         return new Result(records, areas(report), facts);
+    }
+
+    /**
+     * Jobs that started before a job of an earlier event: the two handlers contend for the robot
+     * on its monitor only (SCJ Level 1 has no wait/notify), so under overload a later event of one
+     * task can overtake an earlier one of the other; 0 when the machine kept up.
+     */
+    static int outOfOrder(JobRecords r) {
+        int count = 0;
+        long latest = Long.MIN_VALUE;
+        for (int k = 0; k < r.size(); k++) {
+            if (r.startNs[k] < 0) {
+                continue;
+            }
+            if (r.startNs[k] < latest) {
+                count++;
+            }
+            latest = Math.max(latest, r.startNs[k]);
+        }
+        return count;
     }
 
     /** The mission's configuration for the options, with a filter (the run's, or a smaller one) and a time scale. */

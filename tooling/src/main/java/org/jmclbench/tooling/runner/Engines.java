@@ -1,0 +1,49 @@
+package org.jmclbench.tooling.runner;
+
+import java.util.List;
+
+import org.jmclbench.tooling.runtime.RuntimeInfo;
+
+/**
+ * The workload's engines and the memory styles each one has (docs/FORMATS.md section 2): on a
+ * JVM, {@code javase} (the Java SE release engine: heap, GC) or {@code scj} (the SCJ mission:
+ * immortal, mission and private memory); the native baseline is its own engine, {@code native}.
+ */
+public final class Engines {
+
+    public static final String JAVASE = "javase";
+    public static final String SCJ = "scj";
+    public static final String NATIVE = "native";
+    /** The engines a JVM runtime can run, for {@code --engines}. */
+    public static final List<String> JVM_ENGINES = List.of(JAVASE, SCJ);
+
+    public static final String PREALLOCATED = "preallocated";
+    /** Every memory style some engine has, for {@code --memory}. */
+    public static final List<String> MEMORY_STYLES = List.of(PREALLOCATED, "allocating", "scoped");
+
+    private Engines() {
+    }
+
+    /**
+     * The engine a run of {@code runtime} gets when {@code asked} is the matrix's engine: a program
+     * that is not a JVM is its own engine, named by its kind ({@code native}).
+     */
+    public static String of(RuntimeInfo runtime, String asked) {
+        return runtime.isJvm() ? asked : runtime.kind().name().toLowerCase(java.util.Locale.ROOT);
+    }
+
+    /** The memory styles of an engine; {@code preallocated} (the default) is every engine's. */
+    public static List<String> memoryStyles(String engine) {
+        return switch (engine) {
+            case SCJ, "hvm" -> List.of(PREALLOCATED, "scoped"); // the SCJ mission, on the JVM or on an SCJ VM
+            default -> List.of(PREALLOCATED, "allocating");
+        };
+    }
+
+    /** Why a run of this engine and memory style cannot be made, or null when it can. */
+    public static String unsupported(String engine, String memory) {
+        List<String> styles = memoryStyles(engine);
+        return styles.contains(memory) ? null
+                : "engine " + engine + " has no memory style '" + memory + "' (it has " + String.join(", ", styles) + ")";
+    }
+}

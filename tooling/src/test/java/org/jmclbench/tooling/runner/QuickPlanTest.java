@@ -1,0 +1,67 @@
+package org.jmclbench.tooling.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+
+import org.jmclbench.tooling.Fixtures;
+import org.jmclbench.tooling.runtime.RuntimeDiscovery;
+import org.jmclbench.tooling.store.MachineInfo;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** quick's grid: both engines on every JVM, native once per setting, sped up only when it would not fit. */
+class QuickPlanTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void everyJvmRunsBothEnginesAndNativeOncePerSetting() throws Exception {
+        Fixtures.home(dir);
+        Files.createDirectories(dir.resolve("data/" + QuickCommand.DATASET));
+        for (Path f : Files.list(dir.resolve("data/tiny")).toList()) {
+            Files.copy(f, dir.resolve("data/" + QuickCommand.DATASET).resolve(f.getFileName()));
+        }
+        Path a = Fixtures.fakeJava(dir, "a", "ok", 0, null, 17);
+        Path b = Fixtures.fakeJava(dir, "b", "ok", 0, null, 21);
+        Path nat = Fixtures.fakeJava(dir, "nat", "ok", 0, null, 21);
+        MatrixSpec spec = QuickCommand.spec(dir.resolve("results.db").toString());
+        MatrixOptions.apply(spec, "native", nat.toString(), "--native");
+        RuntimeDiscovery d = RuntimeDiscovery.discover(List.of(), null);
+        d.addJava(a.toString());
+        d.addJava(b.toString());
+        ResolvedMatrix m = MatrixPlanner.resolve(spec, () -> d, dir, MachineInfo.current());
+        Map<String, Long> perRuntimeEngine = m.plan().stream()
+                .collect(Collectors.groupingBy(r -> r.runtime().name() + " " + r.engine(), Collectors.counting()));
+        assertEquals(Map.of("fake-17 javase", 4L, "fake-17 scj", 4L, "fake-21 javase", 4L, "fake-21 scj", 4L, "native native", 4L),
+                perRuntimeEngine, "2 policies x 2 particle counts each");
+    }
+
+    @Test
+    void moreJvmsReplayFasterToFitTheBudget() {
+        ByteArrayOutputStream text = new ByteArrayOutputStream();
+        PrintStream out = new PrintStream(text, true, StandardCharsets.UTF_8);
+        assertEquals(1.0, QuickCommand.fitScale(1, true, 10.0, out), "one JVM and native replay in real time");
+        assertTrue(text.toString(StandardCharsets.UTF_8).startsWith("quick: 12 runs (1 JVM x 2 engines x 4 settings + native) of 10 s: about 152 s"),
+                text.toString(StandardCharsets.UTF_8));
+        double two = QuickCommand.fitScale(2, true, 10.0, out);
+        assertEquals(0.9, two, 1e-9, "a fresh machine, 2 JVMs and native: 20 runs, 10% faster than real time");
+        assertTrue(text.toString(StandardCharsets.UTF_8).contains("quick: 20 runs of 10 s would take about 264 s; replaying at --time-scale 0.90"),
+                text.toString(StandardCharsets.UTF_8));
+        double four = QuickCommand.fitScale(4, true, 10.0, out);
+        assertTrue(four < 1.0 && four >= 0.25, "four JVMs are sped up: " + four);
+        int runs = 4 * 2 * 4 + 4;
+        assertTrue(runs * 10.0 * four + 4 * 2 * 4 * QuickCommand.JVM_OVERHEAD_S + 4 * QuickCommand.NATIVE_OVERHEAD_S
+                <= QuickCommand.BUDGET_S, "and then fit the budget");
+        assertEquals(0.25, QuickCommand.fitScale(40, true, 10.0, out), 1e-9, "never faster than 4x");
+    }
+}

@@ -22,6 +22,15 @@ public final class HvmMain {
     static final long VERSION = 1;
     /** Words before the area sizes: magic, version, 9 filter and policy fields, time scale. */
     static final int HEADER = 12;
+    /**
+     * What icecap's own Level 1 infrastructure places in immortal memory besides the mission's
+     * data (its scheduler's queues, the processes and their stacks), in bytes.
+     */
+    static final int IMMORTAL_INFRASTRUCTURE = 1024 * 1024;
+    /** The stacks of the mission's three handlers (int[STACK_WORDS] each), in bytes. */
+    static final long HANDLER_STACKS = 3 * (4 * MissionSizes.STACK_WORDS + 64);
+    /** Room for the bookkeeping of nested backing stores, in bytes. */
+    static final int NESTING_SLACK = 256 * 1024;
 
     private HvmMain() {
     }
@@ -50,15 +59,25 @@ public final class HvmMain {
             }
         }
         HvmInput input = new HvmInput(HEADER + MissionSizes.AREA_COUNT);
+        if (config.areaSize(MissionSizes.MISSION) == 0) {
+            // icecap allocates each handler's stack (ConfigurationParameters) in mission memory
+            long computed = new MissionSizes(config, input.odometryCount(), input.laserCount())
+                    .size(MissionSizes.MISSION);
+            config.areaSize(MissionSizes.MISSION, computed + HANDLER_STACKS);
+        }
         HvmOutput output = new HvmOutput();
         MclSafelet safelet = new MclSafelet(config, input, output);
 
         // icecap sizes its backing store and immortal memory from these constants, not from
         // the Safelet; the handlers' private memories are their ScopeParameters' sizes.
         MissionSizes sizes = safelet.sizes();
-        Const.IMMORTAL_MEM = (int) sizes.size(MissionSizes.IMMORTAL);
-        Const.OVERALL_BACKING_STORE = (int) (sizes.size(MissionSizes.IMMORTAL) + sizes.backingStore()
-                + Const.IDLE_BACKING_STORE);
+        Const.IMMORTAL_MEM = (int) (sizes.size(MissionSizes.IMMORTAL) + IMMORTAL_INFRASTRUCTURE);
+        // icecap nests the areas: the mission memory inside the sequencer's private memory
+        // (each of the mission's size), the handlers' private memories and their backing
+        // stores inside the mission memory's reservation. The backing store is generous so
+        // that the nesting fits; each area is still limited to its own size.
+        Const.OVERALL_BACKING_STORE = (int) (Const.IMMORTAL_MEM + 2 * (sizes.size(MissionSizes.MISSION)
+                + sizes.backingStore()) + NESTING_SLACK + Const.IDLE_BACKING_STORE);
         Const.OUTERMOST_SEQ_BACKING_STORE = Const.OVERALL_BACKING_STORE - Const.IMMORTAL_MEM
                 - Const.IDLE_BACKING_STORE;
         Const.MISSION_MEM = (int) sizes.size(MissionSizes.MISSION);

@@ -1,7 +1,12 @@
 package org.jmclbench.hvm;
 
+import javax.realtime.MemoryArea;
+
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.scj.MissionOutput;
+import org.jmclbench.scj.MissionSizes;
+
+import vm.Memory;
 
 /** The mission's output on the HVM: the job records, written to the result file by the natives. */
 final class HvmOutput implements MissionOutput {
@@ -35,6 +40,14 @@ final class HvmOutput implements MissionOutput {
         HvmData.putReal(r.initialY);
         HvmData.putReal(r.initialTheta);
         HvmData.put(r.durationNs);
+        // Each area's use, in the order of MissionSizes.AREA_NAMES. The mission ends here, in
+        // its cleanup (mission memory current), so immortal and mission memory are at their
+        // peak; a private memory is emptied after each release, and icecap keeps no peak of it.
+        HvmData.put(MemoryArea.getMemoryArea(r).memoryConsumed());
+        HvmData.put(Memory.getCurrentMemoryArea().consumedMemory());
+        for (int a = MissionSizes.PREDICT; a < MissionSizes.AREA_COUNT; a++) {
+            HvmData.put(-1);
+        }
         written = true;
     }
 

@@ -57,6 +57,9 @@ for name in "${names[@]}"; do
         failed=$((failed + 1))
     fi
     printf '%-45s %-34s %4ss %s\n' "$name" "$result" "$(( $(date +%s) - start ))" "$note"
+    if [ $rc != 0 ] && [ -z "$note" ] && [ -f "$work/$name/out.log" ]; then
+        tail -3 "$work/$name/out.log" | sed 's/^/    | /'
+    fi
 done
 echo "upstream SCJ tests: ${#names[@]} run, $passed passed, $known known failure(s), $failed unexpected failure(s)"
 [ $failed = 0 ]

@@ -12,7 +12,7 @@ import picocli.CommandLine.Option;
 
 /** A first answer in minutes: every JVM found (its default GC) and native, two policies, three sizes. */
 @Command(name = "quick", mixinStandardHelpOptions = true,
-        description = {"Runs every JVM found (with its default GC) and the native baseline x {skip, terminate} x",
+        description = {"Runs every JVM found (with its default GC), the native baseline and, with HVM_SRC set, the icecap HVM x {skip, terminate} x",
                 "{100, 400, 1600} particles x 1 repetition on dataset " + QuickCommand.DATASET + " (10 s) into results/results.db, then",
                 "builds the report. It is a matrix: rerunning it resumes, and `matrix` can add to the same database.",
                 "With many runtimes, the replay is sped up to stay under " + QuickCommand.BUDGET_S / 60 + " minutes",
@@ -85,17 +85,19 @@ public final class QuickCommand implements Callable<Integer> {
                 || java.nio.file.Files.isExecutable(org.jmclbench.tooling.runtime.JmclbenchPaths.nativeBinary());
         int jvmRuns = d.jvms().size() * 2 * 3;
         int nativeRuns = nat ? 2 * 3 : 0;
+        // the HVM joins "all" when HVM_SRC is set; its runs start a JVM and the executable
+        int hvmRuns = org.jmclbench.tooling.runtime.HvmRuntime.sourceGiven() ? 2 * 3 : 0;
         double duration;
         try {
             duration = Dataset.resolve(DATASET, org.jmclbench.tooling.runtime.JmclbenchPaths.home(), "quick").durationS();
         } catch (BadUsageException e) {
             return 1.0; // the session reports the missing dataset
         }
-        int runs = jvmRuns + nativeRuns;
+        int runs = jvmRuns + nativeRuns + hvmRuns;
         if (runs == 0 || duration <= 0) {
             return 1.0;
         }
-        double overhead = jvmRuns * JVM_OVERHEAD_S + nativeRuns * NATIVE_OVERHEAD_S;
+        double overhead = (jvmRuns + hvmRuns) * JVM_OVERHEAD_S + nativeRuns * NATIVE_OVERHEAD_S;
         double scale = Math.floor((BUDGET_S - overhead) / (runs * duration) * 20) / 20;
         if (scale >= 1.0) {
             return 1.0;

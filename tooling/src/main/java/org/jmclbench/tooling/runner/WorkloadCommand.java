@@ -20,14 +20,21 @@ public final class WorkloadCommand {
 
     /**
      * {@code [prefix] <java> <flags> -Djmclbench.home=H -cp JAR WorkloadMain run <args>} for a JVM,
-     * {@code [prefix] <native> run <args>} for the native baseline.
+     * {@code [prefix] <native> run <args>} for the native baseline, and for the HVM
+     * {@code [prefix] <tool java> -Djmclbench.home=H -cp JAR WorkloadMain run --engine hvm <args>}.
      */
     public static List<String> build(PlannedRun run, LaunchPlan plan, List<String> extraJvmFlags, Path home, Path jar,
                                      Path out, double timeScale, List<String> workloadArgs) {
         List<String> cmd = new ArrayList<>(plan.prefix());
         RuntimeInfo rt = run.runtime();
         cmd.add(rt.path().toString());
-        if (rt.isJvm()) {
+        if (rt.kind() == RuntimeInfo.Kind.HVM) {
+            // the workload on this JVM validates, builds and drives the HVM executable
+            cmd.add("-Djmclbench.home=" + home);
+            cmd.add("-cp");
+            cmd.add(jar.toString());
+            cmd.add(MAIN_CLASS);
+        } else if (rt.isJvm()) {
             cmd.addAll(plan.jvmFlags());
             cmd.addAll(extraJvmFlags);
             cmd.add("-Djmclbench.home=" + home);
@@ -36,6 +43,9 @@ public final class WorkloadCommand {
             cmd.add(MAIN_CLASS);
         }
         cmd.add("run");
+        if (rt.kind() == RuntimeInfo.Kind.HVM) {
+            cmd.addAll(List.of("--engine", "hvm"));
+        }
         cmd.addAll(List.of("-p", String.valueOf(run.particles()), "-n", String.valueOf(run.repetition()),
                 "-j", rt.name(), "-O", out.toString(), "--dataset", run.dataset().dir().toString()));
         if (run.policy().equals("ideal")) {
@@ -47,7 +57,7 @@ public final class WorkloadCommand {
         if (timeScale != 1.0) {
             cmd.addAll(List.of("--time-scale", String.format(Locale.ROOT, "%s", timeScale)));
         }
-        if (!rt.isJvm() && !run.profile().has(ProfileComponent.FIFO)) {
+        if (rt.kind() == RuntimeInfo.Kind.NATIVE && !run.profile().has(ProfileComponent.FIFO)) {
             // the C program raises itself to SCHED_FIFO when permitted; without the fifo profile it
             // must run under the same scheduling as the JVMs it is compared with
             cmd.add("--no-fifo");

@@ -18,11 +18,18 @@ class WorkloadCommandTest {
     private static final RuntimeInfo NATIVE = new RuntimeInfo("native", RuntimeInfo.Kind.NATIVE, "jmclbench", "1",
             0, BIN, BIN);
 
+    private static final Path JAVA = Path.of("/usr/bin/java");
+    private static final RuntimeInfo HVM = new RuntimeInfo("hvm", RuntimeInfo.Kind.HVM, "icecap", "1", 0, JAVA, JAVA);
+
     private static List<String> command(String profile) {
-        Profile p = Profile.parse(profile, "--profiles");
-        PlannedRun run = new PlannedRun(NATIVE, p, "skip", 400, new Dataset("match-quick", Path.of("/d"), 10, "x"),
+        return command(NATIVE, profile);
+    }
+
+    private static List<String> command(RuntimeInfo rt, String profile) {
+        Profile p = Profile.parse(profile, "--profiles").forNative();
+        PlannedRun run = new PlannedRun(rt, p, "skip", 400, new Dataset("match-quick", Path.of("/d"), 10, "x"),
                 1, 1, LoadScenario.NONE, "key");
-        return WorkloadCommand.build(run, LaunchPlan.of(NATIVE, p, "1"), List.of(), Path.of("/h"), Path.of("/w.jar"),
+        return WorkloadCommand.build(run, LaunchPlan.of(rt, p, "1"), List.of(), Path.of("/h"), Path.of("/w.jar"),
                 Path.of("/out"), 1.0, List.of());
     }
 
@@ -38,5 +45,17 @@ class WorkloadCommandTest {
         List<String> cmd = command("fifo");
         assertFalse(cmd.contains("--no-fifo"), cmd.toString());
         assertTrue(cmd.get(0).equals("chrt"), cmd.toString());
+    }
+
+    @Test
+    void theHvmRunsAsTheWorkloadsHvmEngineOnTheToolsJava() {
+        List<String> cmd = command(HVM, "g1+fifo");
+        assertTrue(cmd.get(0).equals("chrt"), "the OS part of the profile applies: " + cmd);
+        int java = cmd.indexOf(JAVA.toString());
+        assertTrue(java > 0 && cmd.get(java + 1).equals("-Djmclbench.home=/h"), "no JVM flags of the profile: " + cmd);
+        int run = cmd.indexOf("run");
+        assertTrue(cmd.get(run - 1).equals(WorkloadCommand.MAIN_CLASS) && cmd.get(run + 1).equals("--engine")
+                && cmd.get(run + 2).equals("hvm"), cmd.toString());
+        assertFalse(cmd.contains("--no-fifo"), "the workload has no --no-fifo: " + cmd);
     }
 }

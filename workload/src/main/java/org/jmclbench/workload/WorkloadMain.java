@@ -17,6 +17,7 @@ import org.jmclbench.workload.output.RunWriter;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.release.GcLog;
 import org.jmclbench.workload.release.RealTimeRun;
+import org.jmclbench.workload.output.HeapUse;
 import org.jmclbench.workload.output.MemoryArea;
 import org.jmclbench.workload.scj.HvmRun;
 import org.jmclbench.workload.scj.ScjRun;

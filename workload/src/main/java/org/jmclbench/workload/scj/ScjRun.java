@@ -70,15 +70,15 @@ public final class ScjRun {
         if (options.warmupS > 0) {
             DatasetInput warm = DatasetInput.before(dataset, options.warmupS);
             facts.put("warmupEvents", warm.odometryCount() + warm.laserCount());
-            launch(new MclSafelet(configuration(options, options.mclConfig(), options.timeScale, false), warm,
-                    new RecordCapture()), "the warm-up mission");
+            launch(new MclSafelet(roomy(configuration(options, options.mclConfig(), options.timeScale, false), warm),
+                    warm, new RecordCapture()), "the warm-up mission");
         } else {
             MclConfig small = options.mclConfig().toBuilder()
                     .particles(Math.min(options.particles, 2 * MotionModel.ABORT_BLOCK)).build();
             DatasetInput first = new DatasetInput(dataset, Math.min(PRELOAD_EVENTS, dataset.odometryCount()),
                     Math.min(PRELOAD_EVENTS, dataset.laserCount()));
-            launch(new MclSafelet(configuration(options, small, 0.1, false), first, new RecordCapture()),
-                    "the class-loading mission");
+            launch(new MclSafelet(roomy(configuration(options, small, 0.1, false), first), first,
+                    new RecordCapture()), "the class-loading mission");
             facts.put("warmupEvents", 0);
         }
 
@@ -120,6 +120,18 @@ public final class ScjRun {
             for (Map.Entry<String, Long> e : o.areaSizes.entrySet()) {
                 c.areaSize(MissionSizes.areaIndex(e.getKey()), e.getValue());
             }
+        }
+        return c;
+    }
+
+    /** Extra room in every area of the warm-up and class-loading missions: loading classes allocates there. */
+    static final long LOADING_ROOM = 8L << 20;
+
+    /** The configuration with every area {@link #LOADING_ROOM} larger than the workload needs. */
+    private static MissionConfiguration roomy(MissionConfiguration c, DatasetInput input) {
+        MissionSizes sizes = new MissionSizes(c, input.odometryCount(), input.laserCount());
+        for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
+            c.areaSize(a, sizes.size(a) + LOADING_ROOM);
         }
         return c;
     }

@@ -11,7 +11,6 @@ import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.workload.output.Environment;
-import org.jmclbench.workload.output.HeapUse;
 import org.jmclbench.workload.output.RunFolder;
 import org.jmclbench.workload.output.RunWriter;
 import org.jmclbench.core.record.JobRecords;

@@ -48,8 +48,14 @@ public final class HvmRun {
     /** The icecap executable's additions, as HvmMain makes them (kept equal by HvmRunTest). */
     static final long IMMORTAL_INFRASTRUCTURE = 1024 * 1024;
     static final long HANDLER_STACKS = 3 * (4 * MissionSizes.STACK_WORDS + 64);
-    /** Beyond the replay's own length: building the executable is separate; start-up and write-out. */
-    static final long TIMEOUT_MARGIN_S = 60;
+    /**
+     * The hang timeout is this many times the replay's length plus {@link #TIMEOUT_MARGIN_S}: an
+     * overloaded queue run ends after its backlog, and the VM's single thread shares the CPU
+     * with the machine's other work (a loaded 2-core VM ran a 20 s replay for over 80 s).
+     */
+    static final long TIMEOUT_FACTOR = 4;
+    /** Beyond the replay itself: start-up and write-out (the executable is built before). */
+    static final long TIMEOUT_MARGIN_S = 120;
     // icecap's message when an area cannot hold an allocation: "out of memory: 0x<area size>, 0x<bytes>"
     private static final Pattern OUT_OF_MEMORY = Pattern.compile("out of memory: 0x([0-9A-Fa-f]+), 0x([0-9A-Fa-f]+)");
 
@@ -79,7 +85,7 @@ public final class HvmRun {
             File out = new File(work, "result.bin");
             File log = new File(runFolder, "hvm.log");
             writeInput(in, options, config, dataset);
-            long timeoutS = (long) Math.ceil(dataset.duration() * options.timeScale) + TIMEOUT_MARGIN_S;
+            long timeoutS = (long) Math.ceil(TIMEOUT_FACTOR * dataset.duration() * options.timeScale) + TIMEOUT_MARGIN_S;
             ProcessBuilder pb = new ProcessBuilder(exe.getPath());
             pb.environment().put("JMCLBENCH_HVM_INPUT", in.getPath());
             pb.environment().put("JMCLBENCH_HVM_OUTPUT", out.getPath());

@@ -172,10 +172,17 @@ final class ChartExporter {
         renderer.setBarPainter(new org.jfree.chart.renderer.category.StandardBarPainter());
         renderer.setDefaultItemLabelGenerator(new org.jfree.chart.labels.StandardCategoryItemLabelGenerator());
         renderer.setDefaultItemLabelsVisible(true);
+        // the count at the end of its bar, so that a 0 (missed even at the smallest count) is read too
+        renderer.setDefaultPositiveItemLabelPosition(new org.jfree.chart.labels.ItemLabelPosition(
+                org.jfree.chart.labels.ItemLabelAnchor.OUTSIDE3, org.jfree.chart.ui.TextAnchor.CENTER_LEFT));
+        renderer.setMaximumBarWidth(0.08);
         CategoryAxis x = new CategoryAxis("runtime / engine memory style");
         x.setMaximumCategoryLabelLines(2);
-        CategoryPlot plot = new CategoryPlot(data, x, new NumberAxis("largest particle count with no miss"), renderer);
+        NumberAxis y = new NumberAxis("largest particle count with no miss");
+        y.setUpperMargin(0.12);
+        CategoryPlot plot = new CategoryPlot(data, x, y, renderer);
         plot.setOrientation(org.jfree.chart.plot.PlotOrientation.HORIZONTAL);
+        plot.setRangeAxisLocation(org.jfree.chart.axis.AxisLocation.BOTTOM_OR_RIGHT);
         write(stem, finish(new JFreeChart(title, JFreeChart.DEFAULT_TITLE_FONT, plot, false)));
     }
 

@@ -66,6 +66,20 @@ class EvaluationDocumentTest {
         EvaluationDocument.write(db, dir.resolve("docs/EVALUATION.md"), dir.resolve("docs/evaluation"),
                 List.of("only match-quick"), verification);
         doc = Files.readString(dir.resolve("docs/EVALUATION.md"));
+        String keep = System.getProperty("evaluation.keep"); // to look at the document and its figures
+        if (keep != null) {
+            Path to = Path.of(keep);
+            try (var files = Files.walk(dir.resolve("docs"))) {
+                for (Path p : files.toList()) {
+                    Path t = to.resolve(dir.resolve("docs").relativize(p).toString());
+                    if (Files.isDirectory(p)) {
+                        Files.createDirectories(t);
+                    } else {
+                        Files.copy(p, t, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                    }
+                }
+            }
+        }
         try (ResultsStore store = ResultsStore.open(db, "--db")) {
             runs = store.runs();
         }
@@ -266,6 +280,11 @@ class EvaluationDocumentTest {
                 Double s = sum.get(kinds.get(i));
                 assertEquals(s == null ? "" : num(s / attributed, 1), row.get(i), row.get(0) + " " + kinds.get(i));
             }
+            final int n = attributed;
+            Map.Entry<String, Double> top = sum.entrySet().stream().max(Map.Entry.comparingByValue()).orElseThrow();
+            double total = sum.values().stream().mapToDouble(Double::doubleValue).sum();
+            assertTrue(doc.contains("- " + row.get(0) + ": " + num(top.getValue() / n, 1) + " of " + num(total / n, 1)
+                    + " attributed jobs per run were " + top.getKey() + "."), "dominant cause of " + row.get(0));
         }
     }
 

@@ -248,6 +248,20 @@ public final class EvaluationDocument {
         return ref != null ? ref : counts.get(0);
     }
 
+    /** Why the latency table is at {@code ref}, as the store says it. */
+    private String referenceReason(int ref) {
+        boolean hasNative = sweep().stream().anyMatch(c -> c.particles == ref && isNative(c) && c.ok > 0);
+        boolean nativeMissed = sweep().stream().filter(c -> c.particles == ref && isNative(c))
+                .anyMatch(c -> orZero(max(c, Metric.MISS_COUNT)) > 0);
+        if (!hasNative) {
+            return ref + " particles is the smallest count of the sweep (the store has no C baseline run to choose by).";
+        }
+        if (nativeMissed) {
+            return ref + " particles is the smallest count of the sweep; the C baseline missed deadlines at every count.";
+        }
+        return ref + " particles is the largest count of the sweep at which the C baseline missed no deadline.";
+    }
+
     private void latency() throws IOException {
         line("### 2.2 Latency and jitter, and the distance to C (Table 2, Figure 2)");
         line("");
@@ -261,8 +275,8 @@ public final class EvaluationDocument {
         ReportModel.Cell c0 = at.stream().filter(this::isNative).findFirst().orElse(null);
         Double nativeLatency = c0 == null ? null : mean(c0, Metric.LATENCY_MEAN);
         line(String.format(Locale.ROOT, "Table 2: task latency and release jitter at %d particles, policy skip (ms; mean ± 95%% CI "
-                + "over repetitions of each run's mean, p99 and max). %d particles is the largest count of the sweep at which the C "
-                + "baseline missed no deadline. The last column is the mean task latency divided by C's.", ref, ref));
+                + "over repetitions of each run's mean, p99 and max). %s The last column is the mean task latency divided by C's.",
+                ref, referenceReason(ref)));
         line("");
         List<List<String>> rows = new ArrayList<>();
         for (ReportModel.Cell c : at) {
@@ -340,6 +354,14 @@ public final class EvaluationDocument {
         int most = loads.values().stream().max(Integer::compare).orElseThrow();
         String top = loads.entrySet().stream().filter(e -> e.getValue() == most).map(e -> "**" + e.getKey() + "**")
                 .collect(Collectors.joining(", "));
+        if (most == 0) {
+            line(String.format(Locale.ROOT, "The sweep's counts are %s. No configuration ran even %d particles without a miss "
+                    + "(Table 3, Figure 3): the sweep should start lower on this machine.", counts, counts.get(0)));
+            line("");
+            findings.add(String.format(Locale.ROOT, "Largest load with no miss: none; every configuration missed at %d particles (2.3).",
+                    counts.get(0)));
+            return;
+        }
         line(String.format(Locale.ROOT, "The sweep's counts are %s: a sustained load is known only to the resolution of the sweep. "
                 + "The most sustained, %d particles, by %s (Table 3, Figure 3).", counts, most, top));
         line("");

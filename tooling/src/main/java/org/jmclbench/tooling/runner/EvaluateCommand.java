@@ -105,7 +105,9 @@ public final class EvaluateCommand implements Callable<Integer> {
                     o.printf("evaluate [%s] (%d/%d): no runtime of it is on this machine; skipped%n", s.name(), n, m.sections.size());
                     continue;
                 }
-                o.printf("evaluate [%s] (%d/%d)%n", s.name(), n, m.sections.size());
+                double left = b.sectionSeconds().subList(n - 1, b.sectionSeconds().size()).stream().mapToDouble(Double::doubleValue).sum();
+                o.printf(Locale.ROOT, "evaluate [%s] (section %d/%d; the evaluation's ETA: at most %.0f min, less for runs already in the store)%n",
+                        s.name(), n, m.sections.size(), left / 60);
                 MatrixSession.Result r;
                 try {
                     r = MatrixSession.execute(s.spec(), "jmclbench evaluate [" + s.name() + "] " + file.getFileName(), o, () -> d);
@@ -166,7 +168,7 @@ public final class EvaluateCommand implements Callable<Integer> {
     }
 
     /** The matrix's size and time: runs per section and the replay time they take. */
-    record Budget(List<String> lines, int runs, double seconds) {
+    record Budget(List<String> lines, List<Double> sectionSeconds, int runs, double seconds) {
         void print(PrintStream o, Path file) {
             o.printf(Locale.ROOT, "evaluate: %s, %d sections%n", file, lines.size());
             lines.forEach(l -> o.println("  " + l));
@@ -183,6 +185,7 @@ public final class EvaluateCommand implements Callable<Integer> {
      */
     static Budget budget(EvaluationMatrix m, Path home) {
         List<String> lines = new ArrayList<>();
+        List<Double> perSection = new ArrayList<>();
         int runs = 0;
         double seconds = 0;
         for (EvaluationMatrix.Section s : m.sections) {
@@ -224,8 +227,9 @@ public final class EvaluateCommand implements Callable<Integer> {
                     jvmRuns + nativeRuns, jvmRuns, nativeRuns, duration, scale, t));
             runs += jvmRuns + nativeRuns;
             seconds += t;
+            perSection.add(t);
         }
-        return new Budget(lines, runs, seconds);
+        return new Budget(lines, perSection, runs, seconds);
     }
 
     private static int size(List<?> l, int dflt) {

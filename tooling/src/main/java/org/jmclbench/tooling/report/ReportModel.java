@@ -490,6 +490,10 @@ public final class ReportModel {
         if (params.hasNonNull("timeScale") && params.get("timeScale").asDouble() != 1.0) {
             out.add("replayed at time scale " + params.get("timeScale").asText() + " (deadlines scaled too)");
         }
+        JsonNode kind = summary.at("/engine/kind");
+        if (kind.isTextual()) {
+            out.add("engine " + kind.asText() + (summary.at("/engine/level").isInt() ? " (SCJ level " + summary.at("/engine/level").asInt() + ")" : ""));
+        }
         if (params.hasNonNull("memory")) {
             out.add("memory " + params.get("memory").asText());
         }

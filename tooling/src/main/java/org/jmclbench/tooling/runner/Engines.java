@@ -24,15 +24,18 @@ public final class Engines {
     private Engines() {
     }
 
-    /** The engine a run of {@code runtime} gets when {@code asked} is the matrix's engine: a native program has one. */
+    /**
+     * The engine a run of {@code runtime} gets when {@code asked} is the matrix's engine: a program
+     * that is not a JVM is its own engine, named by its kind ({@code native}).
+     */
     public static String of(RuntimeInfo runtime, String asked) {
-        return runtime.isJvm() ? asked : NATIVE;
+        return runtime.isJvm() ? asked : runtime.kind().name().toLowerCase(java.util.Locale.ROOT);
     }
 
     /** The memory styles of an engine; {@code preallocated} (the default) is every engine's. */
     public static List<String> memoryStyles(String engine) {
         return switch (engine) {
-            case SCJ -> List.of(PREALLOCATED, "scoped");
+            case SCJ, "hvm" -> List.of(PREALLOCATED, "scoped"); // the SCJ mission, on the JVM or on an SCJ VM
             default -> List.of(PREALLOCATED, "allocating");
         };
     }

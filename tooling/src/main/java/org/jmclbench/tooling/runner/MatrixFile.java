@@ -10,7 +10,8 @@ import org.jmclbench.tooling.runtime.BadUsageException;
 
 /**
  * Reads a matrix file: one {@code key = value} a line, the keys being the long options of
- * {@code matrix} without their dashes ({@code runtimes}, {@code java}, {@code profiles}, {@code policies},
+ * {@code matrix} without their dashes ({@code runtimes}, {@code java}, {@code profiles}, {@code engines},
+ * {@code memory}, {@code policies},
  * {@code particles}, {@code datasets}, {@code repeat}, {@code shard}, {@code order-seed}, {@code seed},
  * {@code timeout}, {@code time-scale}, {@code pin-cpu}, {@code workload-arg}, {@code db}, {@code native});
  * list values are comma-separated and a repeated list key adds to the list; {@code #} starts a comment.
@@ -20,6 +21,7 @@ import org.jmclbench.tooling.runtime.BadUsageException;
  * # two JVMs and C, three sizes, three repetitions
  * runtimes  = temurin-25, native
  * profiles  = g1, zgc+pretouch
+ * engines   = javase, scj
  * policies  = skip, terminate
  * particles = 100, 400, 1600
  * datasets  = match-short

@@ -27,7 +27,7 @@ public final class QuickCommand implements Callable<Integer> {
     /** The grid: every JVM runs both engines; native runs once per cell. */
     static final List<String> ENGINES = List.of(Engines.JAVASE, Engines.SCJ);
     static final List<String> POLICIES = List.of("skip", "terminate");
-    /** Two sizes, light and heavy: with both engines, three sizes would not fit 2 JVMs in real time. */
+    /** Two sizes, light and heavy: with both engines, three sizes would not fit 2 JVMs in 5 minutes. */
     static final List<Integer> PARTICLES = List.of(100, 1600);
 
     /** The first 10 s of the match route: short enough that two JVMs and native replay in real time. */
@@ -35,8 +35,15 @@ public final class QuickCommand implements Callable<Integer> {
 
     /** The time quick allows its runs (discovery, probes and the report need the rest of 5 minutes). */
     static final int BUDGET_S = 250;
-    /** JVM start, warm-up and folder writing on top of the replay (measured 1.2-3 s on the 2-core VM). */
-    static final double JVM_OVERHEAD_S = 2.5;
+    /**
+     * JVM start, warm-up (the SCJ engine's class-loading mission), folder writing and attribution on
+     * top of the replay: measured 2.4-6.5 s, mean 4.2 s, for both engines during a quick on the
+     * shared 2-core VM at load average 9 (1.2-3 s for the Java SE engine on a quiet one).
+     */
+    static final double JVM_OVERHEAD_S = 4.0;
+    /** What the estimate leaves out (measured 15-50 s on the 2-core VM, more under heavy load). */
+    static final String REPORT_NOTE = ", then the report";
+
     /** The native baseline starts in milliseconds. */
     static final double NATIVE_OVERHEAD_S = 0.1;
 
@@ -125,13 +132,14 @@ public final class QuickCommand implements Callable<Integer> {
         double overhead = jvmRuns * JVM_OVERHEAD_S + nativeRuns * NATIVE_OVERHEAD_S;
         double scale = Math.floor((BUDGET_S - overhead) / (runs * durationS) * 20) / 20;
         if (scale >= 1.0) {
-            out.printf(Locale.ROOT, "quick: %d runs (%d JVM x %d engines x %d settings%s) of %.0f s: about %.0f s in real time%n",
+            out.printf(Locale.ROOT, "quick: %d runs (%d JVM x %d engines x %d settings%s) of %.0f s: about %.0f s in real time"
+                            + REPORT_NOTE + "%n",
                     runs, jvms, ENGINES.size(), cells, nat ? " + native" : "", durationS, runs * durationS + overhead);
             return 1.0;
         }
         double chosen = Math.max(0.25, scale);
         out.printf(Locale.ROOT, "quick: %d runs of %.0f s would take about %.0f s; replaying at --time-scale %.2f"
-                        + " (about %.0f s; deadlines scale too)%n", runs, durationS, runs * durationS + overhead, chosen,
+                        + " (about %.0f s; deadlines scale too)" + REPORT_NOTE + "%n", runs, durationS, runs * durationS + overhead, chosen,
                 runs * durationS * chosen + overhead);
         return chosen;
     }

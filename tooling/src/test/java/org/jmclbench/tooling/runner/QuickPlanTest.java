@@ -47,11 +47,15 @@ class QuickPlanTest {
     }
 
     @Test
-    void twoJvmsAndNativeReplayInRealTimeAndMoreAreSpedUp() {
+    void moreJvmsReplayFasterToFitTheBudget() {
         ByteArrayOutputStream text = new ByteArrayOutputStream();
         PrintStream out = new PrintStream(text, true, StandardCharsets.UTF_8);
-        assertEquals(1.0, QuickCommand.fitScale(2, true, 10.0, out), "a fresh machine: 2 JVMs and native");
-        assertTrue(text.toString(StandardCharsets.UTF_8).startsWith("quick: 20 runs (2 JVM x 2 engines x 4 settings + native) of 10 s: about 240 s"),
+        assertEquals(1.0, QuickCommand.fitScale(1, true, 10.0, out), "one JVM and native replay in real time");
+        assertTrue(text.toString(StandardCharsets.UTF_8).startsWith("quick: 12 runs (1 JVM x 2 engines x 4 settings + native) of 10 s: about 152 s"),
+                text.toString(StandardCharsets.UTF_8));
+        double two = QuickCommand.fitScale(2, true, 10.0, out);
+        assertEquals(0.9, two, 1e-9, "a fresh machine, 2 JVMs and native: 20 runs, 10% faster than real time");
+        assertTrue(text.toString(StandardCharsets.UTF_8).contains("quick: 20 runs of 10 s would take about 264 s; replaying at --time-scale 0.90"),
                 text.toString(StandardCharsets.UTF_8));
         double four = QuickCommand.fitScale(4, true, 10.0, out);
         assertTrue(four < 1.0 && four >= 0.25, "four JVMs are sped up: " + four);

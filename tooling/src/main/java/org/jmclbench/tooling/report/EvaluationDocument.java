@@ -137,8 +137,8 @@ public final class EvaluationDocument {
         int total = model.cells.stream().mapToInt(c -> c.runs).sum();
         int ok = model.cells.stream().mapToInt(c -> c.ok).sum();
         IntSummary reps = repetitions();
-        line(String.format(Locale.ROOT, "**Runs.** %d runs in the store, %d completed. Each configuration and setting was "
-                + "repeated %s times; runs were shuffled within each repetition round so that drift of the machine spreads over "
+        line(String.format(Locale.ROOT, "**Runs.** %d runs in the store, %d completed. Each configuration and setting "
+                + "completed %s repetitions; runs were shuffled within each repetition round so that drift of the machine spreads over "
                 + "every configuration. Values are means over the completed repetitions with a 95%% Student-t confidence "
                 + "interval (`mean ± half-width`); two configurations are told apart only where their intervals do not overlap. "
                 + "Each run is a fresh process.", total, ok, reps.text()));

@@ -106,7 +106,7 @@ public final class EvaluateCommand implements Callable<Integer> {
                     continue;
                 }
                 double left = b.sectionSeconds().subList(n - 1, b.sectionSeconds().size()).stream().mapToDouble(Double::doubleValue).sum();
-                o.printf(Locale.ROOT, "evaluate [%s] (section %d/%d; the evaluation's ETA: at most %.0f min, less for runs already in the store)%n",
+                o.printf(Locale.ROOT, "evaluate [%s] (section %d/%d; the evaluation's ETA: at most %.1f min, less for runs already in the store)%n",
                         s.name(), n, m.sections.size(), left / 60);
                 MatrixSession.Result r;
                 try {

@@ -29,7 +29,9 @@ public final class RunOptions {
         /** The Java SE release engine: a dispatcher thread and one handler thread per task. */
         JAVASE("javase"),
         /** The Safety-Critical Java mission (scj-mission) on the rtsj-compat layer. */
-        SCJ("scj");
+        SCJ("scj"),
+        /** The same mission compiled to a native executable by the icecap HVM (docs/HVM.md). */
+        HVM("hvm");
 
         /** The option value, summary.json name and runtime-name suffix. */
         public final String label;
@@ -100,6 +102,9 @@ public final class RunOptions {
     public String effectiveRuntimeName() {
         if (runtimeName != null) {
             return runtimeName;
+        }
+        if (engine == Engine.HVM) {
+            return "hvm"; // a VM of its own, not the JVM that drives it
         }
         return engine == Engine.JAVASE ? defaultRuntimeName() : defaultRuntimeName() + "-" + engine.label;
     }

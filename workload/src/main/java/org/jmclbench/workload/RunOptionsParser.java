@@ -24,7 +24,8 @@ public final class RunOptionsParser {
             "  --policy skip|terminate|queue   event released while a job runs (default skip)",
             "  --ideal                  one thread, no timing: the infinitely fast computer",
             "  -c, --covariance         compute and write the covariance after each update",
-            "  --engine javase|scj      the Java SE release engine or the SCJ mission (default javase)",
+            "  --engine javase|scj|hvm  the Java SE release engine, the SCJ mission, or the SCJ mission on",
+            "                           the icecap HVM (docs/HVM.md; same as jmclbench run-hvm) (default javase)",
             "  --memory STYLE           memory style: preallocated|allocating (javase), preallocated|scoped (scj);",
             "                           default preallocated",
             "  --area-size AREA=BYTES   scj: size of a memory area (immortal, mission, predict, update, sensor);",
@@ -232,15 +233,15 @@ public final class RunOptionsParser {
                 return e;
             }
         }
-        throw BadInputException.ofOption(name, "'" + v + "' is not one of javase|scj");
+        throw BadInputException.ofOption(name, "'" + v + "' is not one of javase|scj|hvm");
     }
 
     /** The memory styles each engine has, and the options only one engine takes. */
     private static void checkEngine(RunOptions o) throws BadInputException {
-        if (o.engine == RunOptions.Engine.SCJ) {
+        if (o.engine == RunOptions.Engine.SCJ || o.engine == RunOptions.Engine.HVM) {
             if (o.memory == MclConfig.Memory.ALLOCATING) {
-                throw BadInputException.ofOption("--memory", "'allocating' is not a memory style of the scj engine"
-                        + " (preallocated|scoped)");
+                throw BadInputException.ofOption("--memory", "'allocating' is not a memory style of the "
+                        + o.engine.label + " engine (preallocated|scoped)");
             }
         } else {
             if (o.memory == MclConfig.Memory.SCOPED) {

@@ -18,6 +18,7 @@ import org.jmclbench.workload.release.GcLog;
 import org.jmclbench.workload.release.RealTimeRun;
 import org.jmclbench.workload.output.HeapUse;
 import org.jmclbench.workload.output.MemoryArea;
+import org.jmclbench.workload.scj.HvmRun;
 import org.jmclbench.workload.scj.ScjRun;
 
 /**
@@ -78,6 +79,9 @@ public final class WorkloadMain {
         Dataset dataset = load(options);
         if (options.engine == RunOptions.Engine.SCJ && !options.ideal) {
             return executeScj(options, dataset, out);
+        }
+        if (options.engine == RunOptions.Engine.HVM && !options.ideal) {
+            return executeHvm(options, dataset, out, err);
         }
         Timeline timeline = dataset.timeline();
         MclConfig config = options.mclConfig();
@@ -141,6 +145,27 @@ public final class WorkloadMain {
             throw BadInputException.ofOption("-O", "cannot create " + folder.partial.getPath() + ": " + e);
         }
         ScjRun.Result result = ScjRun.run(options, dataset);
+        new RunWriter(options, dataset, result.records.timeline, result.records, environment).engine(result.facts)
+                .memory(result.areas).writeAll(partial);
+        folder.commit();
+        out.println(folder.dir.getPath());
+        return OK;
+    }
+
+    /** The hvm engine: the SCJ mission as an icecap HVM executable, written out through the same run writer. */
+    private static int executeHvm(RunOptions options, Dataset dataset, PrintStream out, PrintStream err)
+            throws BadInputException, IOException, RunFailure {
+        HvmRun.check(options, dataset); // bad input is rejected before anything is built or started
+        RunFolder folder = RunFolder.of(options);
+        folder.checkNotComplete();
+        Environment environment = Environment.capture();
+        File partial;
+        try {
+            partial = folder.begin();
+        } catch (IOException e) {
+            throw BadInputException.ofOption("-O", "cannot create " + folder.partial.getPath() + ": " + e);
+        }
+        ScjRun.Result result = HvmRun.run(options, dataset, partial, err);
         new RunWriter(options, dataset, result.records.timeline, result.records, environment).engine(result.facts)
                 .memory(result.areas).writeAll(partial);
         folder.commit();

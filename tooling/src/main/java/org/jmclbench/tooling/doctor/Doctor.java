@@ -9,6 +9,8 @@ import java.util.Locale;
 import java.util.TreeSet;
 import java.util.stream.Stream;
 
+import org.jmclbench.tooling.runtime.HvmRuntime;
+import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.ProcessRunner;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -47,6 +49,7 @@ public final class Doctor {
         c.add(virtualisation());
         c.add(stealTime());
         c.add(cyclictest());
+        c.add(hvm());
         return c;
     }
 
@@ -247,6 +250,20 @@ public final class Doctor {
         }
         return DoctorCheck.warn("cyclictest", "not found",
                 "install rt-tests (apt-get install rt-tests) to compare the dispatcher's lateness with cyclictest's");
+    }
+
+    /** Whether the icecap HVM (the hvm runtime, docs/HVM.md) can be built here, and why not. */
+    DoctorCheck hvm() {
+        if (!runCommands) {
+            return DoctorCheck.warn("hvm", "not tried", "hvm/build-hvm.sh --check");
+        }
+        HvmRuntime.Availability a = HvmRuntime.check(JmclbenchPaths.home());
+        if (a.buildable()) {
+            return HvmRuntime.sourceGiven() ? DoctorCheck.pass("hvm", a.detail())
+                    : DoctorCheck.warn("hvm", a.detail(), "set HVM_SRC to an hvm-scj folder or tarball (docs/HVM.md)");
+        }
+        return DoctorCheck.warn("hvm", "cannot be built: " + a.detail(),
+                "the hvm runtime needs gcc, javac, mvn, patch, pip and HVM_SRC (docs/HVM.md)");
     }
 
     private long[] cpuLine() {

@@ -127,6 +127,65 @@ final class ChartExporter {
         return jobs.size() * 2;
     }
 
+    /**
+     * The evaluation's figures (EvaluationDocument), drawn by the report's own chart code: misses vs
+     * particles with 95% CI error bars, a latency percentile spectrum, memory per area, causes.
+     */
+    void evaluationMisses(String stem, String title, List<ReportModel.Cell> cells) throws IOException {
+        Files.createDirectories(dir);
+        write(stem, vsParticles(title, "deadline misses per run (mean, 95% CI)", cells, Metric.MISS_COUNT));
+    }
+
+    void evaluationSpectrum(String stem, String at, List<ReportModel.Cell> cells) throws IOException {
+        Files.createDirectories(dir);
+        write(stem, spectrum(at, cells));
+    }
+
+    void evaluationMemory(String stem, String at, List<ReportModel.Cell> cells) throws IOException {
+        Files.createDirectories(dir);
+        write(stem, memory(at, cells));
+    }
+
+    void evaluationCauses(String stem, String at, List<ReportModel.Cell> cells) throws IOException {
+        Files.createDirectories(dir);
+        write(stem, causes(at, cells));
+    }
+
+    /**
+     * Horizontal bars: per configuration, the largest particle count it sustained with no miss
+     * (0 where even the smallest count missed), in the configurations' colours.
+     */
+    void evaluationSustainable(String stem, String title, Map<String, Integer> sustained) throws IOException {
+        Files.createDirectories(dir);
+        org.jfree.data.category.DefaultCategoryDataset data = new org.jfree.data.category.DefaultCategoryDataset();
+        sustained.forEach((config, n) -> data.addValue(n, "particles", config));
+        org.jfree.chart.renderer.category.BarRenderer renderer = new org.jfree.chart.renderer.category.BarRenderer() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public java.awt.Paint getItemPaint(int row, int column) {
+                Color c = colorOf(String.valueOf(data.getColumnKey(column)));
+                return c != null ? c : PALETTE[column % PALETTE.length];
+            }
+        };
+        renderer.setShadowVisible(false);
+        renderer.setBarPainter(new org.jfree.chart.renderer.category.StandardBarPainter());
+        renderer.setDefaultItemLabelGenerator(new org.jfree.chart.labels.StandardCategoryItemLabelGenerator());
+        renderer.setDefaultItemLabelsVisible(true);
+        // the count at the end of its bar, so that a 0 (missed even at the smallest count) is read too
+        renderer.setDefaultPositiveItemLabelPosition(new org.jfree.chart.labels.ItemLabelPosition(
+                org.jfree.chart.labels.ItemLabelAnchor.OUTSIDE3, org.jfree.chart.ui.TextAnchor.CENTER_LEFT));
+        renderer.setMaximumBarWidth(0.08);
+        CategoryAxis x = new CategoryAxis("runtime / engine memory style");
+        x.setMaximumCategoryLabelLines(2);
+        NumberAxis y = new NumberAxis("largest particle count with no miss");
+        y.setUpperMargin(0.12);
+        CategoryPlot plot = new CategoryPlot(data, x, y, renderer);
+        plot.setOrientation(org.jfree.chart.plot.PlotOrientation.HORIZONTAL);
+        plot.setRangeAxisLocation(org.jfree.chart.axis.AxisLocation.BOTTOM_OR_RIGHT);
+        write(stem, finish(new JFreeChart(title, JFreeChart.DEFAULT_TITLE_FONT, plot, false)));
+    }
+
     private void write(String stem, JFreeChart chart) {
         try {
             ChartUtils.saveChartAsPNG(dir.resolve(stem + ".png").toFile(), chart, WIDTH, HEIGHT);

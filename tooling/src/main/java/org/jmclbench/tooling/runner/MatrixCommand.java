@@ -32,7 +32,7 @@ public final class MatrixCommand implements Callable<Integer> {
 
     @Option(names = "--matrix", paramLabel = "FILE", description = "read settings from a matrix file (see below)")
     Path matrixFile;
-    @Option(names = "--runtimes", paramLabel = "LIST", description = "runtime names from `jvms`, `native`, `jvms` (all JVMs), `all` (default: all found)")
+    @Option(names = "--runtimes", paramLabel = "LIST", description = "runtime names from `jvms`, `native`, `hvm`, `jvms` (all JVMs), `all` (default: all found)")
     List<String> runtimes = new ArrayList<>();
     @Option(names = "--java", paramLabel = "PATH", description = "a JVM by path (java executable or JDK folder), repeatable")
     List<String> javas = new ArrayList<>();

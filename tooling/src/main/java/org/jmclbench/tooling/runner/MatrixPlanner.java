@@ -15,6 +15,7 @@ import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.load.LoadScenario;
 import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
@@ -48,7 +49,7 @@ public final class MatrixPlanner {
                                          MachineInfo machine) {
         Path nativeBinary = spec.nativeBinary != null ? spec.nativeBinary.toAbsolutePath()
                 : home.resolve("native/build/jmclbench-native");
-        List<RuntimeInfo> runtimes = resolveRuntimes(spec, discovery, nativeBinary);
+        List<RuntimeInfo> runtimes = resolveRuntimes(spec, discovery, nativeBinary, home);
         List<Profile> profiles = new ArrayList<>();
         if (spec.profiles.isEmpty()) {
             MatrixDefaults.PROFILES.forEach(p -> profiles.add(Profile.parse(p, "--profiles")));
@@ -184,9 +185,10 @@ public final class MatrixPlanner {
         return MachineInfo.sha256Hex(text).substring(0, 20);
     }
 
-    private static List<RuntimeInfo> resolveRuntimes(MatrixSpec spec, Supplier<RuntimeDiscovery> discovery, Path nativeBinary) {
+    private static List<RuntimeInfo> resolveRuntimes(MatrixSpec spec, Supplier<RuntimeDiscovery> discovery, Path nativeBinary,
+                                                     Path home) {
         boolean needDiscovery = spec.runtimes.isEmpty() && spec.javas.isEmpty()
-                || spec.runtimes.stream().anyMatch(r -> !r.value().equals("native"));
+                || spec.runtimes.stream().anyMatch(r -> !r.value().equals("native") && !r.value().equals(HvmRuntime.NAME));
         RuntimeDiscovery d = needDiscovery ? discovery.get() : RuntimeDiscovery.discover(List.of(), null);
         Map<String, RuntimeInfo> out = new LinkedHashMap<>();
         for (Sourced<String> j : spec.javas) {
@@ -211,7 +213,14 @@ public final class MatrixPlanner {
         }
         for (Sourced<String> r : spec.runtimes) {
             String name = r.value();
-            if (name.equals("native")) {
+            if (name.equals(HvmRuntime.NAME)) {
+                HvmRuntime.Availability a = HvmRuntime.check(home);
+                if (!a.buildable()) {
+                    throw new BadUsageException(r.where() + ": hvm: the icecap HVM cannot be built here: " + a.detail());
+                }
+                HvmRuntime.prepare(home);
+                out.putIfAbsent(HvmRuntime.NAME, HvmRuntime.runtime());
+            } else if (name.equals("native")) {
                 if (nat == null) {
                     throw new BadUsageException(r.where() + ": native: the native baseline is not built (" + nativeBinary + ")");
                 }
@@ -220,6 +229,11 @@ public final class MatrixPlanner {
                 d.jvms().forEach(x -> out.putIfAbsent(x.name(), x));
                 if (name.equals("all") && nat != null) {
                     out.putIfAbsent("native", nat);
+                }
+                // all: the HVM too when the user pointed at its source and it can be built
+                if (name.equals("all") && HvmRuntime.sourceGiven() && HvmRuntime.check(home).buildable()) {
+                    HvmRuntime.prepare(home);
+                    out.putIfAbsent(HvmRuntime.NAME, HvmRuntime.runtime());
                 }
             } else {
                 RuntimeInfo found = d.find(name).orElseThrow(() -> new BadUsageException(r.where() + ": unknown runtime '"

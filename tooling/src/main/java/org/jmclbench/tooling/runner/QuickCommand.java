@@ -17,11 +17,11 @@ import picocli.CommandLine.Option;
  * and native, two policies, two sizes.
  */
 @Command(name = "quick", mixinStandardHelpOptions = true,
-        description = {"Runs every JVM found (with its default GC) with the javase and scj engines, and the native",
-                "baseline, x {skip, terminate} x {100, 1600} particles x 1 repetition on dataset " + QuickCommand.DATASET + " (10 s)",
-                "into results/results.db, then builds the report. It is a matrix: rerunning it resumes, and",
-                "`matrix` can add to the same database. With many runtimes, the replay is sped up to stay under",
-                "5 minutes (--time-scale, which scales deadlines too); the estimate and the chosen scale are printed."})
+        description = {"Runs every JVM found (with its default GC) with the javase and scj engines, the native",
+                "baseline and, with HVM_SRC set, the icecap HVM, x {skip, terminate} x {100, 1600} particles x 1 repetition",
+                "on dataset " + QuickCommand.DATASET + " (10 s) into results/results.db, then builds the report. It is a matrix:",
+                "rerunning it resumes, and `matrix` can add to the same database. With many runtimes, the replay is sped up",
+                "to stay under 5 minutes (--time-scale, which scales deadlines too); the estimate and the chosen scale are printed."})
 public final class QuickCommand implements Callable<Integer> {
 
     /** The grid: every JVM runs both engines; native runs once per cell. */
@@ -117,13 +117,18 @@ public final class QuickCommand implements Callable<Integer> {
         } catch (BadUsageException e) {
             return 1.0; // the session reports the missing dataset
         }
-        return fitScale(d.jvms().size(), nat, duration, System.out);
+        // the HVM joins "all" when HVM_SRC is set; its runs start a JVM and the executable
+        boolean hvm = org.jmclbench.tooling.runtime.HvmRuntime.sourceGiven();
+        return fitScale(d.jvms().size(), nat, hvm, duration, System.out);
     }
 
-    /** {@link #fitScale(RuntimeDiscovery, MatrixSpec)} for {@code jvms} JVMs, native or not, a dataset of {@code durationS}. */
-    static double fitScale(int jvms, boolean nat, double durationS, java.io.PrintStream out) {
+    /**
+     * {@link #fitScale(RuntimeDiscovery, MatrixSpec)} for {@code jvms} JVMs, native or not, the HVM or not,
+     * a dataset of {@code durationS}. Native and the HVM run once per cell (their engine is their own).
+     */
+    static double fitScale(int jvms, boolean nat, boolean hvm, double durationS, java.io.PrintStream out) {
         int cells = POLICIES.size() * PARTICLES.size();
-        int jvmRuns = jvms * ENGINES.size() * cells;
+        int jvmRuns = jvms * ENGINES.size() * cells + (hvm ? cells : 0);
         int nativeRuns = nat ? cells : 0;
         int runs = jvmRuns + nativeRuns;
         if (runs == 0 || durationS <= 0) {
@@ -134,7 +139,7 @@ public final class QuickCommand implements Callable<Integer> {
         if (scale >= 1.0) {
             out.printf(Locale.ROOT, "quick: %d runs (%d JVM x %d engines x %d settings%s) of %.0f s: about %.0f s in real time"
                             + REPORT_NOTE + "%n",
-                    runs, jvms, ENGINES.size(), cells, nat ? " + native" : "", durationS, runs * durationS + overhead);
+                    runs, jvms, ENGINES.size(), cells, (nat ? " + native" : "") + (hvm ? " + hvm" : ""), durationS, runs * durationS + overhead);
             return 1.0;
         }
         double chosen = Math.max(0.25, scale);

@@ -20,17 +20,24 @@ public final class WorkloadCommand {
 
     /**
      * {@code [prefix] <java> <flags> -Djmclbench.home=H -cp JAR WorkloadMain run <args>} for a JVM,
-     * {@code [prefix] <native> run <args>} for the native baseline. The engine and memory style are
-     * passed only when they are not the defaults (javase, preallocated), so that a workload older
-     * than them still runs the default configuration; an scj run's runtime name gets the suffix
-     * {@code -scj}, as the workload's own default name does.
+     * {@code [prefix] <native> run <args>} for the native baseline, and for the HVM
+     * {@code [prefix] <tool java> -Djmclbench.home=H -cp JAR WorkloadMain run --engine hvm <args>}.
+     * The engine and memory style are passed only when they are not the defaults (javase,
+     * preallocated), so that a workload older than them still runs the default configuration; an
+     * scj run's runtime name gets the suffix {@code -scj}, as the workload's own default name does.
      */
     public static List<String> build(PlannedRun run, LaunchPlan plan, List<String> extraJvmFlags, Path home, Path jar,
                                      Path out, double timeScale, List<String> workloadArgs) {
         List<String> cmd = new ArrayList<>(plan.prefix());
         RuntimeInfo rt = run.runtime();
         cmd.add(rt.path().toString());
-        if (rt.isJvm()) {
+        if (rt.kind() == RuntimeInfo.Kind.HVM) {
+            // the workload on this JVM validates, builds and drives the HVM executable
+            cmd.add("-Djmclbench.home=" + home);
+            cmd.add("-cp");
+            cmd.add(jar.toString());
+            cmd.add(MAIN_CLASS);
+        } else if (rt.isJvm()) {
             cmd.addAll(plan.jvmFlags());
             cmd.addAll(extraJvmFlags);
             cmd.add("-Djmclbench.home=" + home);
@@ -39,6 +46,9 @@ public final class WorkloadCommand {
             cmd.add(MAIN_CLASS);
         }
         cmd.add("run");
+        if (rt.kind() == RuntimeInfo.Kind.HVM) {
+            cmd.addAll(List.of("--engine", "hvm"));
+        }
         cmd.addAll(List.of("-p", String.valueOf(run.particles()), "-n", String.valueOf(run.repetition()),
                 "-j", rt.name() + (run.engine().equals(Engines.SCJ) ? "-scj" : ""), "-O", out.toString(), "--dataset", run.dataset().dir().toString()));
         if (run.policy().equals("ideal")) {
@@ -56,7 +66,7 @@ public final class WorkloadCommand {
         if (timeScale != 1.0) {
             cmd.addAll(List.of("--time-scale", String.format(Locale.ROOT, "%s", timeScale)));
         }
-        if (!rt.isJvm() && !run.profile().has(ProfileComponent.FIFO)) {
+        if (rt.kind() == RuntimeInfo.Kind.NATIVE && !run.profile().has(ProfileComponent.FIFO)) {
             // the C program raises itself to SCHED_FIFO when permitted; without the fifo profile it
             // must run under the same scheduling as the JVMs it is compared with
             cmd.add("--no-fifo");

@@ -45,7 +45,12 @@ public final class JvmsCommand implements Callable<Integer> {
         ProfileProbe probe = ProfileProbe.withUserCache();
         String pin = LaunchPlan.defaultPinCpu();
         List<Map<String, Object>> rows = new ArrayList<>();
-        for (RuntimeInfo r : d.all()) {
+        List<RuntimeInfo> all = new ArrayList<>(d.all());
+        HvmRuntime.Availability hvm = HvmRuntime.check(JmclbenchPaths.home());
+        if (hvm.buildable()) {
+            all.add(HvmRuntime.runtime());
+        }
+        for (RuntimeInfo r : all) {
             List<String> supported = new ArrayList<>();
             Map<String, String> unsupported = new LinkedHashMap<>();
             if (!noProbe) {
@@ -92,6 +97,9 @@ public final class JvmsCommand implements Callable<Integer> {
                 Map<String, String> un = (Map<String, String>) row.get("unsupported");
                 un.forEach((k, v) -> System.out.println("    not supported: " + k + " (" + v + ")"));
             }
+        }
+        if (!hvm.buildable()) {
+            System.out.println("hvm (the icecap HVM): cannot be built here: " + hvm.detail());
         }
         System.out.println();
         System.out.println("Profiles compose with '+', e.g. g1+pretouch+fifo+pinned; the native runtime takes only fifo and pinned.");

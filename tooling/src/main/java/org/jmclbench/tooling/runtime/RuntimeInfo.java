@@ -6,7 +6,7 @@ import java.nio.file.Path;
  * One runtime under test: a JVM (its {@code java} executable) or the native C baseline.
  *
  * @param name     short name used in results and run paths, e.g. {@code temurin-25}, {@code native}
- * @param kind     JVM or native
+ * @param kind     JVM, native or the icecap HVM (driven by the workload on the tool's JVM; docs/HVM.md)
  * @param vendor   {@code java.vendor}, or "native"
  * @param version  {@code java.runtime.version} (else {@code java.version}), or the native build's version
  * @param major    Java feature release (17, 25, ...); 0 for native
@@ -16,7 +16,7 @@ import java.nio.file.Path;
 public record RuntimeInfo(String name, Kind kind, String vendor, String version, int major, Path path, Path realPath) {
 
     /** What kind of program the runtime is, which decides which profile components apply. */
-    public enum Kind { JVM, NATIVE }
+    public enum Kind { JVM, NATIVE, HVM }
 
     public boolean isJvm() {
         return kind == Kind.JVM;

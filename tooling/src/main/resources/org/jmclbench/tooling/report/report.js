@@ -428,7 +428,7 @@
     { id: 'misses', title: 'Deadline misses vs particles', caption: 'missCount per run (skipped + terminated jobs; late jobs under queue), mean over repetitions with 95% CI error bars, per runtime. The thesis\u2019s histogram with errors.', particles: false },
     { id: 'deviation', title: 'Mean localisation deviation vs particles', caption: 'Mean Euclidean xy deviation of the estimate from the ground truth (m), mean over repetitions with 95% CI error bars.', particles: false },
     { id: 'latency-jitter', title: 'Average task latency and release jitter vs particles', caption: 'Mean over all jobs, then over repetitions (ms). Solid: task latency (end \u2212 start); dashed: release jitter (start \u2212 release).', particles: false },
-    { id: 'memory', title: 'Memory areas: peak bytes per engine and memory style', caption: 'The memory-model experiment at a glance: for each runtime, engine and memory style, the peak use of each memory area (bytes, log axis; the largest over the repetitions). Java SE: the heap. SCJ: immortal and mission memory, and each handler\u2019s private memory, whose peak is that of one release (0 under the axis: the release allocated nothing, as the preallocated style promises). Hover a bar for the area\u2019s size and the bytes allocated per release. The native baseline reports no areas.', particles: true },
+    { id: 'memory', title: 'Memory areas: peak bytes per engine and memory style', caption: 'The memory-model experiment at a glance: for each runtime, engine and memory style, the peak use of each memory area (bytes, log axis; the largest over the repetitions); the table gives the peaks and the mean bytes one release allocated in the area (heap: per job of the measured run). Java SE: the heap. SCJ: immortal and mission memory, and each handler\u2019s private memory, whose peak is that of one release (0 under the axis: the release allocated nothing, as the preallocated style promises). Hover a bar for the area\u2019s size and the bytes allocated per release. The native baseline reports no areas.', particles: true },
     { id: 'causes', title: 'Why deadlines were missed', caption: 'Jobs missed or late per run (mean over the attributed repetitions), split by each job\u2019s largest cause (the primary cause of ./jmclbench explain): gc, safepoint, jit, os, preemption, compute, queued, overlap, unknown. Runs without attribution evidence are left out.', particles: true },
     { id: 'latency-index', title: 'Task latency vs event index', caption: 'Every job of the first repetition (down-sampled): predict (odometry, every 50 ms) as dots, update (laser) as triangles. The thesis\u2019s XY points graph. Shaded bands: the GC (red) and safepoint (violet) pauses of that repetition, placed on the event index through the jobs\u2019 release times (shown when one runtime is selected or the runtimes\u2019 pauses are those of the first listed).', particles: true },
     { id: 'deviation-time', title: 'Deviation over time, repeated runs', caption: 'Euclidean xy deviation (m) over the run, one line per repetition (up to five) per runtime. The thesis\u2019s XY lines graph.', particles: true },
@@ -650,6 +650,30 @@
             } } } }
       }
     });
+    renderMemoryTable(withAreas, names);
+  }
+  /** Beside the chart, the numbers: per row and area, the peak and the bytes one release allocated there. */
+  function renderMemoryTable(withAreas, names) {
+    var fig = document.getElementById('figure-memory');
+    var old = fig.querySelector('table.memory-table');
+    if (old) { old.parentNode.removeChild(old); }
+    if (!withAreas.length) { return; }
+    var t = el('table', { 'class': 'memory-table' });
+    var head = el('tr');
+    head.appendChild(el('th', { 'class': 'name' }, 'peak / per release'));
+    names.forEach(function (n) { head.appendChild(el('th', null, n)); });
+    t.appendChild(head);
+    withAreas.forEach(function (c) {
+      var tr = el('tr', { 'data-config': c.config });
+      tr.appendChild(el('td', { 'class': 'name' }, c.config));
+      names.forEach(function (n) {
+        var a = c.memoryAreas.filter(function (x) { return x.name === n; })[0];
+        tr.appendChild(el('td', { 'data-area': n }, !a ? '' : bytes(a.peakBytes) +
+          (a.bytesPerRelease !== null ? ' / ' + bytes(a.bytesPerRelease) : '')));
+      });
+      t.appendChild(tr);
+    });
+    fig.insertBefore(t, fig.querySelector('.caption'));
   }
 
   var renderCount = 0;

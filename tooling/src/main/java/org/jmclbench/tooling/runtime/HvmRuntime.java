@@ -1,0 +1,73 @@
+package org.jmclbench.tooling.runtime;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * The icecap HVM as a runtime under test (docs/HVM.md): whether its tool chain can be built on
+ * this machine, building the mission's executable ahead of a matrix, and its {@link RuntimeInfo}.
+ * Its runs are driven by the workload on the tool's own JVM ({@code run --engine hvm}).
+ */
+public final class HvmRuntime {
+    /** The runtime's name in results, matrices and the report. */
+    public static final String NAME = "hvm";
+    /** The icecap source the scripts pin (hvm/build-hvm.sh). */
+    static final String VERSION = "hvm-scj 4d31e23 + jmclbench patches (interpreter)";
+    /** Building the tool chain and the mission takes about 70 s on a quiet machine. */
+    static final long BUILD_TIMEOUT_MS = 15 * 60 * 1000L;
+
+    private HvmRuntime() {
+    }
+
+    /** Whether the tool chain can be built here, and the reason when not. */
+    public record Availability(boolean buildable, String detail) {
+    }
+
+    /** Whether HVM_SRC names the icecap source (the user's explicit choice of the HVM). */
+    public static boolean sourceGiven() {
+        String s = System.getenv("HVM_SRC");
+        return s != null && !s.isEmpty();
+    }
+
+    /** Asks {@code hvm/build-hvm.sh --check} (builds nothing). */
+    public static Availability check(Path home) {
+        Path script = home.resolve("hvm/build-hvm.sh");
+        if (!Files.isExecutable(script)) {
+            return new Availability(false, "no " + script);
+        }
+        ProcessRunner.Result r = ProcessRunner.run(List.of(script.toString(), "--check"), 60_000);
+        String detail = r.output().trim().replace("build-hvm: ", "");
+        if (r.ok() && !sourceGiven()) {
+            detail += "; HVM_SRC is not set: the source will be cloned from GitHub (needs network)";
+        }
+        return new Availability(r.ok(), detail.isEmpty() ? "exit status " + r.exitCode() : detail);
+    }
+
+    /** Builds (or finds cached) the mission's executable, so that no run pays for it; throws when it cannot. */
+    public static void prepare(Path home) {
+        ProcessRunner.Result r = ProcessRunner.run(List.of(home.resolve("hvm/build-mission.sh").toString()),
+                BUILD_TIMEOUT_MS);
+        if (!r.ok()) {
+            throw new BadUsageException("hvm: the HVM executable cannot be built: " + lastLine(r.output())
+                    + " (./jmclbench doctor; docs/HVM.md)");
+        }
+    }
+
+    /** The runtime: its program is the tool's own JVM, which runs the workload that drives the executable. */
+    public static RuntimeInfo runtime() {
+        Path java = Path.of(ProcessHandle.current().info().command().orElse("java"));
+        Path real;
+        try {
+            real = java.toRealPath();
+        } catch (java.io.IOException e) {
+            real = java;
+        }
+        return new RuntimeInfo(NAME, RuntimeInfo.Kind.HVM, "icecap", VERSION, 0, java, real);
+    }
+
+    private static String lastLine(String s) {
+        String[] lines = s.trim().split("\n");
+        return lines.length == 0 ? "" : lines[lines.length - 1];
+    }
+}

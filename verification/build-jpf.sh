@@ -10,7 +10,9 @@
 # Cache: ${JMCLBENCH_CACHE:-~/.cache/jmclbench}/jpf/<key>, where key names the commit (when known)
 # and a hash of the sources, so another source never reuses a stale build.
 #
-# Usage: build-jpf.sh [--quiet]      prints the JPF home on stdout; progress on stderr.
+# Usage: build-jpf.sh [--quiet] [--link PATH]
+#   prints the JPF home on stdout (progress on stderr), points <cache>/current at it, and
+#   --link PATH also points PATH at it.
 # JPF runs on JDK 17 only: JPF_JAVA_HOME, else JAVA_HOME when it is 17, else the Debian JDK 17.
 set -euo pipefail
 
@@ -19,7 +21,25 @@ PINNED_TARBALL_SHA256=0bed4e365b7f8f220917fd1acd552e6b22ad374f7d57a77d24de3f2c7d
 UPSTREAM=https://github.com/javapathfinder/jpf-core
 
 quiet=false
-[ "${1:-}" = --quiet ] && quiet=true
+link=""
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --quiet) quiet=true; shift ;;
+        --link) [ $# -ge 2 ] || { echo "build-jpf: --link: needs a path" >&2; exit 2; }
+                link=$2; shift 2 ;;
+        *) echo "build-jpf: unknown option $1 (usage: build-jpf.sh [--quiet] [--link PATH])" >&2; exit 2 ;;
+    esac
+done
+# <cache>/current always names the last home built or found (the Maven module's default
+# jpf.home); --link PATH also makes PATH a symbolic link to it.
+finish() {
+    ln -sfn "$1" "$cache/current"
+    if [ -n "$link" ]; then
+        mkdir -p "$(dirname "$link")"
+        ln -sfn "$1" "$link"
+    fi
+    echo "$1"
+}
 say() { $quiet || echo "build-jpf: $*" >&2; }
 die() { echo "build-jpf: $*" >&2; exit 1; }
 
@@ -75,7 +95,7 @@ cache=${JMCLBENCH_CACHE:-$HOME/.cache/jmclbench}/jpf
 home=$cache/$key
 if [ -f "$home/build/jpf.jar" ] && [ -f "$home/build/jpf-classes.jar" ] && [ -f "$home/site.properties" ]; then
     say "cached: $home"
-    echo "$home"; exit 0
+    finish "$home"; exit 0
 fi
 
 jdk=$(java17_home)
@@ -146,4 +166,4 @@ rm -rf "$home.tmp.$$"
 mv "$out" "$home.tmp.$$"
 mv -T "$home.tmp.$$" "$home" 2>/dev/null || { rm -rf "$home.tmp.$$"; }   # another build won the race
 say "done in $(( $(date +%s) - start )) s: $(cd "$home/build" && ls *.jar | tr '\n' ' ')"
-echo "$home"
+finish "$home"

@@ -1,0 +1,26 @@
+package javax.safetycritical;
+
+import javax.safetycritical.annotate.SCJAllowed;
+
+/** The frames of a Level 0 schedule, repeated in order. */
+@SCJAllowed
+public final class CyclicSchedule {
+    private final Frame[] frames;
+
+    /** A schedule of these frames (copied). */
+    public CyclicSchedule(Frame[] frames) {
+        if (frames == null || frames.length == 0) {
+            throw new IllegalArgumentException("a cyclic schedule needs at least one frame");
+        }
+        for (Frame f : frames) {
+            if (f == null) {
+                throw new IllegalArgumentException("a frame is null");
+            }
+        }
+        this.frames = frames.clone();
+    }
+
+    Frame[] frames() {
+        return frames;
+    }
+}

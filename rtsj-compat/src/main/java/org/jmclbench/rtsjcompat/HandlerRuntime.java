@@ -1,0 +1,214 @@
+package org.jmclbench.rtsjcompat;
+
+import javax.realtime.AsyncEventHandler;
+
+/**
+ * The release machinery of one SCJ handler: its own {@link ScjThread} at its priority, the
+ * release loop of its kind (subclasses), and its counts. A release runs
+ * {@code handleAsyncEvent()} with the handler's private memory current; the area is emptied
+ * when the release ends, and the release is a deadline miss when it ends after its release
+ * time plus the relative deadline. Counters are guarded by this object's monitor, which is
+ * also what an idle handler waits on; nothing here allocates once the thread runs.
+ */
+public abstract class HandlerRuntime implements Runnable {
+    /** No deadline. */
+    public static final long NO_DEADLINE = Long.MAX_VALUE;
+
+    private final AsyncEventHandler handler;
+    private final String name;
+    private final int priority;
+    private final Area privateArea;
+    private final long deadline;
+    private final long backingStore;
+    private final long stackSize;
+
+    /** The time source of the launch. */
+    protected final TimeSource time;
+    /** This handler's thread (set at mission start). */
+    protected ScjThread thread;
+    /** The mission it belongs to (set at mission start). */
+    protected MissionControl mission;
+    /** Whether this handler waits with no deadline (guarded by this). */
+    protected boolean idle;
+
+    private long releases;
+    private long completed;
+    private long deadlineMisses;
+    private long lateReleases;
+
+    /**
+     * The runtime of {@code handler}; {@code deadline} in ns ({@link #NO_DEADLINE}: none),
+     * {@code backingStore}: bytes for nested private memories, {@code stackSize}: the
+     * thread's stack (0: the JVM's default).
+     */
+    protected HandlerRuntime(AsyncEventHandler handler, String name, int priority, Area privateArea, long deadline,
+            long backingStore, long stackSize) {
+        this.handler = handler;
+        this.name = name;
+        this.priority = priority;
+        this.privateArea = privateArea;
+        this.deadline = deadline;
+        this.backingStore = backingStore;
+        this.stackSize = stackSize;
+        this.time = RunState.current().time();
+        RunState.current().addHandler(this);
+    }
+
+    /** The handler object. */
+    public final AsyncEventHandler handler() {
+        return handler;
+    }
+
+    /** The handler's name. */
+    public final String name() {
+        return name;
+    }
+
+    /** Its private memory. */
+    public final Area privateArea() {
+        return privateArea;
+    }
+
+    /** periodic, aperiodic or oneshot. */
+    public abstract String kind();
+
+    /** The release loop; returns when the mission terminates. */
+    protected abstract void releaseLoop();
+
+    /** Releases accepted but not started. */
+    protected abstract long pendingReleases();
+
+    /**
+     * Creates and starts the thread; called by the mission sequencer at the start of the
+     * execute phase ({@code missionStart}: the common time origin of the mission's releases).
+     */
+    final void start(MissionControl mission, long missionStart) {
+        this.mission = mission;
+        prepare(missionStart);
+        ScjThread st = new ScjThread(this, name, Priorities.toJava(priority), stackSize);
+        st.setBackingStore(backingStore);
+        this.thread = st;
+        time.threadStarted();
+        st.start();
+    }
+
+    /** Sets the time origin of the first release (called before the thread starts). */
+    protected void prepare(long missionStart) {
+    }
+
+    /** Wakes the handler so that it sees the termination request. */
+    protected void wakeForTermination() {
+        synchronized (this) {
+            if (idle) {
+                idle = false;
+                time.leaveIdle();
+            }
+            notifyAll();
+        }
+        ScjThread t = thread;
+        if (t != null && t != Thread.currentThread()) {
+            time.wake(t);
+        }
+    }
+
+    /** Waits (on this monitor, held by the caller) as an idle participant of the time source. */
+    protected final void idleWait() {
+        if (!idle) {
+            idle = true;
+            time.enterIdle();
+        }
+        try {
+            wait();
+        } catch (InterruptedException e) {
+            // Re-checked by the caller's loop; termination uses its own flag.
+        }
+    }
+
+    /** Makes an idle handler runnable (caller holds this monitor). */
+    protected final void leaveIdle() {
+        if (idle) {
+            idle = false;
+            time.leaveIdle();
+        }
+        notifyAll();
+    }
+
+    @Override
+    public final void run() {
+        try {
+            releaseLoop();
+        } catch (Throwable t) {
+            RunState.current().fail(name, t);
+            mission.requestTermination();
+        } finally {
+            synchronized (this) {
+                if (idle) {
+                    idle = false;
+                    time.leaveIdle();
+                }
+            }
+            mission.handlerEnded();
+            time.threadEnded();
+        }
+    }
+
+    /** Counts a release accepted (under this monitor). */
+    protected final void countRelease() {
+        releases++;
+    }
+
+    /** Counts a release that started after the next release time had passed (under this monitor). */
+    protected final void countLateRelease() {
+        lateReleases++;
+    }
+
+    /**
+     * Runs one release released at {@code releaseTime}: handleAsyncEvent in the private
+     * memory, which is then charged, checked and emptied; counts completion and deadline miss.
+     */
+    protected final void runRelease(long releaseTime) {
+        ScjThread t = thread;
+        t.enter(privateArea);
+        try {
+            handler.handleAsyncEvent();
+        } finally {
+            try {
+                t.exit();
+            } finally {
+                privateArea.empty();
+            }
+        }
+        long end = time.nanoTime();
+        synchronized (this) {
+            completed++;
+            if (deadline != NO_DEADLINE && end - releaseTime > deadline) {
+                deadlineMisses++;
+            }
+        }
+    }
+
+    /**
+     * Runs one release on the calling thread (Level 0: the cyclic executive releases its
+     * handlers itself, frame by frame).
+     */
+    public final void runInline(long releaseTime) {
+        if (thread == null) {
+            thread = ScjThread.self();
+        }
+        synchronized (this) {
+            releases++;
+        }
+        runRelease(releaseTime);
+    }
+
+    /** Whether the mission asked its handlers to end. */
+    protected final boolean terminating() {
+        return mission.terminating();
+    }
+
+    /** A snapshot of the counts. */
+    public final synchronized HandlerStats stats() {
+        return new HandlerStats(name, kind(), priority, releases, completed, pendingReleases(), deadlineMisses,
+                lateReleases);
+    }
+}

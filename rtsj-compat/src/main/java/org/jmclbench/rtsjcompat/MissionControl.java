@@ -1,0 +1,91 @@
+package org.jmclbench.rtsjcompat;
+
+/**
+ * The execute phase of one mission: starts its handlers' threads at one common time origin,
+ * carries the termination request to every handler (waking sleeping and idle ones), and lets
+ * the sequencer wait until all have ended. A handler ends after its release in progress
+ * completes (SCJ has no asynchronous transfer of control).
+ */
+public final class MissionControl {
+    private final HandlerRuntime[] handlers;
+    private volatile boolean terminating;
+    private int running;
+    private boolean sequencerIdle;
+    private long start = -1;
+
+    /** The execute phase of a mission with these handlers. */
+    public MissionControl(HandlerRuntime[] handlers) {
+        this.handlers = handlers.clone();
+    }
+
+    /** Starts every handler with {@code missionStart} (ns) as the origin of its release times. */
+    public void start(long missionStart) {
+        synchronized (this) {
+            running = handlers.length;
+            start = missionStart;
+        }
+        ScjThread.pauseAccounting();
+        try {
+            for (HandlerRuntime h : handlers) {
+                h.start(this, missionStart);
+            }
+        } finally {
+            ScjThread.resumeAccounting();
+        }
+    }
+
+    /** The time origin of the releases (ns), or -1 before {@link #start(long)}. */
+    public synchronized long startTime() {
+        return start;
+    }
+
+    /** Whether termination was requested. */
+    public boolean terminating() {
+        return terminating;
+    }
+
+    /** Asks every handler to end after its current release; false when it was already asked. */
+    public boolean requestTermination() {
+        synchronized (this) {
+            if (terminating) {
+                return false;
+            }
+            terminating = true;
+        }
+        for (HandlerRuntime h : handlers) {
+            h.wakeForTermination();
+        }
+        return true;
+    }
+
+    /** Blocks the sequencer until every handler has ended. */
+    public synchronized void awaitEnd() {
+        TimeSource time = RunState.current().time();
+        while (running > 0) {
+            if (!sequencerIdle) {
+                sequencerIdle = true;
+                time.enterIdle();
+            }
+            try {
+                wait();
+            } catch (InterruptedException e) {
+                // Only the handlers' ends matter here.
+            }
+        }
+        if (sequencerIdle) {
+            sequencerIdle = false;
+            time.leaveIdle();
+        }
+    }
+
+    synchronized void handlerEnded() {
+        running--;
+        if (running == 0) {
+            if (sequencerIdle) {
+                sequencerIdle = false;
+                RunState.current().time().leaveIdle();
+            }
+            notifyAll();
+        }
+    }
+}

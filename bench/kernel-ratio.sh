@@ -14,7 +14,7 @@ home=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)
 
 java=${JAVA_HOME:+$JAVA_HOME/bin/java}
 java=${java:-java}
-dataset=$home/datasets/match-short
+dataset=$home/data/match-short
 particles=1000,4000
 out=$home/results/kernel-ratio/$(date -u +%Y%m%dT%H%M%SZ)
 build=1

@@ -25,7 +25,7 @@ static int cmp_double(const void *a, const void *b)
 
 int main(int argc, char **argv)
 {
-	const char *dataset = "../datasets/match-short", *plist = "100,1000,10000";
+	const char *dataset = "../data/match-short", *plist = "100,1000,10000";
 	enum jm_memory memory = JM_MEMORY_PREALLOCATED;
 	int reps = 5, i;
 	char err[PATH_MAX + 256], pbuf[256], *tok, *save = NULL;

@@ -46,7 +46,7 @@ static void usage(FILE *out)
 {
 	fprintf(out,
 		"usage: kernel-jobs [options]\n"
-		"  -d, --dataset DIR        dataset folder (default ../datasets/match-short)\n"
+		"  -d, --dataset DIR        dataset folder (default ../data/match-short)\n"
 		"  -p, --particles N[,N..]  particle counts (default 1000,4000)\n"
 		"  -m, --memory STYLE       preallocated, allocating or both (default both)\n"
 		"  -j, --job KIND           predict, update or both (default both)\n"
@@ -159,7 +159,7 @@ int main(int argc, char **argv)
 		{ "help", no_argument, NULL, 'h' },
 		{ NULL, 0, NULL, 0 },
 	};
-	struct bench_opts o = { "../datasets/match-short", { 1000, 4000 }, 2, 3, 3, 3, 5, 1.0 };
+	struct bench_opts o = { "../data/match-short", { 1000, 4000 }, 2, 3, 3, 3, 5, 1.0 };
 	jm_dataset ds;
 	char err[PATH_MAX + 256];
 	int opt, rc = 0;

@@ -112,7 +112,7 @@ int main(int argc, char **argv)
 		dataset_dir = opt.dataset;
 		if (!dataset_dir) {
 			home = getenv("JMCLBENCH_HOME");
-			snprintf(default_dataset, sizeof(default_dataset), "%s%sdatasets/match-short",
+			snprintf(default_dataset, sizeof(default_dataset), "%s%sdata/match-short",
 				 home && *home ? home : "", home && *home ? "/" : "");
 			dataset_dir = default_dataset;
 		}

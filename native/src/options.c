@@ -36,7 +36,7 @@ static const struct opt options[] = {
 	{ "-odo", "--odo", "FILE", "thesis-format odometry file: time dx dy dtheta (with -laser, -real)", OPT_ODO },
 	{ "-laser", "--laser", "FILE", "thesis-format laser file: time angle (with -odo, -real)", OPT_LASER },
 	{ "-real", "--real", "FILE", "thesis-format ground truth: time x y theta (with -odo, -laser)", OPT_REAL },
-	{ NULL, "--dataset", "DIR", "dataset folder (default datasets/match-short under $JMCLBENCH_HOME)", OPT_DATASET },
+	{ NULL, "--dataset", "DIR", "dataset folder (default data/match-short under $JMCLBENCH_HOME)", OPT_DATASET },
 	{ "-T", NULL, NULL, "shorthand for --policy terminate", OPT_T },
 	{ NULL, "--policy", "P", "skip|terminate|queue: an event released while a job runs (default skip)", OPT_POLICY },
 	{ NULL, "--ideal", NULL, "one thread, no timing: the infinitely fast computer (default off)", OPT_IDEAL },

@@ -2,7 +2,7 @@
  * End-to-end tests of the jmclbench-native program (path in argv[1]): bad input and bad
  * options (exit 2, one line naming file:line or the option), an ideal run and short
  * real-time runs under each policy producing the whole run folder with the right columns.
- * A small dataset is simulated here; the shipped datasets/match-short (argv[2]) is used too
+ * A small dataset is simulated here; the shipped data/match-short (argv[2]) is used too
  * when present.
  */
 #define _GNU_SOURCE

@@ -5,10 +5,10 @@ import java.lang.management.ManagementFactory;
 import java.util.Locale;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
-import org.jmclbench.workload.mcl.AbortSignal;
-import org.jmclbench.workload.mcl.Localizer;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
-import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.core.mcl.MclConfig;
 
 /**
  * Exact bytes allocated per job by the calling thread, from the JVM's per-thread allocation

@@ -6,10 +6,10 @@ import java.util.concurrent.TimeUnit;
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
-import org.jmclbench.workload.mcl.AbortSignal;
-import org.jmclbench.workload.mcl.Localizer;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
-import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.core.mcl.MclConfig;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;
@@ -50,7 +50,7 @@ public class KernelBenchmark {
     @Param({"preallocated", "allocating"})
     String memory;
 
-    /** Dataset folder; empty for datasets/match-short found upwards from the working directory. */
+    /** Dataset folder; empty for data/match-short found upwards from the working directory. */
     @Param("")
     String dataset;
 
@@ -80,13 +80,13 @@ public class KernelBenchmark {
     private static File findDefault() throws IOException {
         File dir = new File("").getAbsoluteFile();
         while (dir != null) {
-            File c = new File(dir, "datasets/match-short");
+            File c = new File(dir, "data/match-short");
             if (new File(c, DatasetReader.ODOMETRY).isFile()) {
                 return c;
             }
             dir = dir.getParentFile();
         }
-        throw new IOException("datasets/match-short not found above " + new File("").getAbsolutePath()
+        throw new IOException("data/match-short not found above " + new File("").getAbsolutePath()
                 + "; pass -p dataset=DIR");
     }
 

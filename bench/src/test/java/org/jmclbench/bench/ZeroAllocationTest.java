@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.File;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
-import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.core.mcl.MclConfig;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 
@@ -18,11 +18,11 @@ import org.junit.jupiter.api.Test;
 class ZeroAllocationTest {
     private static Dataset dataset() throws Exception {
         File dir = new File("").getAbsoluteFile();
-        while (dir != null && !new File(dir, "datasets/match-short/odometry.txt").isFile()) {
+        while (dir != null && !new File(dir, "data/match-short/odometry.txt").isFile()) {
             dir = dir.getParentFile();
         }
-        assertTrue(dir != null, "datasets/match-short not found");
-        return DatasetReader.readFolder(new File(dir, "datasets/match-short"));
+        assertTrue(dir != null, "data/match-short not found");
+        return DatasetReader.readFolder(new File(dir, "data/match-short"));
     }
 
     @Test

@@ -17,9 +17,9 @@ public final class Fixtures {
     private Fixtures() {
     }
 
-    /** A project home with {@code datasets/tiny} (1 s) and a stand-in workload jar; sets the system properties. */
+    /** A project home with {@code data/tiny} (1 s) and a stand-in workload jar; sets the system properties. */
     public static Path home(Path dir) throws IOException {
-        Path ds = dir.resolve("datasets/tiny");
+        Path ds = dir.resolve("data/tiny");
         Files.createDirectories(ds);
         StringBuilder odo = new StringBuilder();
         StringBuilder real = new StringBuilder();

@@ -4,10 +4,10 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 
 import org.jmclbench.workload.data.Dataset;
-import org.jmclbench.workload.data.Timeline;
-import org.jmclbench.workload.mcl.AbortSignal;
-import org.jmclbench.workload.mcl.Localizer;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.record.JobRecords;
 
 /**
  * The "infinitely fast computer" (SPEC section 4): every event of the timeline processed in

@@ -2,7 +2,7 @@ package org.jmclbench.workload;
 
 import java.util.Locale;
 
-import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.core.mcl.MclConfig;
 
 /**
  * Every option of one workload run (docs/FORMATS.md section 2), with the defaults filled in;
@@ -24,6 +24,27 @@ public final class RunOptions {
         }
     }
 
+    /** The engine that runs the jobs (SPEC sections 4 and 12). */
+    public enum Engine {
+        /** The Java SE release engine: a dispatcher thread and one handler thread per task. */
+        JAVASE("javase"),
+        /** The Safety-Critical Java mission (scj-mission) on the rtsj-compat layer. */
+        SCJ("scj");
+
+        /** The option value, summary.json name and runtime-name suffix. */
+        public final String label;
+
+        Engine(String label) {
+            this.label = label;
+        }
+    }
+
+    public Engine engine = Engine.JAVASE;
+    /**
+     * Memory area sizes set with {@code --area-size AREA=BYTES} (scj engine), in the order given;
+     * empty = every area sized from the workload.
+     */
+    public final java.util.Map<String, Long> areaSizes = new java.util.LinkedHashMap<>();
     public int particles = 400;
     /** The number of the test: the last folder of the run path. */
     public int number = 1;
@@ -71,9 +92,16 @@ public final class RunOptions {
         return loadName != null ? loadName : loadAllocMbPerS > 0 ? "alloc" : "none";
     }
 
-    /** The runtime name used in the output path: the option, else derived from the JVM. */
+    /**
+     * The runtime name used in the output path: the option, else derived from the JVM, with
+     * {@code -scj} appended for the scj engine so that its runs never land in the Java SE
+     * engine's folders of the same JVM.
+     */
     public String effectiveRuntimeName() {
-        return runtimeName != null ? runtimeName : defaultRuntimeName();
+        if (runtimeName != null) {
+            return runtimeName;
+        }
+        return engine == Engine.JAVASE ? defaultRuntimeName() : defaultRuntimeName() + "-" + engine.label;
     }
 
     /** The test folder: IdealTest for ideal runs, else the policy's (SkipTest, TermTest, QueueTest). */

@@ -2,7 +2,7 @@ package org.jmclbench.workload;
 
 import java.util.Locale;
 
-import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.core.mcl.MclConfig;
 
 /**
  * Parses the workload's command line (docs/FORMATS.md section 2): the thesis's short flags
@@ -19,12 +19,16 @@ public final class RunOptionsParser {
             "  -j, --runtime-name NAME  runtime name in the output path (default: <java.vendor>-<java version>)",
             "  -O, --out DIR            output root (default results)",
             "  -odo F -laser F -real F  thesis-format data files (all three together)",
-            "  --dataset DIR            dataset folder (default datasets/match-short under the project home)",
+            "  --dataset DIR            dataset folder (default data/match-short under the project home)",
             "  -T                       same as --policy terminate",
             "  --policy skip|terminate|queue   event released while a job runs (default skip)",
             "  --ideal                  one thread, no timing: the infinitely fast computer",
             "  -c, --covariance         compute and write the covariance after each update",
-            "  --memory preallocated|allocating   memory style (default preallocated)",
+            "  --engine javase|scj      the Java SE release engine or the SCJ mission (default javase)",
+            "  --memory STYLE           memory style: preallocated|allocating (javase), preallocated|scoped (scj);",
+            "                           default preallocated",
+            "  --area-size AREA=BYTES   scj: size of a memory area (immortal, mission, predict, update, sensor);",
+            "                           repeatable (default: computed from particles and events)",
             "  --estimate mean|best     estimate (default mean)",
             "  --resample systematic|multinomial  resampling (default systematic)",
             "  --init known|uniform     initialisation (default known)",
@@ -127,6 +131,25 @@ public final class RunOptionsParser {
                     o.memory = choice(name, value(name, inline, args, i), MclConfig.Memory.class);
                     i += inline == null ? 1 : 0;
                     break;
+                case "--engine":
+                    o.engine = engine(name, value(name, inline, args, i));
+                    i += inline == null ? 1 : 0;
+                    break;
+                case "--area-size": {
+                    String v = value(name, inline, args, i);
+                    i += inline == null ? 1 : 0;
+                    int eq = v.indexOf('=');
+                    if (eq <= 0) {
+                        throw BadInputException.ofOption(name, "'" + v + "' must be AREA=BYTES (e.g. mission=200000)");
+                    }
+                    String area = v.substring(0, eq);
+                    if (org.jmclbench.scj.MissionSizes.areaIndex(area) < 0) {
+                        throw BadInputException.ofOption(name, "'" + area + "' is not an area of the mission ("
+                                + String.join(", ", org.jmclbench.scj.MissionSizes.AREA_NAMES) + ")");
+                    }
+                    o.areaSizes.put(area, (long) intIn(name, v.substring(eq + 1), 1, Integer.MAX_VALUE));
+                    break;
+                }
                 case "--estimate":
                     o.estimate = choice(name, value(name, inline, args, i), MclConfig.Estimate.class);
                     i += inline == null ? 1 : 0;
@@ -199,7 +222,35 @@ public final class RunOptionsParser {
         if (files == 3 && o.dataset != null) {
             throw BadInputException.ofOption("--dataset", "cannot be combined with -odo/-laser/-real");
         }
+        checkEngine(o);
         return o;
+    }
+
+    private static RunOptions.Engine engine(String name, String v) throws BadInputException {
+        for (RunOptions.Engine e : RunOptions.Engine.values()) {
+            if (e.label.equals(v)) {
+                return e;
+            }
+        }
+        throw BadInputException.ofOption(name, "'" + v + "' is not one of javase|scj");
+    }
+
+    /** The memory styles each engine has, and the options only one engine takes. */
+    private static void checkEngine(RunOptions o) throws BadInputException {
+        if (o.engine == RunOptions.Engine.SCJ) {
+            if (o.memory == MclConfig.Memory.ALLOCATING) {
+                throw BadInputException.ofOption("--memory", "'allocating' is not a memory style of the scj engine"
+                        + " (preallocated|scoped)");
+            }
+        } else {
+            if (o.memory == MclConfig.Memory.SCOPED) {
+                throw BadInputException.ofOption("--memory", "'scoped' is not a memory style of the javase engine"
+                        + " (preallocated|allocating; scoped is --engine scj)");
+            }
+            if (!o.areaSizes.isEmpty()) {
+                throw BadInputException.ofOption("--area-size", "sets SCJ memory areas: needs --engine scj");
+            }
+        }
     }
 
     private static String value(String name, String inline, String[] args, int i) throws BadInputException {

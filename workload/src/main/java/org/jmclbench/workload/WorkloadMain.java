@@ -6,16 +6,19 @@ import java.io.PrintStream;
 
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
-import org.jmclbench.workload.data.Timeline;
-import org.jmclbench.workload.mcl.Localizer;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
-import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.workload.output.Environment;
 import org.jmclbench.workload.output.RunFolder;
 import org.jmclbench.workload.output.RunWriter;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.release.GcLog;
 import org.jmclbench.workload.release.RealTimeRun;
+import org.jmclbench.workload.output.HeapUse;
+import org.jmclbench.workload.output.MemoryArea;
+import org.jmclbench.workload.scj.ScjRun;
 
 /**
  * Entry point of the workload process: {@code run [options]} reads a dataset, runs one test
@@ -57,6 +60,9 @@ public final class WorkloadMain {
         } catch (BadInputException e) {
             err.println("jmclbench: " + e.getMessage());
             return BAD_INPUT;
+        } catch (RunFailure e) {
+            err.println("jmclbench: failure: " + e.getMessage());
+            return FAILURE;
         } catch (IOException e) {
             err.println("jmclbench: I/O failure: " + e);
             return FAILURE;
@@ -68,9 +74,12 @@ public final class WorkloadMain {
     }
 
     private static int execute(RunOptions options, PrintStream out, PrintStream err)
-            throws BadInputException, IOException {
+            throws BadInputException, IOException, RunFailure {
         Dataset dataset = load(options);
-        Timeline timeline = Timeline.of(dataset);
+        if (options.engine == RunOptions.Engine.SCJ && !options.ideal) {
+            return executeScj(options, dataset, out);
+        }
+        Timeline timeline = dataset.timeline();
         MclConfig config = options.mclConfig();
         RunFolder folder = RunFolder.of(options);
         folder.checkNotComplete();
@@ -90,6 +99,7 @@ public final class WorkloadMain {
         }
         Localizer localizer = newLocalizer(config, dataset);
         java.util.Map<String, Object> engineFacts = null;
+        HeapUse heap = HeapUse.begin();
         if (options.ideal) {
             // The GC log covers the measured replay only, as in real-time runs.
             GcLog gcLog = options.gcLog ? GcLog.start(new File(partial, "gc.log")) : null;
@@ -107,18 +117,51 @@ public final class WorkloadMain {
             engineFacts = RealTimeRun.run(options, dataset, timeline, localizer, records, partial, err);
         }
 
-        new RunWriter(options, dataset, timeline, records, environment).engine(engineFacts).writeAll(partial);
+        java.util.List<MemoryArea> areas = java.util.Collections.singletonList(heap.end(
+                engineFacts == null ? null : (Long) engineFacts.get("allocatedBytes"), released(records)));
+        new RunWriter(options, dataset, timeline, records, environment).engine(engineFacts).memory(areas)
+                .writeAll(partial);
         folder.commit();
         // The complete run folder, the one line a script needs.
         out.println(folder.dir.getPath());
         return OK;
     }
 
+    /** The scj engine: the SCJ mission on rtsj-compat, written out through the same run writer. */
+    private static int executeScj(RunOptions options, Dataset dataset, PrintStream out)
+            throws BadInputException, IOException, RunFailure {
+        RunFolder folder = RunFolder.of(options);
+        folder.checkNotComplete();
+        Environment environment = Environment.capture();
+        File partial;
+        try {
+            partial = folder.begin();
+        } catch (IOException e) {
+            throw BadInputException.ofOption("-O", "cannot create " + folder.partial.getPath() + ": " + e);
+        }
+        ScjRun.Result result = ScjRun.run(options, dataset);
+        new RunWriter(options, dataset, result.records.timeline, result.records, environment).engine(result.facts)
+                .memory(result.areas).writeAll(partial);
+        folder.commit();
+        out.println(folder.dir.getPath());
+        return OK;
+    }
+
+    private static int released(JobRecords r) {
+        int n = 0;
+        for (int k = 0; k < r.size(); k++) {
+            if (r.startNs[k] >= 0) {
+                n++;
+            }
+        }
+        return n;
+    }
+
     private static Localizer newLocalizer(MclConfig config, Dataset d) {
         return Localizers.create(config, d.playground, d.startX, d.startY, d.startTheta);
     }
 
-    /** The dataset the options name: -odo/-laser/-real, --dataset, else datasets/match-short under the home. */
+    /** The dataset the options name: -odo/-laser/-real, --dataset, else data/match-short under the home. */
     static Dataset load(RunOptions o) throws BadInputException {
         if (o.odo != null) {
             return DatasetReader.readFiles(new File(o.odo), new File(o.laser), new File(o.real));
@@ -128,6 +171,6 @@ public final class WorkloadMain {
         }
         String home = System.getProperty("jmclbench.home");
         File base = home != null ? new File(home) : new File(".");
-        return DatasetReader.readFolder(new File(base, "datasets" + File.separator + "match-short"));
+        return DatasetReader.readFolder(new File(base, "data" + File.separator + "match-short"));
     }
 }

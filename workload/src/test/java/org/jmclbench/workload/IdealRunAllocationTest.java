@@ -8,11 +8,11 @@ import java.lang.management.ManagementFactory;
 
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
-import org.jmclbench.workload.data.Timeline;
-import org.jmclbench.workload.mcl.Localizer;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
-import org.jmclbench.workload.mcl.MclConfig;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.testing.SyntheticDataset;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -50,7 +50,7 @@ class IdealRunAllocationTest {
     @Test
     void thePreallocatedStyleAllocatesNothingWhileRunning() throws Exception {
         Dataset d = DatasetReader.readFolder(SyntheticDataset.write(new File(tmp, "d"), 5.0, 1, true, true));
-        Timeline t = Timeline.of(d);
+        Timeline t = d.timeline();
         for (MclConfig.Resample r : MclConfig.Resample.values()) {
             for (MclConfig.Estimate e : MclConfig.Estimate.values()) {
                 MclConfig c = MclConfig.builder().particles(500).resample(r).estimate(e).covariance(true).build();
@@ -64,7 +64,7 @@ class IdealRunAllocationTest {
     @Test
     void theAllocatingStyleDoesAllocate() throws Exception {
         Dataset d = DatasetReader.readFolder(SyntheticDataset.write(new File(tmp, "d"), 2.0, 1, true, true));
-        Timeline t = Timeline.of(d);
+        Timeline t = d.timeline();
         long bytes = measure(MclConfig.builder().particles(500).memory(MclConfig.Memory.ALLOCATING).build(), d, t);
         // At least one particle object (>= 16 bytes) per particle per job.
         assertTrue(bytes > 16L * 500 * t.size(), bytes + " bytes");

@@ -10,7 +10,7 @@ import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 
-import org.jmclbench.workload.mcl.MclConfig;
+import org.jmclbench.core.mcl.MclConfig;
 import org.junit.jupiter.api.Test;
 
 /** The workload's command line (FORMATS 2): thesis flags, long options, errors naming the option. */
@@ -36,6 +36,20 @@ class RunOptionsParserTest {
     }
 
     @Test
+    void theEngineDefaultsToJavaSeAndTheScjEnginesRunsGetTheirOwnRuntimeName() throws BadInputException {
+        RunOptions se = RunOptionsParser.parse(new String[] {"run"});
+        assertEquals(RunOptions.Engine.JAVASE, se.engine);
+        RunOptions scj = RunOptionsParser.parse(new String[] {"run", "--engine", "scj", "--memory", "scoped",
+                "--area-size", "mission=300000", "--area-size=update=4096"});
+        assertEquals(RunOptions.Engine.SCJ, scj.engine);
+        assertEquals(MclConfig.Memory.SCOPED, scj.memory);
+        assertEquals(se.effectiveRuntimeName() + "-scj", scj.effectiveRuntimeName());
+        assertEquals(300000L, scj.areaSizes.get("mission"));
+        assertEquals(4096L, scj.areaSizes.get("update"));
+        assertEquals("mine", RunOptionsParser.parse(new String[] {"--engine", "scj", "-j", "mine"}).effectiveRuntimeName());
+    }
+
+    @Test
     void thesisFlags() throws BadInputException {
         RunOptions o = RunOptionsParser.parse(new String[] {"-p", "1000", "-n", "7", "-j", "sun-rts", "-O", "out",
             "-odo", "a.txt", "-laser", "b.txt", "-real", "c.txt", "-T", "-c"});
@@ -55,14 +69,14 @@ class RunOptionsParserTest {
     @Test
     void longOptions() throws BadInputException {
         RunOptions o = RunOptionsParser.parse(new String[] {"run", "--particles=250", "--number", "3",
-            "--runtime-name", "temurin-25", "--out", "o", "--dataset", "datasets/stay", "--policy", "queue",
+            "--runtime-name", "temurin-25", "--out", "o", "--dataset", "data/stay", "--policy", "queue",
             "--covariance", "--memory", "allocating", "--estimate", "best", "--resample=multinomial", "--init",
             "uniform", "--seed", "-9", "--time-scale", "0.5", "--warmup", "2.5", "--spin-us", "100", "--gc-log",
             "--force", "--ideal"});
         assertEquals(250, o.particles);
         assertEquals(3, o.number);
         assertEquals("temurin-25", o.effectiveRuntimeName());
-        assertEquals("datasets/stay", o.dataset);
+        assertEquals("data/stay", o.dataset);
         assertEquals(RunOptions.Policy.QUEUE, o.policy);
         assertTrue(o.covariance);
         assertEquals(MclConfig.Memory.ALLOCATING, o.memory);

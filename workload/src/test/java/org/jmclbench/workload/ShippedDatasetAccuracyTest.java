@@ -6,35 +6,35 @@ import java.io.File;
 
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
-import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.workload.mcl.Localizers;
-import org.jmclbench.workload.mcl.MclConfig;
-import org.jmclbench.workload.record.Deviation;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.record.Deviation;
+import org.jmclbench.core.record.JobRecords;
 import org.junit.jupiter.api.Test;
 
 /**
- * Localisation accuracy of the ideal run on the datasets shipped in {@code datasets/}. Bounds
+ * Localisation accuracy of the ideal run on the datasets shipped in {@code data/}. Bounds
  * have wide margins over the measured figures (in comments) because the filter is chaotic:
  * a last-bit difference of a JVM's sin/cos/exp may send it on another, equally valid path.
  */
 class ShippedDatasetAccuracyTest {
     static File datasets() {
         for (File d = new File(System.getProperty("user.dir")).getAbsoluteFile(); d != null; d = d.getParentFile()) {
-            File candidate = new File(d, "datasets");
+            File candidate = new File(d, "data");
             if (new File(candidate, "match").isDirectory()) {
                 return candidate;
             }
         }
-        throw new AssertionError("the shipped datasets/ folder was not found above " + System.getProperty("user.dir"));
+        throw new AssertionError("the shipped data/ folder was not found above " + System.getProperty("user.dir"));
     }
 
     static Deviation idealRun(String name, MclConfig c) throws BadInputException {
         Dataset d = DatasetReader.readFolder(new File(datasets(), name));
-        Timeline t = Timeline.of(d);
+        Timeline t = d.timeline();
         JobRecords r = new JobRecords(t, false);
         IdealRun.run(d, t, Localizers.create(c, d.playground, d.startX, d.startY, d.startTheta), r);
-        return Deviation.of(d, t, r);
+        return d.deviation(t, r);
     }
 
     /** The time after which the xy error stays below the bound (0 when always below). */

@@ -20,7 +20,7 @@ import picocli.CommandLine.Option;
                 "  stay         30 s standing still in the middle (the thesis's stay case)",
                 "  figure8      60 s figure-eight around the middle",
                 "  kidnap       60 s match route, carried away at 30 s with no odometry", ""},
-        footer = {"", "Example: ./jmclbench generate --scenario match --seed 1 --out datasets/match"})
+        footer = {"", "Example: ./jmclbench generate --scenario match --seed 1 --out data/match"})
 public final class GenerateCommand implements Callable<Integer> {
     /** Longest accepted duration, seconds (one hour of data is about 15 MB). */
     static final double MAX_DURATION = 3600.0;

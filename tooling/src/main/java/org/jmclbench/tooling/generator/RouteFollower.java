@@ -2,7 +2,7 @@ package org.jmclbench.tooling.generator;
 
 import java.util.List;
 
-import org.jmclbench.workload.mcl.Angles;
+import org.jmclbench.core.mcl.Angles;
 
 /**
  * The robot's route-following controller: from the true pose and the current wheel speeds

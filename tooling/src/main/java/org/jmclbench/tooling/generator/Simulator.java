@@ -3,8 +3,8 @@ package org.jmclbench.tooling.generator;
 import java.util.ArrayList;
 import java.util.List;
 
-import org.jmclbench.workload.mcl.Angles;
-import org.jmclbench.workload.mcl.Rng;
+import org.jmclbench.core.mcl.Angles;
+import org.jmclbench.core.mcl.Rng;
 
 /**
  * The robot simulator: a differential-drive robot follows the scenario's route in steps of

@@ -14,7 +14,7 @@ import java.util.Properties;
 import org.jmclbench.tooling.runtime.BadUsageException;
 
 /**
- * A dataset folder given to a matrix by name ({@code match-short}: the project's {@code datasets/})
+ * A dataset folder given to a matrix by name ({@code match-short}: the project's {@code data/})
  * or by path, with what the runner needs of it: a label, its duration (for the timeout) and a
  * digest of its content (part of the run key, so that changed data is a new configuration).
  */
@@ -22,10 +22,10 @@ public record Dataset(String label, Path dir, double durationS, String digest) {
 
     static final String[] FILES = {"odometry.txt", "laser.txt", "real.txt"};
 
-    /** Resolves {@code nameOrPath} against {@code home/datasets}; {@code where} names the option or file:line. */
+    /** Resolves {@code nameOrPath} against {@code home/data}; {@code where} names the option or file:line. */
     public static Dataset resolve(String nameOrPath, Path home, String where) {
         boolean isName = !nameOrPath.contains("/") && !nameOrPath.equals(".") && !nameOrPath.equals("..");
-        Path dir = isName ? home.resolve("datasets").resolve(nameOrPath) : Path.of(nameOrPath).toAbsolutePath().normalize();
+        Path dir = isName ? home.resolve("data").resolve(nameOrPath) : Path.of(nameOrPath).toAbsolutePath().normalize();
         if (!Files.isDirectory(dir)) {
             throw new BadUsageException(where + ": dataset '" + nameOrPath + "': no such folder " + dir);
         }

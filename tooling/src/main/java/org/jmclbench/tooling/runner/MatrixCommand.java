@@ -41,7 +41,7 @@ public final class MatrixCommand implements Callable<Integer> {
     List<String> policies = new ArrayList<>();
     @Option(names = "--particles", paramLabel = "LIST", description = "particle counts (default: 400)")
     List<String> particles = new ArrayList<>();
-    @Option(names = "--datasets", paramLabel = "LIST", description = "dataset names under datasets/ or folders (default: match-short)")
+    @Option(names = "--datasets", paramLabel = "LIST", description = "dataset names under data/ or folders (default: match-short)")
     List<String> datasets = new ArrayList<>();
     @Option(names = "--load", paramLabel = "LIST", description = "load scenarios beside each run: none, cpu (stress-ng, else own busy processes), alloc (allocation thread in the JVM under test), mixed (default: none)")
     List<String> loads = new ArrayList<>();

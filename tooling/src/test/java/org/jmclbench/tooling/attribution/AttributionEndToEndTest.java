@@ -22,7 +22,7 @@ class AttributionEndToEndTest {
 
     /** The first {@code seconds} of the shipped match-short dataset as thesis-format files. */
     private static List<String> shortData(Path dir, double seconds) throws IOException {
-        Path src = Path.of(System.getProperty("user.dir")).getParent().resolve("datasets/match-short");
+        Path src = Path.of(System.getProperty("user.dir")).getParent().resolve("data/match-short");
         List<String> args = new ArrayList<>();
         for (String[] f : new String[][] {{"odometry.txt", "-odo"}, {"laser.txt", "-laser"}, {"real.txt", "-real"}}) {
             List<String> kept = Files.readAllLines(src.resolve(f[0]), StandardCharsets.UTF_8).stream()

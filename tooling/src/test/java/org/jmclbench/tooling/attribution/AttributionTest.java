@@ -169,7 +169,7 @@ class AttributionTest {
         List<JobRecord> jobs = List.of(job("update", 0, 0, 0, 60, 50, "late", 59));
         List<VmEvent> ev = List.of(
                 ev(VmEventKind.COMPILATION, 10, 20, "C2 CompilerThread0", "java.util.HashMap.get level 4"),
-                ev(VmEventKind.COMPILATION, 30, 35, "C2 CompilerThread0", "org.jmclbench.workload.mcl.Likelihood.weigh level 4"),
+                ev(VmEventKind.COMPILATION, 30, 35, "C2 CompilerThread0", "org.jmclbench.core.mcl.Likelihood.weigh level 4"),
                 ev(VmEventKind.CLASS_LOAD, 1, 3, "jmclbench-predict-handler", "a.B"),
                 ev(VmEventKind.CLASS_LOAD, 4, 6, "jmclbench-update-handler", "a.C"),
                 ev(VmEventKind.THREAD_BLOCKED, 40, 44, "jmclbench-update-handler", "park"));

@@ -9,7 +9,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
-import org.jmclbench.workload.mcl.Angles;
+import org.jmclbench.core.mcl.Angles;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -25,7 +25,7 @@ class DatasetConventionsTest {
     static Path folder(String name) {
         Path home = ShippedDatasetsTest.projectHome();
         return name.equals("independent") ? home.resolve("tooling/src/test/resources/independent")
-                : home.resolve("datasets").resolve(name);
+                : home.resolve("data").resolve(name);
     }
 
     /** Reads a whitespace-separated table as a thesis-format reader would. */

@@ -14,17 +14,17 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
-/** The datasets in {@code datasets/} are exactly what the generator writes today (datasets/README.md). */
+/** The datasets in {@code data/} are exactly what the generator writes today (data/README.md). */
 class ShippedDatasetsTest {
     private static final Pattern NUMBER = Pattern.compile("-?[0-9]\\.[0-9]{16}e[+-][0-9]{2,3}");
 
     static Path projectHome() {
         Path p = Path.of("").toAbsolutePath();
-        while (p != null && !Files.isRegularFile(p.resolve("datasets/README.md"))) {
+        while (p != null && !Files.isRegularFile(p.resolve("data/README.md"))) {
             p = p.getParent();
         }
         if (p == null) {
-            throw new IllegalStateException("datasets/README.md not found above " + Path.of("").toAbsolutePath());
+            throw new IllegalStateException("data/README.md not found above " + Path.of("").toAbsolutePath());
         }
         return p;
     }
@@ -32,7 +32,7 @@ class ShippedDatasetsTest {
     @ParameterizedTest
     @ValueSource(strings = {"match", "match-short", "match-quick", "stay", "figure8", "kidnap"})
     void regeneratingGivesTheSameBytes(String name, @TempDir Path tmp) throws Exception {
-        Path shipped = projectHome().resolve("datasets").resolve(name);
+        Path shipped = projectHome().resolve("data").resolve(name);
         Scenario s = Scenario.byName(name);
         SimulatedRun run = new Simulator(Playground.thesis(), SensorNoise.DEFAULT)
                 .run(s, 1, GenerateCommand.odometryCount(s.defaultDuration()));
@@ -40,7 +40,7 @@ class ShippedDatasetsTest {
         DatasetWriter.write(run, out, false);
         for (String file : DatasetWriter.FILES) {
             assertArrayEquals(Files.readAllBytes(shipped.resolve(file)), Files.readAllBytes(out.resolve(file)),
-                    name + "/" + file + " differs from a fresh generation (see datasets/README.md)");
+                    name + "/" + file + " differs from a fresh generation (see data/README.md)");
         }
         try (var files = Files.list(shipped)) {
             assertEquals(DatasetWriter.FILES.size(), files.count(), name + " holds exactly the dataset files");
@@ -50,7 +50,7 @@ class ShippedDatasetsTest {
     @ParameterizedTest
     @ValueSource(strings = {"match", "match-short", "match-quick", "stay", "figure8", "kidnap"})
     void filesFollowTheFormat(String name) throws IOException {
-        Path dir = projectHome().resolve("datasets").resolve(name);
+        Path dir = projectHome().resolve("data").resolve(name);
         checkTable(dir.resolve("odometry.txt"), 4);
         checkTable(dir.resolve("laser.txt"), 2);
         checkTable(dir.resolve("real.txt"), 4);

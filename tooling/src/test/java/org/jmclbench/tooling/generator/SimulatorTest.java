@@ -8,7 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 
-import org.jmclbench.workload.mcl.Angles;
+import org.jmclbench.core.mcl.Angles;
 import org.junit.jupiter.api.Test;
 
 class SimulatorTest {

@@ -179,7 +179,7 @@ public final class FixtureDb {
         params.put("runtimeName", cfg.runtime()).put("particles", particles).put("number", rep).put("policy", policy)
                 .put("ideal", false).put("memory", "preallocated").put("estimate", "mean").put("resample", "systematic")
                 .put("init", "known").put("seed", 1).put("covariance", false).put("timeScale", 1.0).put("warmupS", 0.0).put("spinUs", 0);
-        params.putObject("dataset").put("path", "datasets/" + dataset).put("scenario", "match");
+        params.putObject("dataset").put("path", "data/" + dataset).put("scenario", "match");
         ObjectNode env = s.putObject("environment");
         ObjectNode rt = env.putObject("runtime");
         boolean nat = "native".equals(cfg.runtime());

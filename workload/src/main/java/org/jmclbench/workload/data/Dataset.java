@@ -1,9 +1,13 @@
 package org.jmclbench.workload.data;
 
+import org.jmclbench.core.record.Deviation;
+import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+
 import java.io.File;
 import java.util.Properties;
 
-import org.jmclbench.workload.mcl.Playground;
+import org.jmclbench.core.mcl.Playground;
 
 /** One recorded run of the robot (docs/FORMATS.md section 1): odometry, laser and ground truth, by columns. */
 public final class Dataset {
@@ -95,5 +99,15 @@ public final class Dataset {
             d = Math.max(d, realTime[realTime.length - 1]);
         }
         return d;
+    }
+
+    /** The odometry and laser events merged by time, as the dispatcher releases them. */
+    public Timeline timeline() {
+        return Timeline.merge(odoTime, laserTime);
+    }
+
+    /** The localisation error of a run's records against this dataset's ground truth. */
+    public Deviation deviation(Timeline t, JobRecords r) {
+        return Deviation.of(realTime, realX, realY, realTheta, t, r);
     }
 }

@@ -11,7 +11,7 @@ import java.util.Properties;
 import java.util.regex.Pattern;
 
 import org.jmclbench.workload.BadInputException;
-import org.jmclbench.workload.mcl.Playground;
+import org.jmclbench.core.mcl.Playground;
 
 /**
  * Reads a dataset folder or the thesis's three bare files (docs/FORMATS.md section 1),

@@ -1,5 +1,16 @@
 package org.jmclbench.workload.mcl;
 
+import org.jmclbench.core.mcl.Angles;
+import org.jmclbench.core.mcl.Likelihood;
+import org.jmclbench.core.mcl.MotionModel;
+import org.jmclbench.core.mcl.Resampling;
+import org.jmclbench.core.mcl.Rng;
+import org.jmclbench.core.mcl.Playground;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.PreallocatedLocalizer;
+
 /**
  * The {@code allocating} memory style (ALGORITHM 9): a {@link Particle} object per particle
  * and new arrays and particles at every step, the garbage idiomatic Java produces. Same

@@ -1,5 +1,13 @@
 package org.jmclbench.workload.mcl;
 
+import org.jmclbench.core.mcl.MotionModel;
+import org.jmclbench.core.mcl.Playground;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.PreallocatedLocalizer;
+import org.jmclbench.core.mcl.ScopedLocalizer;
+
 /** Creates the localizer of the configured memory style, initialised per ALGORITHM 5. */
 public final class Localizers {
     private Localizers() {
@@ -37,6 +45,9 @@ public final class Localizers {
         switch (config.memory) {
             case ALLOCATING:
                 return new AllocatingLocalizer(config, p, startX, startY, startTheta);
+            case SCOPED:
+                // On the heap here (tests, conformance); the SCJ engine builds it in mission memory.
+                return new ScopedLocalizer(config, p, startX, startY, startTheta);
             case PREALLOCATED:
             default:
                 return new PreallocatedLocalizer(config, p, startX, startY, startTheta);

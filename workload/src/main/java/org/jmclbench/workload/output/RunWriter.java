@@ -11,9 +11,9 @@ import java.util.Locale;
 
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
-import org.jmclbench.workload.data.Timeline;
-import org.jmclbench.workload.record.Deviation;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.core.record.Deviation;
+import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.record.Stats;
 
 /**
@@ -30,6 +30,7 @@ public final class RunWriter {
     private final JobRecords records;
     private final Environment environment;
     private java.util.Map<String, Object> engine;
+    private java.util.List<MemoryArea> memory = java.util.Collections.emptyList();
 
     public RunWriter(RunOptions options, Dataset dataset, Timeline timeline, JobRecords records,
             Environment environment) {
@@ -50,9 +51,15 @@ public final class RunWriter {
         return this;
     }
 
+    /** The run's memory areas, written as summary.json's {@code "memory": {"areas": [...]}}. */
+    public RunWriter memory(java.util.List<MemoryArea> areas) {
+        this.memory = areas;
+        return this;
+    }
+
     /** Writes every file of the run into dir. */
     public void writeAll(File dir) throws IOException {
-        Deviation dev = Deviation.of(dataset, timeline, records);
+        Deviation dev = dataset.deviation(timeline, records);
         writeJobs(new File(dir, "odoData.txt"), Timeline.PREDICT);
         writeJobs(new File(dir, "laserData.txt"), Timeline.UPDATE);
         writePositions(new File(dir, "position.txt"), new File(dir, "positionDeviation.txt"), dev);
@@ -124,6 +131,7 @@ public final class RunWriter {
         j.name("status").value("complete");
         j.name("parameters").beginObject();
         j.name("runtimeName").value(options.effectiveRuntimeName());
+        j.name("engine").value(options.engine.label);
         j.name("particles").value(options.particles);
         j.name("number").value(options.number);
         j.name("policy").value(options.policy.label);
@@ -167,14 +175,36 @@ public final class RunWriter {
         j.endObject();
         j.name("dispatcherLatenessNs");
         writeStats(j, dispatcherLateness());
+        // Every run, ideal ones included, says which engine produced it.
+        j.name("engine").beginObject();
+        j.name("kind").value(options.engine.label);
         if (engine != null) {
-            j.name("engine").beginObject();
             for (java.util.Map.Entry<String, Object> e : engine.entrySet()) {
+                if (e.getKey().equals("kind")) {
+                    continue;
+                }
                 // Json.any: nested maps (engine.clock, engine.loadAlloc) stay JSON objects.
                 j.name(e.getKey()).any(e.getValue());
             }
+        }
+        j.endObject();
+        j.name("memory").beginObject();
+        j.name("areas").beginArray();
+        for (MemoryArea a : memory) {
+            j.beginObject();
+            j.name("name").value(a.name);
+            j.name("size").value(a.size);
+            j.name("peakBytes").value(a.peakBytes);
+            j.name("bytesPerRelease");
+            if (a.bytesPerRelease == null) {
+                j.nullValue();
+            } else {
+                j.value(a.bytesPerRelease.longValue());
+            }
             j.endObject();
         }
+        j.endArray();
+        j.endObject();
         j.name("deviation").beginObject();
         meanMax(j, "xy", dev.meanXY(), Deviation.maxAbs(dev.dxy));
         meanMax(j, "x", dev.meanAbsX(), Deviation.maxAbs(dev.dx));

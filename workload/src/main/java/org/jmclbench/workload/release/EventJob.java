@@ -1,6 +1,6 @@
 package org.jmclbench.workload.release;
 
-import org.jmclbench.workload.mcl.AbortSignal;
+import org.jmclbench.core.mcl.AbortSignal;
 
 /** The work of one released event: a job of its task on the shared robot. */
 public interface EventJob {

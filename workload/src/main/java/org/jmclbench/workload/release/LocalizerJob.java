@@ -1,10 +1,10 @@
 package org.jmclbench.workload.release;
 
 import org.jmclbench.workload.data.Dataset;
-import org.jmclbench.workload.data.Timeline;
-import org.jmclbench.workload.mcl.AbortSignal;
-import org.jmclbench.workload.mcl.Localizer;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.record.JobRecords;
 
 /**
  * The MCL job of an event: predict with the odometry increment or update with the laser angle,

@@ -12,13 +12,13 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
-import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.workload.load.AllocationNoise;
-import org.jmclbench.workload.mcl.AbortSignal;
-import org.jmclbench.workload.mcl.Localizer;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
-import org.jmclbench.workload.mcl.MclConfig;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.record.JobRecords;
 
 /**
  * A real-time (non-ideal) run: optional GC log, optional warm-up replay through the same

@@ -1,7 +1,7 @@
 package org.jmclbench.workload.release;
 
-import org.jmclbench.workload.data.Timeline;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.core.record.JobRecords;
 
 /** How the engine creates the records of a replay of its own (accuracy runs). */
 final class Records {

@@ -2,8 +2,8 @@ package org.jmclbench.workload.release;
 
 import java.util.Arrays;
 import java.util.Locale;
-import org.jmclbench.workload.mcl.AbortSignal;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.record.JobRecords;
 
 /**
  * The dispatcher alone, for comparison with cyclictest: releases empty jobs at a fixed period

@@ -1,7 +1,7 @@
 package org.jmclbench.workload.release;
 
 import java.util.concurrent.locks.LockSupport;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.record.JobRecords;
 
 /**
  * The one thread that walks the merged timeline: it sleeps until each event's absolute

@@ -1,6 +1,6 @@
 package org.jmclbench.workload.release;
 
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.record.JobRecords;
 
 /**
  * One real-time replay: a {@link ReleaseDispatcher} and one {@link TaskHandler} per task,

@@ -1,7 +1,7 @@
 package org.jmclbench.workload.release;
 
 import java.util.Arrays;
-import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.core.timeline.Timeline;
 
 /**
  * The release time, absolute deadline and task of every merged event, in nanoseconds from

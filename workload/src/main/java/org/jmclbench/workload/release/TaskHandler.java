@@ -1,8 +1,8 @@
 package org.jmclbench.workload.release;
 
 import java.util.concurrent.locks.LockSupport;
-import org.jmclbench.workload.mcl.AbortSignal;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.record.JobRecords;
 
 /**
  * The dedicated thread of one task (predict or update), like RTSJ's BoundAsyncEventHandler:

@@ -21,7 +21,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * Whole runs in both languages: the Java workload and the C baseline, each in an ideal run
- * ({@code --ideal}) on the shipped datasets/match-short with the same options, must write the
+ * ({@code --ideal}) on the shipped data/match-short with the same options, must write the
  * same estimates.
  *
  * <p>Tolerance: 1e-9 (m, rad) on every line of position.txt and covariance.txt and on the mean
@@ -87,7 +87,7 @@ class IdealCrossCheckTest {
     /** Runs one ideal run and returns its run folder. */
     private static Path run(List<String> command, List<String> opts, Path out, String runtime, String particles,
             boolean cov) throws Exception {
-        command.addAll(Arrays.asList("run", "--ideal", "--dataset", home.resolve("datasets/match-short").toString(),
+        command.addAll(Arrays.asList("run", "--ideal", "--dataset", home.resolve("data/match-short").toString(),
                 "-O", out.toString(), "-j", runtime, "-n", "1"));
         command.addAll(opts);
         Files.createDirectories(out);

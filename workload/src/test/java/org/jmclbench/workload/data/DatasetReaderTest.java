@@ -1,5 +1,7 @@
 package org.jmclbench.workload.data;
 
+import org.jmclbench.core.timeline.Timeline;
+
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -15,7 +17,7 @@ import java.nio.file.Files;
 
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.WorkloadMain;
-import org.jmclbench.workload.mcl.Playground;
+import org.jmclbench.core.mcl.Playground;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -46,7 +48,7 @@ class DatasetReaderTest {
         assertEquals(0.6, d.startY);
         assertEquals(0.1, d.startTheta);
         assertEquals("o", d.name);
-        Timeline t = Timeline.of(d);
+        Timeline t = d.timeline();
         assertEquals(5, t.size());
         assertEquals(Timeline.UPDATE, t.task(0));
         assertEquals(Timeline.PREDICT, t.task(1));

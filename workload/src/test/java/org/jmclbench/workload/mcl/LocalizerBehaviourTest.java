@@ -1,5 +1,9 @@
 package org.jmclbench.workload.mcl;
 
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.mcl.AbortSignal;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
@@ -13,7 +17,7 @@ import java.util.List;
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
-import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.workload.testing.SyntheticDataset;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -32,7 +36,7 @@ class LocalizerBehaviourTest {
     @BeforeAll
     static void dataset() throws IOException, BadInputException {
         data = DatasetReader.readFolder(SyntheticDataset.write(new File(tmp, "d"), 6.0, 42, true, true));
-        timeline = Timeline.of(data);
+        timeline = data.timeline();
     }
 
     /** Every estimate (and covariance) after each event, as raw bits. */
@@ -84,14 +88,16 @@ class LocalizerBehaviourTest {
     }
 
     @Test
-    void bothMemoryStylesAreBitIdentical() {
+    void everyMemoryStyleIsBitIdentical() {
         for (MclConfig c : variants(150)) {
             long[] pre = trace(c.toBuilder().memory(MclConfig.Memory.PREALLOCATED).build());
-            long[] alloc = trace(c.toBuilder().memory(MclConfig.Memory.ALLOCATING).build());
-            for (int i = 0; i < pre.length; i++) {
-                if (pre[i] != alloc[i]) {
-                    throw new AssertionError(c + ": value " + i + " (event " + i / 9 + ") differs: "
-                            + Double.longBitsToDouble(pre[i]) + " vs " + Double.longBitsToDouble(alloc[i]));
+            for (MclConfig.Memory other : new MclConfig.Memory[] {MclConfig.Memory.ALLOCATING, MclConfig.Memory.SCOPED}) {
+                long[] alloc = trace(c.toBuilder().memory(other).build());
+                for (int i = 0; i < pre.length; i++) {
+                    if (pre[i] != alloc[i]) {
+                        throw new AssertionError(c + " " + other + ": value " + i + " (event " + i / 9 + ") differs: "
+                                + Double.longBitsToDouble(pre[i]) + " vs " + Double.longBitsToDouble(alloc[i]));
+                    }
                 }
             }
         }

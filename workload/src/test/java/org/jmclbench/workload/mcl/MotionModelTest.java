@@ -1,5 +1,12 @@
 package org.jmclbench.workload.mcl;
 
+import org.jmclbench.core.mcl.Angles;
+import org.jmclbench.core.mcl.MotionModel;
+import org.jmclbench.core.mcl.Playground;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.mcl.AbortSignal;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

@@ -18,7 +18,7 @@ import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.WorkloadMain;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
-import org.jmclbench.workload.data.Timeline;
+import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.workload.testing.SyntheticDataset;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -59,7 +59,7 @@ class RunFolderTest {
         assertTrue(dir.isDirectory());
         assertFalse(new File(out, "test-jvm/cov/200/IdealTest/4.partial").exists());
         Dataset d = DatasetReader.readFolder(ds);
-        Timeline t = Timeline.of(d);
+        Timeline t = d.timeline();
 
         List<String[]> odo = rows(new File(dir, "odoData.txt"));
         assertEquals("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns",

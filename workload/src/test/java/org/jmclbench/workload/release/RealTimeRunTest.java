@@ -14,12 +14,12 @@ import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.WorkloadMain;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
-import org.jmclbench.workload.data.Timeline;
-import org.jmclbench.workload.mcl.AbortSignal;
-import org.jmclbench.workload.mcl.Localizer;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
-import org.jmclbench.workload.mcl.MclConfig;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.testing.SyntheticDataset;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -41,7 +41,7 @@ class RealTimeRunTest {
     void terminatedJobsLeaveTheStateUntouched() throws Exception {
         for (MclConfig.Memory memory : MclConfig.Memory.values()) {
             Dataset d = DatasetReader.readFolder(SyntheticDataset.write(new File(tmp, "data-" + memory), 2.0, 1, true, false));
-            Timeline t = Timeline.of(d);
+            Timeline t = d.timeline();
             MclConfig config = MclConfig.builder().particles(40_000).memory(memory).seed(7).build();
             RunOptions options = new RunOptions();
             options.policy = RunOptions.Policy.TERMINATE;
@@ -86,7 +86,7 @@ class RealTimeRunTest {
     @Test
     void aPreallocatedRunAllocatesNothingInTheMeasuredWindow() throws Exception {
         Dataset d = DatasetReader.readFolder(SyntheticDataset.write(new File(tmp, "data"), 4.0, 3, true, false));
-        Timeline t = Timeline.of(d);
+        Timeline t = d.timeline();
         RunOptions options = new RunOptions();
         options.particles = 300;
         options.timeScale = 0.25;

@@ -5,9 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.concurrent.TimeUnit;
-import org.jmclbench.workload.data.Timeline;
-import org.jmclbench.workload.mcl.AbortSignal;
-import org.jmclbench.workload.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.record.JobRecords;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

@@ -6,9 +6,9 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.util.Locale;
 
-import org.jmclbench.workload.mcl.Angles;
-import org.jmclbench.workload.mcl.Playground;
-import org.jmclbench.workload.mcl.Rng;
+import org.jmclbench.core.mcl.Angles;
+import org.jmclbench.core.mcl.Playground;
+import org.jmclbench.core.mcl.Rng;
 
 /**
  * A small robot simulation for tests (the real generator lives in the tooling): the robot

@@ -1,0 +1,142 @@
+package org.jmclbench.core.mcl;
+
+/**
+ * The {@code preallocated} memory style (ALGORITHM 9): flat arrays allocated once, two
+ * particle buffers and a working copy of the generator, so that a job writes only into the
+ * spare buffer and commits by swapping references. No allocation once constructed.
+ */
+public final class PreallocatedLocalizer implements Localizer {
+    private final int n;
+    private final int pollMask;
+    private final Playground playground;
+    private final MclConfig config;
+
+    // Committed particles and the spare buffer a job writes into.
+    private double[] x;
+    private double[] y;
+    private double[] theta;
+    private double[] spareX;
+    private double[] spareY;
+    private double[] spareTheta;
+
+    private final double[] weight;
+    private final int[] index;
+    private final double[] cumulative;
+
+    // The committed generator and the copy a job draws from until it commits.
+    private Rng rng;
+    private Rng work;
+
+    // The committed estimate (x, y, theta) and covariance, and an update's results before its commit.
+    private final double[] est = new double[3];
+    private final double[] cov = new double[6];
+    private final double[] newEst = new double[3];
+    private final double[] newCov = new double[6];
+
+    public PreallocatedLocalizer(MclConfig config, Playground playground, double startX, double startY, double startTheta) {
+        this.n = config.particles;
+        this.pollMask = config.pollMask();
+        this.config = config;
+        this.playground = playground;
+        x = new double[n];
+        y = new double[n];
+        theta = new double[n];
+        spareX = new double[n];
+        spareY = new double[n];
+        spareTheta = new double[n];
+        weight = new double[n];
+        index = new int[n];
+        cumulative = config.resample == MclConfig.Resample.MULTINOMIAL ? new double[n] : null;
+        rng = new Rng(config.seed);
+        work = new Rng(config.seed);
+        Initialisation.place(config, playground, startX, startY, startTheta, rng, x, y, theta, est);
+    }
+
+    @Override
+    public boolean predict(double dx, double dy, double dtheta, AbortSignal abort) {
+        Rng r = work;
+        r.copyFrom(rng);
+        if (!FilterSteps.predict(x, y, theta, spareX, spareY, spareTheta, n, dx, dy, dtheta, r, abort, pollMask)) {
+            return false;
+        }
+        // Commit: swap the buffers and the generator, then move the estimate without noise.
+        swapBuffers();
+        work = rng;
+        rng = r;
+        FilterSteps.moveEstimate(est, dx, dy, dtheta);
+        return true;
+    }
+
+    @Override
+    public boolean update(double angle, AbortSignal abort) {
+        double[] w = weight;
+        if (!FilterSteps.weigh(x, y, theta, w, n, angle, playground, abort, pollMask)) {
+            return false;
+        }
+        FilterSteps.estimate(x, y, theta, w, n, config.estimate, newEst);
+        if (config.covariance) {
+            FilterSteps.covariance(x, y, theta, w, n, newEst, newCov);
+        }
+        Rng r = work;
+        r.copyFrom(rng);
+        if (!FilterSteps.resample(x, y, theta, w, n, config.resample, r, index, cumulative, spareX, spareY,
+                spareTheta, abort, pollMask)) {
+            return false;
+        }
+        // Commit.
+        swapBuffers();
+        work = rng;
+        rng = r;
+        est[0] = newEst[0];
+        est[1] = newEst[1];
+        est[2] = newEst[2];
+        for (int i = 0; i < 6; i++) {
+            cov[i] = config.covariance ? newCov[i] : 0.0;
+        }
+        return true;
+    }
+
+    private void swapBuffers() {
+        double[] t = x;
+        x = spareX;
+        spareX = t;
+        t = y;
+        y = spareY;
+        spareY = t;
+        t = theta;
+        theta = spareTheta;
+        spareTheta = t;
+    }
+
+    @Override
+    public double estimateX() {
+        return est[0];
+    }
+
+    @Override
+    public double estimateY() {
+        return est[1];
+    }
+
+    @Override
+    public double estimateTheta() {
+        return est[2];
+    }
+
+    @Override
+    public void covariance(double[] out) {
+        System.arraycopy(cov, 0, out, 0, 6);
+    }
+
+    @Override
+    public int particleCount() {
+        return n;
+    }
+
+    @Override
+    public void particle(int i, double[] out) {
+        out[0] = x[i];
+        out[1] = y[i];
+        out[2] = theta[i];
+    }
+}

@@ -1,0 +1,96 @@
+package org.jmclbench.scj;
+
+import javax.realtime.AbsoluteTime;
+import javax.safetycritical.Mission;
+
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.record.JobRecords;
+
+/**
+ * One handler's side of a job: records the event's release, runs the job on the robot (holding
+ * its monitor, so the start is when the robot became this job's), records start, end and
+ * outcome, and counts the event as ended, the last one requesting the mission's termination.
+ * Also the job's abort signal. One per handler, used by that handler's thread only; no allocation.
+ */
+final class JobRunner implements AbortSignal {
+    private final Robot robot;
+    private final JobGate gate;
+    private final ImmortalEntry entry;
+    private final MissionClock clock;
+    private final Mission mission;
+    private final AbsoluteTime now = new AbsoluteTime();
+    private final AbsoluteTime pollTime = new AbsoluteTime();
+    private int event = JobGate.FREE;
+    // terminate, predict: the job also aborts at the release of the next odometry event
+    private long supersededAtNs = Long.MAX_VALUE;
+
+    JobRunner(Robot robot, JobGate gate, ImmortalEntry entry, MissionClock clock, Mission mission) {
+        this.robot = robot;
+        this.gate = gate;
+        this.entry = entry;
+        this.clock = clock;
+        this.mission = mission;
+    }
+
+    @Override
+    public boolean abortRequested() {
+        if (gate.abortRequested(event)) {
+            return true;
+        }
+        return supersededAtNs != Long.MAX_VALUE && clock.nowNs(pollTime) >= supersededAtNs;
+    }
+
+    /** Now, ns from the mission start. */
+    long nowNs() {
+        return clock.nowNs(now);
+    }
+
+    /** Records event k's release: its scheduled time and deadline, and when its handler woke for it. */
+    void released(int k, long wakeNs) {
+        JobRecords r = entry.records;
+        r.releaseNs[k] = entry.releaseNs[k];
+        r.deadlineNs[k] = entry.deadlineNs[k];
+        r.wakeNs[k] = wakeNs;
+    }
+
+    /** Event k was dropped at its release. */
+    void skip(int k) {
+        entry.records.outcome[k] = JobRecords.SKIPPED;
+        ended();
+    }
+
+    /**
+     * Runs k's job; {@code supersededAtNs} is when a later release of the same handler aborts
+     * it (Long.MAX_VALUE: never). Returns the job's end, ns from the mission start.
+     */
+    long run(int k, boolean update, long supersededAtNs) {
+        event = k;
+        this.supersededAtNs = supersededAtNs;
+        long start;
+        long end;
+        boolean completed;
+        synchronized (robot) {
+            start = nowNs();
+            completed = update ? robot.update(k, this) : robot.predict(k, this);
+            end = nowNs();
+        }
+        gate.release(k);
+        JobRecords r = entry.records;
+        r.startNs[k] = start;
+        r.endNs[k] = end;
+        r.cpuNs[k] = -1; // SCJ has no per-thread CPU clock
+        if (!completed) {
+            r.outcome[k] = JobRecords.TERMINATED;
+        } else {
+            r.outcome[k] = end <= r.deadlineNs[k] ? JobRecords.DONE : JobRecords.LATE;
+        }
+        ended();
+        return end;
+    }
+
+    private void ended() {
+        if (gate.ended()) {
+            mission.requestTermination();
+        }
+    }
+}

@@ -1,0 +1,239 @@
+package org.jmclbench.scj;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.mcl.PreallocatedLocalizer;
+import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.rtsjcompat.AreaUsage;
+import org.jmclbench.rtsjcompat.RunReport;
+import org.jmclbench.rtsjcompat.ScjRuntime;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+/**
+ * The whole mission on rtsj-compat (Level 1, real threads and time). No assertion depends on
+ * timing: where a property needs an unloaded machine (every job done before the next release),
+ * the test checks that from the records and is skipped, not failed, when the machine was busy.
+ */
+class MissionTest {
+    /** One finished launch: the safelet (its mission and entry), the records handed over and compat's report. */
+    static final class Launch {
+        MclSafelet safelet;
+        JobRecords records;
+        RunReport report;
+    }
+
+    static Launch launch(MissionConfiguration c, MissionInput input) {
+        Launch l = new Launch();
+        l.safelet = new MclSafelet(c, input, r -> l.records = r);
+        l.report = ScjRuntime.launch(l.safelet, 1);
+        return l;
+    }
+
+    static MissionConfiguration config(int particles, MclConfig.Memory memory, OverrunPolicy policy, double scale) {
+        return new MissionConfiguration(MclConfig.builder().particles(particles).memory(memory).covariance(true).build(),
+                policy, scale);
+    }
+
+    @BeforeAll
+    static void loadClasses() {
+        // Class loading allocates; a short mission of each style first keeps it out of the measured ones.
+        for (MclConfig.Memory m : new MclConfig.Memory[] {MclConfig.Memory.PREALLOCATED, MclConfig.Memory.SCOPED}) {
+            for (OverrunPolicy p : OverrunPolicy.values()) {
+                launch(config(16, m, p, 0.2), new SyntheticInput(0.3));
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(value = MclConfig.Memory.class, names = {"PREALLOCATED", "SCOPED"})
+    void underQueueWithNoOverlapTheEstimatesAreTheIdealRunsBitForBit(MclConfig.Memory memory) {
+        MissionConfiguration c = config(64, memory, OverrunPolicy.QUEUE, 1.0);
+        Launch l = launch(c, new SyntheticInput(2.0));
+        assertTrue(l.report.succeeded(), () -> String.valueOf(l.report.failure()));
+        JobRecords r = l.records;
+        Timeline t = r.timeline;
+        for (int k = 0; k < t.size(); k++) {
+            assertTrue(r.completed(k), "queue: event " + k + " " + JobRecords.outcomeName(r.outcome[k]));
+            // The comparison needs every job done before the next release (the machine kept up).
+            assumeTrue(k + 1 == t.size() || r.endNs[k] <= r.releaseNs[k + 1],
+                    "event " + k + " ended after the next release: machine too loaded to compare with the ideal run");
+        }
+        ImmortalEntry e = l.safelet.entry();
+        Localizer ideal = new PreallocatedLocalizer(c.mcl, e.playground, e.startX, e.startY, e.startTheta);
+        double[] cov = new double[6];
+        for (int k = 0; k < t.size(); k++) {
+            int i = t.taskIndex(k);
+            if (t.task(k) == Timeline.PREDICT) {
+                ideal.predict(e.odoDx[i], e.odoDy[i], e.odoDtheta[i], AbortSignal.NEVER);
+            } else {
+                ideal.update(e.laserAngle[i], AbortSignal.NEVER);
+                ideal.covariance(cov);
+                for (int q = 0; q < 6; q++) {
+                    assertEquals(Double.doubleToRawLongBits(cov[q]), Double.doubleToRawLongBits(r.cov[6 * k + q]),
+                            "covariance of event " + k);
+                }
+            }
+            assertEquals(Double.doubleToRawLongBits(ideal.estimateX()), Double.doubleToRawLongBits(r.estX[k]), "x " + k);
+            assertEquals(Double.doubleToRawLongBits(ideal.estimateY()), Double.doubleToRawLongBits(r.estY[k]), "y " + k);
+            assertEquals(Double.doubleToRawLongBits(ideal.estimateTheta()), Double.doubleToRawLongBits(r.estTheta[k]),
+                    "theta " + k);
+        }
+    }
+
+    /**
+     * Under every policy and style, on a replay fast enough to overlap jobs: every event ends exactly
+     * once, and the completed jobs, replayed alone in the order they ran, give the very same estimates
+     * (so skipped and terminated events changed nothing on the robot).
+     */
+    @ParameterizedTest
+    @EnumSource(OverrunPolicy.class)
+    void everyEventEndsExactlyOnceAndOnlyCompletedJobsChangeTheRobot(OverrunPolicy policy) {
+        for (MclConfig.Memory memory : new MclConfig.Memory[] {MclConfig.Memory.PREALLOCATED, MclConfig.Memory.SCOPED}) {
+            MissionConfiguration c = config(4000, memory, policy, 0.05);
+            Launch l = launch(c, new SyntheticInput(2.0));
+            assertTrue(l.report.succeeded(), () -> String.valueOf(l.report.failure()));
+            JobRecords r = l.records;
+            int n = r.size();
+            assertEquals(n, l.safelet.mission().gate().endedCount(), policy + " " + memory + ": ended events");
+            int[] order = new int[n];
+            int completed = 0;
+            for (int k = 0; k < n; k++) {
+                assertNotEquals(JobRecords.PENDING, r.outcome[k], policy + ": event " + k + " never ended");
+                if (r.completed(k)) {
+                    order[completed++] = k;
+                }
+                if (policy == OverrunPolicy.QUEUE) {
+                    assertTrue(r.completed(k), "queue processes every event");
+                }
+                if (policy == OverrunPolicy.SKIP) {
+                    assertNotEquals(JobRecords.TERMINATED, r.outcome[k], "skip never aborts");
+                }
+            }
+            // Jobs ran one at a time on the robot: their start order is their order on it.
+            sortByStart(order, completed, r);
+            ImmortalEntry e = l.safelet.entry();
+            Localizer replay = new PreallocatedLocalizer(c.mcl, e.playground, e.startX, e.startY, e.startTheta);
+            for (int q = 0; q < completed; q++) {
+                int k = order[q];
+                int i = r.timeline.taskIndex(k);
+                if (r.timeline.task(k) == Timeline.PREDICT) {
+                    replay.predict(e.odoDx[i], e.odoDy[i], e.odoDtheta[i], AbortSignal.NEVER);
+                } else {
+                    replay.update(e.laserAngle[i], AbortSignal.NEVER);
+                }
+                assertEquals(Double.doubleToRawLongBits(replay.estimateX()), Double.doubleToRawLongBits(r.estX[k]),
+                        policy + " " + memory + ": event " + k + " differs from the replay of the completed jobs");
+                assertEquals(Double.doubleToRawLongBits(replay.estimateTheta()),
+                        Double.doubleToRawLongBits(r.estTheta[k]), policy + " " + memory + ": event " + k);
+            }
+        }
+    }
+
+    private static void sortByStart(int[] order, int count, JobRecords r) {
+        for (int a = 1; a < count; a++) {
+            int k = order[a];
+            int b = a - 1;
+            while (b >= 0 && r.startNs[order[b]] > r.startNs[k]) {
+                order[b + 1] = order[b];
+                b--;
+            }
+            order[b + 1] = k;
+        }
+    }
+
+    @Test
+    void preallocatedReleasesAllocateNothing() {
+        Launch l = launch(config(500, MclConfig.Memory.PREALLOCATED, OverrunPolicy.QUEUE, 1.0), new SyntheticInput(1.0));
+        assertTrue(l.report.succeeded(), () -> String.valueOf(l.report.failure()));
+        assumeTrue(l.report.allocationMeasured(), "this JVM does not count allocated bytes");
+        for (String handler : new String[] {"predict", "update", "sensor"}) {
+            AreaUsage a = privateArea(l.report, handler);
+            assertTrue(a.cycles() > 0, handler + ": no release measured");
+            assertEquals(0, a.totalBytes(), handler + ": releases allocated " + a);
+        }
+    }
+
+    @Test
+    void scopedTemporariesLandInPrivateMemoryAndTheCommittedSetInMissionMemory() {
+        int n = 500;
+        Launch pre = launch(config(n, MclConfig.Memory.PREALLOCATED, OverrunPolicy.QUEUE, 1.0), new SyntheticInput(1.0));
+        Launch scoped = launch(config(n, MclConfig.Memory.SCOPED, OverrunPolicy.QUEUE, 1.0), new SyntheticInput(1.0));
+        assertTrue(scoped.report.succeeded(), () -> String.valueOf(scoped.report.failure()));
+        assumeTrue(scoped.report.allocationMeasured(), "this JVM does not count allocated bytes");
+        // A predict release allocates three particle arrays, an update release at least five N-sized arrays.
+        assertTrue(privateArea(scoped.report, "predict").peakBytes() >= 24L * n, "predict temporaries");
+        assertTrue(privateArea(scoped.report, "update").peakBytes() >= 36L * n, "update temporaries");
+        // Mission memory holds one particle set instead of two plus the scratch arrays.
+        long missionPre = mission(pre.report).peakBytes();
+        long missionScoped = mission(scoped.report).peakBytes();
+        assertTrue(missionPre - missionScoped >= 30L * n, "mission memory: preallocated " + missionPre
+                + " vs scoped " + missionScoped);
+    }
+
+    @Test
+    void everyAreaFitsItsComputedSizeAndTheSizesAreNotWildGuesses() {
+        for (MclConfig.Memory m : new MclConfig.Memory[] {MclConfig.Memory.PREALLOCATED, MclConfig.Memory.SCOPED}) {
+            int n = 2000;
+            Launch l = launch(config(n, m, OverrunPolicy.QUEUE, 1.0), new SyntheticInput(1.0));
+            assertTrue(l.report.succeeded(), () -> String.valueOf(l.report.failure()));
+            assumeTrue(l.report.allocationMeasured(), "this JVM does not count allocated bytes");
+            for (AreaUsage a : l.report.areas()) {
+                assertTrue(a.peakBytes() <= a.size(), a.toString());
+            }
+            // The particle-dependent part dominates mission memory: the formula must be close to what was used.
+            long size = l.safelet.sizes().size(MissionSizes.MISSION);
+            long peak = mission(l.report).peakBytes();
+            assertTrue(peak >= size - MissionSizes.MISSION_SLACK - 1024, m + ": mission memory " + peak
+                    + " is far below the computed " + size);
+        }
+    }
+
+    @Test
+    void anOverflowNamesTheArea() {
+        MissionConfiguration c = config(500, MclConfig.Memory.SCOPED, OverrunPolicy.QUEUE, 1.0)
+                .areaSize(MissionSizes.UPDATE, 1024);
+        Launch l = launch(c, new SyntheticInput(0.5));
+        assertTrue(!l.report.succeeded(), "an update release needs far more than 1 KiB in the scoped style");
+        assertNotNull(l.report.failure().areaName());
+        assertTrue(l.report.failure().areaName().endsWith("update"), l.report.failure().getMessage());
+        assertTrue(l.report.failure().bytesNeeded() > 1024);
+    }
+
+    @Test
+    void aMissionMemoryTooSmallForTheParticlesFailsNamingIt() {
+        MissionConfiguration c = config(5000, MclConfig.Memory.PREALLOCATED, OverrunPolicy.QUEUE, 1.0)
+                .areaSize(MissionSizes.MISSION, 64 * 1024);
+        Launch l = launch(c, new SyntheticInput(0.5));
+        assertTrue(!l.report.succeeded());
+        assertEquals("MissionMemory", l.report.failure().areaName(), l.report.failure().getMessage());
+    }
+
+    static AreaUsage privateArea(RunReport r, String handler) {
+        for (AreaUsage a : r.areas()) {
+            if (a.name().endsWith(":" + handler)) {
+                return a;
+            }
+        }
+        throw new AssertionError("no private memory of " + handler + " in " + r.areas());
+    }
+
+    static AreaUsage mission(RunReport r) {
+        for (AreaUsage a : r.areas()) {
+            if ("mission".equals(a.kind())) {
+                return a;
+            }
+        }
+        throw new AssertionError("no mission memory in " + r.areas());
+    }
+}

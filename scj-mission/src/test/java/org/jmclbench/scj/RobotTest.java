@@ -1,0 +1,129 @@
+package org.jmclbench.scj;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The robot and gate without threads: an aborted job, at any poll, leaves the robot
+ * bit-identical (the terminate policy's promise), in both memory styles; the gate admits and
+ * aborts as each policy says.
+ */
+class RobotTest {
+    private static final int PARTICLES = 40;
+    private static final int POLL = 8; // five polls per loop over the particles
+
+    /** Aborts at the n-th poll (1-based). */
+    static final class AbortAt implements AbortSignal {
+        final int at;
+        int polls;
+
+        AbortAt(int at) {
+            this.at = at;
+        }
+
+        @Override
+        public boolean abortRequested() {
+            return ++polls >= at;
+        }
+    }
+
+    @Test
+    void anAbortedJobLeavesTheRobotBitIdentical() {
+        for (MclConfig.Memory memory : new MclConfig.Memory[] {MclConfig.Memory.PREALLOCATED, MclConfig.Memory.SCOPED}) {
+            MissionConfiguration c = new MissionConfiguration(MclConfig.builder().particles(PARTICLES).pollInterval(POLL)
+                    .memory(memory).covariance(true).build(), OverrunPolicy.TERMINATE, 1.0);
+            ImmortalEntry entry = new ImmortalEntry(new SyntheticInput(1.0), c);
+            long[] reference = trace(c, entry, -1, 0);
+            int aborted = 0;
+            for (int victim = 3; victim < 9; victim++) {
+                for (int at = 1; at <= 16; at++) {
+                    long[] t = trace(c, entry, victim, at);
+                    if (t == null) {
+                        continue; // fewer polls than at: the job completed, nothing to compare
+                    }
+                    aborted++;
+                    for (int i = 0; i < reference.length; i++) {
+                        assertEquals(reference[i], t[i], memory + ": event " + victim + " aborted at poll " + at
+                                + " changed value " + i);
+                    }
+                }
+            }
+            assertTrue(aborted >= 20, "too few aborts to prove anything: " + aborted);
+        }
+    }
+
+    /**
+     * Every event in order on a fresh robot; event {@code victim} is first tried with an abort at
+     * poll {@code at} (which must leave everything as it was) and then run to completion. Returns
+     * the bits of every committed estimate and covariance, or null when the victim never polled {@code at} times.
+     */
+    private static long[] trace(MissionConfiguration c, ImmortalEntry entry, int victim, int at) {
+        entry.records.clear();
+        Robot robot = c.newRobot(c.newLocalizer(entry.playground, entry.startX, entry.startY, entry.startTheta), entry);
+        Timeline t = entry.timeline;
+        for (int k = 0; k < t.size(); k++) {
+            if (k == victim) {
+                AbortAt signal = new AbortAt(at);
+                boolean completed = run(robot, t, k, signal);
+                if (signal.polls < at) {
+                    return null;
+                }
+                assertFalse(completed, "a job asked to abort at poll " + at + " completed");
+            }
+            assertTrue(run(robot, t, k, AbortSignal.NEVER));
+        }
+        JobRecords r = entry.records;
+        long[] bits = new long[t.size() * 9];
+        for (int k = 0; k < t.size(); k++) {
+            bits[9 * k] = Double.doubleToRawLongBits(r.estX[k]);
+            bits[9 * k + 1] = Double.doubleToRawLongBits(r.estY[k]);
+            bits[9 * k + 2] = Double.doubleToRawLongBits(r.estTheta[k]);
+            for (int i = 0; i < 6; i++) {
+                bits[9 * k + 3 + i] = Double.doubleToRawLongBits(r.cov[6 * k + i]);
+            }
+        }
+        return bits;
+    }
+
+    private static boolean run(Robot robot, Timeline t, int k, AbortSignal abort) {
+        return t.task(k) == Timeline.PREDICT ? robot.predict(k, abort) : robot.update(k, abort);
+    }
+
+    @Test
+    void skipAdmitsOneEventAtATime() {
+        JobGate g = new JobGate(OverrunPolicy.SKIP, 4);
+        assertTrue(g.admit(0));
+        assertFalse(g.admit(1), "the robot is reserved by event 0");
+        g.release(0);
+        assertTrue(g.admit(2));
+        assertFalse(g.abortRequested(2), "skip never aborts");
+    }
+
+    @Test
+    void terminateAbortsAllButTheLatest() {
+        JobGate g = new JobGate(OverrunPolicy.TERMINATE, 4);
+        assertTrue(g.admit(0));
+        assertFalse(g.abortRequested(0));
+        assertTrue(g.admit(1));
+        assertTrue(g.abortRequested(0), "a later release aborts the job in progress");
+        assertFalse(g.abortRequested(1));
+    }
+
+    @Test
+    void queueAdmitsEverythingAndNeverAborts() {
+        JobGate g = new JobGate(OverrunPolicy.QUEUE, 3);
+        assertTrue(g.admit(0));
+        assertTrue(g.admit(1));
+        assertFalse(g.abortRequested(0));
+        assertFalse(g.ended());
+        assertFalse(g.ended());
+        assertTrue(g.ended(), "the third of three events is the last");
+    }
+}

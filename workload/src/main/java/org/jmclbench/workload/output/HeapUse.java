@@ -1,0 +1,42 @@
+package org.jmclbench.workload.output;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryPoolMXBean;
+import java.lang.management.MemoryType;
+
+/**
+ * The Java SE engine's one memory area, the heap: its maximum size, the peak used over the run
+ * (the heap pools' peaks, reset when the run begins) and bytes allocated per release.
+ */
+public final class HeapUse {
+    private HeapUse() {
+    }
+
+    /** Resets the heap pools' peaks: call right before the run. */
+    public static HeapUse begin() {
+        for (MemoryPoolMXBean p : ManagementFactory.getMemoryPoolMXBeans()) {
+            if (p.getType() == MemoryType.HEAP && p.isValid()) {
+                p.resetPeakUsage();
+            }
+        }
+        return new HeapUse();
+    }
+
+    /**
+     * The heap area after the run.
+     *
+     * @param allocatedBytes bytes the engine's threads allocated in the measured window, or null (unknown, ideal runs)
+     * @param releases       the jobs released in the window
+     */
+    public MemoryArea end(Long allocatedBytes, int releases) {
+        long peak = 0;
+        for (MemoryPoolMXBean p : ManagementFactory.getMemoryPoolMXBeans()) {
+            if (p.getType() == MemoryType.HEAP && p.isValid() && p.getPeakUsage() != null) {
+                peak += p.getPeakUsage().getUsed();
+            }
+        }
+        Long perRelease = allocatedBytes == null || allocatedBytes < 0 || releases == 0
+                ? null : Math.round((double) allocatedBytes / releases);
+        return new MemoryArea("heap", Runtime.getRuntime().maxMemory(), peak, perRelease);
+    }
+}

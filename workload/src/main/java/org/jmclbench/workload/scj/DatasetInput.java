@@ -1,0 +1,84 @@
+package org.jmclbench.workload.scj;
+
+import org.jmclbench.core.mcl.Playground;
+import org.jmclbench.scj.MissionInput;
+import org.jmclbench.workload.data.Dataset;
+
+/**
+ * The mission's input on Java SE: a dataset read by the workload, or its first events (a
+ * warm-up or class-loading prefix). Copies into the mission's arrays; allocates nothing.
+ */
+public final class DatasetInput implements MissionInput {
+    private final Dataset dataset;
+    private final int odometry;
+    private final int laser;
+
+    /** The whole dataset. */
+    public DatasetInput(Dataset dataset) {
+        this(dataset, dataset.odometryCount(), dataset.laserCount());
+    }
+
+    /** The first {@code odometry} odometry and {@code laser} laser events of the dataset. */
+    public DatasetInput(Dataset dataset, int odometry, int laser) {
+        this.dataset = dataset;
+        this.odometry = odometry;
+        this.laser = laser;
+    }
+
+    /** The events of the dataset released before {@code seconds} (scaled time is the mission's business). */
+    public static DatasetInput before(Dataset d, double seconds) {
+        int o = 0;
+        while (o < d.odometryCount() && d.odoTime[o] < seconds) {
+            o++;
+        }
+        int l = 0;
+        while (l < d.laserCount() && d.laserTime[l] < seconds) {
+            l++;
+        }
+        return new DatasetInput(d, Math.max(1, o), l);
+    }
+
+    @Override
+    public int odometryCount() {
+        return odometry;
+    }
+
+    @Override
+    public int laserCount() {
+        return laser;
+    }
+
+    @Override
+    public void readOdometry(double[] time, double[] dx, double[] dy, double[] dtheta) {
+        System.arraycopy(dataset.odoTime, 0, time, 0, odometry);
+        System.arraycopy(dataset.odoDx, 0, dx, 0, odometry);
+        System.arraycopy(dataset.odoDy, 0, dy, 0, odometry);
+        System.arraycopy(dataset.odoDtheta, 0, dtheta, 0, odometry);
+    }
+
+    @Override
+    public void readLaser(double[] time, double[] angle) {
+        System.arraycopy(dataset.laserTime, 0, time, 0, laser);
+        System.arraycopy(dataset.laserAngle, 0, angle, 0, laser);
+    }
+
+    @Override
+    public Playground playground() {
+        return dataset.playground;
+    }
+
+    @Override
+    public double startX() {
+        return dataset.startX;
+    }
+
+    @Override
+    public double startY() {
+        return dataset.startY;
+    }
+
+    @Override
+    public double startTheta() {
+        return dataset.startTheta;
+    }
+}

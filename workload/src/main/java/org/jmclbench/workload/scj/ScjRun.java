@@ -1,0 +1,208 @@
+package org.jmclbench.workload.scj;
+
+import java.io.BufferedReader;
+import java.io.File;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.mcl.MotionModel;
+import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.rtsjcompat.AreaUsage;
+import org.jmclbench.rtsjcompat.HandlerStats;
+import org.jmclbench.rtsjcompat.MissionFailure;
+import org.jmclbench.rtsjcompat.RunReport;
+import org.jmclbench.rtsjcompat.ScjRuntime;
+import org.jmclbench.scj.MclSafelet;
+import org.jmclbench.scj.MissionConfiguration;
+import org.jmclbench.scj.MissionSizes;
+import org.jmclbench.scj.OverrunPolicy;
+import org.jmclbench.scj.Periodicity;
+import org.jmclbench.workload.BadInputException;
+import org.jmclbench.workload.RunFailure;
+import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.output.MemoryArea;
+
+/**
+ * The {@code --engine scj} run on Java SE: checks that the odometry has a period, launches the
+ * SCJ mission at Level 1 through rtsj-compat (a short mission first, so that class loading
+ * stays out of the measured releases), and turns the compat layer's report into the run's
+ * memory areas and engine facts. An overflowing area or any other mission failure is a
+ * {@link RunFailure} naming it.
+ */
+public final class ScjRun {
+    /** Events of the class-loading mission run before the measured one (when there is no warm-up). */
+    static final int PRELOAD_EVENTS = 4;
+
+    /** What a finished mission left: its records, memory areas and facts for summary.json's engine object. */
+    public static final class Result {
+        public final JobRecords records;
+        public final List<MemoryArea> areas;
+        public final Map<String, Object> facts;
+
+        Result(JobRecords records, List<MemoryArea> areas, Map<String, Object> facts) {
+            this.records = records;
+            this.areas = areas;
+            this.facts = facts;
+        }
+    }
+
+    private ScjRun() {
+    }
+
+    /** Runs the mission of the options on the dataset. */
+    public static Result run(RunOptions options, Dataset dataset) throws BadInputException, RunFailure {
+        checkPeriodic(dataset);
+        MissionConfiguration config = configuration(options, options.mclConfig(), options.timeScale, true);
+
+        // Class loading allocates (some 30 KB, charged to whatever area is current): a short
+        // mission of the same kind first, so that no measured release pays for it.
+        Map<String, Object> facts = new LinkedHashMap<>();
+        facts.put("kind", "scj");
+        if (options.warmupS > 0) {
+            DatasetInput warm = DatasetInput.before(dataset, options.warmupS);
+            facts.put("warmupEvents", warm.odometryCount() + warm.laserCount());
+            launch(new MclSafelet(configuration(options, options.mclConfig(), options.timeScale, false), warm,
+                    new RecordCapture()), "the warm-up mission");
+        } else {
+            MclConfig small = options.mclConfig().toBuilder()
+                    .particles(Math.min(options.particles, 2 * MotionModel.ABORT_BLOCK)).build();
+            DatasetInput first = new DatasetInput(dataset, Math.min(PRELOAD_EVENTS, dataset.odometryCount()),
+                    Math.min(PRELOAD_EVENTS, dataset.laserCount()));
+            launch(new MclSafelet(configuration(options, small, 0.1, false), first, new RecordCapture()),
+                    "the class-loading mission");
+            facts.put("warmupEvents", 0);
+        }
+
+        RecordCapture output = new RecordCapture();
+        MclSafelet safelet = new MclSafelet(config, new DatasetInput(dataset), output);
+        RunReport report = launch(safelet, "the mission");
+        JobRecords records = output.records();
+        if (records == null) {
+            throw new RunFailure("the mission ended without handing over its records");
+        }
+        for (int k = 0; k < records.size(); k++) {
+            if (records.outcome[k] == JobRecords.PENDING) {
+                throw new RunFailure("event " + k + " never ended (the mission terminated early)");
+            }
+        }
+        facts.put("level", report.level());
+        facts.put("prioritiesApplied", report.prioritiesApplied());
+        facts.put("allocationMeter", report.allocationMeter());
+        facts.put("timeSource", report.timeSource());
+        Map<String, Object> handlers = new LinkedHashMap<>();
+        for (HandlerStats h : report.handlers()) {
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("kind", h.kind());
+            m.put("priority", h.priority());
+            m.put("releases", h.releases());
+            m.put("deadlineMisses", h.deadlineMisses());
+            m.put("lateReleases", h.lateReleases());
+            handlers.put(h.name(), m);
+        }
+        facts.put("handlers", handlers);
+        return new Result(records, areas(report), facts);
+    }
+
+    /** The mission's configuration for the options, with a filter (the run's, or a smaller one) and a time scale. */
+    static MissionConfiguration configuration(RunOptions o, MclConfig mcl, double timeScale, boolean areaSizes) {
+        OverrunPolicy policy = OverrunPolicy.valueOf(o.policy.name());
+        MissionConfiguration c = new MissionConfiguration(mcl, policy, timeScale);
+        if (areaSizes) {
+            for (Map.Entry<String, Long> e : o.areaSizes.entrySet()) {
+                c.areaSize(MissionSizes.areaIndex(e.getKey()), e.getValue());
+            }
+        }
+        return c;
+    }
+
+    private static RunReport launch(MclSafelet safelet, String what) throws RunFailure {
+        RunReport report = ScjRuntime.launch(safelet, 1);
+        if (report == null) {
+            throw new RunFailure(what + " did not run (no report from rtsj-compat)");
+        }
+        if (!report.succeeded()) {
+            MissionFailure f = report.failure();
+            if (f.areaName() != null) {
+                String area = areaName(f.areaName());
+                long size = 0;
+                for (AreaUsage a : report.areas()) {
+                    if (a.name().equals(f.areaName())) {
+                        size = a.size();
+                    }
+                }
+                throw new RunFailure("memory area '" + area + "' overflowed in " + what + ": it needed "
+                        + f.bytesNeeded() + " bytes, its size is " + size + " bytes (--area-size " + area + "=BYTES)");
+            }
+            throw new RunFailure(what + " failed: " + f.getMessage());
+        }
+        return report;
+    }
+
+    /** The compat layer's areas under the mission's names (immortal, mission, the handlers' names). */
+    static List<MemoryArea> areas(RunReport report) {
+        List<MemoryArea> out = new ArrayList<>();
+        for (AreaUsage a : report.areas()) {
+            Long perRelease = "private".equals(a.kind()) && a.cycles() > 0
+                    ? Math.round(a.bytesPerCycle()) : null;
+            out.add(new MemoryArea(areaName(a.name()), a.size(), a.peakBytes(), perRelease));
+        }
+        return out;
+    }
+
+    /** ImmortalMemory -> immortal, MissionMemory -> mission, PrivateMemory:NAME -> NAME. */
+    static String areaName(String compatName) {
+        if (compatName.equals("ImmortalMemory")) {
+            return "immortal";
+        }
+        if (compatName.equals("MissionMemory")) {
+            return "mission";
+        }
+        int colon = compatName.indexOf(':');
+        return colon >= 0 ? compatName.substring(colon + 1) : compatName.toLowerCase(Locale.ROOT);
+    }
+
+    /** A PeriodicEventHandler needs a period: odometry whose intervals vary more than the tolerance is bad input. */
+    static void checkPeriodic(Dataset d) throws BadInputException {
+        int i = Periodicity.firstIrregular(d.odoTime);
+        if (i < 0) {
+            return;
+        }
+        double period = Periodicity.period(d.odoTime);
+        throw BadInputException.atLine(d.odometryFile.getPath(), dataLine(d.odometryFile, i),
+                String.format(Locale.ROOT, "odometry is not periodic: the interval %.6f s differs from the period"
+                        + " %.6f s by more than %.3f s; the scj engine's PeriodicEventHandler needs a period",
+                        d.odoTime[i] - d.odoTime[i - 1], period, Periodicity.TOLERANCE_S));
+    }
+
+    /** The file line (1-based) of data row i, skipping blank and comment lines as the reader does. */
+    static int dataLine(File f, int row) {
+        try (BufferedReader r = new BufferedReader(new InputStreamReader(Files.newInputStream(f.toPath()),
+                StandardCharsets.UTF_8))) {
+            int lineNo = 0;
+            int rows = -1;
+            String line;
+            while ((line = r.readLine()) != null) {
+                lineNo++;
+                String s = line.trim();
+                if (s.isEmpty() || s.charAt(0) == '#') {
+                    continue;
+                }
+                if (++rows == row) {
+                    return lineNo;
+                }
+            }
+        } catch (IOException e) {
+            // fall through: the row number is still a fair pointer
+        }
+        return row + 1;
+    }
+}

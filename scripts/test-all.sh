@@ -15,4 +15,10 @@ fi
 echo "== Java tests (Maven) =="
 java17=/usr/lib/jvm/java-17-openjdk-amd64
 if [ -z "${JAVA_HOME:-}" ] && [ -d "$java17" ]; then export JAVA_HOME=$java17; fi
-mvn -B -ntp verify "$@"
+# Java PathFinder is on no registry: build it (from JPF_CORE_SRC, else a clone) before Maven
+# resolves the verification module's dependencies on its jars.
+jpf_home=$("$home/verification/build-jpf.sh")
+mvn -B -ntp -Djpf.home="$jpf_home" verify "$@"
+
+echo "== verification (Java PathFinder and static checks of the SCJ mission) =="
+"$home/jmclbench" verify

@@ -1,5 +1,6 @@
 package org.jmclbench.verification.bytecode;
 
+import org.objectweb.asm.Opcodes;
 import org.objectweb.asm.Type;
 import org.objectweb.asm.tree.AbstractInsnNode;
 import org.objectweb.asm.tree.ClassNode;
@@ -18,8 +19,10 @@ import java.util.List;
  * its bytecode; its body is the instructions from the jump's target to the jump. A loop polls
  * when its body calls {@code abortRequested()Z}. A loop that does not poll is still fine inside
  * an enclosing loop that polls directly, outside any other loop nested in it (the block loop
- * that polls once per block of particles). Every other loop is reported, at the line of its
- * head: after an abort request it may run all its particles before the job notices.
+ * that polls once per block of particles). A loop whose head compares its counter with a
+ * constant ({@code for (i = 0; i < 6; i++)}, over a covariance's six terms) is not a particle
+ * loop and is left alone. Every other loop is reported, at the line of its head: after an abort
+ * request it may run all its particles before the job notices.
  */
 public final class AbortPollCheck {
     private final ClassPool pool;
@@ -76,11 +79,29 @@ public final class AbortPollCheck {
             }
         }
         for (int[] loop : loops) {
-            if (!polled(loop, loops, polls)) {
+            if (!constantBound(insns, loop) && !polled(loop, loops, polls)) {
                 out.add(new Violation(c.name.replace('/', '.'), m.name, Lines.of(insns[loop[0]]),
                         "loop does not poll abortRequested() (terminable: takes an " + signalSimpleName + ")"));
             }
         }
+    }
+
+    /** True when the loop's head is {@code iload; <int constant>; if_icmpXX} (javac's bounded for). */
+    private static boolean constantBound(AbstractInsnNode[] insns, int[] loop) {
+        List<AbstractInsnNode> head = new ArrayList<>();
+        for (int i = loop[0]; i <= loop[1] && head.size() < 3; i++) {
+            if (insns[i].getOpcode() >= 0) {
+                head.add(insns[i]);
+            }
+        }
+        if (head.size() < 3 || head.get(0).getOpcode() != Opcodes.ILOAD) {
+            return false;
+        }
+        int c = head.get(1).getOpcode();
+        boolean constant = (c >= Opcodes.ICONST_M1 && c <= Opcodes.ICONST_5) || c == Opcodes.BIPUSH
+                || c == Opcodes.SIPUSH;
+        int j = head.get(2).getOpcode();
+        return constant && j >= Opcodes.IF_ICMPEQ && j <= Opcodes.IF_ICMPLE;
     }
 
     private static boolean polled(int[] loop, List<int[]> loops, List<Integer> polls) {

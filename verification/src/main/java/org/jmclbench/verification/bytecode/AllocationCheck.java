@@ -36,9 +36,19 @@ public final class AllocationCheck {
             "java/lang/Float", "java/lang/Short", "java/lang/Byte", "java/lang/Character", "java/lang/Boolean");
 
     private final ClassPool pool;
+    private final Predicate<String> follow;
 
     public AllocationCheck(ClassPool pool) {
+        this(pool, c -> true);
+    }
+
+    /**
+     * @param follow which classes (internal names) the walk enters; a memory style that is not
+     *               the one checked (the scoped localizer, for the preallocated style) is left out
+     */
+    public AllocationCheck(ClassPool pool, Predicate<String> follow) {
         this.pool = pool;
+        this.follow = follow;
     }
 
     /** Checks every release of the classes {@code isRelease} accepts (internal names). */
@@ -76,7 +86,7 @@ public final class AllocationCheck {
                         ? pool.implementations(call.owner, call.name, call.desc)
                         : single(pool.resolve(call.owner, call.name, call.desc));
                 for (ClassPool.Owned t : targets) {
-                    if (seen.add(t.key()) && t.method().instructions.size() > 0) {
+                    if (follow.test(t.owner().name) && seen.add(t.key()) && t.method().instructions.size() > 0) {
                         work.add(new Reached(t, r.root()));
                     }
                 }

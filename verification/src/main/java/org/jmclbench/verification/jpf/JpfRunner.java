@@ -47,7 +47,8 @@ public final class JpfRunner {
             String name = new File(e).getName();
             // JPF's own jars come from the home; never two copies on one path.
             if (!e.isEmpty() && !(name.startsWith("jpf") && name.endsWith(".jar"))) {
-                cp.add(e);
+                // JPF runs in its own working directory: every entry absolute.
+                cp.add(new File(e).getAbsolutePath());
             }
         }
         this.hostClassPath = cp;

@@ -16,7 +16,8 @@ import gov.nasa.jpf.vm.VM;
  * {@code handleAsyncEvent} of a release class is on the allocating thread's stack. Class
  * initialisation ({@code <clinit>}) is exempt: it runs once per class, not per release, and an
  * SCJ VM does it before the mission starts. So is the String of an {@code ldc} constant: JPF
- * creates it when the instruction first runs, a JVM when it resolves the class's constants.
+ * creates it when the instruction first runs, a JVM when it resolves the class's constants. And
+ * so is the {@code java.lang.Class} object JPF creates when a class is first used (loading).
  *
  * <p>Configuration: {@code jmclbench.release.method} (default {@code handleAsyncEvent}) and
  * {@code jmclbench.release.classes}, class-name prefixes of the handlers whose releases must not
@@ -37,7 +38,7 @@ public final class ReleaseAllocationListener extends PropertyListenerAdapter {
         if (violation != null || ti == null) {
             return;
         }
-        if (ti.getPC() instanceof LDC) {
+        if (ti.getPC() instanceof LDC || ei.getClassInfo().getName().equals("java.lang.Class")) {
             return;
         }
         String release = null;

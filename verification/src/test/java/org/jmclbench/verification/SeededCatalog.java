@@ -5,7 +5,6 @@ import org.jmclbench.verification.jpf.JpfCheck.Expectation;
 import org.jmclbench.verification.mission.MissionDriver;
 import org.jmclbench.verification.seeded.AllocatingRelease;
 import org.jmclbench.verification.seeded.PollingJob;
-import org.jmclbench.verification.seeded.mission.CommitBeforePollConfiguration;
 import org.jmclbench.verification.seeded.mission.StrayAllocationConfiguration;
 import org.jmclbench.verification.toy.ToyChecks;
 
@@ -32,11 +31,6 @@ public final class SeededCatalog implements CheckCatalog {
                 MissionDriver.class.getName(), MissionChecks.args("queue", StrayAllocationConfiguration.class.getName()),
                 MissionChecks.config(), Expectation.violation("ReleaseAllocationListener", "allocated a [D at"),
                 MissionChecks.scope() + ", seeded stray allocation"));
-        l.add(new JpfCheck("mission-seeded-commit-before-poll", "P3 an aborted job leaves the robot bit-identical",
-                "terminate", MissionDriver.class.getName(),
-                MissionChecks.args("terminate", CommitBeforePollConfiguration.class.getName()), MissionChecks.config(),
-                Expectation.violation("NoUncaughtExceptionsProperty", "P3 an aborted job changed the robot"),
-                MissionChecks.scope() + ", seeded commit before poll"));
         l.addAll(ToyChecks.all());
         return l;
     }

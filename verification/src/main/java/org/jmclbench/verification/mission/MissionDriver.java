@@ -1,5 +1,7 @@
 package org.jmclbench.verification.mission;
 
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;
 import org.jmclbench.core.record.JobRecords;
@@ -40,6 +42,12 @@ public final class MissionDriver implements MissionInput, MissionOutput {
         MissionConfiguration config = (MissionConfiguration) c
                 .getConstructor(MclConfig.class, OverrunPolicy.class, double.class)
                 .newInstance(MclConfig.of(particles), policy, 1.0);
+        // Load the job code's classes before the mission, as an SCJ VM does before it starts and
+        // as the JVM engine's class-loading mission does: JPF creates a class's objects (its
+        // Class, its name) on first use, which must not count as a release's allocation.
+        Localizer warm = config.newLocalizer(d.playground(), d.startX(), d.startY(), d.startTheta());
+        warm.predict(0.01, 0.0, 0.01, AbortSignal.NEVER);
+        warm.update(1.0, AbortSignal.NEVER);
         RunReport report = ScjRuntime.launch(new MclSafelet(config, d, d), 1);
         check(report != null && report.succeeded(), "the mission failed");
         check(d.records != null, "P5 the mission ended without its records");

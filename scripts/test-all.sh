@@ -15,7 +15,10 @@ fi
 echo "== Java tests (Maven) =="
 java17=/usr/lib/jvm/java-17-openjdk-amd64
 if [ -z "${JAVA_HOME:-}" ] && [ -d "$java17" ]; then export JAVA_HOME=$java17; fi
-mvn -B -ntp verify "$@"
+# Java PathFinder is on no registry: build it (from JPF_CORE_SRC, else a clone) before Maven
+# resolves the verification module's dependencies on its jars.
+jpf_home=$("$home/verification/build-jpf.sh")
+mvn -B -ntp -Djpf.home="$jpf_home" verify "$@"
 
 echo "== Ant build of the SCJ variant (build.xml) =="
 ant -q -f "$home/build.xml" clean jars
@@ -25,3 +28,6 @@ if [ -n "${HVM_SRC:-}" ]; then
 else
     echo "== skipped: scj-mission against the icecap SDK (set HVM_SRC to the hvm-scj folder or tarball) =="
 fi
+
+echo "== verification (Java PathFinder and static checks of the SCJ mission) =="
+"$home/jmclbench" verify

@@ -45,23 +45,29 @@ final class FilterSteps {
     /** Normalised weights of every particle for the measured angle into w; false when aborted. */
     static boolean weigh(double[] px, double[] py, double[] pt, double[] w, int n, double angle, Playground p,
             AbortSignal abort, int pollMask) {
+        // Every particle loop polls (verification's abort-poll rule): an abort request is
+        // honoured within one block of particles wherever the job is.
+        double total = 0.0;
         for (int i = 0; i < n; i++) {
             if ((i & pollMask) == 0 && abort.abortRequested()) {
                 return false;
             }
             w[i] = Likelihood.of(px[i], py[i], pt[i], angle, p);
-        }
-        double total = 0.0;
-        for (int i = 0; i < n; i++) {
             total += w[i];
         }
         if (total == 0.0 || Double.isNaN(total) || Double.isInfinite(total)) {
             double uniform = 1.0 / n;
             for (int i = 0; i < n; i++) {
+                if ((i & pollMask) == 0 && abort.abortRequested()) {
+                    return false;
+                }
                 w[i] = uniform;
             }
         } else {
             for (int i = 0; i < n; i++) {
+                if ((i & pollMask) == 0 && abort.abortRequested()) {
+                    return false;
+                }
                 w[i] = w[i] / total;
             }
         }

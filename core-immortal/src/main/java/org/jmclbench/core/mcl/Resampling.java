@@ -60,6 +60,9 @@ public final class Resampling {
             AbortSignal abort, int pollMask) {
         double c = 0.0;
         for (int k = 0; k < n; k++) {
+            if ((k & pollMask) == 0 && abort.abortRequested()) {
+                return false;
+            }
             c += w[k];
             cumulative[k] = c;
         }

@@ -44,7 +44,8 @@ public final class ReportCommand implements Callable<Integer> {
         }
         Files.createDirectories(out);
         Path index = out.resolve("index.html");
-        ReportPage.write(model, index);
+        Path resultsDir = db.toAbsolutePath().getParent();
+        ReportPage.write(model, index, resultsDir);
         progress("wrote " + index);
         if (!noExport) {
             int files = new ChartExporter(model, out.resolve("charts")).exportAll(ReportCommand::progress);

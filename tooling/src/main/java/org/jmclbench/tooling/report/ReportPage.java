@@ -25,7 +25,13 @@ final class ReportPage {
     }
 
     static void write(ReportModel model, Path file) throws IOException {
+        write(model, file, null);
+    }
+
+    /** The page; {@code resultsDir} is where verify's verdicts may be (null: none shown). */
+    static void write(ReportModel model, Path file, Path resultsDir) throws IOException {
         Map<String, String> parts = Map.of(
+                "VERIFICATION", resultsDir == null ? "" : VerificationSection.html(resultsDir),
                 "CSS", resource("report.css"),
                 "DB", escapeHtml(model.database),
                 "RUNS", Integer.toString(model.runCount),

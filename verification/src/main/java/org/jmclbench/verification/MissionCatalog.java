@@ -1,0 +1,43 @@
+package org.jmclbench.verification;
+
+import org.jmclbench.verification.jpf.JpfCheck;
+
+import java.util.List;
+import java.util.Set;
+
+/**
+ * The checks of the real SCJ mission (scj-mission and core-immortal, on rtsj-compat): the
+ * static rules on their bytecode, and the JPF checks that fit the budget (see
+ * {@link MissionChecks}).
+ */
+public final class MissionCatalog implements CheckCatalog {
+    /** The mission's release classes: what runs in a handler's release. */
+    static final Set<String> RELEASES = Set.of("org/jmclbench/scj/PredictHandler", "org/jmclbench/scj/UpdateHandler",
+            "org/jmclbench/scj/LaserSensor");
+
+    @Override
+    public String name() {
+        return "mission";
+    }
+
+    @Override
+    public List<StaticCheck> staticChecks() {
+        return List.of(
+                // The preallocated style: the scoped localizer is the other style's code, left out.
+                new StaticCheck("P6-static-preallocated", "P6 no allocation reachable from a release",
+                        StaticCheck.Kind.ALLOCATION,
+                        n -> isMission(n) && !n.startsWith("org/jmclbench/core/mcl/ScopedLocalizer"),
+                        RELEASES::contains, Set.of()),
+                new StaticCheck("P4-static-abort-poll", "P4 every particle loop polls the abort request",
+                        StaticCheck.Kind.ABORT_POLL, MissionCatalog::isMission, n -> false, Set.of()));
+    }
+
+    static boolean isMission(String internalName) {
+        return internalName.startsWith("org/jmclbench/scj/") || internalName.startsWith("org/jmclbench/core/");
+    }
+
+    @Override
+    public List<JpfCheck> jpfChecks() {
+        return MissionChecks.all();
+    }
+}

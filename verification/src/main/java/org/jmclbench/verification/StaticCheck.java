@@ -1,0 +1,47 @@
+package org.jmclbench.verification;
+
+import org.jmclbench.verification.bytecode.AbortPollCheck;
+import org.jmclbench.verification.bytecode.AllocationCheck;
+import org.jmclbench.verification.bytecode.ClassPool;
+import org.jmclbench.verification.bytecode.Violation;
+
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.function.Predicate;
+
+/**
+ * One static check of verify's catalogue: which classes, which rule, and either "no violation"
+ * or the exact set of {@code class:method} a seeded bug must be reported at.
+ *
+ * @param id        short unique name
+ * @param property  the property in words
+ * @param kind      ALLOCATION (from releases of classes {@code releases} accepts) or ABORT_POLL
+ * @param classes   which classes of the pool the check looks at (internal names)
+ * @param releases  release classes (ALLOCATION only)
+ * @param expected  empty: must hold; else the {@code class:method} of every expected violation
+ */
+public record StaticCheck(String id, String property, Kind kind, Predicate<String> classes,
+                          Predicate<String> releases, Set<String> expected) {
+
+    /** The two static rules. */
+    public enum Kind { ALLOCATION, ABORT_POLL }
+
+    /** The violations the rule finds in the pool. */
+    public List<Violation> run(ClassPool pool) {
+        return switch (kind) {
+            case ALLOCATION -> new AllocationCheck(pool, classes).check(n -> classes.test(n) && releases.test(n));
+            case ABORT_POLL -> new AbortPollCheck(pool).check().stream()
+                    .filter(v -> classes.test(v.className().replace('.', '/'))).toList();
+        };
+    }
+
+    /** True when the findings are what the check expects (none, or exactly the seeded ones). */
+    public boolean met(List<Violation> found) {
+        Set<String> at = new TreeSet<>();
+        for (Violation v : found) {
+            at.add(v.className() + ":" + v.method());
+        }
+        return expected.isEmpty() ? found.isEmpty() : at.equals(new TreeSet<>(expected));
+    }
+}

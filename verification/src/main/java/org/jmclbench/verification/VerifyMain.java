@@ -1,0 +1,197 @@
+package org.jmclbench.verification;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import org.jmclbench.verification.bytecode.ClassPool;
+import org.jmclbench.verification.bytecode.Violation;
+import org.jmclbench.verification.jpf.JpfCheck;
+import org.jmclbench.verification.jpf.JpfHome;
+import org.jmclbench.verification.jpf.JpfResult;
+import org.jmclbench.verification.jpf.JpfRunner;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.ServiceLoader;
+
+/**
+ * {@code ./jmclbench verify}: runs every catalogue's static and JPF checks, prints the table
+ * (property, policy, verdict, states, seconds), writes {@code results/verification.json}, and
+ * exits 0 only when every property holds and every seeded bug is caught.
+ *
+ * <p>Usage: {@code VerifyMain [--out FILE] [--logs DIR] [--timeout SECONDS] [--heap MB]}.
+ * The class path holds the project's classes; the seeded bugs' catalogue is in verification's
+ * test classes, and verify fails when it is missing (no check may pass unseeded).
+ */
+public final class VerifyMain {
+    /** The per-check budget of issue 11: 2 minutes; the heap cap keeps the JVM under 1.5 GB. */
+    static final int TIMEOUT_SECONDS = 120;
+    static final int HEAP_MB = 1200;
+
+    private VerifyMain() {}
+
+    public static void main(String[] args) throws Exception {
+        Path out = Paths.get("results", "verification.json");
+        Path logs = Paths.get("results", "verification");
+        int timeout = TIMEOUT_SECONDS;
+        int heap = HEAP_MB;
+        for (int i = 0; i < args.length; i++) {
+            String a = args[i];
+            if (a.equals("--help") || a.equals("-h")) {
+                System.out.println("usage: jmclbench verify [--out FILE] [--logs DIR] [--timeout SECONDS] [--heap MB]");
+                return;
+            }
+            if (i + 1 >= args.length) {
+                usage(a + ": needs a value");
+            }
+            String v = args[++i];
+            switch (a) {
+                case "--out" -> out = Paths.get(v);
+                case "--logs" -> logs = Paths.get(v);
+                case "--timeout" -> timeout = positive(a, v);
+                case "--heap" -> heap = positive(a, v);
+                default -> usage("unknown option " + a);
+            }
+        }
+        System.exit(run(out, logs, timeout, heap));
+    }
+
+    private static int positive(String option, String v) {
+        try {
+            int n = Integer.parseInt(v);
+            if (n > 0) {
+                return n;
+            }
+        } catch (NumberFormatException e) {
+            // falls through to the usage error
+        }
+        usage(option + ": not a positive number: " + v);
+        return 0;
+    }
+
+    private static void usage(String message) {
+        System.err.println("jmclbench verify: " + message);
+        System.exit(2);
+    }
+
+    static int run(Path out, Path logs, int timeout, int heap) throws IOException, InterruptedException {
+        long start = System.nanoTime();
+        List<CheckCatalog> catalogs = new ArrayList<>();
+        ServiceLoader.load(CheckCatalog.class).forEach(catalogs::add);
+        List<Map<String, Object>> rows = new ArrayList<>();
+        boolean ok = true;
+        boolean seeded = false;
+        List<String> classPath = JpfRunner.currentClassPath();
+        ClassPool pool = ClassPool.of(classPath.stream().filter(e -> !e.isEmpty()).map(Paths::get)
+                .filter(p -> !p.getFileName().toString().startsWith("jpf")).toList());
+        JpfRunner runner = null;
+        System.out.printf("%-34s %-48s %-9s %-8s %9s %8s%n", "check", "property", "policy", "verdict", "states",
+                "seconds");
+        for (CheckCatalog catalog : catalogs) {
+            for (StaticCheck s : catalog.staticChecks()) {
+                long t0 = System.nanoTime();
+                List<Violation> found = s.run(pool);
+                double secs = (System.nanoTime() - t0) / 1e9;
+                boolean met = s.met(found);
+                seeded |= !s.expected().isEmpty();
+                ok &= met;
+                String verdict = verdictOf(met, !s.expected().isEmpty());
+                print(s.id(), s.property(), "-", verdict, "-", secs);
+                if (!met || !s.expected().isEmpty()) {
+                    for (Violation v : found) {
+                        System.out.println("    " + v);
+                    }
+                }
+                Map<String, Object> row = row(catalog.name(), s.id(), s.property(), "-", "static", verdict, met,
+                        !s.expected().isEmpty(), secs);
+                row.put("violations", found.stream().map(Violation::toString).toList());
+                rows.add(row);
+            }
+            for (JpfCheck c : catalog.jpfChecks()) {
+                if (runner == null) {
+                    runner = new JpfRunner(JpfHome.locate(), classPath, logs, timeout, heap);
+                }
+                JpfResult r = runner.run(c);
+                seeded |= c.seeded();
+                ok &= r.passed();
+                String verdict = verdictOf(r.passed(), c.seeded());
+                print(c.id(), c.property(), c.policy(), verdict, Long.toString(r.newStates()), r.seconds());
+                if (!r.passed()) {
+                    System.out.println("    " + r.verdict() + " (log " + r.log() + ")");
+                }
+                Map<String, Object> row = row(catalog.name(), c.id(), c.property(), c.policy(), "jpf", verdict,
+                        r.passed(), c.seeded(), r.seconds());
+                row.put("detail", r.verdict());
+                row.put("scope", c.scope());
+                row.put("states", r.newStates());
+                row.put("endStates", r.endStates());
+                row.put("maxDepth", r.maxDepth());
+                row.put("instructions", r.instructions());
+                rows.add(row);
+            }
+        }
+        if (!seeded) {
+            System.out.println("no seeded bug ran: the verification's test classes are not on the class path,"
+                    + " so no check is known to be able to fail");
+            ok = false;
+        }
+        double total = (System.nanoTime() - start) / 1e9;
+        Map<String, Object> doc = new LinkedHashMap<>();
+        doc.put("schema", 1);
+        doc.put("finished", Instant.now().toString());
+        doc.put("passed", ok);
+        doc.put("seconds", Math.round(total * 10) / 10.0);
+        doc.put("budget", Map.of("checkSeconds", timeout, "heapMegabytes", heap));
+        doc.put("checks", rows);
+        Path parent = out.toAbsolutePath().getParent();
+        Files.createDirectories(parent);
+        Path tmp = Files.createTempFile(parent, "verification", ".json.partial");
+        new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT).writeValue(tmp.toFile(), doc);
+        Files.move(tmp, out, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        long failed = rows.stream().filter(r -> !(Boolean) r.get("passed")).count();
+        System.out.printf(Locale.ROOT, "verify: %s in %.0f s (%s)%n", ok ? "every property holds and every seeded bug is caught"
+                : failed + " check(s) failed", total, out);
+        System.out.println("verification: " + (rows.size() - failed) + " passed, " + failed + " failed");
+        return ok ? 0 : 1;
+    }
+
+    private static String verdictOf(boolean passed, boolean seeded) {
+        if (seeded) {
+            return passed ? "caught" : "MISSED";
+        }
+        return passed ? "holds" : "FAILS";
+    }
+
+    private static void print(String id, String property, String policy, String verdict, String states, double secs) {
+        System.out.printf(Locale.ROOT, "%-34s %-48s %-9s %-8s %9s %8.1f%n", id,
+                property.length() > 48 ? property.substring(0, 47) + "~" : property, policy, verdict, states, secs);
+    }
+
+    private static Map<String, Object> row(String catalog, String id, String property, String policy, String kind,
+                                           String verdict, boolean passed, boolean seeded, double secs) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("catalog", catalog);
+        m.put("id", id);
+        m.put("property", property);
+        m.put("policy", policy);
+        m.put("kind", kind);
+        m.put("seeded", seeded);
+        m.put("verdict", verdict);
+        m.put("passed", passed);
+        m.put("seconds", Math.round(secs * 10) / 10.0);
+        return m;
+    }
+
+    /** The entries of a class path string (for callers that have one). */
+    static List<String> split(String cp) {
+        return List.of(cp.split(File.pathSeparator));
+    }
+}

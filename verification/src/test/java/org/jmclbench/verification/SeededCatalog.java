@@ -1,0 +1,55 @@
+package org.jmclbench.verification;
+
+import org.jmclbench.verification.jpf.JpfCheck;
+import org.jmclbench.verification.jpf.JpfCheck.Expectation;
+import org.jmclbench.verification.mission.MissionDriver;
+import org.jmclbench.verification.seeded.AllocatingRelease;
+import org.jmclbench.verification.seeded.PollingJob;
+import org.jmclbench.verification.seeded.mission.StrayAllocationConfiguration;
+import org.jmclbench.verification.toy.ToyChecks;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * The seeded bugs verify must catch (test sources: never shipped with the mission): bugs
+ * plugged into the real mission through its configuration seam, the small SCJ-like program's
+ * checks with one seeded bug per property, and the static checks' seeded classes.
+ */
+public final class SeededCatalog implements CheckCatalog {
+
+    @Override
+    public String name() {
+        return "seeded";
+    }
+
+    @Override
+    public List<JpfCheck> jpfChecks() {
+        List<JpfCheck> l = new ArrayList<>();
+        l.add(new JpfCheck("mission-seeded-stray-allocation", "P6 no release allocates", "queue",
+                MissionDriver.class.getName(), MissionChecks.args("queue", StrayAllocationConfiguration.class.getName()),
+                MissionChecks.config(), Expectation.violation("ReleaseAllocationListener", "allocated a [D at"),
+                MissionChecks.scope() + ", seeded stray allocation"));
+        l.addAll(ToyChecks.all());
+        return l;
+    }
+
+    @Override
+    public List<StaticCheck> staticChecks() {
+        String alloc = AllocatingRelease.class.getName();
+        String poll = PollingJob.class.getName();
+        return List.of(
+                new StaticCheck("static-seeded-allocation", "P6 no allocation reachable from a release",
+                        StaticCheck.Kind.ALLOCATION, n -> n.startsWith("org/jmclbench/verification/seeded/"),
+                        n -> n.equals(internal(alloc)),
+                        Set.of(alloc + ":handleAsyncEvent", alloc + ":helper", alloc + "$AllocatingStep:apply")),
+                new StaticCheck("static-seeded-abort-poll", "P4 every particle loop polls the abort request",
+                        StaticCheck.Kind.ABORT_POLL, n -> n.equals(internal(poll)), n -> false,
+                        Set.of(poll + ":update", poll + ":siblings")));
+    }
+
+    private static String internal(String className) {
+        return className.replace('.', '/');
+    }
+}

@@ -1,0 +1,78 @@
+package org.jmclbench.verification.seeded;
+
+/**
+ * Terminable job code for the static abort-poll check: loops that poll in the ways the mission
+ * does (every 64 particles, once per block), and seeded loops that do not, marked VIOLATION.
+ */
+public final class PollingJob {
+    private final double[] x = new double[256];
+    private final double[] w = new double[256];
+
+    /** Polls every 64 particles inside the loop: fine. */
+    public boolean predict(double dx, AbortSignal abort) {
+        for (int i = 0; i < x.length; i++) {
+            if ((i & 63) == 0 && abort.abortRequested()) {
+                return false;
+            }
+            x[i] += dx;
+        }
+        return true;
+    }
+
+    /** Polls once per block of 64 in an enclosing loop: fine. */
+    public boolean blocks(AbortSignal abort) {
+        for (int b = 0; b < x.length; b += 64) {
+            if (abort.abortRequested()) {
+                return false;
+            }
+            for (int i = b; i < Math.min(b + 64, x.length); i++) {
+                x[i] *= 2;
+            }
+        }
+        return true;
+    }
+
+    /** The first loop polls; the normalisation after it does not (seeded). */
+    public boolean update(AbortSignal abort) {
+        double total = 0;
+        for (int i = 0; i < w.length; i++) {
+            if ((i & 63) == 0 && abort.abortRequested()) {
+                return false;
+            }
+            total += w[i];
+        }
+        for (int i = 0; i < w.length; i++) { // VIOLATION
+            w[i] /= total;
+        }
+        // A loop over a constant count (not the particles) needs no poll.
+        for (int j = 0; j < 6; j++) {
+            x[j] = 0;
+        }
+        return true;
+    }
+
+    /** A block loop whose poll sits in a sibling loop does not cover the second inner loop (seeded). */
+    public boolean siblings(AbortSignal abort) {
+        for (int b = 0; b < x.length; b += 64) {
+            for (int i = b; i < b + 64; i++) {
+                if (abort.abortRequested()) {
+                    return false;
+                }
+            }
+            int k = b;
+            while (k < b + 64) { // VIOLATION
+                x[k++] = 0;
+            }
+        }
+        return true;
+    }
+
+    /** Not terminable (no AbortSignal): its loops are not looked at. */
+    public double sum() {
+        double s = 0;
+        for (int i = 0; i < x.length; i++) {
+            s += x[i];
+        }
+        return s;
+    }
+}

@@ -1,0 +1,53 @@
+package org.jmclbench.verification.seeded.mission;
+
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.Localizer;
+
+/** A localizer that forwards everything: seeded bugs override the job they break. */
+abstract class Delegating implements Localizer {
+    final Localizer inner;
+
+    Delegating(Localizer inner) {
+        this.inner = inner;
+    }
+
+    @Override
+    public boolean predict(double dx, double dy, double dtheta, AbortSignal abort) {
+        return inner.predict(dx, dy, dtheta, abort);
+    }
+
+    @Override
+    public boolean update(double angle, AbortSignal abort) {
+        return inner.update(angle, abort);
+    }
+
+    @Override
+    public double estimateX() {
+        return inner.estimateX();
+    }
+
+    @Override
+    public double estimateY() {
+        return inner.estimateY();
+    }
+
+    @Override
+    public double estimateTheta() {
+        return inner.estimateTheta();
+    }
+
+    @Override
+    public void covariance(double[] out) {
+        inner.covariance(out);
+    }
+
+    @Override
+    public int particleCount() {
+        return inner.particleCount();
+    }
+
+    @Override
+    public void particle(int i, double[] out) {
+        inner.particle(i, out);
+    }
+}

@@ -194,7 +194,12 @@ public final class RunWriter {
             j.beginObject();
             j.name("name").value(a.name);
             j.name("size").value(a.size);
-            j.name("peakBytes").value(a.peakBytes);
+            j.name("peakBytes");
+            if (a.peakBytes == null) {
+                j.nullValue();
+            } else {
+                j.value(a.peakBytes.longValue());
+            }
             j.name("bytesPerRelease");
             if (a.bytesPerRelease == null) {
                 j.nullValue();

@@ -119,7 +119,8 @@ public final class HvmRun {
             Map<String, Object> facts = facts(exe, wallNs);
             List<MemoryArea> areas = new ArrayList<>();
             for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
-                areas.add(new MemoryArea(MissionSizes.AREA_NAMES[a], sizes[a], peaks[a], null));
+                // icecap keeps no peak for private memory (-1): unknown, not a byte count
+                areas.add(new MemoryArea(MissionSizes.AREA_NAMES[a], sizes[a], peaks[a] < 0 ? null : Long.valueOf(peaks[a]), null));
             }
             return new ScjRun.Result(records, areas, facts);
         } finally {

@@ -135,7 +135,12 @@ class HvmRunTest {
         Dataset d = DatasetReader.readFolder(new File(home, "data/match-short"));
         File folder = new File(tmp, "run");
         folder.mkdirs();
-        JobRecords r = HvmRun.run(o, d, folder, System.err).records;
+        org.jmclbench.workload.scj.ScjRun.Result result = HvmRun.run(o, d, folder, System.err);
+        JobRecords r = result.records;
+        for (org.jmclbench.workload.output.MemoryArea a : result.areas) {
+            // the store rejects a negative byte count: a peak the VM does not keep is null
+            assertTrue(a.peakBytes == null || a.peakBytes >= 0, a.name + " peak " + a.peakBytes);
+        }
 
         Integer[] order = new Integer[r.size()];
         for (int k = 0; k < order.length; k++) {

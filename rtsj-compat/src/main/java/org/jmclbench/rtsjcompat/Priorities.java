@@ -24,7 +24,7 @@ public final class Priorities {
     /**
      * Whether Java thread priorities reach the OS scheduler: on Linux, HotSpot ignores them
      * unless started with -XX:ThreadPriorityPolicy=1 (as root); elsewhere they are applied.
-     * Same rule as the Java SE engine's {@code RealTimeRun.prioritiesApplied()}.
+     * The Java SE engine reports the same fact with this rule.
      */
     public static boolean applied() {
         if (!System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT).contains("linux")) {

@@ -6,7 +6,6 @@ import java.io.IOException;
 import java.io.OutputStreamWriter;
 import java.io.PrintStream;
 import java.io.Writer;
-import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -44,7 +43,9 @@ public final class RealTimeRun {
         Map<String, Object> facts = new LinkedHashMap<>();
         facts.put("dispatcherPriority", ReleaseEngine.DISPATCHER_PRIORITY);
         facts.put("handlerPriority", ReleaseEngine.HANDLER_PRIORITY);
-        facts.put("prioritiesApplied", prioritiesApplied());
+        // one rule for both engines: the SCJ layer's (HotSpot ignores priorities on Linux without
+        // -XX:ThreadPriorityPolicy=1, and under chrt every thread inherits one priority anyway)
+        facts.put("prioritiesApplied", org.jmclbench.rtsjcompat.Priorities.applied());
         GcLog gcLog = options.gcLog ? GcLog.start(new File(runDir, "gc.log")) : null;
         AllocationNoise noise = null;
         try {
@@ -142,27 +143,6 @@ public final class RealTimeRun {
         }
         new ReleaseEngine(ReleaseSchedule.of(release, deadline, task), OverrunPolicy.forName(options.policy.label),
                 (k, abort) -> abort.abortRequested() || true, scratch, cpuClock, 0).run();
-    }
-
-    /**
-     * Whether the Java thread priorities reach the OS scheduler: on Linux HotSpot ignores them
-     * unless started with -XX:ThreadPriorityPolicy=1 (as root), and under SCHED_FIFO (chrt)
-     * every thread inherits the same real-time priority anyway.
-     */
-    static boolean prioritiesApplied() {
-        if (!System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT).contains("linux")) {
-            return true;
-        }
-        try {
-            for (String a : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
-                if (a.equals("-XX:ThreadPriorityPolicy=1")) {
-                    return true;
-                }
-            }
-        } catch (RuntimeException | LinkageError e) {
-            return false;
-        }
-        return false;
     }
 
     private static void writeNote(File f, String text) throws IOException {

@@ -5,6 +5,7 @@ import org.jmclbench.verification.jpf.JpfCheck.Expectation;
 import org.jmclbench.verification.mission.MissionDriver;
 import org.jmclbench.verification.seeded.AllocatingRelease;
 import org.jmclbench.verification.seeded.PollingJob;
+import org.jmclbench.verification.seeded.mission.PrivateIntoMissionConfiguration;
 import org.jmclbench.verification.seeded.mission.StrayAllocationConfiguration;
 import org.jmclbench.verification.toy.ToyChecks;
 
@@ -31,6 +32,13 @@ public final class SeededCatalog implements CheckCatalog {
                 MissionDriver.class.getName(), MissionChecks.args("queue", StrayAllocationConfiguration.class.getName()),
                 MissionChecks.config(), Expectation.violation("ReleaseAllocationListener", "allocated a [D at"),
                 MissionChecks.scope() + ", seeded stray allocation"));
+        // Only the reference listener: the stray allocation would be reported first otherwise.
+        l.add(new JpfCheck("mission-seeded-private-into-mission", "P6 no reference to a shorter-lived area", "queue",
+                MissionDriver.class.getName(),
+                MissionChecks.args("queue", PrivateIntoMissionConfiguration.class.getName()),
+                MissionChecks.config("org.jmclbench.verification.jpf.AreaReferenceListener"),
+                Expectation.violation("AreaReferenceListener", "stores a reference to an object of [D in"),
+                MissionChecks.scope() + ", seeded private-memory array kept by the mission's localizer"));
         l.addAll(ToyChecks.all());
         return l;
     }

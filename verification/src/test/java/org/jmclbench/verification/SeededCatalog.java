@@ -5,11 +5,16 @@ import org.jmclbench.verification.jpf.JpfCheck.Expectation;
 import org.jmclbench.verification.mission.MissionDriver;
 import org.jmclbench.verification.seeded.AllocatingRelease;
 import org.jmclbench.verification.seeded.PollingJob;
+import org.jmclbench.verification.seeded.mission.LockInversionConfiguration;
+import org.jmclbench.verification.seeded.mission.LostReleaseConfiguration;
+import org.jmclbench.verification.seeded.mission.PrivateIntoMissionConfiguration;
 import org.jmclbench.verification.seeded.mission.StrayAllocationConfiguration;
 import org.jmclbench.verification.toy.ToyChecks;
 
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 /**
@@ -31,6 +36,26 @@ public final class SeededCatalog implements CheckCatalog {
                 MissionDriver.class.getName(), MissionChecks.args("queue", StrayAllocationConfiguration.class.getName()),
                 MissionChecks.config(), Expectation.violation("ReleaseAllocationListener", "allocated a [D at"),
                 MissionChecks.scope() + ", seeded stray allocation"));
+        // Only the reference listener: the stray allocation would be reported first otherwise.
+        l.add(new JpfCheck("mission-seeded-private-into-mission", "P6 no reference to a shorter-lived area", "queue",
+                MissionDriver.class.getName(),
+                MissionChecks.args("queue", PrivateIntoMissionConfiguration.class.getName()),
+                MissionChecks.config("org.jmclbench.verification.jpf.AreaReferenceListener"),
+                Expectation.violation("AreaReferenceListener", "stores a reference to an object of [D in"),
+                MissionChecks.scope() + ", seeded private-memory array kept by the mission's localizer"));
+        // The inversion needs a laser release while a predict job runs: one laser event at the
+        // odometry event's instant. Exhausting that input is over budget, so this search is
+        // steered to states with the most blocked threads (JPF's MostBlocked heuristic).
+        Map<String, String> deadlock = new LinkedHashMap<>(MissionChecks.config());
+        deadlock.put("search.class", "gov.nasa.jpf.search.heuristic.MostBlocked");
+        l.add(new JpfCheck("mission-seeded-lock-inversion", "P1 no deadlock", "queue", MissionDriver.class.getName(),
+                MissionChecks.args("queue", 1, 1, LockInversionConfiguration.class.getName()), deadlock,
+                Expectation.violation("NotDeadlockedProperty", "deadlock"),
+                MissionChecks.scope(1, 1) + ", most-blocked-first search, seeded robot/gate lock-order inversion"));
+        l.add(new JpfCheck("mission-seeded-lost-release", "P5 every event ends exactly once", "queue",
+                MissionDriver.class.getName(), MissionChecks.args("queue", LostReleaseConfiguration.class.getName()),
+                MissionChecks.config(), Expectation.violation("NoUncaughtExceptionsProperty", "P5 an event never ended"),
+                MissionChecks.scope() + ", seeded gate ending the mission after the first event"));
         l.addAll(ToyChecks.all());
         return l;
     }

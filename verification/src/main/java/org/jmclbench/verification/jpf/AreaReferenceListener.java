@@ -1,0 +1,218 @@
+package org.jmclbench.verification.jpf;
+
+import gov.nasa.jpf.Config;
+import gov.nasa.jpf.JPF;
+import gov.nasa.jpf.PropertyListenerAdapter;
+import gov.nasa.jpf.jvm.bytecode.AASTORE;
+import gov.nasa.jpf.jvm.bytecode.LDC;
+import gov.nasa.jpf.jvm.bytecode.PUTFIELD;
+import gov.nasa.jpf.jvm.bytecode.PUTSTATIC;
+import gov.nasa.jpf.search.Search;
+import gov.nasa.jpf.vm.ElementInfo;
+import gov.nasa.jpf.vm.FieldInfo;
+import gov.nasa.jpf.vm.Instruction;
+import gov.nasa.jpf.vm.MJIEnv;
+import gov.nasa.jpf.vm.MethodInfo;
+import gov.nasa.jpf.vm.StackFrame;
+import gov.nasa.jpf.vm.ThreadInfo;
+import gov.nasa.jpf.vm.VM;
+import gov.nasa.jpf.vm.bytecode.FieldInstruction;
+
+/**
+ * P6, the SCJ reference rule: no object stores a reference to an object of a shorter-lived
+ * area. Each new object is tagged with its area, the allocating thread's current allocation
+ * context (rtsj-compat's {@code ScjThread.current}, an {@code Area} whose {@code parent} chain
+ * is the lifetime order); on every reference store ({@code putfield}, {@code aastore},
+ * {@code putstatic}: a static field lives in immortal memory) the value's area must be the
+ * holder's area or one of its ancestors ({@code Area.mayHoldReferenceTo}).
+ *
+ * <p>Untagged, so unchecked: objects created outside SCJ code (the driver's, a handler's between
+ * releases), in class initialisation (immortal on an SCJ VM), {@code ldc} strings and Class
+ * objects. Stores executed by the SCJ infrastructure itself are not checked (on an SCJ VM it is
+ * the VM): {@code jmclbench.areas.exempt}, class-name prefixes (default the JDK, JPF and
+ * rtsj-compat's internals). {@code jmclbench.areas.known}: fields ({@code Class.field}) whose
+ * violations are known findings, reported elsewhere and not flagged again. The tag is a JPF
+ * object attribute, so it backtracks with the heap.
+ */
+public final class AreaReferenceListener extends PropertyListenerAdapter {
+    private static final String SCJ_THREAD = "org.jmclbench.rtsjcompat.ScjThread";
+
+    /** The area an object was allocated in: the heap reference of its {@code Area}. */
+    static final class AreaTag {
+        final int area;
+
+        AreaTag(int area) {
+            this.area = area;
+        }
+    }
+
+    private final String[] exempt;
+    private final String[] known;
+    private String violation;
+
+    public AreaReferenceListener(Config config, JPF jpf) {
+        this.exempt = config.getStringArray("jmclbench.areas.exempt",
+                new String[] {"java.", "javax.", "jdk.", "sun.", "gov.nasa.", "org.jmclbench.rtsjcompat."});
+        this.known = config.getStringArray("jmclbench.areas.known", new String[0]);
+    }
+
+    @Override
+    public void objectCreated(VM vm, ThreadInfo ti, ElementInfo ei) {
+        if (ti == null || ti.getPC() instanceof LDC || ei.getClassInfo().getName().equals("java.lang.Class")) {
+            return;
+        }
+        ElementInfo thread = ti.getThreadObject();
+        if (thread == null || !thread.getClassInfo().isInstanceOf(SCJ_THREAD)) {
+            return;
+        }
+        int area = thread.getReferenceField("current");
+        if (area == MJIEnv.NULL) {
+            return;
+        }
+        for (StackFrame f = ti.getTopFrame(); f != null; f = f.getPrevious()) {
+            MethodInfo mi = f.getMethodInfo();
+            if (mi != null && mi.isClinit()) {
+                return;
+            }
+        }
+        ei.addObjectAttr(new AreaTag(area));
+    }
+
+    @Override
+    public void executeInstruction(VM vm, ThreadInfo ti, Instruction insn) {
+        if (violation != null) {
+            return;
+        }
+        int holder;
+        int value;
+        boolean isStatic = false;
+        StackFrame frame = ti.getTopFrame();
+        if (insn instanceof PUTFIELD) {
+            if (!storesReference((PUTFIELD) insn)) {
+                return;
+            }
+            value = frame.peek(0);
+            holder = frame.peek(1);
+        } else if (insn instanceof AASTORE) {
+            value = frame.peek(0);
+            holder = frame.peek(2);
+        } else if (insn instanceof PUTSTATIC) {
+            if (!storesReference((PUTSTATIC) insn)) {
+                return;
+            }
+            value = frame.peek(0);
+            holder = MJIEnv.NULL;
+            isStatic = true;
+        } else {
+            return;
+        }
+        if (value == MJIEnv.NULL || (!isStatic && holder == MJIEnv.NULL) || exempt(insn.getMethodInfo())) {
+            return;
+        }
+        int valueArea = areaOf(vm, value);
+        if (valueArea == MJIEnv.NULL) {
+            return;
+        }
+        int holderArea = isStatic ? MJIEnv.NULL : areaOf(vm, holder);
+        if (!isStatic && holderArea == MJIEnv.NULL) {
+            return;
+        }
+        if (isStatic ? depth(vm, valueArea) == 0 : mayHold(vm, holderArea, valueArea)) {
+            return;
+        }
+        String field = insn instanceof PUTFIELD ? ((PUTFIELD) insn).getFieldInfo().getFullName()
+                : insn instanceof PUTSTATIC ? ((PUTSTATIC) insn).getFieldInfo().getFullName() : null;
+        for (String k : known) {
+            if (k.equals(field)) {
+                return;
+            }
+        }
+        String target = isStatic ? "static field " + field
+                : (field == null ? "an array " : "field " + field + " of an object ") + "in " + name(vm, holderArea);
+        violation = insn.getMethodInfo().getClassName() + "." + insn.getMethodInfo().getName() + ":"
+                + insn.getLineNumber() + " stores a reference to an object of "
+                + vm.getHeap().get(value).getClassInfo().getName() + " in " + name(vm, valueArea)
+                + " (shorter-lived) into " + target;
+        ti.breakTransition("areaReference");
+    }
+
+    /** Whether the field holds a reference; JPF's isReferenceField is false for primitive arrays. */
+    private static boolean storesReference(FieldInstruction insn) {
+        if (insn.isReferenceField()) {
+            return true;
+        }
+        if (insn.getFieldSize() != 1) {
+            return false;
+        }
+        try {
+            FieldInfo fi = insn.getFieldInfo();
+            return fi != null && fi.isReference();
+        } catch (RuntimeException e) {
+            return false; // class not loaded yet: JPF resolves it when the store executes
+        }
+    }
+
+    private boolean exempt(MethodInfo mi) {
+        String cls = mi == null ? "" : mi.getClassName();
+        for (String p : exempt) {
+            if (cls.startsWith(p)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static int areaOf(VM vm, int ref) {
+        ElementInfo ei = vm.getHeap().get(ref);
+        AreaTag t = ei == null ? null : ei.getObjectAttr(AreaTag.class);
+        return t == null ? MJIEnv.NULL : t.area;
+    }
+
+    /** Whether {@code holder} is {@code value} or lives inside it (value is an ancestor). */
+    private static boolean mayHold(VM vm, int holder, int value) {
+        for (int a = holder; a != MJIEnv.NULL; a = vm.getHeap().get(a).getReferenceField("parent")) {
+            if (a == value) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static int depth(VM vm, int area) {
+        return vm.getHeap().get(area).getIntField("depth");
+    }
+
+    private static String name(VM vm, int area) {
+        ElementInfo a = vm.getHeap().get(area);
+        return a.getStringField("name") + " (" + kind(a.getIntField("kind")) + ")";
+    }
+
+    private static String kind(int k) {
+        switch (k) {
+            case 0:
+                return "immortal";
+            case 1:
+                return "mission";
+            case 2:
+                return "private";
+            default:
+                return "nested";
+        }
+    }
+
+    @Override
+    public boolean check(Search search, VM vm) {
+        return violation == null;
+    }
+
+    @Override
+    public String getErrorMessage() {
+        return violation;
+    }
+
+    @Override
+    public void reset() {
+        violation = null;
+    }
+}
+

@@ -1,0 +1,69 @@
+package org.jmclbench.verification.seeded.mission;
+
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.scj.ImmortalEntry;
+import org.jmclbench.scj.JobGate;
+import org.jmclbench.scj.OverrunPolicy;
+import org.jmclbench.scj.Robot;
+import org.jmclbench.verification.mission.CheckedConfiguration;
+
+/**
+ * Seeded P1 bug in the real mission: a lock-order inversion. The predict job, holding the
+ * robot, takes the gate's lock; the laser sensor's admission, holding the gate, takes the
+ * robot's. A laser event released while a predict job runs deadlocks the two.
+ */
+public final class LockInversionConfiguration extends CheckedConfiguration {
+    private Robot robot;
+
+    public LockInversionConfiguration(MclConfig mcl, OverrunPolicy policy, double timeScale) {
+        super(mcl, policy, timeScale);
+    }
+
+    @Override
+    public Robot newRobot(Localizer localizer, ImmortalEntry entry) {
+        robot = new InvertingRobot(localizer, entry);
+        return robot;
+    }
+
+    @Override
+    public JobGate newGate(int events) {
+        InvertingGate g = new InvertingGate(policy, events, robot);
+        ((InvertingRobot) robot).gate = g;
+        return g;
+    }
+
+    /** Takes the gate inside the robot's monitor. */
+    static final class InvertingRobot extends Robot {
+        JobGate gate;
+
+        InvertingRobot(Localizer localizer, ImmortalEntry entry) {
+            super(localizer, entry);
+        }
+
+        @Override
+        public synchronized boolean predict(int k, AbortSignal abort) {
+            synchronized (gate) {
+                return super.predict(k, abort);
+            }
+        }
+    }
+
+    /** Takes the robot inside the gate's monitor. */
+    static final class InvertingGate extends JobGate {
+        private final Robot robot;
+
+        InvertingGate(OverrunPolicy policy, int events, Robot robot) {
+            super(policy, events);
+            this.robot = robot;
+        }
+
+        @Override
+        public synchronized boolean admit(int k) {
+            synchronized (robot) {
+                return super.admit(k);
+            }
+        }
+    }
+}

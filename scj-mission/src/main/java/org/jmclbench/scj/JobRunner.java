@@ -1,7 +1,6 @@
 package org.jmclbench.scj;
 
 import javax.realtime.AbsoluteTime;
-import javax.safetycritical.Mission;
 
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.record.JobRecords;
@@ -17,14 +16,14 @@ final class JobRunner implements AbortSignal {
     private final JobGate gate;
     private final ImmortalEntry entry;
     private final MissionClock clock;
-    private final Mission mission;
+    private final MclMission mission;
     private final AbsoluteTime now = new AbsoluteTime();
     private final AbsoluteTime pollTime = new AbsoluteTime();
     private int event = JobGate.FREE;
     // terminate, predict: the job also aborts at the release of the next odometry event
     private long supersededAtNs = Long.MAX_VALUE;
 
-    JobRunner(Robot robot, JobGate gate, ImmortalEntry entry, MissionClock clock, Mission mission) {
+    JobRunner(Robot robot, JobGate gate, ImmortalEntry entry, MissionClock clock, MclMission mission) {
         this.robot = robot;
         this.gate = gate;
         this.entry = entry;
@@ -90,7 +89,7 @@ final class JobRunner implements AbortSignal {
 
     private void ended() {
         if (gate.ended()) {
-            mission.requestTermination();
+            mission.allEventsEnded(gate.endedCount());
         }
     }
 }

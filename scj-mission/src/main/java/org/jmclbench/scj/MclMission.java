@@ -22,8 +22,10 @@ import org.jmclbench.core.record.JobRecords;
 public class MclMission extends Mission {
     private final MclSafelet safelet;
     private final MissionClock clock = new MissionClock();
-    private Robot robot;
-    private JobGate gate;
+    // This object lives as long as the Safelet (immortal memory, built before the sequencer
+    // runs), so it keeps no reference to the robot, the gate or the handlers (mission memory):
+    // an SCJ VM raises IllegalAssignmentError at such a store. A count is a primitive copy.
+    private volatile int endedEvents;
 
     MclMission(MclSafelet safelet) {
         this.safelet = safelet;
@@ -38,8 +40,8 @@ public class MclMission extends Mission {
         records.clear();
         Localizer localizer = config.newLocalizer(entry.playground, entry.startX, entry.startY, entry.startTheta);
         records.setInitialEstimate(localizer.estimateX(), localizer.estimateY(), localizer.estimateTheta());
-        robot = config.newRobot(localizer, entry);
-        gate = config.newGate(entry.size());
+        Robot robot = config.newRobot(localizer, entry);
+        JobGate gate = config.newGate(entry.size());
 
         // The sensor stands for an interrupt: above the two tasks, which share one priority.
         int top = PriorityScheduler.instance().getMaxPriority();
@@ -82,14 +84,15 @@ public class MclMission extends Mission {
         return super.cleanUp();
     }
 
-    /** The robot (for tests, after the mission). */
-    public Robot robot() {
-        return robot;
+    /** Called by the job that ended the last event: records the gate's count and ends the mission. */
+    void allEventsEnded(int ended) {
+        endedEvents = ended;
+        requestTermination();
     }
 
-    /** The gate (for tests, after the mission). */
-    public JobGate gate() {
-        return gate;
+    /** How many events the gate had counted as ended when the mission was asked to end (for tests). */
+    public int endedEvents() {
+        return endedEvents;
     }
 
     private static ScopeParameters privateMemory(long bytes) {

@@ -105,7 +105,7 @@ class MissionTest {
             assertTrue(l.report.succeeded(), () -> String.valueOf(l.report.failure()));
             JobRecords r = l.records;
             int n = r.size();
-            assertEquals(n, l.safelet.mission().gate().endedCount(), policy + " " + memory + ": ended events");
+            assertEquals(n, l.safelet.mission().endedEvents(), policy + " " + memory + ": ended events");
             int[] order = new int[n];
             int completed = 0;
             for (int k = 0; k < n; k++) {

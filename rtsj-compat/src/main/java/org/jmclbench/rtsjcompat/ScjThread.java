@@ -23,6 +23,13 @@ public class ScjThread extends Thread {
     /** The deepest allocation-context stack a thread may have. */
     public static final int MAX_DEPTH = 16;
 
+    /**
+     * Whether the layer's threads are daemons ({@code -Djmclbench.scj.daemon}, default true: a
+     * hung mission does not keep the JVM alive). Java PathFinder's runs say false: JPF switches
+     * to another thread at a thread's end only when a non-daemon one can run.
+     */
+    static final boolean DAEMON = Boolean.parseBoolean(System.getProperty("jmclbench.scj.daemon", "true"));
+
     /** The area receiving this thread's allocations now, or null (nothing is charged). */
     public Area current;
 
@@ -53,7 +60,7 @@ public class ScjThread extends Thread {
         this.meter = AllocationMeter.current();
         this.selfCost = meter.selfCost();
         setPriority(javaPriority);
-        setDaemon(true);
+        setDaemon(DAEMON);
     }
 
     /** The calling thread's current area as an API object, or null outside SCJ code. */

@@ -38,6 +38,8 @@ public final class MissionDriver implements MissionInput, MissionOutput {
         // Virtual time: the run is a function of the interleaving, not of the host's clock.
         System.setProperty("jmclbench.scj.time", "virtual");
         System.setProperty("jmclbench.scj.meter", "none");
+        // Non-daemon handler threads: JPF hands over at a thread's end only to a runnable non-daemon.
+        System.setProperty("jmclbench.scj.daemon", "false");
         Class<?> c = Class.forName(args.length > 4 ? args[4] : CheckedConfiguration.class.getName());
         MissionConfiguration config = (MissionConfiguration) c
                 .getConstructor(MclConfig.class, OverrunPolicy.class, double.class)
@@ -49,7 +51,11 @@ public final class MissionDriver implements MissionInput, MissionOutput {
         warm.predict(0.01, 0.0, 0.01, AbortSignal.NEVER);
         warm.update(1.0, AbortSignal.NEVER);
         RunReport report = ScjRuntime.launch(new MclSafelet(config, d, d), 1);
-        check(report != null && report.succeeded(), "the mission failed");
+        if (report == null || !report.succeeded()) {
+            // A P3 or P4 assertion inside a release ends the mission: say which.
+            Throwable why = report == null ? null : report.failure();
+            throw new AssertionError("the mission failed" + (why == null ? "" : ": " + why.getMessage()), why);
+        }
         check(d.records != null, "P5 the mission ended without its records");
         check(d.records.size() == d.odometry + d.laser, "P5 an event is missing from the records");
         for (int k = 0; k < d.records.size(); k++) {

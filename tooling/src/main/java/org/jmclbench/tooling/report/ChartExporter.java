@@ -338,6 +338,8 @@ final class ChartExporter {
         }
         CategoryPlot plot = new CategoryPlot(data, new CategoryAxis("runtime/profile"),
                 new NumberAxis("jobs missed or late per run, by primary cause (mean)"), renderer);
+        // Bars across, so that each configuration's full name fits beside its bar.
+        plot.setOrientation(org.jfree.chart.plot.PlotOrientation.HORIZONTAL);
         return finish(new JFreeChart("Why deadlines were missed (" + at + ")", JFreeChart.DEFAULT_TITLE_FONT, plot, true));
     }
 

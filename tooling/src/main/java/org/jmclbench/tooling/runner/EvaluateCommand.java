@@ -12,6 +12,7 @@ import java.util.function.Predicate;
 
 import org.jmclbench.tooling.report.EvaluationDocument;
 import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.JdkInstaller;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
@@ -80,8 +81,9 @@ public final class EvaluateCommand implements Callable<Integer> {
             b.print(o, file);
             if (dryRun) {
                 RuntimeDiscovery d = RuntimeDiscovery.discover();
+                boolean hvm = hvmBuildable(m);
                 for (String r : runtimes(m)) {
-                    if (!present(d, r)) {
+                    if (!present(d, r, hvm)) {
                         o.println("  " + r + ": not on this machine now" + (jdkMajor(r) > 0 ? " (evaluate installs it with jvm install "
                                 + jdkMajor(r) + ")" : " (left out unless it appears in ./jmclbench jvms)"));
                     }
@@ -91,16 +93,17 @@ public final class EvaluateCommand implements Callable<Integer> {
             }
             installJdks(m, o);
             RuntimeDiscovery d = RuntimeDiscovery.discover();
+            boolean hvm = hvmBuildable(m);
             for (String r : runtimes(m)) {
-                if (!present(d, r)) {
-                    o.println("evaluate: " + r + " is not on this machine" + (r.equals(HVM) ? " (the HVM runtime was not built)" : "")
+                if (!present(d, r, hvm)) {
+                    o.println("evaluate: " + r + " is not on this machine" + (r.equals(HVM) ? " (the HVM cannot be built here: ./jmclbench doctor)" : "")
                             + ": its runs are left out");
                 }
             }
             int n = 0;
             for (EvaluationMatrix.Section s : m.sections) {
                 n++;
-                s.spec().runtimes.removeIf(r -> !present(d, r.value()));
+                s.spec().runtimes.removeIf(r -> !present(d, r.value(), hvm));
                 if (s.spec().runtimes.isEmpty()) {
                     o.printf("evaluate [%s] (%d/%d): no runtime of it is on this machine; skipped%n", s.name(), n, m.sections.size());
                     continue;
@@ -145,8 +148,16 @@ public final class EvaluateCommand implements Callable<Integer> {
         return 0;
     }
 
-    private static boolean present(RuntimeDiscovery d, String runtime) {
+    /** {@code hvm}: whether the HVM's tool chain can be built here (as for ./jmclbench jvms; the matrix builds it). */
+    private static boolean present(RuntimeDiscovery d, String runtime, boolean hvm) {
+        if (runtime.equals(HVM)) {
+            return hvm;
+        }
         return runtime.equals("native") || runtime.equals("all") || d.find(runtime).isPresent();
+    }
+
+    private static boolean hvmBuildable(EvaluationMatrix m) {
+        return runtimes(m).contains(HVM) && HvmRuntime.check(JmclbenchPaths.home()).buildable();
     }
 
     /** Installs the LTS JDKs the matrix names with the jvm install machinery; one that cannot be got is said and skipped. */

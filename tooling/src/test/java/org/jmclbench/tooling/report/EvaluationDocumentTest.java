@@ -59,9 +59,18 @@ class EvaluationDocumentTest {
         db = ReportFixtures.write(evaluationStore(), dir, "evaluation.db");
         Path verification = dir.resolve("verification.json");
         Files.writeString(verification, """
-                {"properties": [
-                  {"property": "no deadlock", "policy": "skip", "result": "holds", "states": 1200, "seededBug": "lock order", "seededBugCaught": true},
-                  {"property": "abort leaves robot unchanged", "policy": "terminate", "result": "violated", "states": 34}
+                {"schema": 1, "finished": "2026-11-23T13:00:00Z", "passed": false, "checks": [
+                  {"catalog": "mission", "id": "mission-skip", "property": "P1 no deadlock", "policy": "skip",
+                   "kind": "jpf", "seeded": false, "verdict": "holds", "passed": true, "seconds": 5.0,
+                   "scope": "2 odometry + 0 laser events", "states": 1200},
+                  {"catalog": "mission", "id": "mission-terminate", "property": "P3 abort leaves robot unchanged",
+                   "policy": "terminate", "kind": "jpf", "seeded": false, "verdict": "FAILS", "passed": false,
+                   "seconds": 2.0, "scope": "1 odometry + 1 laser events", "states": 34},
+                  {"catalog": "mission", "id": "P4-static-abort-poll", "property": "P4 every loop polls", "policy": "-",
+                   "kind": "static", "seeded": false, "verdict": "holds", "passed": true, "seconds": 0.1},
+                  {"catalog": "seeded", "id": "mission-seeded-lock-inversion", "property": "P1 no deadlock",
+                   "policy": "queue", "kind": "jpf", "seeded": true, "verdict": "caught", "passed": true,
+                   "seconds": 3.0, "scope": "1 odometry + 1 laser events", "states": 967}
                 ]}""");
         EvaluationDocument.write(db, dir.resolve("docs/EVALUATION.md"), dir.resolve("docs/evaluation"),
                 List.of("only match-quick"), verification);
@@ -291,10 +300,28 @@ class EvaluationDocumentTest {
     @Test
     void verificationAndDoctorFindingsAreReported() {
         List<List<String>> rows = table("Table 10:");
-        assertEquals(2, rows.size());
-        assertTrue(doc.contains("1 of 2 checks hold, over 1234 states in total"), doc);
+        assertEquals(4, rows.size());
+        assertEquals(List.of("mission-terminate", "mission", "P3 abort leaves robot unchanged", "terminate",
+                "1 odometry + 1 laser events", "FAILS", "34", "2.0"), rows.get(1));
+        assertEquals("seeded bug", rows.get(3).get(1));
+        assertTrue(doc.contains("On the real mission 2 of 3 checks hold, over 1234 states; 1 of 1 seeded bugs were caught"), doc);
         assertTrue(doc.contains("| bench-host | virtualization | warn | kvm |"), "the doctor's warning is a threat");
         assertTrue(doc.contains("A 2-processor machine"));
+    }
+
+    @Test
+    void figuresOfAnEarlierStoreAreRemoved() throws Exception {
+        Path small = ReportFixtures.write(ReportFixtures.engines(), dir, "stale.db");
+        Path out = dir.resolve("stale");
+        Files.createDirectories(out.resolve("evaluation"));
+        Files.writeString(out.resolve("evaluation/memory-99999.svg"), "<svg/>");
+        EvaluationDocument.write(small, out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
+        assertFalse(Files.exists(out.resolve("evaluation/memory-99999.svg")), "a figure the document no longer shows");
+        try (var written = Files.list(out.resolve("evaluation"))) {
+            String doc = Files.readString(out.resolve("EVALUATION.md"));
+            written.filter(f -> f.toString().endsWith(".svg"))
+                    .forEach(f -> assertTrue(doc.contains("evaluation/" + f.getFileName()), f + " is not in the document"));
+        }
     }
 
     @Test

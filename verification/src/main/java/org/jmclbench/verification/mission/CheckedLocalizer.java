@@ -15,14 +15,13 @@ import org.jmclbench.core.mcl.Localizer;
  * Allocation-free after construction, so it does not disturb the release-allocation check.
  * Jobs run one at a time (they hold the robot's monitor), so one poll watch serves both tasks.
  */
-public final class CheckedLocalizer implements Localizer {
-    private final Localizer inner;
+public final class CheckedLocalizer extends DelegatingLocalizer {
     private final double[] pose = new double[3];
     private final double[] cov = new double[6];
     private final PollWatch watch = new PollWatch();
 
     public CheckedLocalizer(Localizer inner) {
-        this.inner = inner;
+        super(inner);
     }
 
     @Override
@@ -84,35 +83,5 @@ public final class CheckedLocalizer implements Localizer {
             h = h * 31 + Double.doubleToRawLongBits(pose[2]);
         }
         return h;
-    }
-
-    @Override
-    public double estimateX() {
-        return inner.estimateX();
-    }
-
-    @Override
-    public double estimateY() {
-        return inner.estimateY();
-    }
-
-    @Override
-    public double estimateTheta() {
-        return inner.estimateTheta();
-    }
-
-    @Override
-    public void covariance(double[] out) {
-        inner.covariance(out);
-    }
-
-    @Override
-    public int particleCount() {
-        return inner.particleCount();
-    }
-
-    @Override
-    public void particle(int i, double[] out) {
-        inner.particle(i, out);
     }
 }

@@ -6,6 +6,7 @@ import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;
 import org.jmclbench.scj.OverrunPolicy;
 import org.jmclbench.verification.mission.CheckedConfiguration;
+import org.jmclbench.verification.mission.DelegatingLocalizer;
 
 /**
  * Seeded P3 bug in the real mission: commit before the abort poll. Each job applies its step to
@@ -23,7 +24,7 @@ public final class CommitBeforePollConfiguration extends CheckedConfiguration {
     }
 
     /** Runs each job to completion, then asks whether it should have stopped. */
-    static final class Faulty extends Delegating {
+    static final class Faulty extends DelegatingLocalizer {
         Faulty(Localizer inner) {
             super(inner);
         }

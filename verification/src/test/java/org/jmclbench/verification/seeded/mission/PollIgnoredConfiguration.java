@@ -6,6 +6,7 @@ import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;
 import org.jmclbench.scj.OverrunPolicy;
 import org.jmclbench.verification.mission.CheckedConfiguration;
+import org.jmclbench.verification.mission.DelegatingLocalizer;
 
 /**
  * Seeded P4 bug in the real mission: an abort request seen and not honoured. Each job polls
@@ -24,7 +25,7 @@ public final class PollIgnoredConfiguration extends CheckedConfiguration {
     }
 
     /** Polls first and ignores the answer. */
-    static final class Faulty extends Delegating {
+    static final class Faulty extends DelegatingLocalizer {
         Faulty(Localizer inner) {
             super(inner);
         }

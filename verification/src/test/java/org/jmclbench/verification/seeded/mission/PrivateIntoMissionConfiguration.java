@@ -6,6 +6,7 @@ import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;
 import org.jmclbench.scj.OverrunPolicy;
 import org.jmclbench.verification.mission.CheckedConfiguration;
+import org.jmclbench.verification.mission.DelegatingLocalizer;
 
 /**
  * Seeded P6 bug in the real mission: the predict job keeps its motion in an array allocated in
@@ -23,7 +24,7 @@ public final class PrivateIntoMissionConfiguration extends CheckedConfiguration 
     }
 
     /** Delegates, but remembers the last motion in a private-memory array. */
-    static final class Faulty extends Delegating {
+    static final class Faulty extends DelegatingLocalizer {
         private double[] lastMotion;
 
         Faulty(Localizer inner) {

@@ -6,6 +6,7 @@ import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;
 import org.jmclbench.scj.OverrunPolicy;
 import org.jmclbench.verification.mission.CheckedConfiguration;
+import org.jmclbench.verification.mission.DelegatingLocalizer;
 
 /** Seeded P6 bug in the real mission: the predict job allocates a scratch array in its release. */
 public final class StrayAllocationConfiguration extends CheckedConfiguration {
@@ -20,7 +21,7 @@ public final class StrayAllocationConfiguration extends CheckedConfiguration {
     }
 
     /** Delegates, but allocates once per predict job. */
-    static final class Faulty extends Delegating {
+    static final class Faulty extends DelegatingLocalizer {
         Faulty(Localizer inner) {
             super(inner);
         }

@@ -1,13 +1,16 @@
-package org.jmclbench.verification.seeded.mission;
+package org.jmclbench.verification.mission;
 
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 
-/** A localizer that forwards everything: seeded bugs override the job they break. */
-abstract class Delegating implements Localizer {
-    final Localizer inner;
+/**
+ * A localizer that forwards everything to the mission's: the P3/P4 check overrides the jobs it
+ * watches, and seeded bugs the job they break.
+ */
+public abstract class DelegatingLocalizer implements Localizer {
+    protected final Localizer inner;
 
-    Delegating(Localizer inner) {
+    protected DelegatingLocalizer(Localizer inner) {
         this.inner = inner;
     }
 

@@ -102,6 +102,26 @@ void jm_options_usage(FILE *f)
 	fprintf(f, "\nExit codes: 0 success, 2 bad usage or bad input, 1 a failure of the benchmark.\n");
 }
 
+void jm_one_line(char *s, size_t cap)
+{
+	size_t i, n = 0, len = strlen(s);
+	char *tmp = malloc(len + 1);
+
+	if (!tmp)
+		return;
+	memcpy(tmp, s, len);
+	for (i = 0; i < len && n + 5 < cap; i++) {
+		unsigned char c = (unsigned char)tmp[i];
+
+		if (c < 0x20 || c == 0x7f)
+			n += (size_t)snprintf(s + n, cap - n, "\\x%02x", c);
+		else
+			s[n++] = (char)c;
+	}
+	s[n] = '\0';
+	free(tmp);
+}
+
 static int fail(char *err, size_t errlen, const char *name, const char *problem, const char *value)
 {
 	if (value)
@@ -206,7 +226,18 @@ static int runtime_name_ok(const char *s)
 	return 1;
 }
 
+static int parse(jm_options *o, int argc, char **argv, char *err, size_t errlen);
+
 int jm_options_parse(jm_options *o, int argc, char **argv, char *err, size_t errlen)
+{
+	int r = parse(o, argc, argv, err, errlen);
+
+	if (r)
+		jm_one_line(err, errlen);
+	return r;
+}
+
+static int parse(jm_options *o, int argc, char **argv, char *err, size_t errlen)
 {
 	int i = 1, terminate_flag = 0, policy_given = 0;
 

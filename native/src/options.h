@@ -41,6 +41,11 @@ typedef struct {
  * -1 with err holding "<option>: <problem>".
  */
 int jm_options_parse(jm_options *o, int argc, char **argv, char *err, size_t errlen);
+/*
+ * Rewrites the message s (of capacity cap) as one line: every control character (a newline
+ * in an argument or a path) as \xHH, as the Java workload's BadInputException does.
+ */
+void jm_one_line(char *s, size_t cap);
 /* One line per option with its unit and default. */
 void jm_options_usage(FILE *f);
 

@@ -93,8 +93,8 @@ static int names_non_finite(const char *p, size_t len)
 			return 0;
 		t[n++] = (char)(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
 	}
-	t[n] = '\0';
-	return !strcmp(t, "nan") || !strcmp(t, "inf") || !strcmp(t, "infinity");
+	/* by length, not strcmp: a NUL byte inside the token must not end the comparison */
+	return (n == 3 && (!memcmp(t, "nan", 3) || !memcmp(t, "inf", 3))) || (n == 8 && !memcmp(t, "infinity", 8));
 }
 
 enum { NUM_OK, NUM_SYNTAX, NUM_NON_FINITE, NUM_OVERFLOW, NUM_NOMEM };

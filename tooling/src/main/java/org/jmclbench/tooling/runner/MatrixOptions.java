@@ -93,9 +93,18 @@ final class MatrixOptions {
                 }
                 spec.pinCpu = value.strip();
             }
-            case "db" -> spec.db = Path.of(value.strip());
-            case "native" -> spec.nativeBinary = Path.of(value.strip());
+            case "db" -> spec.db = path(value.strip(), at);
+            case "native" -> spec.nativeBinary = path(value.strip(), at);
             default -> throw new BadUsageException(where + ": unknown key '" + key + "' (known: " + String.join(", ", KEYS) + ")");
+        }
+    }
+
+    /** A path, or bad usage (a NUL byte makes Path.of throw; found by MatrixFileFuzzTest). */
+    private static Path path(String v, String at) {
+        try {
+            return Path.of(v);
+        } catch (java.nio.file.InvalidPathException e) {
+            throw new BadUsageException(at + ": '" + v.replace("\0", "\\x00") + "' is not a path");
         }
     }
 

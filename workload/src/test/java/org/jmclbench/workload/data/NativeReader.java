@@ -10,6 +10,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
+import org.jmclbench.workload.testing.NativeBuild;
+
 /**
  * The C reader, asked through native/tests/dataset_dump.c: one process kept running for many
  * requests ({@code --serve}), or one run on a folder or three files. Builds the harness with
@@ -17,10 +19,7 @@ import java.util.List;
  */
 final class NativeReader implements AutoCloseable {
     /** The project's root, the workload module's parent. */
-    static final File HOME = new File(System.getProperty("user.dir")).getAbsoluteFile().getParentFile();
-    private static final File HARNESS = new File(HOME, "native/build/dataset_dump");
-
-    private static boolean built;
+    static final File HOME = NativeBuild.HOME;
 
     private final Process process;
     private final OutputStream requests;
@@ -39,12 +38,8 @@ final class NativeReader implements AutoCloseable {
     }
 
     /** The harness, built (once per JVM) by the native Makefile. */
-    static synchronized File harness() throws IOException {
-        if (!built) {
-            run(Arrays.asList("make", "-s", "-C", new File(HOME, "native").getPath(), "build/dataset_dump"));
-            built = true;
-        }
-        return HARNESS;
+    static File harness() throws IOException {
+        return NativeBuild.target("build/dataset_dump");
     }
 
     /** What the C reader makes of an event file of {@code columns} columns. */
@@ -74,13 +69,8 @@ final class NativeReader implements AutoCloseable {
         }
     }
 
-    private int waitFor() {
-        try {
-            return process.waitFor();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return -1;
-        }
+    private int waitFor() throws IOException {
+        return NativeBuild.waitFor(process);
     }
 
     /** What the C reader makes of a folder (one path) or the thesis's three files. */
@@ -93,29 +83,12 @@ final class NativeReader implements AutoCloseable {
 
     private static String run(List<String> cmd) throws IOException {
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
-        byte[] out = readAll(p);
-        int code;
-        try {
-            code = p.waitFor();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IOException("interrupted", e);
-        }
-        String text = new String(out, StandardCharsets.ISO_8859_1);
+        String text = NativeBuild.readAll(p.getInputStream());
+        int code = NativeBuild.waitFor(p);
         if (code != 0) {
             throw new IOException(String.join(" ", cmd) + ": exit " + code + ": " + text);
         }
         return text;
-    }
-
-    private static byte[] readAll(Process p) throws IOException {
-        java.io.ByteArrayOutputStream b = new java.io.ByteArrayOutputStream();
-        byte[] buf = new byte[8192];
-        int n;
-        while ((n = p.getInputStream().read(buf)) > 0) {
-            b.write(buf, 0, n);
-        }
-        return b.toByteArray();
     }
 
     @Override

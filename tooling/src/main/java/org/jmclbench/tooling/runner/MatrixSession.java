@@ -14,8 +14,8 @@ import java.util.Map;
 import java.util.UUID;
 import java.util.function.Supplier;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.doctor.Doctor;
-import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.ProfileProbe;

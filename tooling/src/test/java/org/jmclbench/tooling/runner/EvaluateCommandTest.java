@@ -11,8 +11,8 @@ import java.util.Set;
 import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.Fixtures;
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.cli.JmclbenchCli;
-import org.jmclbench.tooling.runtime.BadUsageException;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 

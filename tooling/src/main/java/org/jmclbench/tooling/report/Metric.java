@@ -1,5 +1,7 @@
 package org.jmclbench.tooling.report;
 
+import org.jmclbench.tooling.store.StoredRuns;
+
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.MissingNode;
@@ -39,7 +41,7 @@ public enum Metric {
     }
 
     /** The value of a run in {@link #unit}, or null when the run has none (failed, or not recorded). */
-    public Double of(ResultsStore.Run run) {
+    public Double of(StoredRuns.Run run) {
         if (!run.ok()) {
             return null;
         }
@@ -53,7 +55,7 @@ public enum Metric {
         return v == null || v.isNaN() ? null : v * scale;
     }
 
-    private static JsonNode summary(ResultsStore.Run run) {
+    private static JsonNode summary(StoredRuns.Run run) {
         if (run.summary == null) {
             try {
                 run.summary = run.summaryJson == null ? MissingNode.getInstance() : JSON.readTree(run.summaryJson);
@@ -65,7 +67,7 @@ public enum Metric {
     }
 
     /** The run's summary.json as a tree (missing node when there is none). */
-    static JsonNode summaryOf(ResultsStore.Run run) {
+    public static JsonNode summaryOf(StoredRuns.Run run) {
         return summary(run);
     }
 }

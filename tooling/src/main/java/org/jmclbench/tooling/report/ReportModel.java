@@ -14,6 +14,8 @@ import java.util.TreeSet;
 import java.util.function.Consumer;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.store.StoredRuns;
+
 import org.HdrHistogram.Histogram;
 import org.HdrHistogram.HistogramIterationValue;
 
@@ -153,24 +155,24 @@ public final class ReportModel {
     }
 
     /** Builds the model, reporting progress through {@code progress} (one line a step). */
-    public static ReportModel build(ResultsStore store, Consumer<String> progress) {
+    public static ReportModel build(StoredRuns store, Consumer<String> progress) {
         ReportModel m = new ReportModel();
         m.generatedAt = java.time.Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS).toString();
         m.database = store.file().getFileName().toString();
-        List<ResultsStore.Run> runs = store.runs();
+        List<StoredRuns.Run> runs = store.runs();
         m.runCount = runs.size();
         progress.accept("read " + runs.size() + " runs");
 
-        Map<String, ResultsStore.Machine> machineRows = store.machines();
+        Map<String, StoredRuns.Machine> machineRows = store.machines();
         if (runs.stream().map(r -> String.valueOf(r.machineId)).distinct().count() > 1) {
             // Runs of two machines (merged stores) are never pooled: each runtime is shown per machine.
-            for (ResultsStore.Run r : runs) {
-                ResultsStore.Machine mc = machineRows.get(r.machineId);
+            for (StoredRuns.Run r : runs) {
+                StoredRuns.Machine mc = machineRows.get(r.machineId);
                 r.machineLabel = mc != null && mc.hostname() != null ? mc.hostname() : String.valueOf(r.machineId);
             }
         }
-        Map<String, List<ResultsStore.Run>> byCell = new LinkedHashMap<>();
-        for (ResultsStore.Run r : runs) {
+        Map<String, List<StoredRuns.Run>> byCell = new LinkedHashMap<>();
+        for (StoredRuns.Run r : runs) {
             byCell.computeIfAbsent(r.dataset + "\u0000" + r.policy + "\u0000" + r.particles + "\u0000" + r.configOnMachine(),
                     k -> new ArrayList<>()).add(r);
         }
@@ -187,7 +189,7 @@ public final class ReportModel {
         int done = 0;
         long start = System.nanoTime();
         long last = start;
-        for (List<ResultsStore.Run> group : byCell.values()) {
+        for (List<StoredRuns.Run> group : byCell.values()) {
             m.cells.add(cell(store, group));
             done++;
             if (System.nanoTime() - last > 1_000_000_000L || done == byCell.size()) {
@@ -199,8 +201,8 @@ public final class ReportModel {
         return m;
     }
 
-    private static Cell cell(ResultsStore store, List<ResultsStore.Run> group) {
-        ResultsStore.Run first = group.get(0);
+    private static Cell cell(StoredRuns store, List<StoredRuns.Run> group) {
+        StoredRuns.Run first = group.get(0);
         Cell c = new Cell();
         c.dataset = first.dataset;
         c.policy = first.policy;
@@ -209,8 +211,8 @@ public final class ReportModel {
         c.engine = first.engine;
         c.memory = first.memory;
         c.runs = group.size();
-        List<ResultsStore.Run> ok = new ArrayList<>();
-        for (ResultsStore.Run r : group) {
+        List<StoredRuns.Run> ok = new ArrayList<>();
+        for (StoredRuns.Run r : group) {
             switch (r.status) {
                 case "ok" -> ok.add(r);
                 case "timeout" -> c.timeout++;
@@ -224,7 +226,7 @@ public final class ReportModel {
         c.ok = ok.size();
         for (Metric metric : Metric.values()) {
             List<Double> values = new ArrayList<>();
-            for (ResultsStore.Run r : ok) {
+            for (StoredRuns.Run r : ok) {
                 Double v = metric.of(r);
                 if (v != null) {
                     values.add(v);
@@ -235,7 +237,7 @@ public final class ReportModel {
         for (Map.Entry<String, String[]> e : WARMUP_METRICS.entrySet()) {
             double scale = Double.parseDouble(e.getValue()[1]);
             List<Double> values = new ArrayList<>();
-            for (ResultsStore.Run r : ok) {
+            for (StoredRuns.Run r : ok) {
                 Double v = r.metric(e.getValue()[0]);
                 if (v != null) {
                     values.add(v * scale);
@@ -265,10 +267,10 @@ public final class ReportModel {
                         SeriesTable.round(v.getPercentileLevelIteratedTo() / 100.0)});
             }
         }
-        ResultsStore.Run rep = ok.get(0);
+        StoredRuns.Run rep = ok.get(0);
         c.latencyPredict = latencyPoints(store.series(rep.runKey, "taskLatency.predict"));
         c.latencyUpdate = latencyPoints(store.series(rep.runKey, "taskLatency.update"));
-        for (ResultsStore.Run r : ok.subList(0, Math.min(MAX_REPETITION_SERIES, ok.size()))) {
+        for (StoredRuns.Run r : ok.subList(0, Math.min(MAX_REPETITION_SERIES, ok.size()))) {
             SeriesTable t = SeriesTable.parse(store.series(r.runKey, "deviation"));
             if (t != null) {
                 c.deviation.add(t.points(t.column("time", "t", "timeS"), 1, t.column("dxy", "deviationXY", "xy", "exy"), 1, MAX_POINTS));
@@ -286,19 +288,19 @@ public final class ReportModel {
     }
 
     /** Each area's largest size and peak over the runs, and its mean bytes per release, in {@link #AREA_ORDER}. */
-    static List<MemoryArea> memoryAreas(List<ResultsStore.Run> ok) {
-        Map<String, List<ResultsStore.Area>> byName = new LinkedHashMap<>();
-        for (ResultsStore.Run r : ok) {
-            for (ResultsStore.Area a : r.areas) {
+    static List<MemoryArea> memoryAreas(List<StoredRuns.Run> ok) {
+        Map<String, List<StoredRuns.Area>> byName = new LinkedHashMap<>();
+        for (StoredRuns.Run r : ok) {
+            for (StoredRuns.Area a : r.areas) {
                 byName.computeIfAbsent(a.name(), k -> new ArrayList<>()).add(a);
             }
         }
         List<MemoryArea> out = new ArrayList<>();
-        for (Map.Entry<String, List<ResultsStore.Area>> e : byName.entrySet()) {
-            List<ResultsStore.Area> as = e.getValue();
-            Long size = as.stream().map(ResultsStore.Area::size).filter(v -> v != null).max(Long::compare).orElse(null);
-            Long peak = as.stream().map(ResultsStore.Area::peakBytes).filter(v -> v != null).max(Long::compare).orElse(null);
-            List<Double> perRelease = as.stream().map(ResultsStore.Area::bytesPerRelease).filter(v -> v != null).toList();
+        for (Map.Entry<String, List<StoredRuns.Area>> e : byName.entrySet()) {
+            List<StoredRuns.Area> as = e.getValue();
+            Long size = as.stream().map(StoredRuns.Area::size).filter(v -> v != null).max(Long::compare).orElse(null);
+            Long peak = as.stream().map(StoredRuns.Area::peakBytes).filter(v -> v != null).max(Long::compare).orElse(null);
+            List<Double> perRelease = as.stream().map(StoredRuns.Area::bytesPerRelease).filter(v -> v != null).toList();
             Double mean = perRelease.isEmpty() ? null
                     : SeriesTable.round(perRelease.stream().mapToDouble(Double::doubleValue).average().orElse(0));
             out.add(new MemoryArea(e.getKey(), size, peak, mean, as.size()));
@@ -314,10 +316,10 @@ public final class ReportModel {
      * Mean over the attributed repetitions of each cause's primary count. A run without
      * attribution rows counts as no evidence, not as zero causes, so it is left out.
      */
-    static Map<String, Double> causes(List<ResultsStore.Run> ok) {
+    static Map<String, Double> causes(List<StoredRuns.Run> ok) {
         Map<String, Double> sum = new java.util.TreeMap<>();
         int attributed = 0;
-        for (ResultsStore.Run r : ok) {
+        for (StoredRuns.Run r : ok) {
             boolean any = false;
             for (Map.Entry<String, Double> e : r.metrics.entrySet()) {
                 String k = e.getKey();
@@ -443,19 +445,19 @@ public final class ReportModel {
         return sum == null || sum.getTotalCount() == 0 ? null : sum;
     }
 
-    private static List<ConfigInfo> configs(List<ResultsStore.Run> runs) {
-        Map<String, List<ResultsStore.Run>> byConfig = new LinkedHashMap<>();
-        runs.stream().sorted(Comparator.comparing(ResultsStore.Run::configOnMachine))
+    private static List<ConfigInfo> configs(List<StoredRuns.Run> runs) {
+        Map<String, List<StoredRuns.Run>> byConfig = new LinkedHashMap<>();
+        runs.stream().sorted(Comparator.comparing(StoredRuns.Run::configOnMachine))
                 .forEach(r -> byConfig.computeIfAbsent(r.configOnMachine(), k -> new ArrayList<>()).add(r));
         List<ConfigInfo> out = new ArrayList<>();
-        for (Map.Entry<String, List<ResultsStore.Run>> e : byConfig.entrySet()) {
-            ResultsStore.Run first = e.getValue().get(0);
+        for (Map.Entry<String, List<StoredRuns.Run>> e : byConfig.entrySet()) {
+            StoredRuns.Run first = e.getValue().get(0);
             Set<String> versions = new LinkedHashSet<>();
             List<String> flags = new ArrayList<>(); // a list: an argument may repeat ("-n 1 ... --seed 1")
             Set<String> machines = new LinkedHashSet<>();
             List<String> facts = new ArrayList<>();
             boolean nativeBaseline = "native".equals(first.runtime) || "native".equals(first.engine);
-            for (ResultsStore.Run r : e.getValue()) {
+            for (StoredRuns.Run r : e.getValue()) {
                 if (r.runtimeVersion != null) {
                     versions.add(r.runtimeVersion);
                 }
@@ -515,10 +517,10 @@ public final class ReportModel {
         return out;
     }
 
-    private static List<MachineInfo> machines(ResultsStore store, List<ResultsStore.Run> runs) {
+    private static List<MachineInfo> machines(StoredRuns store, List<StoredRuns.Run> runs) {
         ObjectMapper json = new ObjectMapper();
         List<MachineInfo> out = new ArrayList<>();
-        for (ResultsStore.Machine mc : store.machines().values()) {
+        for (StoredRuns.Machine mc : store.machines().values()) {
             List<Map<String, String>> checks = new ArrayList<>();
             String virtualization = null;
             try {
@@ -545,8 +547,8 @@ public final class ReportModel {
         return out;
     }
 
-    private static Playground playground(ResultsStore store, List<ResultsStore.Run> runs, String dataset) {
-        for (ResultsStore.Run r : runs) {
+    private static Playground playground(StoredRuns store, List<StoredRuns.Run> runs, String dataset) {
+        for (StoredRuns.Run r : runs) {
             if (!dataset.equals(r.dataset) || !r.ok()) {
                 continue;
             }
@@ -579,7 +581,7 @@ public final class ReportModel {
         return Playground.thesis();
     }
 
-    private static Selection defaults(ReportModel m, List<ResultsStore.Run> runs) {
+    private static Selection defaults(ReportModel m, List<StoredRuns.Run> runs) {
         if (runs.isEmpty()) {
             return new Selection(null, null, null);
         }

@@ -137,14 +137,14 @@ class EvaluateCommandTest {
         assertEquals(0, JmclbenchCli.execute(args));
         String doc = Files.readString(dir.resolve("docs/EVALUATION.md"));
         assertTrue(doc.contains("- everything but the fake C baseline"), doc);
-        try (var store = org.jmclbench.tooling.report.ResultsStore.open(db, "--db")) {
-            List<org.jmclbench.tooling.report.ResultsStore.Run> runs = store.runs();
+        try (var store = org.jmclbench.tooling.store.StoredRuns.open(db, "--db")) {
+            List<org.jmclbench.tooling.store.StoredRuns.Run> runs = store.runs();
             assertEquals(4, runs.size(), "2 sections x 2 repetitions of native; the absent runtime is left out");
             assertEquals(Set.of("skip", "terminate"), runs.stream().map(r -> r.policy).collect(Collectors.toSet()));
         }
         assertTrue(Files.isRegularFile(out.resolve("misses-skip.svg")));
         assertEquals(0, JmclbenchCli.execute(args), "a rerun resumes: nothing is run twice");
-        try (var store = org.jmclbench.tooling.report.ResultsStore.open(db, "--db")) {
+        try (var store = org.jmclbench.tooling.store.StoredRuns.open(db, "--db")) {
             assertEquals(4, store.runs().size());
         }
     }

@@ -1,4 +1,4 @@
-package org.jmclbench.tooling.report;
+package org.jmclbench.tooling.store;
 
 import java.nio.ByteBuffer;
 import java.nio.file.Files;
@@ -18,6 +18,7 @@ import java.util.Map;
 import java.util.zip.DataFormatException;
 
 import org.HdrHistogram.Histogram;
+import org.jmclbench.tooling.report.Metric;
 import org.jmclbench.workload.BadInputException;
 import org.sqlite.SQLiteConfig;
 
@@ -25,18 +26,18 @@ import org.sqlite.SQLiteConfig;
  * Read-only view of the results database (docs/FORMATS.md section 5) for the report and
  * compare: runs, their flattened metrics, histograms, series and the machines.
  */
-public final class ResultsStore implements AutoCloseable {
+public final class StoredRuns implements AutoCloseable {
 
     private final Path file;
     private final Connection db;
 
-    private ResultsStore(Path file, Connection db) {
+    private StoredRuns(Path file, Connection db) {
         this.file = file;
         this.db = db;
     }
 
     /** Opens {@code file} read-only; a missing or unreadable database is bad input. */
-    public static ResultsStore open(Path file, String option) throws BadInputException {
+    public static StoredRuns open(Path file, String option) throws BadInputException {
         if (!Files.isRegularFile(file)) {
             throw new BadInputException(option + ": " + file + ": no such database");
         }
@@ -51,7 +52,7 @@ public final class ResultsStore implements AutoCloseable {
                     throw new BadInputException(option + ": " + file + ": not a jmclbench results database (no runs table)");
                 }
             }
-            return new ResultsStore(file, c);
+            return new StoredRuns(file, c);
         } catch (SQLException e) {
             throw new BadInputException(option + ": " + file + ": cannot read the database: " + oneLine(e.getMessage()));
         }
@@ -91,10 +92,10 @@ public final class ResultsStore implements AutoCloseable {
         /** {@code task/metric/stat} -> value. */
         public final Map<String, Double> metrics = new HashMap<>();
         /** summary_json parsed on first use ({@link Metric}); a missing node when absent or invalid. */
-        com.fasterxml.jackson.databind.JsonNode summary;
+        public com.fasterxml.jackson.databind.JsonNode summary;
 
         /** Set by the report when the store holds several machines: the same runtime on two machines is two configurations. */
-        String machineLabel;
+        public String machineLabel;
         /** Set by {@link #labelEngines} when the runs have several engines or memory styles. */
         boolean showEngine;
         boolean showMemory;
@@ -117,7 +118,7 @@ public final class ResultsStore implements AutoCloseable {
         }
 
         /** {@link #config()}, with " @host" when the report tells machines apart. */
-        String configOnMachine() {
+        public String configOnMachine() {
             return machineLabel == null ? config() : config() + " @" + machineLabel;
         }
 
@@ -304,7 +305,7 @@ public final class ResultsStore implements AutoCloseable {
     }
 
     /** Base64 of HdrHistogram's compressed encoding -> histogram; null when it cannot be decoded. */
-    static Histogram decode(String base64) {
+    public static Histogram decode(String base64) {
         try {
             byte[] bytes = Base64.getDecoder().decode(base64.trim());
             return Histogram.decodeFromCompressedByteBuffer(ByteBuffer.wrap(bytes), 0);
@@ -348,7 +349,7 @@ public final class ResultsStore implements AutoCloseable {
         return s == null ? dflt : s;
     }
 
-    static String oneLine(String s) {
+    public static String oneLine(String s) {
         return s == null ? "" : s.replaceAll("\\s+", " ").trim();
     }
 

@@ -6,7 +6,7 @@ import java.util.List;
 import org.jmclbench.tooling.attribution.AttributionData;
 
 /** What the store keeps of an ok run beside its row: flattened metrics, histograms and small series. */
-public final class RunData {
+public final class RunDetails {
 
     /** One {@code metrics} row. */
     public record Metric(String task, String metric, String stat, double value) {
@@ -35,7 +35,7 @@ public final class RunData {
     public final List<AttributionData.Row> attributions = new ArrayList<>();
 
     /** Nothing beside the row (failed, timed-out and unsupported runs). */
-    public static RunData empty() {
-        return new RunData();
+    public static RunDetails empty() {
+        return new RunDetails();
     }
 }

@@ -14,6 +14,8 @@ import java.util.TreeSet;
 import java.util.function.Consumer;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.store.MemoryAreaRow;
+import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
 
 import org.HdrHistogram.Histogram;
@@ -159,20 +161,20 @@ public final class ReportModel {
         ReportModel m = new ReportModel();
         m.generatedAt = java.time.Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS).toString();
         m.database = store.file().getFileName().toString();
-        List<StoredRuns.Run> runs = store.runs();
+        List<StoredRun> runs = store.runs();
         m.runCount = runs.size();
         progress.accept("read " + runs.size() + " runs");
 
         Map<String, StoredRuns.Machine> machineRows = store.machines();
         if (runs.stream().map(r -> String.valueOf(r.machineId)).distinct().count() > 1) {
             // Runs of two machines (merged stores) are never pooled: each runtime is shown per machine.
-            for (StoredRuns.Run r : runs) {
+            for (StoredRun r : runs) {
                 StoredRuns.Machine mc = machineRows.get(r.machineId);
                 r.machineLabel = mc != null && mc.hostname() != null ? mc.hostname() : String.valueOf(r.machineId);
             }
         }
-        Map<String, List<StoredRuns.Run>> byCell = new LinkedHashMap<>();
-        for (StoredRuns.Run r : runs) {
+        Map<String, List<StoredRun>> byCell = new LinkedHashMap<>();
+        for (StoredRun r : runs) {
             byCell.computeIfAbsent(r.dataset + "\u0000" + r.policy + "\u0000" + r.particles + "\u0000" + r.configOnMachine(),
                     k -> new ArrayList<>()).add(r);
         }
@@ -189,7 +191,7 @@ public final class ReportModel {
         int done = 0;
         long start = System.nanoTime();
         long last = start;
-        for (List<StoredRuns.Run> group : byCell.values()) {
+        for (List<StoredRun> group : byCell.values()) {
             m.cells.add(cell(store, group));
             done++;
             if (System.nanoTime() - last > 1_000_000_000L || done == byCell.size()) {
@@ -201,8 +203,8 @@ public final class ReportModel {
         return m;
     }
 
-    private static Cell cell(StoredRuns store, List<StoredRuns.Run> group) {
-        StoredRuns.Run first = group.get(0);
+    private static Cell cell(StoredRuns store, List<StoredRun> group) {
+        StoredRun first = group.get(0);
         Cell c = new Cell();
         c.dataset = first.dataset;
         c.policy = first.policy;
@@ -211,8 +213,8 @@ public final class ReportModel {
         c.engine = first.engine;
         c.memory = first.memory;
         c.runs = group.size();
-        List<StoredRuns.Run> ok = new ArrayList<>();
-        for (StoredRuns.Run r : group) {
+        List<StoredRun> ok = new ArrayList<>();
+        for (StoredRun r : group) {
             switch (r.status) {
                 case "ok" -> ok.add(r);
                 case "timeout" -> c.timeout++;
@@ -226,7 +228,7 @@ public final class ReportModel {
         c.ok = ok.size();
         for (Metric metric : Metric.values()) {
             List<Double> values = new ArrayList<>();
-            for (StoredRuns.Run r : ok) {
+            for (StoredRun r : ok) {
                 Double v = metric.of(r);
                 if (v != null) {
                     values.add(v);
@@ -237,7 +239,7 @@ public final class ReportModel {
         for (Map.Entry<String, String[]> e : WARMUP_METRICS.entrySet()) {
             double scale = Double.parseDouble(e.getValue()[1]);
             List<Double> values = new ArrayList<>();
-            for (StoredRuns.Run r : ok) {
+            for (StoredRun r : ok) {
                 Double v = r.metric(e.getValue()[0]);
                 if (v != null) {
                     values.add(v * scale);
@@ -267,10 +269,10 @@ public final class ReportModel {
                         SeriesTable.round(v.getPercentileLevelIteratedTo() / 100.0)});
             }
         }
-        StoredRuns.Run rep = ok.get(0);
+        StoredRun rep = ok.get(0);
         c.latencyPredict = latencyPoints(store.series(rep.runKey, "taskLatency.predict"));
         c.latencyUpdate = latencyPoints(store.series(rep.runKey, "taskLatency.update"));
-        for (StoredRuns.Run r : ok.subList(0, Math.min(MAX_REPETITION_SERIES, ok.size()))) {
+        for (StoredRun r : ok.subList(0, Math.min(MAX_REPETITION_SERIES, ok.size()))) {
             SeriesTable t = SeriesTable.parse(store.series(r.runKey, "deviation"));
             if (t != null) {
                 c.deviation.add(t.points(t.column("time", "t", "timeS"), 1, t.column("dxy", "deviationXY", "xy", "exy"), 1, MAX_POINTS));
@@ -288,19 +290,19 @@ public final class ReportModel {
     }
 
     /** Each area's largest size and peak over the runs, and its mean bytes per release, in {@link #AREA_ORDER}. */
-    static List<MemoryArea> memoryAreas(List<StoredRuns.Run> ok) {
-        Map<String, List<StoredRuns.Area>> byName = new LinkedHashMap<>();
-        for (StoredRuns.Run r : ok) {
-            for (StoredRuns.Area a : r.areas) {
+    static List<MemoryArea> memoryAreas(List<StoredRun> ok) {
+        Map<String, List<MemoryAreaRow>> byName = new LinkedHashMap<>();
+        for (StoredRun r : ok) {
+            for (MemoryAreaRow a : r.areas) {
                 byName.computeIfAbsent(a.name(), k -> new ArrayList<>()).add(a);
             }
         }
         List<MemoryArea> out = new ArrayList<>();
-        for (Map.Entry<String, List<StoredRuns.Area>> e : byName.entrySet()) {
-            List<StoredRuns.Area> as = e.getValue();
-            Long size = as.stream().map(StoredRuns.Area::size).filter(v -> v != null).max(Long::compare).orElse(null);
-            Long peak = as.stream().map(StoredRuns.Area::peakBytes).filter(v -> v != null).max(Long::compare).orElse(null);
-            List<Double> perRelease = as.stream().map(StoredRuns.Area::bytesPerRelease).filter(v -> v != null).toList();
+        for (Map.Entry<String, List<MemoryAreaRow>> e : byName.entrySet()) {
+            List<MemoryAreaRow> as = e.getValue();
+            Long size = as.stream().map(MemoryAreaRow::size).filter(v -> v != null).max(Long::compare).orElse(null);
+            Long peak = as.stream().map(MemoryAreaRow::peakBytes).filter(v -> v != null).max(Long::compare).orElse(null);
+            List<Double> perRelease = as.stream().map(MemoryAreaRow::bytesPerRelease).filter(v -> v != null).toList();
             Double mean = perRelease.isEmpty() ? null
                     : SeriesTable.round(perRelease.stream().mapToDouble(Double::doubleValue).average().orElse(0));
             out.add(new MemoryArea(e.getKey(), size, peak, mean, as.size()));
@@ -316,10 +318,10 @@ public final class ReportModel {
      * Mean over the attributed repetitions of each cause's primary count. A run without
      * attribution rows counts as no evidence, not as zero causes, so it is left out.
      */
-    static Map<String, Double> causes(List<StoredRuns.Run> ok) {
+    static Map<String, Double> causes(List<StoredRun> ok) {
         Map<String, Double> sum = new java.util.TreeMap<>();
         int attributed = 0;
-        for (StoredRuns.Run r : ok) {
+        for (StoredRun r : ok) {
             boolean any = false;
             for (Map.Entry<String, Double> e : r.metrics.entrySet()) {
                 String k = e.getKey();
@@ -445,19 +447,19 @@ public final class ReportModel {
         return sum == null || sum.getTotalCount() == 0 ? null : sum;
     }
 
-    private static List<ConfigInfo> configs(List<StoredRuns.Run> runs) {
-        Map<String, List<StoredRuns.Run>> byConfig = new LinkedHashMap<>();
-        runs.stream().sorted(Comparator.comparing(StoredRuns.Run::configOnMachine))
+    private static List<ConfigInfo> configs(List<StoredRun> runs) {
+        Map<String, List<StoredRun>> byConfig = new LinkedHashMap<>();
+        runs.stream().sorted(Comparator.comparing(StoredRun::configOnMachine))
                 .forEach(r -> byConfig.computeIfAbsent(r.configOnMachine(), k -> new ArrayList<>()).add(r));
         List<ConfigInfo> out = new ArrayList<>();
-        for (Map.Entry<String, List<StoredRuns.Run>> e : byConfig.entrySet()) {
-            StoredRuns.Run first = e.getValue().get(0);
+        for (Map.Entry<String, List<StoredRun>> e : byConfig.entrySet()) {
+            StoredRun first = e.getValue().get(0);
             Set<String> versions = new LinkedHashSet<>();
             List<String> flags = new ArrayList<>(); // a list: an argument may repeat ("-n 1 ... --seed 1")
             Set<String> machines = new LinkedHashSet<>();
             List<String> facts = new ArrayList<>();
             boolean nativeBaseline = "native".equals(first.runtime) || "native".equals(first.engine);
-            for (StoredRuns.Run r : e.getValue()) {
+            for (StoredRun r : e.getValue()) {
                 if (r.runtimeVersion != null) {
                     versions.add(r.runtimeVersion);
                 }
@@ -517,7 +519,7 @@ public final class ReportModel {
         return out;
     }
 
-    private static List<MachineInfo> machines(StoredRuns store, List<StoredRuns.Run> runs) {
+    private static List<MachineInfo> machines(StoredRuns store, List<StoredRun> runs) {
         ObjectMapper json = new ObjectMapper();
         List<MachineInfo> out = new ArrayList<>();
         for (StoredRuns.Machine mc : store.machines().values()) {
@@ -547,8 +549,8 @@ public final class ReportModel {
         return out;
     }
 
-    private static Playground playground(StoredRuns store, List<StoredRuns.Run> runs, String dataset) {
-        for (StoredRuns.Run r : runs) {
+    private static Playground playground(StoredRuns store, List<StoredRun> runs, String dataset) {
+        for (StoredRun r : runs) {
             if (!dataset.equals(r.dataset) || !r.ok()) {
                 continue;
             }
@@ -581,7 +583,7 @@ public final class ReportModel {
         return Playground.thesis();
     }
 
-    private static Selection defaults(ReportModel m, List<StoredRuns.Run> runs) {
+    private static Selection defaults(ReportModel m, List<StoredRun> runs) {
         if (runs.isEmpty()) {
             return new Selection(null, null, null);
         }

@@ -16,13 +16,6 @@ public final class RunDetails {
     public record Hdr(String task, String metric, String base64) {
     }
 
-    /**
-     * One {@code memory_areas} row: a memory area of the run (summary.json {@code memory.areas}); null
-     * where the engine does not tell. For a handler's private memory {@code peakBytes} is one release's peak.
-     */
-    public record Area(String name, Long size, Long peakBytes, Double bytesPerRelease) {
-    }
-
     /** One {@code series} row: {@code {"columns": [...], "rows": [[...], ...]}}. */
     public record Series(String name, String json) {
     }
@@ -30,7 +23,7 @@ public final class RunDetails {
     public final List<Metric> metrics = new ArrayList<>();
     public final List<Hdr> histograms = new ArrayList<>();
     public final List<Series> series = new ArrayList<>();
-    public final List<Area> areas = new ArrayList<>();
+    public final List<MemoryAreaRow> areas = new ArrayList<>();
     /** One row per missed or late job: why it missed (org.jmclbench.tooling.attribution). */
     public final List<AttributionData.Row> attributions = new ArrayList<>();
 

@@ -131,9 +131,9 @@ public final class RunFolderIngest {
      *
      * @throws IOException when they are not an array of areas with distinct names and numbers or nulls
      */
-    static List<RunDetails.Area> memoryAreas(JsonNode summary) throws IOException {
+    static List<MemoryAreaRow> memoryAreas(JsonNode summary) throws IOException {
         JsonNode areas = summary.path("memory").path("areas");
-        List<RunDetails.Area> out = new ArrayList<>();
+        List<MemoryAreaRow> out = new ArrayList<>();
         if (areas.isMissingNode() || areas.isNull()) {
             return out;
         }
@@ -148,7 +148,7 @@ public final class RunFolderIngest {
             }
             Double size = bytes(a, "size", name);
             Double peak = bytes(a, "peakBytes", name);
-            out.add(new RunDetails.Area(name, size == null ? null : Math.round(size), peak == null ? null : Math.round(peak),
+            out.add(new MemoryAreaRow(name, size == null ? null : Math.round(size), peak == null ? null : Math.round(peak),
                     bytes(a, "bytesPerRelease", name)));
         }
         return out;

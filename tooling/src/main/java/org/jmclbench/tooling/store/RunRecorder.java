@@ -178,7 +178,7 @@ public final class RunRecorder implements AutoCloseable {
             }
             try (PreparedStatement ps = conn.prepareStatement(
                     "INSERT INTO memory_areas (run_key, name, size, peak_bytes, bytes_per_release) VALUES (?,?,?,?,?)")) {
-                for (RunDetails.Area a : data.areas) {
+                for (MemoryAreaRow a : data.areas) {
                     ps.setString(1, r.runKey());
                     ps.setString(2, a.name());
                     ps.setObject(3, a.size(), Types.INTEGER);

@@ -14,6 +14,7 @@ import java.util.TreeMap;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
 
 import org.junit.jupiter.api.BeforeAll;
@@ -34,7 +35,7 @@ class EvaluationDocumentTest {
 
     private Path db;
     private String doc;
-    private List<StoredRuns.Run> runs;
+    private List<StoredRun> runs;
 
     /** native, one JVM with both engines and all four memory styles, a JVM with three collectors, hvm. */
     static FixtureDb evaluationStore() {
@@ -113,7 +114,7 @@ class EvaluationDocumentTest {
     }
 
     private List<String> configs() {
-        return runs.stream().map(StoredRuns.Run::config).distinct().toList();
+        return runs.stream().map(StoredRun::config).distinct().toList();
     }
 
     /** The rows of the table that follows {@code caption}, as cells (header and rule left out). */
@@ -277,7 +278,7 @@ class EvaluationDocumentTest {
         for (List<String> row : rows) {
             Map<String, Double> sum = new TreeMap<>();
             int attributed = 0;
-            for (StoredRuns.Run r : runs) {
+            for (StoredRun r : runs) {
                 if (r.ok() && r.config().equals(row.get(0)) && r.policy.equals("skip") && r.particles == 1600) {
                     attributed++;
                     r.metrics.forEach((k, v) -> {

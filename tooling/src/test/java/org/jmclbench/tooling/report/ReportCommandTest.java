@@ -15,6 +15,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -95,12 +96,12 @@ class ReportCommandTest {
 
         // The mean missCount of a cell is the mean of the runs' summary.json missCount.
         try (StoredRuns store = StoredRuns.open(db, "--db")) {
-            List<StoredRuns.Run> runs = store.runs().stream()
+            List<StoredRun> runs = store.runs().stream()
                     .filter(r -> r.config().equals("temurin-17/g1") && r.policy.equals("terminate") && r.particles == 1600).toList();
             assertEquals(3, runs.size());
             ObjectMapper json = new ObjectMapper();
             double sum = 0;
-            for (StoredRuns.Run r : runs) {
+            for (StoredRun r : runs) {
                 sum += json.readTree(r.summaryJson).get("missCount").asDouble();
             }
             for (JsonNode c : data.get("cells")) {
@@ -171,8 +172,8 @@ class ReportCommandTest {
             st.execute("DELETE FROM metrics");
         }
         try (StoredRuns full = StoredRuns.open(db, "--db"); StoredRuns summaryOnly = StoredRuns.open(bare, "--db")) {
-            List<StoredRuns.Run> a = full.runs();
-            List<StoredRuns.Run> b = summaryOnly.runs();
+            List<StoredRun> a = full.runs();
+            List<StoredRun> b = summaryOnly.runs();
             assertEquals(a.size(), b.size());
             int compared = 0;
             for (int i = 0; i < a.size(); i++) {

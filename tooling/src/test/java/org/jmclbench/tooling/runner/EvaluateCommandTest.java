@@ -13,6 +13,7 @@ import java.util.stream.Collectors;
 import org.jmclbench.tooling.Fixtures;
 import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.jmclbench.tooling.store.StoredRun;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -138,7 +139,7 @@ class EvaluateCommandTest {
         String doc = Files.readString(dir.resolve("docs/EVALUATION.md"));
         assertTrue(doc.contains("- everything but the fake C baseline"), doc);
         try (var store = org.jmclbench.tooling.store.StoredRuns.open(db, "--db")) {
-            List<org.jmclbench.tooling.store.StoredRuns.Run> runs = store.runs();
+            List<org.jmclbench.tooling.store.StoredRun> runs = store.runs();
             assertEquals(4, runs.size(), "2 sections x 2 repetitions of native; the absent runtime is left out");
             assertEquals(Set.of("skip", "terminate"), runs.stream().map(r -> r.policy).collect(Collectors.toSet()));
         }

@@ -15,6 +15,8 @@ import java.util.TreeSet;
 import java.util.function.Predicate;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.store.StoredRuns;
+
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
@@ -65,7 +67,7 @@ public final class EvaluationDocument {
     public static void write(Path db, Path document, Path figures, List<String> cuts, Path verificationFile)
             throws IOException, org.jmclbench.workload.BadInputException {
         ReportModel model;
-        try (ResultsStore store = ResultsStore.open(db, "--db")) {
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
             model = ReportModel.build(store, s -> { });
         }
         removeOldFigures(figures);

@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
+import org.jmclbench.tooling.store.StoredRuns;
 import org.jmclbench.workload.BadInputException;
 
 import picocli.CommandLine.Command;
@@ -39,7 +40,7 @@ public final class ReportCommand implements Callable<Integer> {
             throw new BadInputException("--out: " + out + ": not a folder");
         }
         ReportModel model;
-        try (ResultsStore store = ResultsStore.open(db, "--db")) {
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
             model = ReportModel.build(store, ReportCommand::progress);
         }
         Files.createDirectories(out);

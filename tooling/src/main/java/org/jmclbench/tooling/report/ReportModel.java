@@ -14,6 +14,10 @@ import java.util.TreeSet;
 import java.util.function.Consumer;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.store.MemoryAreaRow;
+import org.jmclbench.tooling.store.StoredRun;
+import org.jmclbench.tooling.store.StoredRuns;
+
 import org.HdrHistogram.Histogram;
 import org.HdrHistogram.HistogramIterationValue;
 
@@ -153,24 +157,24 @@ public final class ReportModel {
     }
 
     /** Builds the model, reporting progress through {@code progress} (one line a step). */
-    public static ReportModel build(ResultsStore store, Consumer<String> progress) {
+    public static ReportModel build(StoredRuns store, Consumer<String> progress) {
         ReportModel m = new ReportModel();
         m.generatedAt = java.time.Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS).toString();
         m.database = store.file().getFileName().toString();
-        List<ResultsStore.Run> runs = store.runs();
+        List<StoredRun> runs = store.runs();
         m.runCount = runs.size();
         progress.accept("read " + runs.size() + " runs");
 
-        Map<String, ResultsStore.Machine> machineRows = store.machines();
+        Map<String, StoredRuns.Machine> machineRows = store.machines();
         if (runs.stream().map(r -> String.valueOf(r.machineId)).distinct().count() > 1) {
             // Runs of two machines (merged stores) are never pooled: each runtime is shown per machine.
-            for (ResultsStore.Run r : runs) {
-                ResultsStore.Machine mc = machineRows.get(r.machineId);
+            for (StoredRun r : runs) {
+                StoredRuns.Machine mc = machineRows.get(r.machineId);
                 r.machineLabel = mc != null && mc.hostname() != null ? mc.hostname() : String.valueOf(r.machineId);
             }
         }
-        Map<String, List<ResultsStore.Run>> byCell = new LinkedHashMap<>();
-        for (ResultsStore.Run r : runs) {
+        Map<String, List<StoredRun>> byCell = new LinkedHashMap<>();
+        for (StoredRun r : runs) {
             byCell.computeIfAbsent(r.dataset + "\u0000" + r.policy + "\u0000" + r.particles + "\u0000" + r.configOnMachine(),
                     k -> new ArrayList<>()).add(r);
         }
@@ -187,7 +191,7 @@ public final class ReportModel {
         int done = 0;
         long start = System.nanoTime();
         long last = start;
-        for (List<ResultsStore.Run> group : byCell.values()) {
+        for (List<StoredRun> group : byCell.values()) {
             m.cells.add(cell(store, group));
             done++;
             if (System.nanoTime() - last > 1_000_000_000L || done == byCell.size()) {
@@ -199,8 +203,8 @@ public final class ReportModel {
         return m;
     }
 
-    private static Cell cell(ResultsStore store, List<ResultsStore.Run> group) {
-        ResultsStore.Run first = group.get(0);
+    private static Cell cell(StoredRuns store, List<StoredRun> group) {
+        StoredRun first = group.get(0);
         Cell c = new Cell();
         c.dataset = first.dataset;
         c.policy = first.policy;
@@ -209,8 +213,8 @@ public final class ReportModel {
         c.engine = first.engine;
         c.memory = first.memory;
         c.runs = group.size();
-        List<ResultsStore.Run> ok = new ArrayList<>();
-        for (ResultsStore.Run r : group) {
+        List<StoredRun> ok = new ArrayList<>();
+        for (StoredRun r : group) {
             switch (r.status) {
                 case "ok" -> ok.add(r);
                 case "timeout" -> c.timeout++;
@@ -224,7 +228,7 @@ public final class ReportModel {
         c.ok = ok.size();
         for (Metric metric : Metric.values()) {
             List<Double> values = new ArrayList<>();
-            for (ResultsStore.Run r : ok) {
+            for (StoredRun r : ok) {
                 Double v = metric.of(r);
                 if (v != null) {
                     values.add(v);
@@ -235,7 +239,7 @@ public final class ReportModel {
         for (Map.Entry<String, String[]> e : WARMUP_METRICS.entrySet()) {
             double scale = Double.parseDouble(e.getValue()[1]);
             List<Double> values = new ArrayList<>();
-            for (ResultsStore.Run r : ok) {
+            for (StoredRun r : ok) {
                 Double v = r.metric(e.getValue()[0]);
                 if (v != null) {
                     values.add(v * scale);
@@ -265,10 +269,10 @@ public final class ReportModel {
                         SeriesTable.round(v.getPercentileLevelIteratedTo() / 100.0)});
             }
         }
-        ResultsStore.Run rep = ok.get(0);
+        StoredRun rep = ok.get(0);
         c.latencyPredict = latencyPoints(store.series(rep.runKey, "taskLatency.predict"));
         c.latencyUpdate = latencyPoints(store.series(rep.runKey, "taskLatency.update"));
-        for (ResultsStore.Run r : ok.subList(0, Math.min(MAX_REPETITION_SERIES, ok.size()))) {
+        for (StoredRun r : ok.subList(0, Math.min(MAX_REPETITION_SERIES, ok.size()))) {
             SeriesTable t = SeriesTable.parse(store.series(r.runKey, "deviation"));
             if (t != null) {
                 c.deviation.add(t.points(t.column("time", "t", "timeS"), 1, t.column("dxy", "deviationXY", "xy", "exy"), 1, MAX_POINTS));
@@ -286,19 +290,19 @@ public final class ReportModel {
     }
 
     /** Each area's largest size and peak over the runs, and its mean bytes per release, in {@link #AREA_ORDER}. */
-    static List<MemoryArea> memoryAreas(List<ResultsStore.Run> ok) {
-        Map<String, List<ResultsStore.Area>> byName = new LinkedHashMap<>();
-        for (ResultsStore.Run r : ok) {
-            for (ResultsStore.Area a : r.areas) {
+    static List<MemoryArea> memoryAreas(List<StoredRun> ok) {
+        Map<String, List<MemoryAreaRow>> byName = new LinkedHashMap<>();
+        for (StoredRun r : ok) {
+            for (MemoryAreaRow a : r.areas) {
                 byName.computeIfAbsent(a.name(), k -> new ArrayList<>()).add(a);
             }
         }
         List<MemoryArea> out = new ArrayList<>();
-        for (Map.Entry<String, List<ResultsStore.Area>> e : byName.entrySet()) {
-            List<ResultsStore.Area> as = e.getValue();
-            Long size = as.stream().map(ResultsStore.Area::size).filter(v -> v != null).max(Long::compare).orElse(null);
-            Long peak = as.stream().map(ResultsStore.Area::peakBytes).filter(v -> v != null).max(Long::compare).orElse(null);
-            List<Double> perRelease = as.stream().map(ResultsStore.Area::bytesPerRelease).filter(v -> v != null).toList();
+        for (Map.Entry<String, List<MemoryAreaRow>> e : byName.entrySet()) {
+            List<MemoryAreaRow> as = e.getValue();
+            Long size = as.stream().map(MemoryAreaRow::size).filter(v -> v != null).max(Long::compare).orElse(null);
+            Long peak = as.stream().map(MemoryAreaRow::peakBytes).filter(v -> v != null).max(Long::compare).orElse(null);
+            List<Double> perRelease = as.stream().map(MemoryAreaRow::bytesPerRelease).filter(v -> v != null).toList();
             Double mean = perRelease.isEmpty() ? null
                     : SeriesTable.round(perRelease.stream().mapToDouble(Double::doubleValue).average().orElse(0));
             out.add(new MemoryArea(e.getKey(), size, peak, mean, as.size()));
@@ -314,10 +318,10 @@ public final class ReportModel {
      * Mean over the attributed repetitions of each cause's primary count. A run without
      * attribution rows counts as no evidence, not as zero causes, so it is left out.
      */
-    static Map<String, Double> causes(List<ResultsStore.Run> ok) {
+    static Map<String, Double> causes(List<StoredRun> ok) {
         Map<String, Double> sum = new java.util.TreeMap<>();
         int attributed = 0;
-        for (ResultsStore.Run r : ok) {
+        for (StoredRun r : ok) {
             boolean any = false;
             for (Map.Entry<String, Double> e : r.metrics.entrySet()) {
                 String k = e.getKey();
@@ -443,19 +447,19 @@ public final class ReportModel {
         return sum == null || sum.getTotalCount() == 0 ? null : sum;
     }
 
-    private static List<ConfigInfo> configs(List<ResultsStore.Run> runs) {
-        Map<String, List<ResultsStore.Run>> byConfig = new LinkedHashMap<>();
-        runs.stream().sorted(Comparator.comparing(ResultsStore.Run::configOnMachine))
+    private static List<ConfigInfo> configs(List<StoredRun> runs) {
+        Map<String, List<StoredRun>> byConfig = new LinkedHashMap<>();
+        runs.stream().sorted(Comparator.comparing(StoredRun::configOnMachine))
                 .forEach(r -> byConfig.computeIfAbsent(r.configOnMachine(), k -> new ArrayList<>()).add(r));
         List<ConfigInfo> out = new ArrayList<>();
-        for (Map.Entry<String, List<ResultsStore.Run>> e : byConfig.entrySet()) {
-            ResultsStore.Run first = e.getValue().get(0);
+        for (Map.Entry<String, List<StoredRun>> e : byConfig.entrySet()) {
+            StoredRun first = e.getValue().get(0);
             Set<String> versions = new LinkedHashSet<>();
             List<String> flags = new ArrayList<>(); // a list: an argument may repeat ("-n 1 ... --seed 1")
             Set<String> machines = new LinkedHashSet<>();
             List<String> facts = new ArrayList<>();
             boolean nativeBaseline = "native".equals(first.runtime) || "native".equals(first.engine);
-            for (ResultsStore.Run r : e.getValue()) {
+            for (StoredRun r : e.getValue()) {
                 if (r.runtimeVersion != null) {
                     versions.add(r.runtimeVersion);
                 }
@@ -515,10 +519,10 @@ public final class ReportModel {
         return out;
     }
 
-    private static List<MachineInfo> machines(ResultsStore store, List<ResultsStore.Run> runs) {
+    private static List<MachineInfo> machines(StoredRuns store, List<StoredRun> runs) {
         ObjectMapper json = new ObjectMapper();
         List<MachineInfo> out = new ArrayList<>();
-        for (ResultsStore.Machine mc : store.machines().values()) {
+        for (StoredRuns.Machine mc : store.machines().values()) {
             List<Map<String, String>> checks = new ArrayList<>();
             String virtualization = null;
             try {
@@ -545,8 +549,8 @@ public final class ReportModel {
         return out;
     }
 
-    private static Playground playground(ResultsStore store, List<ResultsStore.Run> runs, String dataset) {
-        for (ResultsStore.Run r : runs) {
+    private static Playground playground(StoredRuns store, List<StoredRun> runs, String dataset) {
+        for (StoredRun r : runs) {
             if (!dataset.equals(r.dataset) || !r.ok()) {
                 continue;
             }
@@ -579,7 +583,7 @@ public final class ReportModel {
         return Playground.thesis();
     }
 
-    private static Selection defaults(ReportModel m, List<ResultsStore.Run> runs) {
+    private static Selection defaults(ReportModel m, List<StoredRun> runs) {
         if (runs.isEmpty()) {
             return new Selection(null, null, null);
         }

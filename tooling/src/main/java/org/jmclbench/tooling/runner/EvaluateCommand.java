@@ -10,8 +10,8 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.function.Predicate;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.report.EvaluationDocument;
-import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.JdkInstaller;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;

@@ -5,7 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 
-import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 
 import picocli.CommandLine.Command;

@@ -3,9 +3,9 @@ package org.jmclbench.tooling.runner;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.load.LoadScenario;
 import org.jmclbench.tooling.load.LoadSettings;
-import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.CpuList;
 
 /** Parses one matrix setting, from the command line or a matrix file, into a {@link MatrixSpec}. */

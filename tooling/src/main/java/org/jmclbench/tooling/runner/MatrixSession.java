@@ -14,15 +14,15 @@ import java.util.Map;
 import java.util.UUID;
 import java.util.function.Supplier;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.doctor.Doctor;
-import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.ProfileProbe;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.runtime.RuntimeInfo;
 import org.jmclbench.tooling.store.MachineInfo;
-import org.jmclbench.tooling.store.ResultStore;
+import org.jmclbench.tooling.store.RunRecorder;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 
@@ -73,13 +73,13 @@ public final class MatrixSession {
             if (lock == null) {
                 throw new BadUsageException("--db: " + m.db() + ": another matrix is writing to it");
             }
-            ResultStore opened;
+            RunRecorder opened;
             try {
-                opened = ResultStore.open(m.db());
+                opened = RunRecorder.open(m.db());
             } catch (java.sql.SQLException e) {
                 throw new BadUsageException("--db: " + m.db() + ": not a usable results store (" + e.getMessage() + ")");
             }
-            try (ResultStore store = opened) {
+            try (RunRecorder store = opened) {
                 store.saveMachine(machine, Doctor.toJson(Doctor.system().run()));
                 String matrixId = UUID.randomUUID().toString();
                 store.saveMatrix(matrixId, machine.machineId(), commandText, m.orderSeed(), Instant.now().toString(),

@@ -5,8 +5,8 @@ import java.util.Locale;
 import java.util.stream.Collectors;
 import java.util.concurrent.Callable;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.cli.JmclbenchCli;
-import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 
 import picocli.CommandLine.Command;

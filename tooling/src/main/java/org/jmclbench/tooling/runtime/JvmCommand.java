@@ -3,6 +3,7 @@ package org.jmclbench.tooling.runtime;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;

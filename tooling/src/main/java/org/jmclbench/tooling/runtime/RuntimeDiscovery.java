@@ -14,6 +14,7 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.stream.Stream;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /**
  * Finds the runtimes installed on this machine: JVMs under JAVA_HOME, PATH, /usr/lib/jvm, SDKMAN,

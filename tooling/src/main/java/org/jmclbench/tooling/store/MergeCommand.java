@@ -31,7 +31,7 @@ public final class MergeCommand implements Callable<Integer> {
             }
             checkSchema(s); // every source is checked before the target is touched
         }
-        try (ResultStore target = ResultStore.open(into)) {
+        try (RunRecorder target = RunRecorder.open(into)) {
             for (Path s : sources) {
                 StoreMerger.Outcome o;
                 try {

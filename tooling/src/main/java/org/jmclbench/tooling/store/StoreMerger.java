@@ -32,7 +32,7 @@ public final class StoreMerger {
     }
 
     /** Merges {@code source} into {@code target}. */
-    public static Outcome merge(ResultStore target, Path source) throws SQLException, IOException {
+    public static Outcome merge(RunRecorder target, Path source) throws SQLException, IOException {
         Path src = source.toAbsolutePath().normalize();
         if (!Files.isRegularFile(src)) {
             throw new IOException(source + ": no such database");

@@ -1,4 +1,4 @@
-package org.jmclbench.tooling.runtime;
+package org.jmclbench.tooling.cli;
 
 import org.jmclbench.workload.BadInputException;
 

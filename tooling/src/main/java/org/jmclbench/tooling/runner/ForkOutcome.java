@@ -14,6 +14,6 @@ import com.fasterxml.jackson.databind.JsonNode;
  * @param leaf        the complete run folder (ok runs)
  * @param summaryText the run's summary.json verbatim (ok runs)
  */
-public record RunOutcome(String status, Integer exitCode, String failure, String stderrTail, double wallS,
+public record ForkOutcome(String status, Integer exitCode, String failure, String stderrTail, double wallS,
                          Path leaf, String summaryText, JsonNode summary) {
 }

@@ -1,4 +1,4 @@
-package org.jmclbench.tooling.report;
+package org.jmclbench.tooling.store;
 
 import java.nio.ByteBuffer;
 import java.nio.file.Files;
@@ -25,18 +25,18 @@ import org.sqlite.SQLiteConfig;
  * Read-only view of the results database (docs/FORMATS.md section 5) for the report and
  * compare: runs, their flattened metrics, histograms, series and the machines.
  */
-public final class ResultsStore implements AutoCloseable {
+public final class StoredRuns implements AutoCloseable {
 
     private final Path file;
     private final Connection db;
 
-    private ResultsStore(Path file, Connection db) {
+    private StoredRuns(Path file, Connection db) {
         this.file = file;
         this.db = db;
     }
 
     /** Opens {@code file} read-only; a missing or unreadable database is bad input. */
-    public static ResultsStore open(Path file, String option) throws BadInputException {
+    public static StoredRuns open(Path file, String option) throws BadInputException {
         if (!Files.isRegularFile(file)) {
             throw new BadInputException(option + ": " + file + ": no such database");
         }
@@ -51,7 +51,7 @@ public final class ResultsStore implements AutoCloseable {
                     throw new BadInputException(option + ": " + file + ": not a jmclbench results database (no runs table)");
                 }
             }
-            return new ResultsStore(file, c);
+            return new StoredRuns(file, c);
         } catch (SQLException e) {
             throw new BadInputException(option + ": " + file + ": cannot read the database: " + oneLine(e.getMessage()));
         }
@@ -61,108 +61,14 @@ public final class ResultsStore implements AutoCloseable {
         return file;
     }
 
-    /** One row of {@code runs} with its flattened metrics. */
-    public static final class Run {
-        public String runKey;
-        public String matrixId;
-        public String machineId;
-        public String runtime;
-        public String runtimeVersion;
-        public String profile;
-        public String policy;
-        public int particles;
-        public String dataset;
-        public String load;
-        /** javase | scj | native (later hvm); from the column, else the summary, else the runtime (a store before engines). */
-        public String engine;
-        /** preallocated | allocating | scoped. */
-        public String memory;
-        /** The run's memory areas (summary.json memory.areas), in the order the run reported them. */
-        public final List<Area> areas = new ArrayList<>();
-        public int repetition;
-        public String status;
-        public Integer exitCode;
-        public String failure;
-        public String stderrTail;
-        public String startedAt;
-        public Double wallS;
-        public String runDir;
-        public String summaryJson;
-        /** {@code task/metric/stat} -> value. */
-        public final Map<String, Double> metrics = new HashMap<>();
-        /** summary_json parsed on first use ({@link Metric}); a missing node when absent or invalid. */
-        com.fasterxml.jackson.databind.JsonNode summary;
-
-        /** Set by the report when the store holds several machines: the same runtime on two machines is two configurations. */
-        String machineLabel;
-        /** Set by {@link #labelEngines} when the runs have several engines or memory styles. */
-        boolean showEngine;
-        boolean showMemory;
-
-        /**
-         * The configuration under test: runtime, and profile when there is one; then, when the runs
-         * shown together have several engines or memory styles, the engine and memory style:
-         * {@code temurin-25/default / scj scoped}, {@code native / allocating}.
-         */
-        public String config() {
-            String c = profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
-            List<String> parts = new ArrayList<>();
-            if (showEngine && !"native".equals(engine)) {
-                parts.add(engine);
-            }
-            if (showMemory) {
-                parts.add(memory);
-            }
-            return parts.isEmpty() ? c : c + " / " + String.join(" ", parts);
-        }
-
-        /** {@link #config()}, with " @host" when the report tells machines apart. */
-        String configOnMachine() {
-            return machineLabel == null ? config() : config() + " @" + machineLabel;
-        }
-
-        public boolean ok() {
-            return "ok".equals(status);
-        }
-
-        /** The first of {@code task/metric/stat} keys present, or null. */
-        public Double metric(String... keys) {
-            for (String k : keys) {
-                Double v = metrics.get(k);
-                if (v != null) {
-                    return v;
-                }
-            }
-            return null;
-        }
-    }
-
-    /** One memory area of a run (FORMATS.md 4, {@code memory.areas}); null where the engine does not tell. */
-    public record Area(String name, Long size, Long peakBytes, Double bytesPerRelease) {
-    }
-
-    /**
-     * Marks the runs' labels to show the engine when the JVM runs among them have more than one,
-     * and the memory style when they have more than one, so that a store of one engine keeps its
-     * short labels ({@code temurin-25/g1}).
-     */
-    public static void labelEngines(java.util.Collection<Run> runs) {
-        boolean engines = runs.stream().filter(r -> !"native".equals(r.engine)).map(r -> r.engine).distinct().count() > 1;
-        boolean memory = runs.stream().map(r -> r.memory).distinct().count() > 1;
-        for (Run r : runs) {
-            r.showEngine = engines;
-            r.showMemory = memory;
-        }
-    }
-
     /** One row of {@code machines}. */
     public record Machine(String machineId, String hostname, String kernel, String cpuModel, Integer processors,
                           String doctorJson) {
     }
 
     /** Every run, in a stable order (configuration, then repetition), with its metrics. */
-    public List<Run> runs() {
-        Map<String, Run> byKey = new LinkedHashMap<>();
+    public List<StoredRun> runs() {
+        Map<String, StoredRun> byKey = new LinkedHashMap<>();
         boolean engineColumns = hasColumn("runs", "engine") && hasColumn("runs", "memory");
         String sql = "SELECT run_key, matrix_id, machine_id, runtime, runtime_version, profile, policy, particles, dataset, load,"
                 + " repetition, status, exit_code, failure, stderr_tail, started_at, wall_s, run_dir, summary_json,"
@@ -170,7 +76,7 @@ public final class ResultsStore implements AutoCloseable {
                 + " ORDER BY dataset, policy, particles, runtime, profile, 20, 21, repetition, started_at, run_key";
         try (Statement st = db.createStatement(); ResultSet rs = st.executeQuery(sql)) {
             while (rs.next()) {
-                Run r = new Run();
+                StoredRun r = new StoredRun();
                 r.runKey = rs.getString(1);
                 r.matrixId = rs.getString(2);
                 r.machineId = rs.getString(3);
@@ -196,7 +102,7 @@ public final class ResultsStore implements AutoCloseable {
                 r.memory = rs.getString(21);
                 if (r.engine == null || r.memory == null) {
                     // a store before engines: what the summary says, else the Java SE engine (native for C)
-                    com.fasterxml.jackson.databind.JsonNode p = Metric.summaryOf(r).path("parameters");
+                    com.fasterxml.jackson.databind.JsonNode p = r.summary().path("parameters");
                     if (r.engine == null) {
                         r.engine = p.path("engine").asText("native".equals(r.runtime) ? "native" : "javase");
                     }
@@ -209,7 +115,7 @@ public final class ResultsStore implements AutoCloseable {
             if (hasTable("metrics")) {
                 try (ResultSet m = st.executeQuery("SELECT run_key, task, metric, stat, value FROM metrics WHERE value IS NOT NULL")) {
                     while (m.next()) {
-                        Run r = byKey.get(m.getString(1));
+                        StoredRun r = byKey.get(m.getString(1));
                         if (r != null) {
                             r.metrics.put(m.getString(2) + "/" + m.getString(3) + "/" + m.getString(4), m.getDouble(5));
                         }
@@ -220,9 +126,9 @@ public final class ResultsStore implements AutoCloseable {
                 try (ResultSet a = st.executeQuery("SELECT run_key, name, size, peak_bytes, bytes_per_release FROM memory_areas"
                         + " ORDER BY run_key, rowid")) {
                     while (a.next()) {
-                        Run r = byKey.get(a.getString(1));
+                        StoredRun r = byKey.get(a.getString(1));
                         if (r != null) {
-                            r.areas.add(new Area(a.getString(2), (Long) nullable(a, 3, true), (Long) nullable(a, 4, true),
+                            r.areas.add(new MemoryAreaRow(a.getString(2), (Long) nullable(a, 3, true), (Long) nullable(a, 4, true),
                                     (Double) nullable(a, 5, false)));
                         }
                     }
@@ -231,8 +137,8 @@ public final class ResultsStore implements AutoCloseable {
         } catch (SQLException e) {
             throw new IllegalStateException(file + ": " + oneLine(e.getMessage()), e);
         }
-        List<Run> out = new ArrayList<>(byKey.values());
-        labelEngines(out);
+        List<StoredRun> out = new ArrayList<>(byKey.values());
+        StoredRun.labelEngines(out);
         return out;
     }
 
@@ -304,7 +210,7 @@ public final class ResultsStore implements AutoCloseable {
     }
 
     /** Base64 of HdrHistogram's compressed encoding -> histogram; null when it cannot be decoded. */
-    static Histogram decode(String base64) {
+    public static Histogram decode(String base64) {
         try {
             byte[] bytes = Base64.getDecoder().decode(base64.trim());
             return Histogram.decodeFromCompressedByteBuffer(ByteBuffer.wrap(bytes), 0);
@@ -348,7 +254,7 @@ public final class ResultsStore implements AutoCloseable {
         return s == null ? dflt : s;
     }
 
-    static String oneLine(String s) {
+    public static String oneLine(String s) {
         return s == null ? "" : s.replaceAll("\\s+", " ").trim();
     }
 

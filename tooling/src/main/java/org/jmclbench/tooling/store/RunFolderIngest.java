@@ -24,7 +24,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  * flattened summary, an HdrHistogram per task and timing metric built from every job line, and
  * down-sampled series, so that the report needs nothing but the database.
  */
-public final class RunIngest {
+public final class RunFolderIngest {
 
     /** The most rows a series keeps. */
     public static final int MAX_SERIES_ROWS = 2000;
@@ -34,7 +34,7 @@ public final class RunIngest {
     private static final String[] TIMINGS = {"releaseJitterNs", "taskLatencyNs", "responseTimeNs", "cpuNs"};
     private static final String[] STATS = {"count", "mean", "stdev", "min", "p50", "p90", "p99", "p999", "max"};
 
-    private RunIngest() {
+    private RunFolderIngest() {
     }
 
     /** One job line of odoData.txt / laserData.txt. */
@@ -50,8 +50,8 @@ public final class RunIngest {
      *
      * @throws IOException when a file the format promises is missing or malformed
      */
-    public static RunData ingest(Path dir, JsonNode summary, Path realFile) throws IOException {
-        RunData d = new RunData();
+    public static RunDetails ingest(Path dir, JsonNode summary, Path realFile) throws IOException {
+        RunDetails d = new RunDetails();
         flattenSummary(summary, d);
         d.areas.addAll(memoryAreas(summary));
         Map<String, List<Job>> jobs = new LinkedHashMap<>();
@@ -73,33 +73,33 @@ public final class RunIngest {
                     response.recordValue(Math.max(0, j.end() - j.release()));
                 }
             }
-            d.histograms.add(new RunData.Hdr(e.getKey(), "releaseJitterNs", encode(jitter)));
-            d.histograms.add(new RunData.Hdr(e.getKey(), "taskLatencyNs", encode(latency)));
-            d.histograms.add(new RunData.Hdr(e.getKey(), "responseTimeNs", encode(response)));
+            d.histograms.add(new RunDetails.Hdr(e.getKey(), "releaseJitterNs", encode(jitter)));
+            d.histograms.add(new RunDetails.Hdr(e.getKey(), "taskLatencyNs", encode(latency)));
+            d.histograms.add(new RunDetails.Hdr(e.getKey(), "responseTimeNs", encode(response)));
         }
         Path dispatcher = dir.resolve("dispatcherData.txt");
         if (Files.isRegularFile(dispatcher)) {
-            d.histograms.add(new RunData.Hdr("dispatcher", "latenessNs", encode(readLateness(dispatcher))));
+            d.histograms.add(new RunDetails.Hdr("dispatcher", "latenessNs", encode(readLateness(dispatcher))));
         }
         for (String task : List.of("predict", "update")) {
-            d.series.add(new RunData.Series("taskLatency." + task, latencySeries(jobs.get(task))));
+            d.series.add(new RunDetails.Series("taskLatency." + task, latencySeries(jobs.get(task))));
         }
         Path deviation = dir.resolve("positionDeviation.txt");
         if (Files.isRegularFile(deviation)) {
             List<double[]> rows = readNumbers(deviation, 5);
-            d.series.add(new RunData.Series("deviation",
+            d.series.add(new RunDetails.Series("deviation",
                     seriesJson(List.of("time", "dx", "dy", "dxy", "dtheta"), strided(rows))));
         }
         Path position = dir.resolve("position.txt");
         if (Files.isRegularFile(position)) {
-            d.series.add(new RunData.Series("trajectory", trajectory(readNumbers(position, 4),
+            d.series.add(new RunDetails.Series("trajectory", trajectory(readNumbers(position, 4),
                     realFile != null && Files.isRegularFile(realFile) ? readNumbers(realFile, 4) : List.of())));
         }
         return d;
     }
 
     /** Every number of summary.json that a query may want, as (task, metric, stat, value) rows. */
-    static void flattenSummary(JsonNode s, RunData d) {
+    static void flattenSummary(JsonNode s, RunDetails d) {
         JsonNode tasks = s.path("tasks");
         for (String task : List.of("predict", "update", "all")) {
             JsonNode t = tasks.path(task);
@@ -131,9 +131,9 @@ public final class RunIngest {
      *
      * @throws IOException when they are not an array of areas with distinct names and numbers or nulls
      */
-    static List<RunData.Area> memoryAreas(JsonNode summary) throws IOException {
+    static List<MemoryAreaRow> memoryAreas(JsonNode summary) throws IOException {
         JsonNode areas = summary.path("memory").path("areas");
-        List<RunData.Area> out = new ArrayList<>();
+        List<MemoryAreaRow> out = new ArrayList<>();
         if (areas.isMissingNode() || areas.isNull()) {
             return out;
         }
@@ -148,7 +148,7 @@ public final class RunIngest {
             }
             Double size = bytes(a, "size", name);
             Double peak = bytes(a, "peakBytes", name);
-            out.add(new RunData.Area(name, size == null ? null : Math.round(size), peak == null ? null : Math.round(peak),
+            out.add(new MemoryAreaRow(name, size == null ? null : Math.round(size), peak == null ? null : Math.round(peak),
                     bytes(a, "bytesPerRelease", name)));
         }
         return out;
@@ -165,7 +165,7 @@ public final class RunIngest {
         return v.asDouble();
     }
 
-    private static void addStats(RunData d, String task, String metric, JsonNode stats) {
+    private static void addStats(RunDetails d, String task, String metric, JsonNode stats) {
         if (stats == null || !stats.isObject()) {
             return;
         }
@@ -174,9 +174,9 @@ public final class RunIngest {
         }
     }
 
-    private static void addNumber(RunData d, String task, String metric, String stat, JsonNode v) {
+    private static void addNumber(RunDetails d, String task, String metric, String stat, JsonNode v) {
         if (v != null && v.isNumber() && Double.isFinite(v.asDouble())) {
-            d.metrics.add(new RunData.Metric(task, metric, stat, v.asDouble()));
+            d.metrics.add(new RunDetails.Metric(task, metric, stat, v.asDouble()));
         }
     }
 

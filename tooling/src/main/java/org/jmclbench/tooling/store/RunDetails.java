@@ -6,7 +6,7 @@ import java.util.List;
 import org.jmclbench.tooling.attribution.AttributionData;
 
 /** What the store keeps of an ok run beside its row: flattened metrics, histograms and small series. */
-public final class RunData {
+public final class RunDetails {
 
     /** One {@code metrics} row. */
     public record Metric(String task, String metric, String stat, double value) {
@@ -16,13 +16,6 @@ public final class RunData {
     public record Hdr(String task, String metric, String base64) {
     }
 
-    /**
-     * One {@code memory_areas} row: a memory area of the run (summary.json {@code memory.areas}); null
-     * where the engine does not tell. For a handler's private memory {@code peakBytes} is one release's peak.
-     */
-    public record Area(String name, Long size, Long peakBytes, Double bytesPerRelease) {
-    }
-
     /** One {@code series} row: {@code {"columns": [...], "rows": [[...], ...]}}. */
     public record Series(String name, String json) {
     }
@@ -30,12 +23,12 @@ public final class RunData {
     public final List<Metric> metrics = new ArrayList<>();
     public final List<Hdr> histograms = new ArrayList<>();
     public final List<Series> series = new ArrayList<>();
-    public final List<Area> areas = new ArrayList<>();
+    public final List<MemoryAreaRow> areas = new ArrayList<>();
     /** One row per missed or late job: why it missed (org.jmclbench.tooling.attribution). */
     public final List<AttributionData.Row> attributions = new ArrayList<>();
 
     /** Nothing beside the row (failed, timed-out and unsupported runs). */
-    public static RunData empty() {
-        return new RunData();
+    public static RunDetails empty() {
+        return new RunDetails();
     }
 }

@@ -19,18 +19,18 @@ import java.util.Map;
  * The SQLite results store: one file, the raw run folders beside it under {@code runs/}. Every run
  * is written in one transaction once it has ended, so a runner killed mid-run leaves no row for it.
  */
-public final class ResultStore implements AutoCloseable {
+public final class RunRecorder implements AutoCloseable {
 
     private final Path dbFile;
     private final Connection conn;
 
-    private ResultStore(Path dbFile, Connection conn) {
+    private RunRecorder(Path dbFile, Connection conn) {
         this.dbFile = dbFile;
         this.conn = conn;
     }
 
     /** Opens (creating when absent) the store at {@code dbFile}. */
-    public static ResultStore open(Path dbFile) throws SQLException, IOException {
+    public static RunRecorder open(Path dbFile) throws SQLException, IOException {
         Path abs = dbFile.toAbsolutePath().normalize();
         if (abs.getParent() != null) {
             Files.createDirectories(abs.getParent());
@@ -70,7 +70,7 @@ public final class ResultStore implements AutoCloseable {
             c.close();
             throw e;
         }
-        return new ResultStore(abs, c);
+        return new RunRecorder(abs, c);
     }
 
     public Path dbFile() {
@@ -134,7 +134,7 @@ public final class ResultStore implements AutoCloseable {
     }
 
     /** Writes a run and everything derived from it in one transaction, replacing an earlier row of the same key. */
-    public void saveRun(RunRecord r, RunData data) throws SQLException {
+    public void saveRun(RunRow r, RunDetails data) throws SQLException {
         try {
             deleteRun(r.runKey());
             try (PreparedStatement ps = conn.prepareStatement("INSERT INTO runs (run_key, matrix_id, machine_id, runtime,"
@@ -178,7 +178,7 @@ public final class ResultStore implements AutoCloseable {
             }
             try (PreparedStatement ps = conn.prepareStatement(
                     "INSERT INTO memory_areas (run_key, name, size, peak_bytes, bytes_per_release) VALUES (?,?,?,?,?)")) {
-                for (RunData.Area a : data.areas) {
+                for (MemoryAreaRow a : data.areas) {
                     ps.setString(1, r.runKey());
                     ps.setString(2, a.name());
                     ps.setObject(3, a.size(), Types.INTEGER);
@@ -189,7 +189,7 @@ public final class ResultStore implements AutoCloseable {
                 ps.executeBatch();
             }
             try (PreparedStatement ps = conn.prepareStatement("INSERT INTO metrics (run_key, task, metric, stat, value) VALUES (?,?,?,?,?)")) {
-                for (RunData.Metric m : data.metrics) {
+                for (RunDetails.Metric m : data.metrics) {
                     ps.setString(1, r.runKey());
                     ps.setString(2, m.task());
                     ps.setString(3, m.metric());
@@ -200,7 +200,7 @@ public final class ResultStore implements AutoCloseable {
                 ps.executeBatch();
             }
             try (PreparedStatement ps = conn.prepareStatement("INSERT INTO histograms (run_key, task, metric, hdr) VALUES (?,?,?,?)")) {
-                for (RunData.Hdr h : data.histograms) {
+                for (RunDetails.Hdr h : data.histograms) {
                     ps.setString(1, r.runKey());
                     ps.setString(2, h.task());
                     ps.setString(3, h.metric());
@@ -210,7 +210,7 @@ public final class ResultStore implements AutoCloseable {
                 ps.executeBatch();
             }
             try (PreparedStatement ps = conn.prepareStatement("INSERT INTO series (run_key, name, json) VALUES (?,?,?)")) {
-                for (RunData.Series s : data.series) {
+                for (RunDetails.Series s : data.series) {
                     ps.setString(1, r.runKey());
                     ps.setString(2, s.name());
                     ps.setString(3, s.json());

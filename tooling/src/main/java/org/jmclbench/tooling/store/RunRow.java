@@ -8,7 +8,7 @@ package org.jmclbench.tooling.store;
  * @param engine javase | scj | native (later hvm): what ran the workload
  * @param memory the memory style: preallocated | allocating | scoped
  */
-public record RunRecord(String runKey, String matrixId, String machineId, String runtime, String runtimeVersion,
+public record RunRow(String runKey, String matrixId, String machineId, String runtime, String runtimeVersion,
                         String profile, String policy, int particles, String dataset, String load, int repetition,
                         String status, Integer exitCode, String failure, String stderrTail, String startedAt,
                         String endedAt, Double wallS, String runDir, String summaryJson, long seed, String commandJson,

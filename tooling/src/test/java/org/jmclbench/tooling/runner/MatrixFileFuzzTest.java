@@ -8,7 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
-import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /**
  * Jazzer target of the matrix file parser: a file either sets a matrix or is refused with a

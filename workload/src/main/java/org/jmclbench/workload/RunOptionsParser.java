@@ -209,6 +209,9 @@ public final class RunOptionsParser {
                     throw BadInputException.ofOption(arg, "unexpected argument (see --help)");
             }
         }
+        if (o.help) {
+            return o; // help is shown whatever else the line holds (the C baseline's rule too)
+        }
         if (terminateFlag) {
             if (policyGiven && o.policy != RunOptions.Policy.TERMINATE) {
                 throw BadInputException.ofOption("-T", "contradicts --policy " + o.policy.label);

@@ -51,8 +51,7 @@ static const char *quote(char *out, size_t outlen, const char *p, size_t len)
 	return out;
 }
 
-/* Whether p[0..len) is [+-]?(digits[.[digits]] | .digits)[(e|E)[+-]digits]. */
-static int plain_decimal(const char *p, size_t len)
+int jm_plain_decimal(const char *p, size_t len)
 {
 	const char *end = p + len;
 	int digits = 0;
@@ -105,7 +104,7 @@ static int parse_number(const char *p, size_t len, double *out)
 	char small[128], *buf = small;
 	double v;
 
-	if (!plain_decimal(p, len))
+	if (!jm_plain_decimal(p, len))
 		return names_non_finite(p, len) ? NUM_NON_FINITE : NUM_SYNTAX;
 	if (len >= sizeof(small) && !(buf = malloc(len + 1)))
 		return NUM_NOMEM;

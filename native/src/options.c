@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dataset.h"
 #include "options.h"
 
 enum opt_id {
@@ -135,14 +136,16 @@ static int fail(char *err, size_t errlen, const char *name, const char *problem,
 static int int_in(const char *name, const char *s, long long lo, long long hi, long long *out, char *err,
 		  size_t errlen)
 {
+	const char *d = s + (*s == '+' || *s == '-');
 	char *end;
 	long long v;
 
+	/* [+-]?digits and nothing else, as the Java workload: no blanks, no other digits */
+	if (!*d || strspn(d, "0123456789") != strlen(d))
+		return fail(err, errlen, name, "not an integer", s);
 	errno = 0;
 	v = strtoll(s, &end, 10);
-	while (end != s && isspace((unsigned char)*end))
-		end++;
-	if (end == s || *end != '\0' || errno == ERANGE)
+	if (errno == ERANGE)
 		return fail(err, errlen, name, "not an integer", s);
 	if (v < lo || v > hi) {
 		snprintf(err, errlen, "%s: %lld is out of range [%lld, %lld]", name, v, lo, hi);
@@ -155,13 +158,12 @@ static int int_in(const char *name, const char *s, long long lo, long long hi, l
 /* A finite number > 0 (or >= 0 when zero_ok). */
 static int double_in(const char *name, const char *s, int zero_ok, double *out, char *err, size_t errlen)
 {
-	char *end;
-	double v = strtod(s, &end);
+	double v;
 
-	while (end != s && isspace((unsigned char)*end))
-		end++;
-	if (end == s || *end != '\0')
+	/* the data files' number grammar, as the Java workload: no hex, no inf or nan words, no blanks */
+	if (!jm_plain_decimal(s, strlen(s)))
 		return fail(err, errlen, name, "not a number", s);
+	v = strtod(s, NULL);
 	if (!isfinite(v) || v < 0.0 || (!zero_ok && v == 0.0)) {
 		snprintf(err, errlen, "%s: '%s' must be a finite number %s", name, s, zero_ok ? ">= 0" : "> 0");
 		return -1;

@@ -209,6 +209,9 @@ public final class RunOptionsParser {
                     throw BadInputException.ofOption(arg, "unexpected argument (see --help)");
             }
         }
+        if (o.help) {
+            return o; // help is shown whatever else the line holds (the C baseline's rule too)
+        }
         if (terminateFlag) {
             if (policyGiven && o.policy != RunOptions.Policy.TERMINATE) {
                 throw BadInputException.ofOption("-T", "contradicts --policy " + o.policy.label);
@@ -285,10 +288,16 @@ public final class RunOptionsParser {
         return v;
     }
 
+    /** An integer: {@code [+-]?[0-9]+}, nothing else (Long.parseLong takes other scripts' digits; C does not). */
+    private static final java.util.regex.Pattern INTEGER = java.util.regex.Pattern.compile("[+-]?[0-9]+");
+    /** A number: the data files' grammar (docs/FORMATS.md 1.1), the C baseline's too. */
+    private static final java.util.regex.Pattern DECIMAL =
+            java.util.regex.Pattern.compile("[+-]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][+-]?[0-9]+)?");
+
     private static int intIn(String name, String v, int min, int max) throws BadInputException {
         long x;
         try {
-            x = Long.parseLong(v.trim());
+            x = longOf(v);
         } catch (NumberFormatException e) {
             throw BadInputException.ofOption(name, "not an integer: '" + v + "'");
         }
@@ -298,21 +307,26 @@ public final class RunOptionsParser {
         return (int) x;
     }
 
+    private static long longOf(String v) {
+        if (!INTEGER.matcher(v).matches()) {
+            throw new NumberFormatException(v);
+        }
+        return Long.parseLong(v);
+    }
+
     private static long longValue(String name, String v) throws BadInputException {
         try {
-            return Long.parseLong(v.trim());
+            return longOf(v);
         } catch (NumberFormatException e) {
             throw BadInputException.ofOption(name, "not an integer: '" + v + "'");
         }
     }
 
     private static double doubleIn(String name, String v, boolean zeroAllowed) throws BadInputException {
-        double x;
-        try {
-            x = Double.parseDouble(v.trim());
-        } catch (NumberFormatException e) {
+        if (!DECIMAL.matcher(v).matches()) {
             throw BadInputException.ofOption(name, "not a number: '" + v + "'");
         }
+        double x = Double.parseDouble(v);
         if (Double.isNaN(x) || Double.isInfinite(x) || x < 0 || (!zeroAllowed && x == 0)) {
             throw BadInputException.ofOption(name, "'" + v + "' must be a finite number "
                     + (zeroAllowed ? ">= 0" : "> 0"));

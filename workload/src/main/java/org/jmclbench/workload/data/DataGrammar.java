@@ -169,13 +169,18 @@ final class DataGrammar {
             if (c >= 0x20 && c < 0x7f && c != '\\') {
                 s.append((char) c);
             } else {
-                s.append("\\x").append(Character.forDigit(c >> 4, 16)).append(Character.forDigit(c & 15, 16));
+                s.append("\\x").append(hex(c));
             }
         }
         if (len > QUOTE_MAX) {
             s.append("...");
         }
         return s.toString();
+    }
+
+    /** A byte as two lower-case hex digits. */
+    static String hex(int c) {
+        return new String(new char[] {Character.forDigit((c >> 4) & 15, 16), Character.forDigit(c & 15, 16)});
     }
 
     /**

@@ -93,8 +93,7 @@ public final class DatasetMetadata {
         for (int i = from; i < to; i++) {
             int c = b[i] & 0xff;
             if ((c < 0x20 && c != '\t') || c >= 0x7f) {
-                throw BadInputException.atLine(name, lineNo, "not printable ASCII: byte 0x"
-                        + Character.forDigit(c >> 4, 16) + Character.forDigit(c & 15, 16));
+                throw BadInputException.atLine(name, lineNo, "not printable ASCII: byte 0x" + DataGrammar.hex(c));
             }
             if (c == '=' && eq < 0) {
                 eq = i;

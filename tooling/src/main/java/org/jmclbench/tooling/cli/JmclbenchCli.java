@@ -13,7 +13,6 @@ import org.jmclbench.tooling.runner.QuickCommand;
 import org.jmclbench.tooling.runtime.JvmCommand;
 import org.jmclbench.tooling.runtime.JvmsCommand;
 import org.jmclbench.tooling.store.MergeCommand;
-import org.jmclbench.workload.BadInputException;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -54,7 +53,7 @@ public final class JmclbenchCli implements Callable<Integer> {
             return EXIT_BAD_INPUT;
         });
         cli.setExecutionExceptionHandler((ex, cmd, parsed) -> {
-            if (ex instanceof BadInputException) {
+            if (ex instanceof BadUsageException) {
                 System.err.println("jmclbench: " + ex.getMessage());
                 return EXIT_BAD_INPUT;
             }

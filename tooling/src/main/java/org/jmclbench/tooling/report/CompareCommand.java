@@ -11,9 +11,9 @@ import java.util.TreeSet;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
-import org.jmclbench.workload.BadInputException;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -65,7 +65,7 @@ public final class CompareCommand implements Callable<Integer> {
     PrintStream out = System.out;
 
     @Override
-    public Integer call() throws BadInputException {
+    public Integer call() throws BadUsageException {
         List<StoredRun> runsA;
         List<StoredRun> runsB;
         String nameA;
@@ -73,10 +73,10 @@ public final class CompareCommand implements Callable<Integer> {
         boolean pairByConfig;
         if (db != null) {
             if (!databases.isEmpty()) {
-                throw new BadInputException("--db: give either --db with --a/--b or two databases, not both");
+                throw new BadUsageException("--db: give either --db with --a/--b or two databases, not both");
             }
             if (a == null || b == null) {
-                throw new BadInputException((a == null ? "--a" : "--b") + ": needed with --db (RUNTIME[/PROFILE])");
+                throw new BadUsageException((a == null ? "--a" : "--b") + ": needed with --db (RUNTIME[/PROFILE])");
             }
             try (StoredRuns store = StoredRuns.open(db, "--db")) {
                 List<StoredRun> all = filtered(store.runs());
@@ -88,7 +88,7 @@ public final class CompareCommand implements Callable<Integer> {
             pairByConfig = false;
         } else {
             if (databases.size() != 2) {
-                throw new BadInputException("compare: give two databases (A.db B.db) or --db FILE --a RUNTIME --b RUNTIME");
+                throw new BadUsageException("compare: give two databases (A.db B.db) or --db FILE --a RUNTIME --b RUNTIME");
             }
             try (StoredRuns sa = StoredRuns.open(databases.get(0), "A");
                  StoredRuns sb = StoredRuns.open(databases.get(1), "B")) {
@@ -125,7 +125,7 @@ public final class CompareCommand implements Callable<Integer> {
             compared++;
         }
         if (compared == 0) {
-            throw new BadInputException("compare: no setting (dataset, policy, particles" + (pairByConfig ? ", runtime" : "")
+            throw new BadUsageException("compare: no setting (dataset, policy, particles" + (pairByConfig ? ", runtime" : "")
                     + ") has runs in both A and B" + (hasFilter() ? " with the given filters" : ""));
         }
         out.println();
@@ -154,7 +154,7 @@ public final class CompareCommand implements Callable<Integer> {
      * has them, so that {@code temurin-25} is the Java SE engine beside {@code temurin-25/scj}.
      */
     static List<StoredRun> select(List<StoredRun> runs, String spec, String option, Path file)
-            throws BadInputException {
+            throws BadUsageException {
         List<StoredRun> exact = runs.stream().filter(r -> r.config().equals(spec)).toList();
         if (!exact.isEmpty()) {
             return exact;
@@ -189,12 +189,12 @@ public final class CompareCommand implements Callable<Integer> {
         }
         TreeSet<String> configs = byRuntime.stream().map(StoredRun::config).collect(Collectors.toCollection(TreeSet::new));
         if (configs.size() > 1) {
-            throw new BadInputException(option + ": " + spec + " has several configurations in " + file + ", say which: "
+            throw new BadUsageException(option + ": " + spec + " has several configurations in " + file + ", say which: "
                     + String.join(", ", configs));
         }
         if (byRuntime.isEmpty()) {
             TreeSet<String> known = runs.stream().map(StoredRun::config).collect(Collectors.toCollection(TreeSet::new));
-            throw new BadInputException(option + ": unknown runtime '" + spec + "' in " + file
+            throw new BadUsageException(option + ": unknown runtime '" + spec + "' in " + file
                     + (known.isEmpty() ? " (no runs match the filters)" : " (known: " + String.join(", ", known) + ")"));
         }
         return byRuntime;

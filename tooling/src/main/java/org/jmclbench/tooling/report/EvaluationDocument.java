@@ -15,6 +15,7 @@ import java.util.TreeSet;
 import java.util.function.Predicate;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.store.StoredRuns;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -65,7 +66,7 @@ public final class EvaluationDocument {
      * @param verificationFile results/verification.json, or a path that does not exist
      */
     public static void write(Path db, Path document, Path figures, List<String> cuts, Path verificationFile)
-            throws IOException, org.jmclbench.workload.BadInputException {
+            throws IOException, BadUsageException {
         ReportModel model;
         try (StoredRuns store = StoredRuns.open(db, "--db")) {
             model = ReportModel.build(store, s -> { });

@@ -5,8 +5,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.store.StoredRuns;
-import org.jmclbench.workload.BadInputException;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -29,7 +29,7 @@ public final class ReportCommand implements Callable<Integer> {
     boolean noExport;
 
     @Override
-    public Integer call() throws BadInputException, IOException {
+    public Integer call() throws BadUsageException, IOException {
         System.setProperty("java.awt.headless", "true");
         long t0 = System.nanoTime();
         if (out == null) {
@@ -37,7 +37,7 @@ public final class ReportCommand implements Callable<Integer> {
             out = parent == null ? Path.of("report") : parent.resolve("report");
         }
         if (Files.exists(out) && !Files.isDirectory(out)) {
-            throw new BadInputException("--out: " + out + ": not a folder");
+            throw new BadUsageException("--out: " + out + ": not a folder");
         }
         ReportModel model;
         try (StoredRuns store = StoredRuns.open(db, "--db")) {

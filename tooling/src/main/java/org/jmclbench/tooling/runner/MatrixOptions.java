@@ -53,11 +53,7 @@ final class MatrixOptions {
             case "particles" -> items(value, at).forEach(v -> spec.particles.add(new Sourced<>(positiveInt(v, at), at)));
             case "datasets" -> items(value, at).forEach(v -> spec.datasets.add(new Sourced<>(v, at)));
             case "load" -> items(value, at).forEach(v -> {
-                try {
-                    LoadScenario.parse(at, v);
-                } catch (org.jmclbench.workload.BadInputException e) {
-                    throw new BadUsageException(e.getMessage());
-                }
+                LoadScenario.parse(at, v);
                 spec.loads.add(new Sourced<>(v, at));
             });
             case "workload-arg" -> spec.workloadArgs.add(new Sourced<>(value, at));

@@ -79,13 +79,9 @@ public final class MatrixPlanner {
         }
         List<LoadScenario> loads = new ArrayList<>();
         for (Sourced<String> l : spec.loads) {
-            try {
-                LoadScenario s = LoadScenario.parse(l.where(), l.value());
-                if (!loads.contains(s)) {
-                    loads.add(s);
-                }
-            } catch (org.jmclbench.workload.BadInputException e) {
-                throw new BadUsageException(e.getMessage());
+            LoadScenario s = LoadScenario.parse(l.where(), l.value());
+            if (!loads.contains(s)) {
+                loads.add(s);
             }
         }
         if (loads.isEmpty()) {

@@ -16,9 +16,9 @@ import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.ProfileComponent;
 import org.jmclbench.tooling.runtime.ProfileProbe;
 import org.jmclbench.tooling.store.MachineInfo;
-import org.jmclbench.tooling.store.RunRecorder;
 import org.jmclbench.tooling.store.RunDetails;
 import org.jmclbench.tooling.store.RunFolderIngest;
+import org.jmclbench.tooling.store.RunRecorder;
 import org.jmclbench.tooling.store.RunRow;
 import org.jmclbench.tooling.store.StoreMerger;
 
@@ -175,7 +175,7 @@ public final class MatrixRunner {
                 }
                 data.series.add(new RunDetails.Series("pauses", a.pauses()));
                 data.attributions.addAll(a.rows());
-            } catch (IOException | org.jmclbench.workload.BadInputException | RuntimeException e) {
+            } catch (IOException | RuntimeException e) {
                 // The run stands on its own; only its attribution is missing (explain says why).
                 System.err.println("jmclbench: " + run.label() + ": no attribution: " + e.getMessage());
             }

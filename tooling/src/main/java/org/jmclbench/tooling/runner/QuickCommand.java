@@ -58,23 +58,18 @@ public final class QuickCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        MatrixSession.Result r;
-        try {
-            MatrixSpec spec = spec(db);
-            RuntimeDiscovery d = RuntimeDiscovery.discover();
-            if (timeScale != null) {
-                MatrixOptions.apply(spec, "time-scale", timeScale, "--time-scale");
-            } else {
-                double scale = fitScale(d, spec);
-                if (scale < 1.0) {
-                    MatrixOptions.apply(spec, "time-scale", String.valueOf(scale), "quick");
-                }
+        MatrixSpec spec = spec(db);
+        RuntimeDiscovery d = RuntimeDiscovery.discover();
+        if (timeScale != null) {
+            MatrixOptions.apply(spec, "time-scale", timeScale, "--time-scale");
+        } else {
+            double scale = fitScale(d, spec);
+            if (scale < 1.0) {
+                MatrixOptions.apply(spec, "time-scale", String.valueOf(scale), "quick");
             }
-            r = MatrixSession.execute(spec, "jmclbench quick" + (timeScale == null ? "" : " --time-scale " + timeScale),
-                    System.out, () -> d);
-        } catch (BadUsageException e) {
-            throw e.checked();
         }
+        MatrixSession.Result r = MatrixSession.execute(spec, "jmclbench quick" + (timeScale == null ? "" : " --time-scale " + timeScale),
+                System.out, () -> d);
         if (r.exitCode() != 0) {
             return r.exitCode();
         }

@@ -28,14 +28,6 @@ public final class JvmCommand implements Callable<Integer> {
 
         @Override
         public Integer call() throws Exception {
-            try {
-                return install();
-            } catch (BadUsageException e) {
-                throw e.checked();
-            }
-        }
-
-        private int install() throws Exception {
             int m;
             try {
                 m = Integer.parseInt(major.trim());

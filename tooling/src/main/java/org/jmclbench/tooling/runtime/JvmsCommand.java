@@ -6,8 +6,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 
-import org.jmclbench.tooling.cli.BadUsageException;
-
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 
@@ -32,14 +30,6 @@ public final class JvmsCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        try {
-            return list();
-        } catch (BadUsageException e) {
-            throw e.checked();
-        }
-    }
-
-    private int list() throws Exception {
         RuntimeDiscovery d = RuntimeDiscovery.discover();
         for (String j : javas) {
             d.addJava(j);

@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
 
-import org.jmclbench.workload.BadInputException;
+import org.jmclbench.tooling.cli.BadUsageException;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -27,7 +27,7 @@ public final class MergeCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         for (Path s : sources) {
             if (!Files.isRegularFile(s)) {
-                throw new BadInputException(s + ": no such database");
+                throw new BadUsageException(s + ": no such database");
             }
             checkSchema(s); // every source is checked before the target is touched
         }
@@ -37,7 +37,7 @@ public final class MergeCommand implements Callable<Integer> {
                 try {
                     o = StoreMerger.merge(target, s);
                 } catch (java.io.IOException | java.sql.SQLException e) {
-                    throw new BadInputException(s + ": " + e.getMessage());
+                    throw new BadUsageException(s + ": " + e.getMessage());
                 }
                 System.out.println(s + ": " + o.taken() + " runs merged, " + o.kept() + " already in " + into);
             }
@@ -46,18 +46,18 @@ public final class MergeCommand implements Callable<Integer> {
     }
 
     /** A source must be a results store of a schema version this tool reads. */
-    private static void checkSchema(Path db) throws BadInputException {
+    private static void checkSchema(Path db) throws BadUsageException {
         try (java.sql.Connection c = java.sql.DriverManager.getConnection("jdbc:sqlite:file:" + db.toAbsolutePath() + "?mode=ro");
              java.sql.Statement st = c.createStatement();
              java.sql.ResultSet rs = st.executeQuery("PRAGMA user_version")) {
             int v = rs.next() ? rs.getInt(1) : 0;
             try (java.sql.ResultSet t = st.executeQuery("SELECT count(*) FROM sqlite_master WHERE name = 'runs'")) {
                 if (v < Schema.OLDEST || v > Schema.VERSION || !t.next() || t.getInt(1) != 1) {
-                    throw new BadInputException(db + ": not a jmclbench results store (schema version " + v + ")");
+                    throw new BadUsageException(db + ": not a jmclbench results store (schema version " + v + ")");
                 }
             }
         } catch (java.sql.SQLException e) {
-            throw new BadInputException(db + ": not a jmclbench results store (" + e.getMessage() + ")");
+            throw new BadUsageException(db + ": not a jmclbench results store (" + e.getMessage() + ")");
         }
     }
 }

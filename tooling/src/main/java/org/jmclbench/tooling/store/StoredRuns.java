@@ -18,7 +18,7 @@ import java.util.Map;
 import java.util.zip.DataFormatException;
 
 import org.HdrHistogram.Histogram;
-import org.jmclbench.workload.BadInputException;
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.sqlite.SQLiteConfig;
 
 /**
@@ -36,9 +36,9 @@ public final class StoredRuns implements AutoCloseable {
     }
 
     /** Opens {@code file} read-only; a missing or unreadable database is bad input. */
-    public static StoredRuns open(Path file, String option) throws BadInputException {
+    public static StoredRuns open(Path file, String option) throws BadUsageException {
         if (!Files.isRegularFile(file)) {
-            throw new BadInputException(option + ": " + file + ": no such database");
+            throw new BadUsageException(option + ": " + file + ": no such database");
         }
         SQLiteConfig config = new SQLiteConfig();
         config.setReadOnly(true);
@@ -48,12 +48,12 @@ public final class StoredRuns implements AutoCloseable {
                  ResultSet rs = st.executeQuery("SELECT count(*) FROM sqlite_master WHERE type='table' AND name='runs'")) {
                 if (!rs.next() || rs.getInt(1) == 0) {
                     c.close();
-                    throw new BadInputException(option + ": " + file + ": not a jmclbench results database (no runs table)");
+                    throw new BadUsageException(option + ": " + file + ": not a jmclbench results database (no runs table)");
                 }
             }
             return new StoredRuns(file, c);
         } catch (SQLException e) {
-            throw new BadInputException(option + ": " + file + ": cannot read the database: " + oneLine(e.getMessage()));
+            throw new BadUsageException(option + ": " + file + ": cannot read the database: " + oneLine(e.getMessage()));
         }
     }
 

@@ -59,11 +59,6 @@ static const struct opt options[] = {
 
 #define NOPTIONS (sizeof(options) / sizeof(options[0]))
 
-const char *jm_policy_name(enum jm_policy p)
-{
-	return p == JM_POLICY_TERMINATE ? "terminate" : p == JM_POLICY_QUEUE ? "queue" : "skip";
-}
-
 const char *jm_memory_name(enum jm_memory m)
 {
 	return m == JM_MEMORY_ALLOCATING ? "allocating" : "preallocated";
@@ -323,7 +318,7 @@ static int parse(jm_options *o, int argc, char **argv, char *err, size_t errlen)
 			terminate_flag = 1;
 			break;
 		case OPT_POLICY:
-			if ((c = choice(name, value, "skip|terminate|queue", err, errlen)) < 0)
+			if ((c = choice(name, value, JM_POLICY_LABELS, err, errlen)) < 0)
 				return -1;
 			o->policy = (enum jm_policy)c;
 			policy_given = 1;

@@ -19,16 +19,7 @@
 
 static const char *test_name(const jm_options *o)
 {
-	if (o->ideal)
-		return "IdealTest";
-	switch (o->policy) {
-	case JM_POLICY_TERMINATE:
-		return "TermTest";
-	case JM_POLICY_QUEUE:
-		return "QueueTest";
-	default:
-		return "SkipTest";
-	}
+	return o->ideal ? "IdealTest" : jm_policy_folder(o->policy);
 }
 
 int jm_run_dir(const jm_options *o, char *buf, size_t len)

@@ -4,10 +4,10 @@ import javax.safetycritical.LaunchLevel1;
 import javax.scj.util.Const;
 
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.scj.MclSafelet;
 import org.jmclbench.scj.MissionConfiguration;
 import org.jmclbench.scj.MissionSizes;
-import org.jmclbench.scj.OverrunPolicy;
 
 import vm.VMTest;
 
@@ -50,7 +50,7 @@ public final class HvmMain {
                 .seed(HvmData.word(7))
                 .covariance(HvmData.word(8) != 0)
                 .pollInterval((int) HvmData.word(9));
-        OverrunPolicy policy = OverrunPolicy.values()[(int) HvmData.word(10)];
+        OverrunPolicy policy = OverrunPolicy.ofCode(HvmData.word(10));
         MissionConfiguration config = new MissionConfiguration(b.build(), policy, HvmData.real(11));
         for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
             long size = HvmData.word(HEADER + a);

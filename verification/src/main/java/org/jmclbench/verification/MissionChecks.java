@@ -1,5 +1,6 @@
 package org.jmclbench.verification;
 
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.verification.jpf.AtomicRuntimeSyncPolicy;
 import org.jmclbench.verification.jpf.JpfCheck;
 import org.jmclbench.verification.jpf.JpfCheck.Expectation;
@@ -142,7 +143,8 @@ public final class MissionChecks {
     public static List<JpfCheck> all() {
         List<JpfCheck> l = new ArrayList<>();
         String main = MissionDriver.class.getName();
-        for (String policy : List.of("skip", "terminate", "queue")) {
+        for (OverrunPolicy p : OverrunPolicy.values()) {
+            String policy = p.label;
             l.add(new JpfCheck("mission-" + policy, PROPERTY, policy, main, args(policy, null), config(),
                     Expectation.holds(), scope()));
             l.add(new JpfCheck("mission-race-" + policy, RACE_PROPERTY, policy, main, raceArgs(policy, null),

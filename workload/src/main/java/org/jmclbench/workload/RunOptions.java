@@ -3,27 +3,13 @@ package org.jmclbench.workload;
 import java.util.Locale;
 
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.policy.OverrunPolicy;
 
 /**
  * Every option of one workload run (docs/FORMATS.md section 2), with the defaults filled in;
  * produced by {@link RunOptionsParser}. Fields are plain data, set only by the parser (and tests).
  */
 public final class RunOptions {
-    /** What happens to an event released while a job is in progress (SPEC section 4). */
-    public enum Policy {
-        SKIP("skip", "SkipTest"), TERMINATE("terminate", "TermTest"), QUEUE("queue", "QueueTest");
-
-        /** The option value and summary.json name. */
-        public final String label;
-        /** The thesis-style folder name of the run path. */
-        public final String folder;
-
-        Policy(String label, String folder) {
-            this.label = label;
-            this.folder = folder;
-        }
-    }
-
     /** The engine that runs the jobs (SPEC sections 4 and 12). */
     public enum Engine {
         /** The Java SE release engine: a dispatcher thread and one handler thread per task. */
@@ -59,7 +45,7 @@ public final class RunOptions {
     public String real;
     /** A dataset folder; null = the default. Exclusive with odo/laser/real. */
     public String dataset;
-    public Policy policy = Policy.SKIP;
+    public OverrunPolicy policy = OverrunPolicy.SKIP;
     public boolean ideal;
     public boolean covariance;
     public MclConfig.Memory memory = MclConfig.Memory.PREALLOCATED;

@@ -3,6 +3,7 @@ package org.jmclbench.workload;
 import java.util.Locale;
 
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.policy.OverrunPolicy;
 
 /**
  * Parses the workload's command line (docs/FORMATS.md section 2): the thesis's short flags
@@ -115,7 +116,7 @@ public final class RunOptionsParser {
                     terminateFlag = true;
                     break;
                 case "--policy":
-                    o.policy = choice(name, value(name, inline, args, i), RunOptions.Policy.class);
+                    o.policy = policy(name, value(name, inline, args, i));
                     policyGiven = true;
                     i += inline == null ? 1 : 0;
                     break;
@@ -213,10 +214,10 @@ public final class RunOptionsParser {
             return o; // help is shown whatever else the line holds (the C baseline's rule too)
         }
         if (terminateFlag) {
-            if (policyGiven && o.policy != RunOptions.Policy.TERMINATE) {
+            if (policyGiven && o.policy != OverrunPolicy.TERMINATE) {
                 throw BadInputException.ofOption("-T", "contradicts --policy " + o.policy.label);
             }
-            o.policy = RunOptions.Policy.TERMINATE;
+            o.policy = OverrunPolicy.TERMINATE;
         }
         int files = (o.odo != null ? 1 : 0) + (o.laser != null ? 1 : 0) + (o.real != null ? 1 : 0);
         if (files != 0 && files != 3) {
@@ -228,6 +229,18 @@ public final class RunOptionsParser {
         }
         checkEngine(o);
         return o;
+    }
+
+    private static OverrunPolicy policy(String name, String v) throws BadInputException {
+        OverrunPolicy p = OverrunPolicy.ofLabel(v);
+        if (p == null) {
+            StringBuilder allowed = new StringBuilder();
+            for (OverrunPolicy each : OverrunPolicy.values()) {
+                allowed.append(allowed.length() == 0 ? "" : "|").append(each.label);
+            }
+            throw BadInputException.ofOption(name, "'" + v + "' is not one of " + allowed);
+        }
+        return p;
     }
 
     private static RunOptions.Engine engine(String name, String v) throws BadInputException {

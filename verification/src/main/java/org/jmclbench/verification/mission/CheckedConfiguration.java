@@ -3,8 +3,8 @@ package org.jmclbench.verification.mission;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.scj.MissionConfiguration;
-import org.jmclbench.scj.OverrunPolicy;
 
 /**
  * The mission's configuration with the P3 check around its localizer, through the seam the

@@ -4,6 +4,7 @@ import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.rtsjcompat.RunReport;
 import org.jmclbench.rtsjcompat.ScjRuntime;
@@ -11,7 +12,6 @@ import org.jmclbench.scj.MclSafelet;
 import org.jmclbench.scj.MissionConfiguration;
 import org.jmclbench.scj.MissionInput;
 import org.jmclbench.scj.MissionOutput;
-import org.jmclbench.scj.OverrunPolicy;
 
 /**
  * The real SCJ mission (scj-mission on rtsj-compat, virtual time) on a tiny synthetic sensor log,
@@ -32,7 +32,10 @@ public final class MissionDriver implements MissionInput, MissionOutput {
     }
 
     public static void main(String[] args) throws ReflectiveOperationException {
-        OverrunPolicy policy = OverrunPolicy.valueOf(args[0].toUpperCase());
+        OverrunPolicy policy = OverrunPolicy.ofLabel(args[0]);
+        if (policy == null) {
+            throw new IllegalArgumentException("no policy '" + args[0] + "'");
+        }
         MissionDriver d = new MissionDriver(Integer.parseInt(args[1]), Integer.parseInt(args[2]));
         int particles = Integer.parseInt(args[3]);
         // Virtual time: the run is a function of the interleaving, not of the host's clock.

@@ -11,6 +11,7 @@ import java.util.Locale;
 
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.core.record.Deviation;
 import org.jmclbench.core.record.JobRecords;
@@ -333,7 +334,7 @@ public final class RunWriter {
             s.completed = s.done + s.late;
             if (o.ideal) {
                 s.missCount = 0;
-            } else if (o.policy == RunOptions.Policy.QUEUE) {
+            } else if (o.policy == OverrunPolicy.QUEUE) {
                 s.missCount = s.late;
             } else {
                 s.missCount = s.skipped + s.terminated;

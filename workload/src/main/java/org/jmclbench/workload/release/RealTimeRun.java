@@ -61,7 +61,7 @@ public final class RealTimeRun {
             facts.put("gcLog", gcLog == null ? null : gcLog.status());
             ReleaseSchedule schedule = ReleaseSchedule.of(timeline, options.timeScale);
             long spinNs = options.spinUs * 1000L;
-            OverrunPolicy policy = OverrunPolicy.forName(options.policy.label);
+            PolicyGate policy = PolicyGate.of(options.policy);
 
             if (options.loadAllocMbPerS > 0) {
                 noise = AllocationNoise.start(options.loadAllocMbPerS, options.loadAllocLiveMb);
@@ -72,7 +72,7 @@ public final class RealTimeRun {
                 Localizer throwaway = Localizers.create(options.mclConfig(), dataset.playground,
                         dataset.startX, dataset.startY, dataset.startTheta);
                 JobRecords scratch = new JobRecords(timeline, records.cov != null);
-                new ReleaseEngine(schedule.prefix(warmupEvents), OverrunPolicy.forName(options.policy.label),
+                new ReleaseEngine(schedule.prefix(warmupEvents), PolicyGate.of(options.policy),
                         new LocalizerJob(dataset, timeline, throwaway, scratch), scratch, cpuClock, spinNs).run();
             }
 
@@ -141,7 +141,7 @@ public final class RealTimeRun {
             deadline[k] = Long.MAX_VALUE;
             task[k] = k % 2;
         }
-        new ReleaseEngine(ReleaseSchedule.of(release, deadline, task), OverrunPolicy.forName(options.policy.label),
+        new ReleaseEngine(ReleaseSchedule.of(release, deadline, task), PolicyGate.of(options.policy),
                 (k, abort) -> abort.abortRequested() || true, scratch, cpuClock, 0).run();
     }
 

@@ -205,7 +205,7 @@ public final class HvmRun {
             w.word(mcl.seed);
             w.word(mcl.covariance ? 1 : 0);
             w.word(mcl.pollInterval);
-            w.word(config.policy.ordinal());
+            w.word(config.policy.code);
             w.real(config.timeScale);
             for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
                 w.word(config.areaSize(a));

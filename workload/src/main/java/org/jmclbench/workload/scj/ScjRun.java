@@ -23,7 +23,6 @@ import org.jmclbench.rtsjcompat.ScjRuntime;
 import org.jmclbench.scj.MclSafelet;
 import org.jmclbench.scj.MissionConfiguration;
 import org.jmclbench.scj.MissionSizes;
-import org.jmclbench.scj.OverrunPolicy;
 import org.jmclbench.scj.Periodicity;
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.RunFailure;
@@ -135,8 +134,7 @@ public final class ScjRun {
 
     /** The mission's configuration for the options, with a filter (the run's, or a smaller one) and a time scale. */
     static MissionConfiguration configuration(RunOptions o, MclConfig mcl, double timeScale, boolean areaSizes) {
-        OverrunPolicy policy = OverrunPolicy.valueOf(o.policy.name());
-        MissionConfiguration c = new MissionConfiguration(mcl, policy, timeScale);
+        MissionConfiguration c = new MissionConfiguration(mcl, o.policy, timeScale);
         if (areaSizes) {
             for (Map.Entry<String, Long> e : o.areaSizes.entrySet()) {
                 c.areaSize(MissionSizes.areaIndex(e.getKey()), e.getValue());

@@ -10,6 +10,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.WorkloadMain;
 import org.jmclbench.workload.data.Dataset;
@@ -44,7 +45,7 @@ class RealTimeRunTest {
             Timeline t = d.timeline();
             MclConfig config = MclConfig.builder().particles(40_000).memory(memory).seed(7).build();
             RunOptions options = new RunOptions();
-            options.policy = RunOptions.Policy.TERMINATE;
+            options.policy = OverrunPolicy.TERMINATE;
             options.particles = config.particles;
             options.memory = memory;
             options.seed = 7;

@@ -4,7 +4,7 @@ import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;
-import org.jmclbench.scj.OverrunPolicy;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.verification.mission.CheckedConfiguration;
 import org.jmclbench.verification.mission.DelegatingLocalizer;
 

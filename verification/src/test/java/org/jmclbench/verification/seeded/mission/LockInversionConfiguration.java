@@ -3,9 +3,9 @@ package org.jmclbench.verification.seeded.mission;
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.scj.ImmortalEntry;
 import org.jmclbench.scj.JobGate;
-import org.jmclbench.scj.OverrunPolicy;
 import org.jmclbench.scj.Robot;
 import org.jmclbench.verification.mission.CheckedConfiguration;
 

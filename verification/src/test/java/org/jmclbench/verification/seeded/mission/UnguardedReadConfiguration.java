@@ -1,8 +1,8 @@
 package org.jmclbench.verification.seeded.mission;
 
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.scj.JobGate;
-import org.jmclbench.scj.OverrunPolicy;
 import org.jmclbench.verification.mission.CheckedConfiguration;
 
 /**

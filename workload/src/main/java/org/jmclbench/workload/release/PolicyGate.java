@@ -2,9 +2,12 @@ package org.jmclbench.workload.release;
 
 import java.util.concurrent.locks.LockSupport;
 
+import org.jmclbench.core.policy.OverrunPolicy;
+
 /**
- * What happens when an event is released while the robot (the one shared resource) is
- * busy: the strategy behind the skip, terminate and queue tests.
+ * The Java SE engine's state of an {@link OverrunPolicy}: what happens when an event is
+ * released while the robot (the one shared resource) is busy, for the skip, terminate and
+ * queue tests. One gate per replay: it holds that replay's state.
  *
  * <p>Protocol, per event k in release order (k ascending):
  * <ol>
@@ -16,17 +19,11 @@ import java.util.concurrent.locks.LockSupport;
  * </ol>
  * Every method is allocation-free; waiting handlers park and are unparked by {@link #release}.
  */
-public abstract class OverrunPolicy {
+public abstract class PolicyGate {
     /** No event owns the robot. */
     static final int FREE = -1;
 
     private Thread[] handlers = new Thread[0];
-
-    /** The thesis's test folder name for this policy (SkipTest, TermTest, QueueTest). */
-    public abstract String testName();
-
-    /** The command-line name (skip, terminate, queue). */
-    public abstract String policyName();
 
     /** Called by the dispatcher at k's release; true hands k to its handler. */
     public abstract boolean admit(int k);
@@ -55,17 +52,17 @@ public abstract class OverrunPolicy {
         }
     }
 
-    /** A fresh policy (they hold per-replay state) by its command-line name. */
-    public static OverrunPolicy forName(String name) {
-        switch (name) {
-            case "skip":
-                return new SkipPolicy();
-            case "terminate":
-                return new TerminatePolicy();
-            case "queue":
-                return new QueuePolicy();
+    /** A fresh gate (it holds one replay's state) of the policy. */
+    public static PolicyGate of(OverrunPolicy policy) {
+        switch (policy) {
+            case SKIP:
+                return new SkipGate();
+            case TERMINATE:
+                return new TerminateGate();
+            case QUEUE:
+                return new QueueGate();
             default:
-                throw new IllegalArgumentException("unknown policy: " + name);
+                throw new IllegalArgumentException("no gate for the policy " + policy);
         }
     }
 }

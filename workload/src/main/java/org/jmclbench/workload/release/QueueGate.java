@@ -7,18 +7,8 @@ import java.util.concurrent.locks.LockSupport;
  * across both tasks (a ticket order: event k runs after event k - 1 has ended); a job that
  * completes after its deadline is late.
  */
-public final class QueuePolicy extends OverrunPolicy {
+public final class QueueGate extends PolicyGate {
     private volatile int turn;
-
-    @Override
-    public String testName() {
-        return "QueueTest";
-    }
-
-    @Override
-    public String policyName() {
-        return "queue";
-    }
 
     @Override
     public boolean admit(int k) {

@@ -8,18 +8,8 @@ import java.util.concurrent.atomic.AtomicInteger;
  * <p>The dispatcher takes the robot on the job's behalf at release time, so the robot counts
  * as busy from a job's release to its end, and no two handlers can ever start together.
  */
-public final class SkipPolicy extends OverrunPolicy {
+public final class SkipGate extends PolicyGate {
     private final AtomicInteger owner = new AtomicInteger(FREE);
-
-    @Override
-    public String testName() {
-        return "SkipTest";
-    }
-
-    @Override
-    public String policyName() {
-        return "skip";
-    }
 
     @Override
     public boolean admit(int k) {

@@ -9,19 +9,9 @@ import java.util.concurrent.atomic.AtomicInteger;
  * event is released (the abort is cooperative, polled by the MCL loops every 64 particles), and
  * an event superseded while it still waited for the robot never starts (terminated).
  */
-public final class TerminatePolicy extends OverrunPolicy {
+public final class TerminateGate extends PolicyGate {
     private final AtomicInteger owner = new AtomicInteger(FREE);
     private volatile int latest = FREE;
-
-    @Override
-    public String testName() {
-        return "TermTest";
-    }
-
-    @Override
-    public String policyName() {
-        return "terminate";
-    }
 
     @Override
     public boolean admit(int k) {

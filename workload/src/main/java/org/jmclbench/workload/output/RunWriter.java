@@ -11,7 +11,6 @@ import java.util.Locale;
 
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
-import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.core.record.Deviation;
 import org.jmclbench.core.record.JobRecords;

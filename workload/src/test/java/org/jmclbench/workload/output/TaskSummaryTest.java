@@ -3,6 +3,7 @@ package org.jmclbench.workload.output;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.workload.RunOptions;
@@ -52,7 +53,7 @@ class TaskSummaryTest {
     @Test
     void underQueueMissCountIsTheLateJobsAndTheAccountingIsUnchanged() {
         RunOptions queue = new RunOptions();
-        queue.policy = RunOptions.Policy.QUEUE;
+        queue.policy = OverrunPolicy.QUEUE;
         TaskSummary s = TaskSummary.of(records(), -1, queue);
         assertEquals(1, s.missCount);
         assertEquals(2, s.deadlineMisses());

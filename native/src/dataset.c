@@ -12,135 +12,7 @@
 #include <sys/stat.h>
 
 #include "dataset.h"
-
-/* What separates numbers on a line: space and tab, nothing else (no \r, \v, \f). */
-static int is_blank(int c)
-{
-	return c == ' ' || c == '\t';
-}
-
-static int is_digit(int c)
-{
-	return c >= '0' && c <= '9';
-}
-
-/*
- * A token or value as a message quotes it: printable ASCII as is, every other byte (and the
- * backslash) as \xHH, at most JM_QUOTE_MAX bytes of it and then "...", so that a message stays
- * one printable line whatever the file holds.
- */
-#define JM_QUOTE_MAX 40
-
-static const char *quote(char *out, size_t outlen, const char *p, size_t len)
-{
-	size_t i, n = 0;
-
-	for (i = 0; i < len && i < JM_QUOTE_MAX && n + 5 < outlen; i++) {
-		unsigned char c = (unsigned char)p[i];
-
-		if (c >= 0x20 && c < 0x7f && c != '\\')
-			out[n++] = (char)c;
-		else
-			n += (size_t)snprintf(out + n, outlen - n, "\\x%02x", c);
-	}
-	if (i < len && n + 4 < outlen) {
-		memcpy(out + n, "...", 3);
-		n += 3;
-	}
-	out[n] = '\0';
-	return out;
-}
-
-int jm_plain_decimal(const char *p, size_t len)
-{
-	const char *end = p + len;
-	int digits = 0;
-
-	if (p < end && (*p == '+' || *p == '-'))
-		p++;
-	for (; p < end && is_digit(*p); p++)
-		digits++;
-	if (p < end && *p == '.')
-		for (p++; p < end && is_digit(*p); p++)
-			digits++;
-	if (!digits)
-		return 0;
-	if (p < end && (*p == 'e' || *p == 'E')) {
-		p++;
-		if (p < end && (*p == '+' || *p == '-'))
-			p++;
-		if (p == end || !is_digit(*p))
-			return 0;
-		while (p < end && is_digit(*p))
-			p++;
-	}
-	return p == end;
-}
-
-/* NaN or infinity in any case, signs anywhere: "not a finite number" rather than "not a number". */
-static int names_non_finite(const char *p, size_t len)
-{
-	char t[10];
-	size_t i, n = 0;
-
-	for (i = 0; i < len; i++) {
-		char c = p[i];
-
-		if (c == '+' || c == '-')
-			continue;
-		if (n == sizeof(t) - 1)
-			return 0;
-		t[n++] = (char)(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-	}
-	/* by length, not strcmp: a NUL byte inside the token must not end the comparison */
-	return (n == 3 && (!memcmp(t, "nan", 3) || !memcmp(t, "inf", 3))) || (n == 8 && !memcmp(t, "infinity", 8));
-}
-
-enum { NUM_OK, NUM_SYNTAX, NUM_NON_FINITE, NUM_OVERFLOW, NUM_NOMEM };
-
-/* Parses p[0..len) as a finite double, correctly rounded (as Java's Double.parseDouble). */
-static int parse_number(const char *p, size_t len, double *out)
-{
-	char small[128], *buf = small;
-	double v;
-
-	if (!jm_plain_decimal(p, len))
-		return names_non_finite(p, len) ? NUM_NON_FINITE : NUM_SYNTAX;
-	if (len >= sizeof(small) && !(buf = malloc(len + 1)))
-		return NUM_NOMEM;
-	memcpy(buf, p, len);
-	buf[len] = '\0';
-	v = strtod(buf, NULL);
-	if (buf != small)
-		free(buf);
-	if (!isfinite(v))
-		return NUM_OVERFLOW;
-	*out = v;
-	return NUM_OK;
-}
-
-/* The words of a number's problem; what follows the quoted token. */
-static const char *number_problem(int r)
-{
-	return r == NUM_SYNTAX ? "not a number" : r == NUM_NOMEM ? "out of memory" : "not a finite number";
-}
-
-/*
- * Reads one line of f into *line (getline's buffer): returns its length without the line
- * end (LF, and a CR right before it or before the end of the file), or -1 at the end.
- */
-static long read_line(FILE *f, char **line, size_t *cap)
-{
-	ssize_t n = getline(line, cap, f);
-
-	if (n < 0)
-		return -1;
-	if (n > 0 && (*line)[n - 1] == '\n')
-		n--;
-	if (n > 0 && (*line)[n - 1] == '\r')
-		n--;
-	return (long)n;
-}
+#include "grammar.h"
 
 static int append_row(jm_series *s, int *cap, const double *row)
 {
@@ -170,11 +42,11 @@ static int split(const char *line, long len, size_t *start, size_t *tlen, int ma
 	for (;;) {
 		long b;
 
-		while (i < len && is_blank(line[i]))
+		while (i < len && jm_is_blank(line[i]))
 			i++;
 		if (i == len)
 			return n;
-		for (b = i; i < len && !is_blank(line[i]); i++)
+		for (b = i; i < len && !jm_is_blank(line[i]); i++)
 			;
 		if (n < max) {
 			start[n] = (size_t)b;
@@ -197,11 +69,11 @@ static int parse_record(const char *name, int lineno, const char *line, long len
 		return -1;
 	}
 	for (c = 0; c < cols; c++) {
-		int r = parse_number(line + start[c], tlen[c], &row[c]);
+		int r = jm_parse_number(line + start[c], tlen[c], &row[c]);
 
-		if (r != NUM_OK) {
-			snprintf(err, errlen, "%s:%d: %s: '%s'%s", name, lineno, number_problem(r),
-				 quote(q, sizeof(q), line + start[c], tlen[c]), r == NUM_OVERFLOW ? " (overflows)" : "");
+		if (r != JM_NUM_OK) {
+			snprintf(err, errlen, "%s:%d: %s: '%s'%s", name, lineno, jm_number_problem(r),
+				 jm_quote(q, sizeof(q), line + start[c], tlen[c]), r == JM_NUM_OVERFLOW ? " (overflows)" : "");
 			return -1;
 		}
 	}
@@ -218,12 +90,12 @@ int jm_series_parse(jm_series *s, FILE *f, const char *name, int cols, char *err
 
 	memset(s, 0, sizeof(*s));
 	s->cols = cols;
-	while ((len = read_line(f, &line, &linecap)) >= 0) {
+	while ((len = jm_read_line(f, &line, &linecap)) >= 0) {
 		double row[JM_MAX_COLUMNS];
 		long i = 0;
 
 		lineno++;
-		while (i < len && is_blank(line[i]))
+		while (i < len && jm_is_blank(line[i]))
 			i++;
 		if (i == len || line[i] == '#')
 			continue; /* blank line or comment */
@@ -232,9 +104,9 @@ int jm_series_parse(jm_series *s, FILE *f, const char *name, int cols, char *err
 		if (row[0] < 0.0 || (s->n > 0 && row[0] < prev)) {
 			size_t tl;
 
-			for (tl = 0; i + (long)tl < len && !is_blank(line[i + (long)tl]); tl++)
+			for (tl = 0; i + (long)tl < len && !jm_is_blank(line[i + (long)tl]); tl++)
 				;
-			quote(q, sizeof(q), line + i, tl);
+			jm_quote(q, sizeof(q), line + i, tl);
 			if (row[0] < 0.0)
 				snprintf(err, errlen, "%s:%d: negative time %s", name, lineno, q);
 			else
@@ -322,9 +194,9 @@ void jm_series_free(jm_series *s)
 /* p[0..*len) without the blanks at both ends. */
 static const char *trim(const char *p, size_t *len)
 {
-	while (*len && is_blank(*p))
+	while (*len && jm_is_blank(*p))
 		p++, (*len)--;
-	while (*len && is_blank(p[*len - 1]))
+	while (*len && jm_is_blank(p[*len - 1]))
 		(*len)--;
 	return p;
 }
@@ -349,7 +221,7 @@ static int parse_beacons(const char *v, size_t len, jm_playground *pg)
 		yl = (size_t)(pair_end - comma - 1);
 		x = trim(v, &xl);
 		y = trim(comma + 1, &yl);
-		if (parse_number(x, xl, &pg->beacon[n][0]) || parse_number(y, yl, &pg->beacon[n][1]))
+		if (jm_parse_number(x, xl, &pg->beacon[n][0]) || jm_parse_number(y, yl, &pg->beacon[n][1]))
 			return -1;
 		n++;
 		if (pair_end == end)
@@ -367,11 +239,11 @@ static int property_number(const char *name, int lineno, const char *key, const 
 			   char *err, size_t errlen)
 {
 	char q[4 * JM_QUOTE_MAX + 8];
-	int r = parse_number(v, vl, out);
+	int r = jm_parse_number(v, vl, out);
 
-	if (r != NUM_OK) {
-		snprintf(err, errlen, "%s:%d: %s: %s: '%s'%s", name, lineno, key, number_problem(r),
-			 quote(q, sizeof(q), v, vl), r == NUM_OVERFLOW ? " (overflows)" : "");
+	if (r != JM_NUM_OK) {
+		snprintf(err, errlen, "%s:%d: %s: %s: '%s'%s", name, lineno, key, jm_number_problem(r),
+			 jm_quote(q, sizeof(q), v, vl), r == JM_NUM_OVERFLOW ? " (overflows)" : "");
 		return -1;
 	}
 	if (!strncmp(key, "playground.", 11) && !(*out > 0.0)) {
@@ -452,7 +324,7 @@ int jm_properties_parse(jm_dataset *ds, FILE *f, const char *name, char *err, si
 	long len;
 	int lineno = 0, has = 0, ret = -1;
 
-	while ((len = read_line(f, &line, &linecap)) >= 0) {
+	while ((len = jm_read_line(f, &line, &linecap)) >= 0) {
 		size_t n = (size_t)len;
 		const char *p = trim(line, &n);
 

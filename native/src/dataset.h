@@ -15,12 +15,6 @@
 /* The most columns an event file has (odometry and ground truth: time and three numbers). */
 #define JM_MAX_COLUMNS 4
 
-/*
- * Whether p[0..len) is a number of the grammar (docs/FORMATS.md 1.1), shared by the data files
- * and the command line: [+-]?(digits[.[digits]] | .digits)[(e|E)[+-]digits].
- */
-int jm_plain_decimal(const char *p, size_t len);
-
 /* The rows of one event file: n rows of cols numbers, row-major, time first. */
 typedef struct {
 	int n;

@@ -12,6 +12,7 @@
 
 #include "dataset.h"
 #include "options.h"
+#include "grammar.h"
 
 enum opt_id {
 	OPT_PARTICLES, OPT_NUMBER, OPT_RUNTIME, OPT_OUT, OPT_ODO, OPT_LASER, OPT_REAL, OPT_DATASET,

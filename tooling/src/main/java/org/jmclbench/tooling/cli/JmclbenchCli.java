@@ -57,6 +57,12 @@ public final class JmclbenchCli implements Callable<Integer> {
                 System.err.println("jmclbench: " + ex.getMessage());
                 return EXIT_BAD_INPUT;
             }
+            if (ex instanceof java.io.IOException || ex instanceof java.sql.SQLException) {
+                // the machine failed the command (a full disk, a lost file): one line, not a stack trace
+                String message = String.valueOf(ex.getMessage()).replaceAll("\\s+", " ").strip();
+                System.err.println("jmclbench: " + cmd.getCommandName() + ": " + message);
+                return EXIT_FAILURE;
+            }
             throw ex;
         });
         return cli.execute(args);

@@ -30,6 +30,17 @@ public final class ReportCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws BadUsageException, IOException {
+        build(db, out, !noExport);
+        return 0;
+    }
+
+    /**
+     * Builds the report of the database {@code db} into {@code out} ({@code report/} beside the database when
+     * null), the charts' SVG/PNG files too when {@code export}; {@code quick} calls this after its matrix.
+     *
+     * @return the page written, {@code index.html}
+     */
+    public static Path build(Path db, Path out, boolean export) throws BadUsageException, IOException {
         System.setProperty("java.awt.headless", "true");
         long t0 = System.nanoTime();
         if (out == null) {
@@ -48,13 +59,13 @@ public final class ReportCommand implements Callable<Integer> {
         Path resultsDir = db.toAbsolutePath().getParent();
         ReportPage.write(model, index, resultsDir);
         progress("wrote " + index);
-        if (!noExport) {
+        if (export) {
             int files = new ChartExporter(model, out.resolve("charts")).exportAll(ReportCommand::progress);
             progress("wrote " + files + " chart files to " + out.resolve("charts"));
         }
         System.out.printf(java.util.Locale.ROOT, "report: %s (%d runs, %.1f s)%n", index, model.runCount,
                 (System.nanoTime() - t0) / 1e9);
-        return 0;
+        return index;
     }
 
     private static void progress(String line) {

@@ -82,7 +82,13 @@ public final class MatrixRunner {
             progress.started(run);
             Finished f = execute(run, aot);
             RunRow rec = f.record();
-            store.saveRun(rec, f.data());
+            try {
+                store.saveRun(rec, f.data());
+            } catch (SQLException e) {
+                // rolled back: the store holds every run before this one and nothing of it
+                throw new SQLException("--db: " + store.dbFile() + ": cannot record " + run.label() + " ("
+                        + e.getMessage() + "); the runs recorded before it are kept: rerun the same command to resume", e);
+            }
             switch (rec.status()) {
                 case RunRow.OK -> ok++;
                 case RunRow.TIMEOUT -> timedOut++;

@@ -6,7 +6,7 @@ import java.util.stream.Collectors;
 import java.util.concurrent.Callable;
 
 import org.jmclbench.tooling.cli.BadUsageException;
-import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.jmclbench.tooling.report.ReportCommand;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 
 import picocli.CommandLine.Command;
@@ -77,8 +77,11 @@ public final class QuickCommand implements Callable<Integer> {
             System.out.println("results in " + r.db() + " (report: ./jmclbench report --db " + r.db() + ")");
             return 0;
         }
-        int rc = JmclbenchCli.execute("report", "--db", r.db().toString());
-        if (rc != 0) {
+        try {
+            ReportCommand.build(r.db(), null, true);
+        } catch (BadUsageException | java.io.IOException e) {
+            // the runs are recorded either way: say why the page is missing and how to build it later
+            System.err.println("jmclbench: report: " + e.getMessage());
             System.out.println("results in " + r.db() + "; the report could not be built (./jmclbench report --db " + r.db() + ")");
         }
         return 0;

@@ -1,85 +1,51 @@
 package org.jmclbench.tooling.store;
 
-import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.sql.Connection;
-import java.sql.DriverManager;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Statement;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
 
 import org.jmclbench.tooling.attribution.AttributionStore;
-import java.sql.Types;
-import java.util.HashMap;
-import java.util.Map;
 
 /**
- * The SQLite results store: one file, the raw run folders beside it under {@code runs/}. Every run
- * is written in one transaction once it has ended, so a runner killed mid-run leaves no row for it.
+ * Writes runs into a results database ({@link ResultsDatabase#openToWrite}): one file, the raw run
+ * folders beside it under {@code runs/}. Every run is written in one transaction once it has ended,
+ * so a runner killed mid-run leaves no row for it, and a write that fails (a full disk) leaves the
+ * rows before it as they were.
  */
 public final class RunRecorder implements AutoCloseable {
 
-    private final Path dbFile;
+    private final ResultsDatabase db;
     private final Connection conn;
 
-    private RunRecorder(Path dbFile, Connection conn) {
-        this.dbFile = dbFile;
-        this.conn = conn;
+    private RunRecorder(ResultsDatabase db) {
+        this.db = db;
+        this.conn = db.connection();
     }
 
-    /** Opens (creating when absent) the store at {@code dbFile}. */
-    public static RunRecorder open(Path dbFile) throws SQLException, IOException {
-        Path abs = dbFile.toAbsolutePath().normalize();
-        if (abs.getParent() != null) {
-            Files.createDirectories(abs.getParent());
-        }
-        Connection c = DriverManager.getConnection("jdbc:sqlite:" + abs);
-        try (Statement s = c.createStatement()) {
-            s.execute("PRAGMA busy_timeout = 10000");
-            int version;
-            try (ResultSet rs = s.executeQuery("PRAGMA user_version")) {
-                version = rs.next() ? rs.getInt(1) : 0;
-            }
-            if (version > Schema.VERSION) {
-                c.close();
-                throw new SQLException(abs + ": schema version " + version + " is newer than this tool's (" + Schema.VERSION + ")");
-            }
-            c.setAutoCommit(false);
-            for (String ddl : Schema.CREATE) {
-                s.execute(ddl);
-            }
-            java.util.Set<String> have = new java.util.HashSet<>();
-            try (ResultSet rs = s.executeQuery("PRAGMA table_info(runs)")) {
-                while (rs.next()) {
-                    have.add(rs.getString("name"));
-                }
-            }
-            for (String[] col : Schema.ADDED_RUN_COLUMNS) {
-                if (!have.contains(col[0])) {
-                    s.execute("ALTER TABLE runs ADD COLUMN " + col[0] + " " + col[1]); // an older store: migrate
-                }
-            }
-            for (String fill : Schema.FILL_ENGINES) {
-                s.execute(fill);
-            }
-            s.execute("PRAGMA user_version = " + Schema.VERSION);
-            c.commit();
-        } catch (SQLException e) {
-            c.close();
-            throw e;
-        }
-        return new RunRecorder(abs, c);
+    /**
+     * Opens (creating when absent) the store at {@code dbFile} to write, holding its lock until closed.
+     *
+     * @param option the option that named the file, for messages ({@code --db}); null when positional
+     * @throws org.jmclbench.tooling.cli.BadUsageException when the file is not a store this tool writes
+     */
+    public static RunRecorder open(Path dbFile, String option) {
+        return new RunRecorder(ResultsDatabase.openToWrite(dbFile, option));
     }
 
     public Path dbFile() {
-        return dbFile;
+        return db.file();
     }
 
     /** The folder holding the database; run folders are relative to it. */
     public Path baseDir() {
-        return dbFile.getParent();
+        return db.baseDir();
     }
 
     /** Where the raw folder of run {@code runKey} goes. */
@@ -93,33 +59,17 @@ public final class RunRecorder implements AutoCloseable {
 
     /** Inserts or refreshes this machine with its latest doctor report. */
     public void saveMachine(MachineInfo m, String doctorJson) throws SQLException {
-        try (PreparedStatement ps = conn.prepareStatement(
-                "INSERT OR REPLACE INTO machines (machine_id, hostname, kernel, cpu_model, processors, doctor_json) VALUES (?,?,?,?,?,?)")) {
-            ps.setString(1, m.machineId());
-            ps.setString(2, m.hostname());
-            ps.setString(3, m.kernel());
-            ps.setString(4, m.cpuModel());
-            ps.setInt(5, m.processors());
-            ps.setString(6, doctorJson);
-            ps.executeUpdate();
-        }
-        conn.commit();
+        inTransaction(() -> batch("INSERT OR REPLACE INTO machines (machine_id, hostname, kernel, cpu_model, processors,"
+                + " doctor_json) VALUES (?,?,?,?,?,?)", List.of(m), x -> new Object[] {x.machineId(), x.hostname(), x.kernel(),
+                x.cpuModel(), x.processors(), doctorJson}));
     }
 
     /** Records one invocation of matrix/quick. */
     public void saveMatrix(String matrixId, String machineId, String command, long orderSeed, String startedAt,
                            String specJson) throws SQLException {
-        try (PreparedStatement ps = conn.prepareStatement(
-                "INSERT INTO matrices (matrix_id, machine_id, command, order_seed, started_at, spec_json) VALUES (?,?,?,?,?,?)")) {
-            ps.setString(1, matrixId);
-            ps.setString(2, machineId);
-            ps.setString(3, command);
-            ps.setLong(4, orderSeed);
-            ps.setString(5, startedAt);
-            ps.setString(6, specJson);
-            ps.executeUpdate();
-        }
-        conn.commit();
+        Object[] row = {matrixId, machineId, command, orderSeed, startedAt, specJson};
+        inTransaction(() -> batch("INSERT INTO matrices (matrix_id, machine_id, command, order_seed, started_at, spec_json)"
+                + " VALUES (?,?,?,?,?,?)", List.<Object[]>of(row), x -> x));
     }
 
     /** The status of every run in the store, by run key. */
@@ -133,110 +83,70 @@ public final class RunRecorder implements AutoCloseable {
         return m;
     }
 
-    /** Writes a run and everything derived from it in one transaction, replacing an earlier row of the same key. */
+    /**
+     * Writes a run and everything derived from it in one transaction, replacing an earlier row of the
+     * same key; when any write fails the transaction is rolled back and the store is as it was.
+     */
     public void saveRun(RunRow r, RunDetails data) throws SQLException {
+        String key = r.runKey();
+        inTransaction(() -> {
+            for (String t : Schema.RUN_TABLES) {
+                batch("DELETE FROM " + t + " WHERE run_key = ?", List.of(key), k -> new Object[] {k});
+            }
+            batch("INSERT INTO runs (run_key, matrix_id, machine_id, runtime, runtime_version, profile, policy, particles,"
+                    + " dataset, load, repetition, status, exit_code, failure, stderr_tail, started_at, ended_at, wall_s, run_dir,"
+                    + " summary_json, seed, command_json, engine, memory) VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
+                    List.of(r), x -> new Object[] {x.runKey(), x.matrixId(), x.machineId(), x.runtime(), x.runtimeVersion(),
+                        x.profile(), x.policy(), x.particles(), x.dataset(), x.load(), x.repetition(), x.status(), x.exitCode(),
+                        x.failure(), x.stderrTail(), x.startedAt(), x.endedAt(), x.wallS(), x.runDir(), x.summaryJson(), x.seed(),
+                        x.commandJson(), x.engine(), x.memory()});
+            batch("INSERT INTO memory_areas (run_key, name, size, peak_bytes, bytes_per_release) VALUES (?,?,?,?,?)",
+                    data.areas, a -> new Object[] {key, a.name(), a.size(), a.peakBytes(), a.bytesPerRelease()});
+            batch("INSERT INTO metrics (run_key, task, metric, stat, value) VALUES (?,?,?,?,?)",
+                    data.metrics, m -> new Object[] {key, m.task(), m.metric(), m.stat(), m.value()});
+            batch("INSERT INTO histograms (run_key, task, metric, hdr) VALUES (?,?,?,?)",
+                    data.histograms, h -> new Object[] {key, h.task(), h.metric(), h.base64()});
+            batch("INSERT INTO series (run_key, name, json) VALUES (?,?,?)",
+                    data.series, x -> new Object[] {key, x.name(), x.json()});
+            AttributionStore.insertRows(conn, key, data.attributions);
+        });
+    }
+
+    /** Statements of one transaction. */
+    private interface Work {
+        void run() throws SQLException;
+    }
+
+    /** Runs {@code work} and commits, or rolls it all back when any of it fails. */
+    private void inTransaction(Work work) throws SQLException {
         try {
-            deleteRun(r.runKey());
-            try (PreparedStatement ps = conn.prepareStatement("INSERT INTO runs (run_key, matrix_id, machine_id, runtime,"
-                    + " runtime_version, profile, policy, particles, dataset, load, repetition, status, exit_code, failure,"
-                    + " stderr_tail, started_at, ended_at, wall_s, run_dir, summary_json, seed, command_json, engine, memory)"
-                    + " VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)")) {
-                int i = 1;
-                ps.setString(i++, r.runKey());
-                ps.setString(i++, r.matrixId());
-                ps.setString(i++, r.machineId());
-                ps.setString(i++, r.runtime());
-                ps.setString(i++, r.runtimeVersion());
-                ps.setString(i++, r.profile());
-                ps.setString(i++, r.policy());
-                ps.setInt(i++, r.particles());
-                ps.setString(i++, r.dataset());
-                ps.setString(i++, r.load());
-                ps.setInt(i++, r.repetition());
-                ps.setString(i++, r.status());
-                if (r.exitCode() == null) {
-                    ps.setNull(i++, Types.INTEGER);
-                } else {
-                    ps.setInt(i++, r.exitCode());
-                }
-                ps.setString(i++, r.failure());
-                ps.setString(i++, r.stderrTail());
-                ps.setString(i++, r.startedAt());
-                ps.setString(i++, r.endedAt());
-                if (r.wallS() == null) {
-                    ps.setNull(i++, Types.REAL);
-                } else {
-                    ps.setDouble(i++, r.wallS());
-                }
-                ps.setString(i++, r.runDir());
-                ps.setString(i++, r.summaryJson());
-                ps.setLong(i++, r.seed());
-                ps.setString(i++, r.commandJson());
-                ps.setString(i++, r.engine());
-                ps.setString(i, r.memory());
-                ps.executeUpdate();
-            }
-            try (PreparedStatement ps = conn.prepareStatement(
-                    "INSERT INTO memory_areas (run_key, name, size, peak_bytes, bytes_per_release) VALUES (?,?,?,?,?)")) {
-                for (MemoryAreaRow a : data.areas) {
-                    ps.setString(1, r.runKey());
-                    ps.setString(2, a.name());
-                    ps.setObject(3, a.size(), Types.INTEGER);
-                    ps.setObject(4, a.peakBytes(), Types.INTEGER);
-                    ps.setObject(5, a.bytesPerRelease(), Types.REAL);
-                    ps.addBatch();
-                }
-                ps.executeBatch();
-            }
-            try (PreparedStatement ps = conn.prepareStatement("INSERT INTO metrics (run_key, task, metric, stat, value) VALUES (?,?,?,?,?)")) {
-                for (RunDetails.Metric m : data.metrics) {
-                    ps.setString(1, r.runKey());
-                    ps.setString(2, m.task());
-                    ps.setString(3, m.metric());
-                    ps.setString(4, m.stat());
-                    ps.setDouble(5, m.value());
-                    ps.addBatch();
-                }
-                ps.executeBatch();
-            }
-            try (PreparedStatement ps = conn.prepareStatement("INSERT INTO histograms (run_key, task, metric, hdr) VALUES (?,?,?,?)")) {
-                for (RunDetails.Hdr h : data.histograms) {
-                    ps.setString(1, r.runKey());
-                    ps.setString(2, h.task());
-                    ps.setString(3, h.metric());
-                    ps.setString(4, h.base64());
-                    ps.addBatch();
-                }
-                ps.executeBatch();
-            }
-            try (PreparedStatement ps = conn.prepareStatement("INSERT INTO series (run_key, name, json) VALUES (?,?,?)")) {
-                for (RunDetails.Series s : data.series) {
-                    ps.setString(1, r.runKey());
-                    ps.setString(2, s.name());
-                    ps.setString(3, s.json());
-                    ps.addBatch();
-                }
-                ps.executeBatch();
-            }
-            AttributionStore.insertRows(conn, r.runKey(), data.attributions);
+            work.run();
             conn.commit();
-        } catch (SQLException e) {
+        } catch (SQLException | RuntimeException e) {
             conn.rollback();
             throw e;
         }
     }
 
-    private void deleteRun(String runKey) throws SQLException {
-        for (String t : Schema.RUN_TABLES) {
-            try (PreparedStatement ps = conn.prepareStatement("DELETE FROM " + t + " WHERE run_key = ?")) {
-                ps.setString(1, runKey);
-                ps.executeUpdate();
+    /** Executes {@code sql} once per row, with the row's parameters in order (null for NULL), as one batch. */
+    private <T> void batch(String sql, List<T> rows, Function<T, Object[]> params) throws SQLException {
+        if (rows.isEmpty()) {
+            return;
+        }
+        try (PreparedStatement ps = conn.prepareStatement(sql)) {
+            for (T row : rows) {
+                Object[] p = params.apply(row);
+                for (int i = 0; i < p.length; i++) {
+                    ps.setObject(i + 1, p[i]);
+                }
+                ps.addBatch();
             }
+            ps.executeBatch();
         }
     }
 
     @Override
     public void close() throws SQLException {
-        conn.close();
+        db.close();
     }
 }

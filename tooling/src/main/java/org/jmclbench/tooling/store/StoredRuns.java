@@ -1,10 +1,8 @@
 package org.jmclbench.tooling.store;
 
 import java.nio.ByteBuffer;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.sql.Connection;
-import java.sql.DriverManager;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
@@ -19,7 +17,6 @@ import java.util.zip.DataFormatException;
 
 import org.HdrHistogram.Histogram;
 import org.jmclbench.tooling.cli.BadUsageException;
-import org.sqlite.SQLiteConfig;
 
 /**
  * Read-only view of the results database (docs/FORMATS.md section 5) for the report and
@@ -28,33 +25,21 @@ import org.sqlite.SQLiteConfig;
 public final class StoredRuns implements AutoCloseable {
 
     private final Path file;
-    private final Connection db;
+    private final ResultsDatabase database;
+    private final Connection conn;
 
-    private StoredRuns(Path file, Connection db) {
+    private StoredRuns(Path file, ResultsDatabase database) {
         this.file = file;
-        this.db = db;
+        this.database = database;
+        this.conn = database.connection();
     }
 
-    /** Opens {@code file} read-only; a missing or unreadable database is bad input. */
+    /**
+     * Opens {@code file} read-only ({@link ResultsDatabase#openToRead}); a missing, foreign, corrupt or
+     * newer database is bad input.
+     */
     public static StoredRuns open(Path file, String option) throws BadUsageException {
-        if (!Files.isRegularFile(file)) {
-            throw new BadUsageException(option + ": " + file + ": no such database");
-        }
-        SQLiteConfig config = new SQLiteConfig();
-        config.setReadOnly(true);
-        try {
-            Connection c = DriverManager.getConnection("jdbc:sqlite:" + file.toAbsolutePath(), config.toProperties());
-            try (Statement st = c.createStatement();
-                 ResultSet rs = st.executeQuery("SELECT count(*) FROM sqlite_master WHERE type='table' AND name='runs'")) {
-                if (!rs.next() || rs.getInt(1) == 0) {
-                    c.close();
-                    throw new BadUsageException(option + ": " + file + ": not a jmclbench results database (no runs table)");
-                }
-            }
-            return new StoredRuns(file, c);
-        } catch (SQLException e) {
-            throw new BadUsageException(option + ": " + file + ": cannot read the database: " + oneLine(e.getMessage()));
-        }
+        return new StoredRuns(file, ResultsDatabase.openToRead(file, option));
     }
 
     public Path file() {
@@ -74,7 +59,7 @@ public final class StoredRuns implements AutoCloseable {
                 + " repetition, status, exit_code, failure, stderr_tail, started_at, wall_s, run_dir, summary_json,"
                 + (engineColumns ? " engine, memory" : " NULL, NULL") + " FROM runs"
                 + " ORDER BY dataset, policy, particles, runtime, profile, 20, 21, repetition, started_at, run_key";
-        try (Statement st = db.createStatement(); ResultSet rs = st.executeQuery(sql)) {
+        try (Statement st = conn.createStatement(); ResultSet rs = st.executeQuery(sql)) {
             while (rs.next()) {
                 StoredRun r = new StoredRun();
                 r.runKey = rs.getString(1);
@@ -135,7 +120,7 @@ public final class StoredRuns implements AutoCloseable {
                 }
             }
         } catch (SQLException e) {
-            throw new IllegalStateException(file + ": " + oneLine(e.getMessage()), e);
+            throw new IllegalStateException(file + ": " + ResultsDatabase.oneLine(e.getMessage()), e);
         }
         List<StoredRun> out = new ArrayList<>(byKey.values());
         StoredRun.labelEngines(out);
@@ -152,7 +137,7 @@ public final class StoredRuns implements AutoCloseable {
     }
 
     private boolean hasColumn(String table, String column) {
-        try (PreparedStatement ps = db.prepareStatement("SELECT count(*) FROM pragma_table_info(?) WHERE name = ?")) {
+        try (PreparedStatement ps = conn.prepareStatement("SELECT count(*) FROM pragma_table_info(?) WHERE name = ?")) {
             ps.setString(1, table);
             ps.setString(2, column);
             try (ResultSet rs = ps.executeQuery()) {
@@ -169,7 +154,7 @@ public final class StoredRuns implements AutoCloseable {
         if (!hasTable("machines")) {
             return out;
         }
-        try (Statement st = db.createStatement();
+        try (Statement st = conn.createStatement();
              ResultSet rs = st.executeQuery("SELECT machine_id, hostname, kernel, cpu_model, processors, doctor_json FROM machines ORDER BY machine_id")) {
             while (rs.next()) {
                 int p = rs.getInt(5);
@@ -178,7 +163,7 @@ public final class StoredRuns implements AutoCloseable {
                         processors, rs.getString(6)));
             }
         } catch (SQLException e) {
-            throw new IllegalStateException(file + ": " + oneLine(e.getMessage()), e);
+            throw new IllegalStateException(file + ": " + ResultsDatabase.oneLine(e.getMessage()), e);
         }
         return out;
     }
@@ -189,7 +174,7 @@ public final class StoredRuns implements AutoCloseable {
         if (!hasTable("histograms")) {
             return out;
         }
-        try (PreparedStatement ps = db.prepareStatement("SELECT hdr FROM histograms WHERE run_key = ? AND task = ? AND metric = ?")) {
+        try (PreparedStatement ps = conn.prepareStatement("SELECT hdr FROM histograms WHERE run_key = ? AND task = ? AND metric = ?")) {
             for (String key : runKeys) {
                 ps.setString(1, key);
                 ps.setString(2, task);
@@ -204,7 +189,7 @@ public final class StoredRuns implements AutoCloseable {
                 }
             }
         } catch (SQLException e) {
-            throw new IllegalStateException(file + ": " + oneLine(e.getMessage()), e);
+            throw new IllegalStateException(file + ": " + ResultsDatabase.oneLine(e.getMessage()), e);
         }
         return out;
     }
@@ -224,14 +209,14 @@ public final class StoredRuns implements AutoCloseable {
         if (!hasTable("series")) {
             return null;
         }
-        try (PreparedStatement ps = db.prepareStatement("SELECT json FROM series WHERE run_key = ? AND name = ?")) {
+        try (PreparedStatement ps = conn.prepareStatement("SELECT json FROM series WHERE run_key = ? AND name = ?")) {
             ps.setString(1, runKey);
             ps.setString(2, name);
             try (ResultSet rs = ps.executeQuery()) {
                 return rs.next() ? rs.getString(1) : null;
             }
         } catch (SQLException e) {
-            throw new IllegalStateException(file + ": " + oneLine(e.getMessage()), e);
+            throw new IllegalStateException(file + ": " + ResultsDatabase.oneLine(e.getMessage()), e);
         }
     }
 
@@ -239,7 +224,7 @@ public final class StoredRuns implements AutoCloseable {
 
     private boolean hasTable(String name) {
         return tables.computeIfAbsent(name, n -> {
-            try (PreparedStatement ps = db.prepareStatement("SELECT count(*) FROM sqlite_master WHERE type='table' AND name=?")) {
+            try (PreparedStatement ps = conn.prepareStatement("SELECT count(*) FROM sqlite_master WHERE type='table' AND name=?")) {
                 ps.setString(1, n);
                 try (ResultSet rs = ps.executeQuery()) {
                     return rs.next() && rs.getInt(1) > 0;
@@ -254,14 +239,10 @@ public final class StoredRuns implements AutoCloseable {
         return s == null ? dflt : s;
     }
 
-    public static String oneLine(String s) {
-        return s == null ? "" : s.replaceAll("\\s+", " ").trim();
-    }
-
     @Override
     public void close() {
         try {
-            db.close();
+            database.close();
         } catch (SQLException e) {
             // read-only: nothing to lose
         }

@@ -9,7 +9,6 @@ import java.sql.Connection;
 import java.sql.DriverManager;
 import java.sql.ResultSet;
 import java.sql.Statement;
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -33,14 +32,11 @@ class KillResumeTest {
     void aMatrixKilledMidWayResumesWithEveryRunOnce() throws Exception {
         Fixtures.home(dir);
         Path db = dir.resolve("out/results.db");
-        List<String> cmd = new ArrayList<>(List.of(
-                ProcessHandle.current().info().command().orElse("java"),
-                "-Djmclbench.home=" + dir, "-Djmclbench.cache=" + dir.resolve("cache"),
-                "-cp", System.getProperty("java.class.path"), "org.jmclbench.tooling.cli.JmclbenchCli",
+        List<String> cmd = Fixtures.childCli(dir,
                 "matrix", "--java", Fixtures.fakeJava(dir, "a", "ok", 1.0, null, 17).toString(),
                 "--java", Fixtures.fakeJava(dir, "b", "ok", 1.0, null, 21).toString(),
                 "--policies", "skip,terminate", "--particles", "100,200,300", "--datasets", "tiny",
-                "--db", db.toString()));
+                "--db", db.toString());
         Path log1 = dir.resolve("first.log");
         Process first = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log1.toFile()).start();
         // wait (generously: the machine is shared) until a few runs are committed, then kill -9

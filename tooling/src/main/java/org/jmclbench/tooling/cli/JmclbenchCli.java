@@ -57,6 +57,9 @@ public final class JmclbenchCli implements Callable<Integer> {
                 System.err.println("jmclbench: " + ex.getMessage());
                 return EXIT_BAD_INPUT;
             }
+            if (ex instanceof java.io.UncheckedIOException u) {
+                ex = u.getCause();
+            }
             if (ex instanceof java.io.IOException || ex instanceof java.sql.SQLException) {
                 // the machine failed the command (a full disk, a lost file): one line, not a stack trace
                 String message = String.valueOf(ex.getMessage()).replaceAll("\\s+", " ").strip();

@@ -1,6 +1,7 @@
 package org.jmclbench.tooling.store;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.channels.FileChannel;
 import java.nio.channels.FileLock;
 import java.nio.channels.OverlappingFileLockException;
@@ -17,6 +18,7 @@ import java.util.Set;
 
 import org.jmclbench.tooling.cli.BadUsageException;
 import org.sqlite.SQLiteConfig;
+import org.sqlite.SQLiteJDBCLoader;
 
 /**
  * The one way a results database (docs/FORMATS.md section 5) is opened, to read it (report,
@@ -109,10 +111,25 @@ public final class ResultsDatabase implements AutoCloseable {
     }
 
     private static Connection connect(Path abs, SQLiteConfig config, String where, String refusal) {
+        loadSqlite();
         try {
             return DriverManager.getConnection("jdbc:sqlite:" + abs, config.toProperties());
         } catch (SQLException e) {
             throw new BadUsageException(where + refusal + " (" + oneLine(e.getMessage()) + ")");
+        }
+    }
+
+    /**
+     * Loads SQLite's native library, which the driver first copies to the temporary folder: on a full disk
+     * that fails, and the failure is the machine's (exit 1), not the database file's (bad input).
+     */
+    private static void loadSqlite() {
+        try {
+            SQLiteJDBCLoader.initialize();
+        } catch (Exception | LinkageError e) {
+            throw new UncheckedIOException(new IOException("cannot load SQLite's native library (copied to "
+                    + System.getProperty("org.sqlite.tmpdir", System.getProperty("java.io.tmpdir")) + "; is that disk full?): "
+                    + oneLine(e.getMessage()), e));
         }
     }
 

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
+import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.ProfileComponent;
 import org.jmclbench.tooling.runtime.RuntimeInfo;
@@ -32,10 +33,10 @@ public final class WorkloadCommand {
         RuntimeInfo rt = run.runtime();
         cmd.add(rt.path().toString());
         if (rt.kind() == RuntimeInfo.Kind.HVM) {
-            // the workload on this JVM validates, builds and drives the HVM executable
+            // the HVM launcher on this JVM validates, builds and drives the HVM executable
             cmd.add("-Djmclbench.home=" + home);
             cmd.add("-cp");
-            cmd.add(jar.toString());
+            cmd.add(JmclbenchPaths.hvmLauncherClassPath());
             cmd.add(MAIN_CLASS);
         } else if (rt.isJvm()) {
             cmd.addAll(plan.jvmFlags());

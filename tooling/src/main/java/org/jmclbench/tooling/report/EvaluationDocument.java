@@ -49,7 +49,7 @@ public final class EvaluationDocument {
         this.figures = figures;
         Path base = document.toAbsolutePath().getParent();
         this.figureLink = base.relativize(figures.toAbsolutePath()).toString().replace('\\', '/');
-        this.charts = new ChartExporter(model, figures);
+        this.charts = new ChartExporter(figures);
         this.cuts = cuts;
         this.verificationFile = verificationFile;
         this.verification = verificationFile != null && Files.isRegularFile(verificationFile)
@@ -234,8 +234,7 @@ public final class EvaluationDocument {
         boolean hvmLeftOut = sweep.stream().anyMatch(this::isHvm);
         figure("misses-skip", "Figure 1: deadline misses per run vs particles, policy skip, 95% CI error bars"
                         + (hvmLeftOut ? "; the HVM's rows are in Table 1 only (its scale would hide the others)." : "."),
-                () -> charts.evaluationMisses("misses-skip", "Deadline misses vs particles (" + dataset + ", skip)",
-                        drawn.isEmpty() ? sweep : drawn));
+                () -> charts.write(ChartSpecs.misses(scope(null, drawn.isEmpty() ? sweep : drawn)).withStem("misses-skip")));
         int heaviest = counts.get(counts.size() - 1);
         List<ReportModel.Cell> at = compared.stream().map(c -> cell(sweep, c, heaviest).orElse(null)).filter(Objects::nonNull)
                 .filter(c -> mean(c, Metric.MISS_COUNT) != null).sorted(Comparator.comparingDouble((ReportModel.Cell c) -> mean(c, Metric.MISS_COUNT))
@@ -309,7 +308,7 @@ public final class EvaluationDocument {
         }
         table(List.of("configuration", "latency mean", "latency p99", "latency max", "jitter mean", "jitter p99", "latency / C"), rows);
         figure("spectrum-skip-" + ref, "Figure 2: task latency by percentile (all jobs of all repetitions, log scales), "
-                + ref + " particles, policy skip.", () -> charts.evaluationSpectrum("spectrum-skip-" + ref, dataset + ", skip, " + ref + " particles", at));
+                + ref + " particles, policy skip.", () -> charts.write(ChartSpecs.spectrum(scope(ref, at)).withStem("spectrum-skip-" + ref)));
         List<ReportModel.Cell> jvms = at.stream().filter(c -> !isNative(c) && mean(c, Metric.LATENCY_P99) != null)
                 .sorted(Comparator.comparingDouble(c -> mean(c, Metric.LATENCY_P99))).toList();
         if (!jvms.isEmpty()) {
@@ -371,8 +370,8 @@ public final class EvaluationDocument {
         line("");
         table(List.of("configuration", "sustained particles", "first count with a miss"), rows);
         figure("sustainable-load", "Figure 3: the largest particle count sustained with no miss, per configuration.",
-                () -> charts.evaluationSustainable("sustainable-load", "Largest particle count with no deadline miss ("
-                        + dataset + ", skip, " + PERIOD + " period)", loads));
+                () -> charts.write(ChartSpecs.sustained(scope(null, sweep()), "sustainable-load",
+                        "Largest particle count with no deadline miss (" + dataset + ", skip, " + PERIOD + " period)", loads)));
         int most = loads.values().stream().max(Integer::compare).orElseThrow();
         String top = loads.entrySet().stream().filter(e -> e.getValue() == most).map(e -> "**" + e.getKey() + "**")
                 .collect(Collectors.joining(", "));
@@ -511,7 +510,7 @@ public final class EvaluationDocument {
                 .orElseThrow();
         List<ReportModel.Cell> fig = exp.stream().filter(c -> c.particles == shown).toList();
         figure("memory-" + shown, "Figure 4: peak bytes per memory area, " + shown + " particles (log scale).",
-                () -> charts.evaluationMemory("memory-" + shown, dataset + ", skip, " + shown + " particles", fig));
+                () -> charts.write(ChartSpecs.memory(scope(shown, fig)).withStem("memory-" + shown)));
         ReportModel.Cell best = fig.stream().filter(c -> mean(c, Metric.LATENCY_P99) != null)
                 .min(Comparator.comparingDouble(c -> mean(c, Metric.LATENCY_P99))).orElse(null);
         if (best != null) {
@@ -604,7 +603,7 @@ public final class EvaluationDocument {
         line("");
         table(header, rows);
         figure("causes-skip-" + count, "Figure 5: missed or late jobs per run by primary cause, " + count + " particles.",
-                () -> charts.evaluationCauses("causes-skip-" + count, dataset + ", skip, " + count + " particles", at));
+                () -> charts.write(ChartSpecs.causes(scope(count, at)).withStem("causes-skip-" + count)));
         line("The largest primary cause per configuration (Table 9):");
         line("");
         Map<String, Integer> dominant = new LinkedHashMap<>();
@@ -777,6 +776,11 @@ public final class EvaluationDocument {
         line("");
     }
 
+    /** What a figure is drawn from: cells of the dataset under skip, at one particle count or (null) over the sweep. */
+    private ChartSpecs.Scope scope(Integer particles, List<ReportModel.Cell> cells) {
+        return new ChartSpecs.Scope(model, new ChartSpec.Setting(dataset, "skip", particles), cells);
+    }
+
     private List<ReportModel.Cell> cells(Predicate<ReportModel.Cell> p) {
         return model.cells.stream().filter(c -> c.dataset.equals(dataset)).filter(p).toList();
     }
@@ -797,7 +801,7 @@ public final class EvaluationDocument {
 
     private int configRank(String config) {
         ReportModel.ConfigInfo i = model.configs.stream().filter(c -> c.id().equals(config)).findFirst().orElse(null);
-        return i != null && i.nativeBaseline() ? 0 : 1;
+        return i != null && i.kind() == RuntimeKind.NATIVE ? 0 : 1;
     }
 
     private ReportModel.ConfigInfo info(ReportModel.Cell c) {
@@ -805,12 +809,11 @@ public final class EvaluationDocument {
     }
 
     private boolean isNative(ReportModel.Cell c) {
-        return info(c).nativeBaseline() && !isHvm(c);
+        return info(c).kind() == RuntimeKind.NATIVE;
     }
 
     private boolean isHvm(ReportModel.Cell c) {
-        String r = info(c).runtime();
-        return r.equals("hvm") || r.startsWith("hvm-") || "hvm".equals(c.engine);
+        return info(c).kind() == RuntimeKind.HVM;
     }
 
     private static boolean sameJvm(ReportModel.ConfigInfo a, ReportModel.ConfigInfo b) {
@@ -869,9 +872,7 @@ public final class EvaluationDocument {
         if (b == null) {
             return "?";
         }
-        StringBuffer sb = new StringBuffer();
-        new ChartExporter.ByteFormat().format(b.doubleValue(), sb, new java.text.FieldPosition(0));
-        return sb.toString();
+        return ChartFormats.bytes(b);
     }
 
     private static String first(JsonNode n, String... keys) {

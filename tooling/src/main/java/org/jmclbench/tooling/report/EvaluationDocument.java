@@ -15,6 +15,7 @@ import java.util.TreeSet;
 import java.util.function.Predicate;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.store.StoredRuns;
 

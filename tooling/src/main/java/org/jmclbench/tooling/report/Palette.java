@@ -1,5 +1,7 @@
 package org.jmclbench.tooling.report;
 
+import org.jmclbench.tooling.runtime.RuntimeKind;
+
 import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;

@@ -14,6 +14,7 @@ import java.util.TreeSet;
 import java.util.function.Consumer;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.store.MemoryAreaRow;
 import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
@@ -328,12 +329,17 @@ public final class ReportModel {
         return out;
     }
 
+    /** The kind of a stored run, from its runtime, engine and summary. */
+    static RuntimeKind kindOf(StoredRun run) {
+        return RuntimeKind.of(run.runtime, run.engine, Metric.summaryOf(run));
+    }
+
     private static List<ConfigInfo> configs(List<StoredRun> runs) {
         Map<String, List<StoredRun>> byConfig = new LinkedHashMap<>();
         runs.stream().sorted(Comparator.comparing(StoredRun::configOnMachine))
                 .forEach(r -> byConfig.computeIfAbsent(r.configOnMachine(), k -> new ArrayList<>()).add(r));
         Map<String, RuntimeKind> kinds = new LinkedHashMap<>();
-        byConfig.forEach((id, rs) -> kinds.put(id, RuntimeKind.of(rs.stream().filter(StoredRun::ok).findFirst().orElse(rs.get(0)))));
+        byConfig.forEach((id, rs) -> kinds.put(id, kindOf(rs.stream().filter(StoredRun::ok).findFirst().orElse(rs.get(0)))));
         Map<String, String> colors = Palette.runtimes(kinds);
         List<ConfigInfo> out = new ArrayList<>();
         for (Map.Entry<String, List<StoredRun>> e : byConfig.entrySet()) {

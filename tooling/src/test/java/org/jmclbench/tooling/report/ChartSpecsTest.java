@@ -1,5 +1,6 @@
 package org.jmclbench.tooling.report;
 
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.store.StoredRuns;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

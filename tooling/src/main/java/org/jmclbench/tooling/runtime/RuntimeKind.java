@@ -1,8 +1,6 @@
-package org.jmclbench.tooling.report;
+package org.jmclbench.tooling.runtime;
 
 import java.util.Locale;
-
-import org.jmclbench.tooling.store.StoredRun;
 
 import com.fasterxml.jackson.databind.JsonNode;
 
@@ -42,10 +40,5 @@ public enum RuntimeKind {
             return NATIVE;
         }
         return JVM;
-    }
-
-    /** The kind of a stored run. */
-    public static RuntimeKind of(StoredRun run) {
-        return of(run.runtime, run.engine, Metric.summaryOf(run));
     }
 }

@@ -2,12 +2,10 @@ package org.jmclbench.verification.jpf;
 
 import gov.nasa.jpf.Config;
 import gov.nasa.jpf.JPF;
-import gov.nasa.jpf.PropertyListenerAdapter;
 import gov.nasa.jpf.jvm.bytecode.AASTORE;
 import gov.nasa.jpf.jvm.bytecode.LDC;
 import gov.nasa.jpf.jvm.bytecode.PUTFIELD;
 import gov.nasa.jpf.jvm.bytecode.PUTSTATIC;
-import gov.nasa.jpf.search.Search;
 import gov.nasa.jpf.vm.ElementInfo;
 import gov.nasa.jpf.vm.FieldInfo;
 import gov.nasa.jpf.vm.Instruction;
@@ -19,9 +17,7 @@ import gov.nasa.jpf.vm.VM;
 import gov.nasa.jpf.vm.bytecode.FieldInstruction;
 import org.jmclbench.rtsjcompat.Area;
 import org.jmclbench.rtsjcompat.ScjThread;
-import org.jmclbench.verification.Property;
 
-import java.util.List;
 
 /**
  * P6, the SCJ reference rule: no object stores a reference to an object of a shorter-lived
@@ -39,7 +35,7 @@ import java.util.List;
  * violations are known findings, reported elsewhere and not flagged again. The tag is a JPF
  * object attribute, so it backtracks with the heap.
  */
-public final class AreaReferenceListener extends PropertyListenerAdapter implements LocatedProperty {
+public final class AreaReferenceListener extends MemoryRuleListener {
 
     /** The area an object was allocated in (the heap reference of its {@code Area}), and by which method. */
     static final class AreaTag {
@@ -55,8 +51,6 @@ public final class AreaReferenceListener extends PropertyListenerAdapter impleme
     private final String[] exempt;
     private final String[] known;
     private final boolean emptied;
-    private String violation;
-    private String location;
 
     public AreaReferenceListener(Config config, JPF jpf) {
         this.exempt = config.getStringArray("jmclbench.areas.exempt",
@@ -247,30 +241,4 @@ public final class AreaReferenceListener extends PropertyListenerAdapter impleme
         ElementInfo a = vm.getHeap().get(area);
         return a.getStringField(Area.NAME_FIELD) + " (" + Area.kindName(a.getIntField(Area.KIND_FIELD)) + ")";
     }
-
-    @Override
-    public boolean check(Search search, VM vm) {
-        return violation == null;
-    }
-
-    @Override
-    public String getErrorMessage() {
-        return violation;
-    }
-
-    @Override
-    public Property property() {
-        return Property.P6;
-    }
-
-    @Override
-    public List<String> locations() {
-        return violation == null ? List.of() : List.of(location);
-    }
-
-    @Override
-    public void reset() {
-        violation = null;
-    }
 }
-

@@ -2,17 +2,13 @@ package org.jmclbench.verification.jpf;
 
 import gov.nasa.jpf.Config;
 import gov.nasa.jpf.JPF;
-import gov.nasa.jpf.PropertyListenerAdapter;
 import gov.nasa.jpf.jvm.bytecode.LDC;
-import gov.nasa.jpf.search.Search;
 import gov.nasa.jpf.vm.ElementInfo;
 import gov.nasa.jpf.vm.MethodInfo;
 import gov.nasa.jpf.vm.StackFrame;
 import gov.nasa.jpf.vm.ThreadInfo;
 import gov.nasa.jpf.vm.VM;
-import org.jmclbench.verification.Property;
 
-import java.util.List;
 
 /**
  * P6, preallocated style: no object is created while a release runs, i.e. while a
@@ -26,11 +22,9 @@ import java.util.List;
  * {@code jmclbench.release.classes}, class-name prefixes of the handlers whose releases must not
  * allocate (default: every class).
  */
-public final class ReleaseAllocationListener extends PropertyListenerAdapter implements LocatedProperty {
+public final class ReleaseAllocationListener extends MemoryRuleListener {
     private final String method;
     private final String[] classes;
-    private String violation;
-    private String location;
 
     public ReleaseAllocationListener(Config config, JPF jpf) {
         this.method = config.getString("jmclbench.release.method", "handleAsyncEvent");
@@ -76,30 +70,5 @@ public final class ReleaseAllocationListener extends PropertyListenerAdapter imp
             }
         }
         return false;
-    }
-
-    @Override
-    public boolean check(Search search, VM vm) {
-        return violation == null;
-    }
-
-    @Override
-    public String getErrorMessage() {
-        return violation;
-    }
-
-    @Override
-    public Property property() {
-        return Property.P6;
-    }
-
-    @Override
-    public List<String> locations() {
-        return violation == null ? List.of() : List.of(location);
-    }
-
-    @Override
-    public void reset() {
-        violation = null;
     }
 }

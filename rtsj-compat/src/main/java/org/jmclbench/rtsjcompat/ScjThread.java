@@ -33,6 +33,9 @@ public class ScjThread extends Thread {
     /** The area receiving this thread's allocations now, or null (nothing is charged). */
     public Area current;
 
+    /** This thread's side of asynchronous transfer of control (RTSJ's AIE; unused by SCJ code). */
+    public final AtcState atc = new AtcState(this);
+
     private final Area[] stack = new Area[MAX_DEPTH];
     private int top = -1;
     private final AllocationMeter meter;

@@ -509,6 +509,92 @@ def write_mcl(out):
         out.write("margin %.3g\nend\n" % f.margin)
 
 
+# ---------------------------------------------------------------- deadline accounting (FORMATS.md section 4)
+
+QUANTILES = [("min", 0), ("p50", 500), ("p90", 900), ("p99", 990), ("p999", 999), ("max", 1000)]
+
+
+def account(jobs, task):
+    """The deadline accounting and the response time over every release of one task ('all': both)."""
+    mine = [j for j in jobs if (task == "all" or j[0] == task) and j[1] != "pending"]
+    n = len(mine)
+    by = {o: sum(1 for j in mine if j[1] == o) for o in ("done", "late", "skipped", "terminated")}
+    misses = by["late"] + by["skipped"] + by["terminated"]
+    finite = sorted(j[4] - j[2] for j in mine
+                    if j[1] in ("done", "late") and j[2] >= 0 and j[3] >= 0 and j[4] >= 0)
+    values = finite + [math.inf] * (n - len(finite))
+    quantiles = []
+    for _, pm in QUANTILES:
+        if n == 0:
+            quantiles.append(None)
+            continue
+        i = min(n - 1, max(0, (pm * n + 999) // 1000 - 1))
+        quantiles.append(values[i])
+    return n, by, misses, (misses / n if n else None), len(finite), quantiles
+
+
+def deadline_cases():
+    """Hand-made edge cases, then seeded random runs: (name, [(task, outcome, release, start, end)])."""
+    cases = [
+        ("empty", []),
+        ("one-predict-done", [("predict", "done", 0, 100, 2100)]),
+        ("all-dropped", [("update", "skipped", 1000 * k, -1, -1) for k in range(3)]),
+        ("aborted-with-and-without-times", [
+            ("predict", "done", 0, 10, 510), ("update", "terminated", 100, 520, 900),
+            ("update", "terminated", 200, -1, -1), ("predict", "late", 300, 900, 60000300),
+            ("update", "done", 400, 60000310, 60000400)]),
+        ("ties-and-pending", [
+            ("predict", "done", 0, 0, 500), ("predict", "done", 1000, 1000, 1500), ("predict", "late", 2000, 2000, 2500),
+            ("update", "done", 3000, 3000, 3500), ("update", "pending", -1, -1, -1), ("predict", "pending", -1, -1, -1)]),
+    ]
+    # cumulative probabilities of done, late, skipped, terminated (with times); the rest terminated before starting
+    for seed, n, cut in ((21, 97, (0.70, 0.82, 0.92, 0.97)), (2026, 1001, (0.90, 0.975, 0.99, 0.995))):
+        r = Rng(seed)
+        jobs = []
+        t = 0
+        for _ in range(n):
+            t += 1 + (r.next() >> 44)
+            task = "predict" if r.uniform() < 0.6 else "update"
+            u = r.uniform()
+            start = t + (r.next() >> 50)
+            end = start + 1 + (r.next() >> 40)
+            if u < cut[0]:
+                jobs.append((task, "done", t, start, end))
+            elif u < cut[1]:
+                jobs.append((task, "late", t, start, end + 50000000))
+            elif u < cut[2]:
+                jobs.append((task, "skipped", t, -1, -1))
+            elif u < cut[3]:
+                jobs.append((task, "terminated", t, start, end))
+            else:
+                jobs.append((task, "terminated", t, -1, -1))
+        cases.append(("random-%d" % seed, jobs))
+    return cases
+
+
+def write_deadlines(out):
+    out.write(HEADER)
+    out.write("# docs/FORMATS.md section 4: deadline accounting and response time over every release, per task.\n"
+              "# case NAME JOBS, then JOBS lines: job TASK OUTCOME RELEASE_NS START_NS END_NS (-1: no such time)\n"
+              "# then for predict, update and all:\n"
+              "#   count TASK released done late skipped terminated deadlineMisses missRatio (double bits, hex, or null)"
+              " missRatio (%.17g, for humans)\n"
+              "#   response TASK count completed min p50 p90 p99 p999 max (ns; inf: not completed; null: nothing released)\n"
+              "# end. Pending jobs were never released and count nowhere. Integers exact, missRatio bit-exact.\n")
+    for name, jobs in deadline_cases():
+        out.write("case %s %d\n" % (name, len(jobs)))
+        for task, outcome, release, start, end in jobs:
+            out.write("job %s %s %d %d %d\n" % (task, outcome, release, start, end))
+        for task in ("predict", "update", "all"):
+            n, by, misses, ratio, completed, quantiles = account(jobs, task)
+            out.write("count %s %d %d %d %d %d %d %s %s\n" % (
+                task, n, by["done"], by["late"], by["skipped"], by["terminated"], misses,
+                "null" if ratio is None else hexd(ratio), "null" if ratio is None else g17(ratio)))
+            out.write("response %s %d %d %s\n" % (task, n, completed, " ".join(
+                "null" if q is None else "inf" if q == math.inf else "%d" % q for q in quantiles)))
+        out.write("end\n")
+
+
 FILES = [
     ("rng.txt", write_rng),
     ("uniform.txt", lambda o: write_doubles(o, "uniform", Rng.uniform, 12,
@@ -520,6 +606,7 @@ FILES = [
     ("likelihood.txt", write_likelihood),
     ("resample.txt", write_resample),
     ("mcl.txt", write_mcl),
+    ("deadlines.txt", write_deadlines),
 ]
 
 

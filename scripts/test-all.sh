@@ -20,6 +20,9 @@ if [ -z "${JAVA_HOME:-}" ] && [ -d "$java17" ]; then export JAVA_HOME=$java17; f
 jpf_home=$("$home/verification/build-jpf.sh")
 mvn -B -ntp -Djpf.home="$jpf_home" verify "$@"
 
+echo "== short fuzz runs of every parser (bench/fuzz.sh; docs/RELIABILITY.md) =="
+"$home/bench/fuzz.sh" --seconds 5
+
 echo "== Ant build of the SCJ variant (build.xml) =="
 ant -q -f "$home/build.xml" clean jars
 if [ -n "${HVM_SRC:-}" ]; then

@@ -1,5 +1,9 @@
-/* Strict readers: a file that is not exactly what FORMATS.md describes is rejected with its line. */
-#include <ctype.h>
+/*
+ * Strict readers of docs/FORMATS.md 1: a file that is not exactly in the grammar written
+ * there is rejected with its line. The Java reader (workload's DatasetReader) implements the
+ * same grammar byte for byte and says the same words; a differential test and a fuzzer hold
+ * the two equal, so keep them in step.
+ */
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -8,72 +12,17 @@
 #include <sys/stat.h>
 
 #include "dataset.h"
-
-/*
- * Whether tok is a plain decimal number, [+-]?(digits[.[digits]] | .digits)[(e|E)[+-]digits]:
- * what %.16e writes and both languages' parsers agree on (no hex, no suffix, no NaN/infinity).
- */
-static int plain_decimal(const char *p)
-{
-	int digits = 0;
-
-	if (*p == '+' || *p == '-')
-		p++;
-	while (isdigit((unsigned char)*p))
-		p++, digits++;
-	if (*p == '.') {
-		p++;
-		while (isdigit((unsigned char)*p))
-			p++, digits++;
-	}
-	if (!digits)
-		return 0;
-	if (*p == 'e' || *p == 'E') {
-		p++;
-		if (*p == '+' || *p == '-')
-			p++;
-		if (!isdigit((unsigned char)*p))
-			return 0;
-		while (isdigit((unsigned char)*p))
-			p++;
-	}
-	return *p == '\0';
-}
-
-/* NaN or infinity in any case and sign: "not a finite number" rather than "not a number". */
-static int names_non_finite(const char *tok)
-{
-	char t[16];
-	size_t n = 0;
-
-	for (; *tok && n < sizeof(t) - 1; tok++)
-		if (*tok != '+' && *tok != '-')
-			t[n++] = (char)tolower((unsigned char)*tok);
-	t[n] = '\0';
-	return !*tok && (!strcmp(t, "nan") || !strcmp(t, "inf") || !strcmp(t, "infinity"));
-}
-
-/* Parses a whole token as a finite double; returns 0, 1 when not a number, 2 when not finite,
- * 3 when it overflows. */
-static int parse_number(const char *tok, double *out)
-{
-	double v;
-
-	if (!plain_decimal(tok))
-		return names_non_finite(tok) ? 2 : 1;
-	v = strtod(tok, NULL);
-	if (!isfinite(v))
-		return 3;
-	*out = v;
-	return 0;
-}
+#include "grammar.h"
 
 static int append_row(jm_series *s, int *cap, const double *row)
 {
 	if (s->n == *cap) {
 		int ncap = *cap ? *cap * 2 : 1024;
-		double *nv = realloc(s->v, sizeof(double) * (size_t)ncap * (size_t)s->cols);
+		double *nv;
 
+		if (ncap < 0)
+			return -1;
+		nv = realloc(s->v, sizeof(double) * (size_t)ncap * (size_t)s->cols);
 		if (!nv)
 			return -1;
 		s->v = nv;
@@ -84,89 +33,154 @@ static int append_row(jm_series *s, int *cap, const double *row)
 	return 0;
 }
 
-int jm_series_read(jm_series *s, const char *path, int cols, char *err, size_t errlen)
+/* The tokens of a record line: start offsets and lengths of at most max, and their count. */
+static int split(const char *line, long len, size_t *start, size_t *tlen, int max)
 {
-	FILE *f;
-	char *line = NULL;
+	long i = 0;
+	int n = 0;
+
+	for (;;) {
+		long b;
+
+		while (i < len && jm_is_blank(line[i]))
+			i++;
+		if (i == len)
+			return n;
+		for (b = i; i < len && !jm_is_blank(line[i]); i++)
+			;
+		if (n < max) {
+			start[n] = (size_t)b;
+			tlen[n] = (size_t)(i - b);
+		}
+		n++;
+	}
+}
+
+/* One record line into row; returns 0 or -1 with err set. */
+static int parse_record(const char *name, int lineno, const char *line, long len, int cols, double *row,
+			char *err, size_t errlen)
+{
+	size_t start[JM_MAX_COLUMNS], tlen[JM_MAX_COLUMNS];
+	char q[4 * JM_QUOTE_MAX + 8];
+	int c, n = split(line, len, start, tlen, cols);
+
+	if (n != cols) {
+		snprintf(err, errlen, "%s:%d: expected %d columns but found %d", name, lineno, cols, n);
+		return -1;
+	}
+	for (c = 0; c < cols; c++) {
+		int r = jm_parse_number(line + start[c], tlen[c], &row[c]);
+
+		if (r != JM_NUM_OK) {
+			snprintf(err, errlen, "%s:%d: %s: '%s'%s", name, lineno, jm_number_problem(r),
+				 jm_quote(q, sizeof(q), line + start[c], tlen[c]), r == JM_NUM_OVERFLOW ? " (overflows)" : "");
+			return -1;
+		}
+	}
+	return 0;
+}
+
+int jm_series_parse(jm_series *s, FILE *f, const char *name, int cols, char *err, size_t errlen)
+{
+	char *line = NULL, q[4 * JM_QUOTE_MAX + 8];
 	size_t linecap = 0;
+	long len;
 	int lineno = 0, cap = 0, ret = -1;
 	double prev = 0.0;
 
 	memset(s, 0, sizeof(*s));
 	s->cols = cols;
-	f = fopen(path, "r");
-	if (!f) {
-		if (errno == ENOENT)
-			snprintf(err, errlen, "%s: no such file", path);
-		else
-			snprintf(err, errlen, "%s: cannot read: %s", path, strerror(errno));
-		return -1;
-	}
-	while (getline(&line, &linecap, f) != -1) {
-		double row[8];
-		char first[48] = "";
-		char *tok, *save = NULL, *p = line;
-		int ncols = 0;
+	while ((len = jm_read_line(f, &line, &linecap)) >= 0) {
+		double row[JM_MAX_COLUMNS];
+		long i = 0;
 
 		lineno++;
-		while (isspace((unsigned char)*p))
-			p++;
-		if (*p == '\0' || *p == '#')
-			continue;
-		for (tok = strtok_r(p, " \t\r\n\v\f", &save); tok; tok = strtok_r(NULL, " \t\r\n\v\f", &save)) {
-			double v = 0.0;
-			int r;
+		while (i < len && jm_is_blank(line[i]))
+			i++;
+		if (i == len || line[i] == '#')
+			continue; /* blank line or comment */
+		if (parse_record(name, lineno, line, len, cols, row, err, errlen))
+			goto out;
+		if (row[0] < 0.0 || (s->n > 0 && row[0] < prev)) {
+			size_t tl;
 
-			ncols++;
-			if (ncols > cols)
-				continue; /* counted for the message below */
-			r = parse_number(tok, &v);
-			if (r == 1) {
-				snprintf(err, errlen, "%s:%d: not a number: '%.40s'", path, lineno, tok);
-				goto out;
-			}
-			if (r >= 2) {
-				snprintf(err, errlen, "%s:%d: not a finite number: '%.40s'%s", path, lineno, tok,
-					 r == 3 ? " (overflows)" : "");
-				goto out;
-			}
-			row[ncols - 1] = v;
-			if (ncols == 1)
-				snprintf(first, sizeof(first), "%s", tok);
-		}
-		if (ncols != cols) {
-			snprintf(err, errlen, "%s:%d: expected %d columns but found %d", path, lineno, cols, ncols);
-			goto out;
-		}
-		if (row[0] < 0.0) {
-			snprintf(err, errlen, "%s:%d: negative time %s", path, lineno, first);
-			goto out;
-		}
-		if (s->n > 0 && row[0] < prev) {
-			snprintf(err, errlen, "%s:%d: time %s is before the previous line's (not sorted by time)",
-				 path, lineno, first);
+			for (tl = 0; i + (long)tl < len && !jm_is_blank(line[i + (long)tl]); tl++)
+				;
+			jm_quote(q, sizeof(q), line + i, tl);
+			if (row[0] < 0.0)
+				snprintf(err, errlen, "%s:%d: negative time %s", name, lineno, q);
+			else
+				snprintf(err, errlen, "%s:%d: time %s is before the previous line's (not sorted by time)",
+					 name, lineno, q);
 			goto out;
 		}
 		prev = row[0];
 		if (append_row(s, &cap, row) < 0) {
-			snprintf(err, errlen, "%s:%d: out of memory", path, lineno);
+			snprintf(err, errlen, "%s:%d: out of memory", name, lineno);
 			goto out;
 		}
 	}
 	if (ferror(f)) {
-		snprintf(err, errlen, "%s: cannot read: %s", path, strerror(errno));
+		snprintf(err, errlen, "%s: cannot read", name);
 		goto out;
 	}
 	if (s->n == 0) {
-		snprintf(err, errlen, "%s: empty file (no data lines)", path);
+		snprintf(err, errlen, "%s: empty file (no data lines)", name);
 		goto out;
 	}
 	ret = 0;
 out:
 	free(line);
-	fclose(f);
 	if (ret < 0)
 		jm_series_free(s);
+	return ret;
+}
+
+/*
+ * Opens a file of a dataset, or says why not in the words both readers use: "no such file"
+ * (nothing there, whatever stat's reason), "is a directory", "not a regular file" (a FIFO
+ * would block the run), "permission denied". Returns NULL with *absent set when nothing is
+ * there, so that an optional file can be skipped.
+ */
+static FILE *open_data(const char *path, int *absent, char *err, size_t errlen)
+{
+	struct stat st;
+	FILE *f;
+
+	*absent = 0;
+	if (stat(path, &st)) {
+		if (errno == EACCES) {
+			snprintf(err, errlen, "%s: permission denied", path);
+			return NULL;
+		}
+		*absent = 1;
+		snprintf(err, errlen, "%s: no such file", path);
+		return NULL;
+	}
+	if (S_ISDIR(st.st_mode)) {
+		snprintf(err, errlen, "%s: is a directory", path);
+		return NULL;
+	}
+	if (!S_ISREG(st.st_mode)) {
+		snprintf(err, errlen, "%s: not a regular file", path);
+		return NULL;
+	}
+	f = fopen(path, "r");
+	if (!f)
+		snprintf(err, errlen, "%s: %s", path, errno == EACCES ? "permission denied" : "cannot read");
+	return f;
+}
+
+int jm_series_read(jm_series *s, const char *path, int cols, char *err, size_t errlen)
+{
+	int absent, ret;
+	FILE *f = open_data(path, &absent, err, errlen);
+
+	memset(s, 0, sizeof(*s));
+	if (!f)
+		return -1;
+	ret = jm_series_parse(s, f, path, cols, err, errlen);
+	fclose(f);
 	return ret;
 }
 
@@ -177,166 +191,235 @@ void jm_series_free(jm_series *s)
 	s->n = 0;
 }
 
-static char *trim(char *p)
+/* p[0..*len) without the blanks at both ends. */
+static const char *trim(const char *p, size_t *len)
 {
-	char *e;
-
-	while (isspace((unsigned char)*p))
-		p++;
-	e = p + strlen(p);
-	while (e > p && isspace((unsigned char)e[-1]))
-		*--e = '\0';
+	while (*len && jm_is_blank(*p))
+		p++, (*len)--;
+	while (*len && jm_is_blank(p[*len - 1]))
+		(*len)--;
 	return p;
 }
 
-/* "x,y;x,y;..." into the playground's beacons; returns 0 or -1. */
-static int parse_beacons(char *value, jm_playground *pg)
+/* "x,y;x,y;..." (blanks around numbers allowed) into the playground's beacons; 0 or -1. */
+static int parse_beacons(const char *v, size_t len, jm_playground *pg)
 {
-	char *pair, *save = NULL;
+	const char *end = v + len;
 	int n = 0;
 
-	for (pair = strtok_r(value, ";", &save); pair; pair = strtok_r(NULL, ";", &save)) {
-		char *comma = strchr(pair, ',');
+	for (;;) {
+		const char *pair_end = memchr(v, ';', (size_t)(end - v)), *comma;
+		size_t xl, yl;
+		const char *x, *y;
 
+		if (!pair_end)
+			pair_end = end;
+		comma = memchr(v, ',', (size_t)(pair_end - v));
 		if (!comma || n == JM_MAX_BEACONS)
 			return -1;
-		*comma = '\0';
-		if (parse_number(trim(pair), &pg->beacon[n][0]) ||
-		    parse_number(trim(comma + 1), &pg->beacon[n][1]))
+		xl = (size_t)(comma - v);
+		yl = (size_t)(pair_end - comma - 1);
+		x = trim(v, &xl);
+		y = trim(comma + 1, &yl);
+		if (jm_parse_number(x, xl, &pg->beacon[n][0]) || jm_parse_number(y, yl, &pg->beacon[n][1]))
 			return -1;
 		n++;
+		if (pair_end == end)
+			break;
+		v = pair_end + 1;
 	}
-	if (n == 0)
-		return -1;
 	pg->nbeacons = n;
 	return 0;
 }
 
 enum { HAS_X = 1, HAS_Y = 2, HAS_THETA = 4 };
 
-/* Reads the keys this program uses from dataset.properties; a missing file is fine. */
-static int read_properties(jm_dataset *ds, const char *path, int *has_start, char *err, size_t errlen)
+/* The key's number, checked; returns 0 or -1 with err set. */
+static int property_number(const char *name, int lineno, const char *key, const char *v, size_t vl, double *out,
+			   char *err, size_t errlen)
 {
-	FILE *f = fopen(path, "r");
-	char *line = NULL;
-	size_t linecap = 0;
-	int lineno = 0, ret = -1;
+	char q[4 * JM_QUOTE_MAX + 8];
+	int r = jm_parse_number(v, vl, out);
 
-	if (!f) {
-		if (errno == ENOENT)
-			return 0;
-		snprintf(err, errlen, "%s: cannot read: %s", path, strerror(errno));
+	if (r != JM_NUM_OK) {
+		snprintf(err, errlen, "%s:%d: %s: %s: '%s'%s", name, lineno, key, jm_number_problem(r),
+			 jm_quote(q, sizeof(q), v, vl), r == JM_NUM_OVERFLOW ? " (overflows)" : "");
 		return -1;
 	}
-	while (getline(&line, &linecap, f) != -1) {
-		char *p = trim(line), *eq, *key, *value;
-		double v;
+	if (!strncmp(key, "playground.", 11) && !(*out > 0.0)) {
+		snprintf(err, errlen, "%s:%d: %s: must be positive", name, lineno, key);
+		return -1;
+	}
+	return 0;
+}
 
-		lineno++;
-		if (*p == '\0' || *p == '#' || *p == '!')
-			continue;
-		eq = strchr(p, '=');
-		if (!eq) {
-			snprintf(err, errlen, "%s:%d: expected key=value", path, lineno);
-			goto out;
-		}
-		*eq = '\0';
-		key = trim(p);
-		value = trim(eq + 1);
-		if (!strcmp(key, "scenario")) {
-			snprintf(ds->scenario, sizeof(ds->scenario), "%s", value);
-		} else if (!strcmp(key, "beacons")) {
-			if (parse_beacons(value, &ds->pg) < 0) {
-				snprintf(err, errlen, "%s:%d: beacons: expected x,y;x,y;... (at most %d)",
-					 path, lineno, JM_MAX_BEACONS);
-				goto out;
-			}
-		} else if (!strcmp(key, "playground.width") || !strcmp(key, "playground.height") ||
-			   !strcmp(key, "start.x") || !strcmp(key, "start.y") || !strcmp(key, "start.theta")) {
-			int r = parse_number(value, &v);
+/* One key=value line (already trimmed, not a comment) into ds; returns 0 or -1 with err set. */
+static int parse_property(jm_dataset *ds, const char *name, int lineno, const char *p, size_t len, int *has,
+			  char *err, size_t errlen)
+{
+	static const char *const numeric[] = { "playground.width", "playground.height", "start.x", "start.y",
+					       "start.theta" };
+	const char *eq = memchr(p, '=', len), *key, *v;
+	size_t kl, vl, i;
+	char k[32];
+	double d;
 
-			if (r) {
-				snprintf(err, errlen, "%s:%d: %s: %s: '%.40s'", path, lineno, key,
-					 r == 1 ? "not a number" : "not a finite number", value);
-				goto out;
-			}
-			if (!strncmp(key, "playground.", 11) && v <= 0.0) {
-				snprintf(err, errlen, "%s:%d: %s: must be positive", path, lineno, key);
-				goto out;
-			}
-			if (!strcmp(key, "playground.width"))
-				ds->pg.width = v;
-			else if (!strcmp(key, "playground.height"))
-				ds->pg.height = v;
-			else if (!strcmp(key, "start.x"))
-				ds->start_x = v, *has_start |= HAS_X;
-			else if (!strcmp(key, "start.y"))
-				ds->start_y = v, *has_start |= HAS_Y;
-			else
-				ds->start_theta = v, *has_start |= HAS_THETA;
+	for (i = 0; i < len; i++) {
+		unsigned char c = (unsigned char)p[i];
+
+		if ((c < 0x20 && c != '\t') || c >= 0x7f) {
+			snprintf(err, errlen, "%s:%d: not printable ASCII: byte 0x%02x", name, lineno, c);
+			return -1;
 		}
 	}
+	kl = eq ? (size_t)(eq - p) : 0;
+	key = trim(p, &kl);
+	if (!eq || kl == 0) {
+		snprintf(err, errlen, "%s:%d: expected key=value", name, lineno);
+		return -1;
+	}
+	vl = len - (size_t)(eq + 1 - p);
+	v = trim(eq + 1, &vl);
+	if (kl >= sizeof(k))
+		return 0; /* longer than every key this reader knows */
+	memcpy(k, key, kl);
+	k[kl] = '\0';
+	if (!strcmp(k, "scenario")) {
+		if (vl >= sizeof(ds->scenario)) {
+			snprintf(err, errlen, "%s:%d: scenario: longer than %d characters", name, lineno,
+				 (int)sizeof(ds->scenario) - 1);
+			return -1;
+		}
+		snprintf(ds->scenario, sizeof(ds->scenario), "%.*s", (int)vl, v);
+		return 0;
+	}
+	if (!strcmp(k, "beacons")) {
+		if (parse_beacons(v, vl, &ds->pg)) {
+			snprintf(err, errlen, "%s:%d: beacons: expected x,y;x,y;... (1 to %d beacons)", name, lineno,
+				 JM_MAX_BEACONS);
+			return -1;
+		}
+		return 0;
+	}
+	for (i = 0; i < sizeof(numeric) / sizeof(numeric[0]); i++) {
+		if (strcmp(k, numeric[i]))
+			continue;
+		if (property_number(name, lineno, k, v, vl, &d, err, errlen))
+			return -1;
+		switch (i) {
+		case 0: ds->pg.width = d; break;
+		case 1: ds->pg.height = d; break;
+		case 2: ds->start_x = d, *has |= HAS_X; break;
+		case 3: ds->start_y = d, *has |= HAS_Y; break;
+		default: ds->start_theta = d, *has |= HAS_THETA; break;
+		}
+	}
+	return 0; /* a key this reader does not use */
+}
+
+int jm_properties_parse(jm_dataset *ds, FILE *f, const char *name, char *err, size_t errlen)
+{
+	char *line = NULL;
+	size_t linecap = 0;
+	long len;
+	int lineno = 0, has = 0, ret = -1;
+
+	while ((len = jm_read_line(f, &line, &linecap)) >= 0) {
+		size_t n = (size_t)len;
+		const char *p = trim(line, &n);
+
+		lineno++;
+		if (n == 0 || *p == '#' || *p == '!')
+			continue;
+		if (parse_property(ds, name, lineno, p, n, &has, err, errlen))
+			goto out;
+	}
+	if (ferror(f)) {
+		snprintf(err, errlen, "%s: cannot read", name);
+		goto out;
+	}
+	/* the start pose: all three keys, or none (the first ground-truth line) */
+	if (has && has != (HAS_X | HAS_Y | HAS_THETA)) {
+		snprintf(err, errlen, "%s: %s: missing", name,
+			 !(has & HAS_X) ? "start.x" : !(has & HAS_Y) ? "start.y" : "start.theta");
+		goto out;
+	}
+	ds->start_known = has != 0;
 	ret = 0;
 out:
 	free(line);
-	fclose(f);
 	return ret;
+}
+
+/* The path as Java's File writes it: no repeated '/', no trailing '/' (but "/" itself). */
+static void normalize(char *dst, size_t dstlen, const char *src)
+{
+	size_t n = 0;
+
+	for (; *src && n + 1 < dstlen; src++)
+		if (!(*src == '/' && n > 0 && dst[n - 1] == '/'))
+			dst[n++] = *src;
+	if (n > 1 && dst[n - 1] == '/')
+		n--;
+	dst[n] = '\0';
 }
 
 int jm_dataset_load(jm_dataset *ds, const char *dir, const char *odometry, const char *laser,
 		    const char *real, char *err, size_t errlen)
 {
 	char props[PATH_MAX + 32];
-	int has_start = 0;
+	const char *base, *slash;
 
 	memset(ds, 0, sizeof(*ds));
 	jm_playground_default(&ds->pg);
 	if (dir) {
 		struct stat st;
 
+		normalize(ds->dir, sizeof(ds->dir), dir);
 		if (stat(dir, &st) || !S_ISDIR(st.st_mode)) {
-			snprintf(err, errlen, "%s: no such dataset folder", dir);
+			snprintf(err, errlen, "%s: no such dataset folder", ds->dir);
 			return -1;
 		}
-		snprintf(ds->dir, sizeof(ds->dir), "%s", dir);
-		snprintf(ds->odometry_path, sizeof(ds->odometry_path), "%s/odometry.txt", dir);
-		snprintf(ds->laser_path, sizeof(ds->laser_path), "%s/laser.txt", dir);
-		snprintf(ds->real_path, sizeof(ds->real_path), "%s/real.txt", dir);
-		snprintf(props, sizeof(props), "%s/dataset.properties", dir);
+		snprintf(ds->odometry_path, sizeof(ds->odometry_path), "%s/odometry.txt", ds->dir);
+		snprintf(ds->laser_path, sizeof(ds->laser_path), "%s/laser.txt", ds->dir);
+		snprintf(ds->real_path, sizeof(ds->real_path), "%s/real.txt", ds->dir);
+		snprintf(props, sizeof(props), "%s/dataset.properties", ds->dir);
 	} else {
-		snprintf(ds->odometry_path, sizeof(ds->odometry_path), "%s", odometry);
-		snprintf(ds->laser_path, sizeof(ds->laser_path), "%s", laser);
-		snprintf(ds->real_path, sizeof(ds->real_path), "%s", real);
+		normalize(ds->odometry_path, sizeof(ds->odometry_path), odometry);
+		normalize(ds->laser_path, sizeof(ds->laser_path), laser);
+		normalize(ds->real_path, sizeof(ds->real_path), real);
 	}
+	/* in this order in both languages, so that a dataset with two problems names the same one */
 	if (jm_series_read(&ds->odometry, ds->odometry_path, 4, err, errlen) < 0 ||
 	    jm_series_read(&ds->laser, ds->laser_path, 2, err, errlen) < 0 ||
 	    jm_series_read(&ds->real, ds->real_path, 4, err, errlen) < 0)
 		goto fail;
-	if (dir && read_properties(ds, props, &has_start, err, errlen) < 0)
-		goto fail;
-	/* the start pose: all three keys of the metadata, or the first ground-truth line */
-	if (has_start && has_start != (HAS_X | HAS_Y | HAS_THETA)) {
-		snprintf(err, errlen, "%s: %s: missing", props,
-			 !(has_start & HAS_X) ? "start.x" : !(has_start & HAS_Y) ? "start.y" : "start.theta");
-		goto fail;
+	if (dir) {
+		int absent;
+		FILE *f = open_data(props, &absent, err, errlen);
+
+		if (!f && !absent)
+			goto fail;
+		if (f) {
+			int r = jm_properties_parse(ds, f, props, err, errlen);
+
+			fclose(f);
+			if (r)
+				goto fail;
+		}
 	}
-	if (!has_start) {
+	if (!ds->start_known) {
 		ds->start_x = JM_ROW(&ds->real, 0)[1];
 		ds->start_y = JM_ROW(&ds->real, 0)[2];
 		ds->start_theta = JM_ROW(&ds->real, 0)[3];
 	}
-	if (!ds->scenario[0]) {
-		const char *base = dir ? dir : ds->odometry_path, *slash;
-		size_t len = strlen(base);
-
-		while (len > 1 && base[len - 1] == '/')
-			len--;
-		for (slash = base + len; slash > base && slash[-1] != '/'; slash--)
-			;
-		snprintf(ds->name, sizeof(ds->name), "%.*s", (int)(base + len - slash), slash);
-	} else {
+	if (ds->scenario[0]) {
 		snprintf(ds->name, sizeof(ds->name), "%s", ds->scenario);
+		return 0;
 	}
+	base = dir ? ds->dir : ds->odometry_path;
+	slash = strrchr(base, '/');
+	snprintf(ds->name, sizeof(ds->name), "%.255s", slash && slash[1] ? slash + 1 : base);
 	return 0;
 fail:
 	jm_dataset_free(ds);

@@ -4,12 +4,16 @@
 
 #include <limits.h>
 #include <stddef.h>
+#include <stdio.h>
 
 #include "mcl.h"
 
 #ifndef PATH_MAX
 #define PATH_MAX 4096
 #endif
+
+/* The most columns an event file has (odometry and ground truth: time and three numbers). */
+#define JM_MAX_COLUMNS 4
 
 /* The rows of one event file: n rows of cols numbers, row-major, time first. */
 typedef struct {
@@ -23,9 +27,9 @@ typedef struct {
 /* A loaded dataset: the three series, the field and the known start pose. */
 typedef struct {
 	char dir[PATH_MAX];        /* empty for bare thesis-format files */
-	char odometry_path[PATH_MAX];
-	char laser_path[PATH_MAX];
-	char real_path[PATH_MAX];
+	char odometry_path[PATH_MAX + 32];
+	char laser_path[PATH_MAX + 32];
+	char real_path[PATH_MAX + 32];
 	char scenario[128];        /* empty when unknown */
 	char name[256];            /* the scenario, else the folder's (or odometry file's) name */
 	jm_series odometry;        /* time dx dy dtheta */
@@ -33,6 +37,7 @@ typedef struct {
 	jm_series real;            /* time x y theta */
 	jm_playground pg;
 	double start_x, start_y, start_theta;
+	int start_known;           /* the start pose came from dataset.properties */
 } jm_dataset;
 
 /*
@@ -40,6 +45,8 @@ typedef struct {
  * "<file>:<line>: <problem>", or "<file>: <problem>" for the whole file (missing, empty).
  */
 int jm_series_read(jm_series *s, const char *path, int cols, char *err, size_t errlen);
+/* The same from an open stream, name being what messages call it (the fuzzer reads memory). */
+int jm_series_parse(jm_series *s, FILE *f, const char *name, int cols, char *err, size_t errlen);
 void jm_series_free(jm_series *s);
 
 /*
@@ -49,5 +56,11 @@ void jm_series_free(jm_series *s);
 int jm_dataset_load(jm_dataset *ds, const char *dir, const char *odometry, const char *laser,
 		    const char *real, char *err, size_t errlen);
 void jm_dataset_free(jm_dataset *ds);
+
+/*
+ * Reads dataset.properties from f into ds (playground, scenario, start pose and start_known),
+ * over what ds holds already. Returns 0, or -1 with err holding "<name>:<line>: <problem>".
+ */
+int jm_properties_parse(jm_dataset *ds, FILE *f, const char *name, char *err, size_t errlen);
 
 #endif

@@ -36,13 +36,14 @@
 /* One line on stderr and the exit code: 2 for bad usage or input, 1 for our own failure. */
 static noreturn void die(int code, const char *fmt, ...)
 {
+	char msg[PATH_MAX + 512];
 	va_list ap;
 
-	fputs("jmclbench: ", stderr);
 	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
+	vsnprintf(msg, sizeof(msg), fmt, ap);
 	va_end(ap);
-	fputc('\n', stderr);
+	jm_one_line(msg, sizeof(msg));
+	fprintf(stderr, "jmclbench: %s\n", msg);
 	exit(code);
 }
 

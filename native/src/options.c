@@ -10,7 +10,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dataset.h"
 #include "options.h"
+#include "grammar.h"
 
 enum opt_id {
 	OPT_PARTICLES, OPT_NUMBER, OPT_RUNTIME, OPT_OUT, OPT_ODO, OPT_LASER, OPT_REAL, OPT_DATASET,
@@ -58,11 +60,6 @@ static const struct opt options[] = {
 
 #define NOPTIONS (sizeof(options) / sizeof(options[0]))
 
-const char *jm_policy_name(enum jm_policy p)
-{
-	return p == JM_POLICY_TERMINATE ? "terminate" : p == JM_POLICY_QUEUE ? "queue" : "skip";
-}
-
 const char *jm_memory_name(enum jm_memory m)
 {
 	return m == JM_MEMORY_ALLOCATING ? "allocating" : "preallocated";
@@ -102,6 +99,26 @@ void jm_options_usage(FILE *f)
 	fprintf(f, "\nExit codes: 0 success, 2 bad usage or bad input, 1 a failure of the benchmark.\n");
 }
 
+void jm_one_line(char *s, size_t cap)
+{
+	size_t i, n = 0, len = strlen(s);
+	char *tmp = malloc(len + 1);
+
+	if (!tmp)
+		return;
+	memcpy(tmp, s, len);
+	for (i = 0; i < len && n + 5 < cap; i++) {
+		unsigned char c = (unsigned char)tmp[i];
+
+		if (c < 0x20 || c == 0x7f)
+			n += (size_t)snprintf(s + n, cap - n, "\\x%02x", c);
+		else
+			s[n++] = (char)c;
+	}
+	s[n] = '\0';
+	free(tmp);
+}
+
 static int fail(char *err, size_t errlen, const char *name, const char *problem, const char *value)
 {
 	if (value)
@@ -115,14 +132,16 @@ static int fail(char *err, size_t errlen, const char *name, const char *problem,
 static int int_in(const char *name, const char *s, long long lo, long long hi, long long *out, char *err,
 		  size_t errlen)
 {
+	const char *d = s + (*s == '+' || *s == '-');
 	char *end;
 	long long v;
 
+	/* [+-]?digits and nothing else, as the Java workload: no blanks, no other digits */
+	if (!*d || strspn(d, "0123456789") != strlen(d))
+		return fail(err, errlen, name, "not an integer", s);
 	errno = 0;
 	v = strtoll(s, &end, 10);
-	while (end != s && isspace((unsigned char)*end))
-		end++;
-	if (end == s || *end != '\0' || errno == ERANGE)
+	if (errno == ERANGE)
 		return fail(err, errlen, name, "not an integer", s);
 	if (v < lo || v > hi) {
 		snprintf(err, errlen, "%s: %lld is out of range [%lld, %lld]", name, v, lo, hi);
@@ -135,13 +154,12 @@ static int int_in(const char *name, const char *s, long long lo, long long hi, l
 /* A finite number > 0 (or >= 0 when zero_ok). */
 static int double_in(const char *name, const char *s, int zero_ok, double *out, char *err, size_t errlen)
 {
-	char *end;
-	double v = strtod(s, &end);
+	double v;
 
-	while (end != s && isspace((unsigned char)*end))
-		end++;
-	if (end == s || *end != '\0')
+	/* the data files' number grammar, as the Java workload: no hex, no inf or nan words, no blanks */
+	if (!jm_plain_decimal(s, strlen(s)))
 		return fail(err, errlen, name, "not a number", s);
+	v = strtod(s, NULL);
 	if (!isfinite(v) || v < 0.0 || (!zero_ok && v == 0.0)) {
 		snprintf(err, errlen, "%s: '%s' must be a finite number %s", name, s, zero_ok ? ">= 0" : "> 0");
 		return -1;
@@ -206,7 +224,18 @@ static int runtime_name_ok(const char *s)
 	return 1;
 }
 
+static int parse(jm_options *o, int argc, char **argv, char *err, size_t errlen);
+
 int jm_options_parse(jm_options *o, int argc, char **argv, char *err, size_t errlen)
+{
+	int r = parse(o, argc, argv, err, errlen);
+
+	if (r)
+		jm_one_line(err, errlen);
+	return r;
+}
+
+static int parse(jm_options *o, int argc, char **argv, char *err, size_t errlen)
 {
 	int i = 1, terminate_flag = 0, policy_given = 0;
 
@@ -290,7 +319,7 @@ int jm_options_parse(jm_options *o, int argc, char **argv, char *err, size_t err
 			terminate_flag = 1;
 			break;
 		case OPT_POLICY:
-			if ((c = choice(name, value, "skip|terminate|queue", err, errlen)) < 0)
+			if ((c = choice(name, value, JM_POLICY_LABELS, err, errlen)) < 0)
 				return -1;
 			o->policy = (enum jm_policy)c;
 			policy_given = 1;

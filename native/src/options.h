@@ -7,8 +7,7 @@
 #include <stdio.h>
 
 #include "mcl.h"
-
-enum jm_policy { JM_POLICY_SKIP, JM_POLICY_TERMINATE, JM_POLICY_QUEUE };
+#include "policy.h"
 
 /* A run's parameters; jm_options_parse fills in every default first. */
 typedef struct {
@@ -41,10 +40,14 @@ typedef struct {
  * -1 with err holding "<option>: <problem>".
  */
 int jm_options_parse(jm_options *o, int argc, char **argv, char *err, size_t errlen);
+/*
+ * Rewrites the message s (of capacity cap) as one line: every control character (a newline
+ * in an argument or a path) as \xHH, as the Java workload's BadInputException does.
+ */
+void jm_one_line(char *s, size_t cap);
 /* One line per option with its unit and default. */
 void jm_options_usage(FILE *f);
 
-const char *jm_policy_name(enum jm_policy p);
 const char *jm_memory_name(enum jm_memory m);
 const char *jm_estimate_name(enum jm_estimate e);
 const char *jm_resample_name(enum jm_resample r);

@@ -19,16 +19,7 @@
 
 static const char *test_name(const jm_options *o)
 {
-	if (o->ideal)
-		return "IdealTest";
-	switch (o->policy) {
-	case JM_POLICY_TERMINATE:
-		return "TermTest";
-	case JM_POLICY_QUEUE:
-		return "QueueTest";
-	default:
-		return "SkipTest";
-	}
+	return o->ideal ? "IdealTest" : jm_policy_folder(o->policy);
 }
 
 int jm_run_dir(const jm_options *o, char *buf, size_t len)
@@ -229,72 +220,25 @@ static int write_covariance(const jm_run *r, const char *dir, char *err, size_t 
 	return close_out(f, path, err, errlen);
 }
 
-/* Counts and timing statistics of one task (or both: task < 0). */
+/* One task's summary (or both tasks': task < 0) and the thesis's missCount, which depends on the policy. */
 struct task_summary {
-	long released, completed, done, late, skipped, terminated, miss;
-	jm_stats jitter, latency, response, cpu;
+	jm_task_summary s;
+	long miss;
 };
 
-static int summarise(const jm_run *r, int task, struct task_summary *s)
+static int summarise(const jm_run *r, int task, struct task_summary *t)
 {
-	const jm_timeline *tl = r->tl;
-	int64_t *v[4];
-	long nv[4] = { 0 };
-	int k, q, ret = -1;
+	const jm_task_summary *s = &t->s;
 
-	memset(s, 0, sizeof(*s));
-	for (q = 0; q < 4; q++)
-		v[q] = malloc(sizeof(int64_t) * (size_t)(tl->n ? tl->n : 1));
-	if (!v[0] || !v[1] || !v[2] || !v[3])
-		goto out;
-	for (k = 0; k < tl->n; k++) {
-		const jm_job *j = &tl->jobs[k];
-
-		if (task >= 0 && (int)tl->events[k].task != task)
-			continue;
-		s->released++;
-		switch (j->outcome) {
-		case JM_OUTCOME_DONE:
-			s->done++;
-			break;
-		case JM_OUTCOME_LATE:
-			s->late++;
-			break;
-		case JM_OUTCOME_SKIPPED:
-			s->skipped++;
-			break;
-		case JM_OUTCOME_TERMINATED:
-			s->terminated++;
-			break;
-		default:
-			break;
-		}
-		if (j->start_ns >= 0)
-			v[0][nv[0]++] = j->start_ns - j->release_ns;
-		/* latency and response time of completed jobs only: an aborted job's end is no answer */
-		if (completed(j->outcome) && j->start_ns >= 0 && j->end_ns >= 0) {
-			v[1][nv[1]++] = j->end_ns - j->start_ns;
-			v[2][nv[2]++] = j->end_ns - j->release_ns;
-		}
-		if (j->cpu_ns >= 0)
-			v[3][nv[3]++] = j->cpu_ns;
-	}
-	s->completed = s->done + s->late;
+	if (jm_task_summary_compute(&t->s, r->tl, task))
+		return -1;
 	if (r->opt->ideal)
-		s->miss = 0;
+		t->miss = 0;
 	else if (r->opt->policy == JM_POLICY_QUEUE)
-		s->miss = s->late;
+		t->miss = s->late;
 	else
-		s->miss = s->skipped + s->terminated;
-	jm_stats_compute(&s->jitter, v[0], nv[0]);
-	jm_stats_compute(&s->latency, v[1], nv[1]);
-	jm_stats_compute(&s->response, v[2], nv[2]);
-	jm_stats_compute(&s->cpu, v[3], nv[3]);
-	ret = 0;
-out:
-	for (q = 0; q < 4; q++)
-		free(v[q]);
-	return ret;
+		t->miss = s->skipped + s->terminated;
+	return 0;
 }
 
 static void json_stats(jm_json *j, const char *key, const jm_stats *s)
@@ -320,8 +264,11 @@ static void json_stats(jm_json *j, const char *key, const jm_stats *s)
 	jm_json_close(j, '}');
 }
 
-static void json_task(jm_json *j, const char *key, const struct task_summary *s)
+static void json_task(jm_json *j, const char *key, const struct task_summary *t)
 {
+	const jm_task_summary *s = &t->s;
+	int q;
+
 	jm_json_open(j, key, '{');
 	jm_json_i64(j, "released", s->released);
 	jm_json_i64(j, "completed", s->completed);
@@ -329,11 +276,25 @@ static void json_task(jm_json *j, const char *key, const struct task_summary *s)
 	jm_json_i64(j, "late", s->late);
 	jm_json_i64(j, "skipped", s->skipped);
 	jm_json_i64(j, "terminated", s->terminated);
-	jm_json_i64(j, "missCount", s->miss);
+	jm_json_i64(j, "missCount", t->miss);
 	json_stats(j, "releaseJitterNs", &s->jitter);
 	json_stats(j, "taskLatencyNs", &s->latency);
 	json_stats(j, "responseTimeNs", &s->response);
 	json_stats(j, "cpuNs", &s->cpu);
+	jm_json_i64(j, "deadlineMisses", s->deadline_misses);
+	jm_json_double(j, "missRatio", jm_miss_ratio(s)); /* NAN, written null, when nothing was released */
+	jm_json_open(j, "responseTimeReleasedNs", '{');
+	jm_json_i64(j, "count", s->released);
+	jm_json_i64(j, "completed", s->response.count);
+	for (q = 0; q < JM_RELEASED_QUANTILES; q++) {
+		if (s->released == 0)
+			jm_json_null(j, jm_released_names[q]);
+		else if (s->released_response[q] == JM_NOT_COMPLETED)
+			jm_json_str(j, jm_released_names[q], "inf");
+		else
+			jm_json_i64(j, jm_released_names[q], s->released_response[q]);
+	}
+	jm_json_close(j, '}');
 	jm_json_close(j, '}');
 }
 
@@ -530,8 +491,8 @@ int jm_output_write(const jm_run *r, const char *dir, char *err, size_t errlen)
 	fprintf(f, "deviationY %s\n", shortest(num, dev.n ? dev.sum[1] / (double)dev.n : NAN));
 	fprintf(f, "deviationAngle %s\n", shortest(num, dev.n ? dev.sum[3] / (double)dev.n : NAN));
 	fprintf(f, "missCount %ld\n", t[2].miss);
-	fprintf(f, "averageReleaseJitter %s\n", shortest(num, t[2].jitter.count ? ms(t[2].jitter.mean) : NAN));
-	fprintf(f, "averageTaskTime %s\n", shortest(num, t[2].latency.count ? ms(t[2].latency.mean) : NAN));
+	fprintf(f, "averageReleaseJitter %s\n", shortest(num, t[2].s.jitter.count ? ms(t[2].s.jitter.mean) : NAN));
+	fprintf(f, "averageTaskTime %s\n", shortest(num, t[2].s.latency.count ? ms(t[2].s.latency.mean) : NAN));
 	if (close_out(f, path, err, errlen))
 		goto out;
 

@@ -1,5 +1,6 @@
 /* Exact statistics over every job's value, computed after the run. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -49,4 +50,86 @@ void jm_stats_compute(jm_stats *s, int64_t *values, long n)
 	s->p90 = jm_percentile(values, n, 900);
 	s->p99 = jm_percentile(values, n, 990);
 	s->p999 = jm_percentile(values, n, 999);
+}
+
+const int jm_released_per_mille[JM_RELEASED_QUANTILES] = { 0, 500, 900, 990, 999, 1000 };
+const char *const jm_released_names[JM_RELEASED_QUANTILES] = { "min", "p50", "p90", "p99", "p999", "max" };
+
+static int completed(enum jm_outcome o)
+{
+	return o == JM_OUTCOME_DONE || o == JM_OUTCOME_LATE;
+}
+
+int jm_task_summary_compute(jm_task_summary *s, const jm_timeline *tl, int task)
+{
+	int64_t *v[4];
+	long nv[4] = { 0 };
+	int k, q, ret = -1;
+
+	memset(s, 0, sizeof(*s));
+	for (q = 0; q < 4; q++)
+		v[q] = malloc(sizeof(int64_t) * (size_t)(tl->n ? tl->n : 1));
+	if (!v[0] || !v[1] || !v[2] || !v[3])
+		goto out;
+	for (k = 0; k < tl->n; k++) {
+		const jm_job *j = &tl->jobs[k];
+
+		if (task >= 0 && (int)tl->events[k].task != task)
+			continue;
+		if (j->outcome == JM_OUTCOME_PENDING)
+			continue; /* never released (a run cut short) */
+		s->released++;
+		switch (j->outcome) {
+		case JM_OUTCOME_DONE:
+			s->done++;
+			break;
+		case JM_OUTCOME_LATE:
+			s->late++;
+			break;
+		case JM_OUTCOME_SKIPPED:
+			s->skipped++;
+			break;
+		case JM_OUTCOME_TERMINATED:
+			s->terminated++;
+			break;
+		default:
+			break;
+		}
+		if (j->start_ns >= 0 && j->release_ns >= 0)
+			v[0][nv[0]++] = j->start_ns - j->release_ns;
+		/* latency and response time of completed jobs only: an aborted job's end is no answer */
+		if (completed(j->outcome) && j->start_ns >= 0 && j->end_ns >= 0) {
+			v[1][nv[1]++] = j->end_ns - j->start_ns;
+			if (j->release_ns >= 0)
+				v[2][nv[2]++] = j->end_ns - j->release_ns;
+		}
+		if (j->cpu_ns >= 0)
+			v[3][nv[3]++] = j->cpu_ns;
+	}
+	s->completed = s->done + s->late;
+	s->deadline_misses = s->late + s->skipped + s->terminated;
+	jm_stats_compute(&s->jitter, v[0], nv[0]);
+	jm_stats_compute(&s->latency, v[1], nv[1]);
+	jm_stats_compute(&s->response, v[2], nv[2]); /* sorts v[2] */
+	for (q = 0; q < JM_RELEASED_QUANTILES && s->released > 0; q++) {
+		/* nearest rank among every release; the ranks past the completed ones are +inf */
+		long i = (long)((jm_released_per_mille[q] * (long long)s->released + 999) / 1000) - 1;
+
+		if (i < 0)
+			i = 0;
+		if (i > s->released - 1)
+			i = s->released - 1;
+		s->released_response[q] = i < nv[2] ? v[2][i] : JM_NOT_COMPLETED;
+	}
+	jm_stats_compute(&s->cpu, v[3], nv[3]);
+	ret = 0;
+out:
+	for (q = 0; q < 4; q++)
+		free(v[q]);
+	return ret;
+}
+
+double jm_miss_ratio(const jm_task_summary *s)
+{
+	return s->released ? (double)s->deadline_misses / (double)s->released : NAN;
 }

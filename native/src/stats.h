@@ -4,6 +4,8 @@
 
 #include <stdint.h>
 
+#include "engine.h"
+
 /* count, mean, population stdev, min, nearest-rank percentiles, max; count 0 means all null. */
 typedef struct {
 	long count;
@@ -15,5 +17,30 @@ typedef struct {
 void jm_stats_compute(jm_stats *s, int64_t *values, long n);
 /* The nearest-rank percentile of a sorted sample, q = per_mille / 1000: index ceil(q * n) - 1. */
 int64_t jm_percentile(const int64_t *sorted, long n, int per_mille);
+
+/* Stands for +infinity among the released quantiles: a release whose job never completed. */
+#define JM_NOT_COMPLETED INT64_MAX
+/* The quantiles of the response time over every release: min p50 p90 p99 p999 max. */
+#define JM_RELEASED_QUANTILES 6
+extern const int jm_released_per_mille[JM_RELEASED_QUANTILES];
+extern const char *const jm_released_names[JM_RELEASED_QUANTILES];
+
+/*
+ * One task's jobs (or both tasks') for summary.json: the deadline accounting of every release
+ * (pending jobs were never released and count nowhere) and its timing samples.
+ */
+typedef struct {
+	long released, completed, done, late, skipped, terminated;
+	long deadline_misses; /* late + skipped + terminated, under every policy */
+	jm_stats jitter, latency, response, cpu;
+	/* response time at jm_released_per_mille over every release, JM_NOT_COMPLETED = +inf;
+	 * meaningful when released > 0 */
+	int64_t released_response[JM_RELEASED_QUANTILES];
+} jm_task_summary;
+
+/* Summarises the jobs of task (< 0: both tasks). 0, or -1 out of memory. */
+int jm_task_summary_compute(jm_task_summary *s, const jm_timeline *tl, int task);
+/* deadline_misses / released; NAN when nothing was released. */
+double jm_miss_ratio(const jm_task_summary *s);
 
 #endif

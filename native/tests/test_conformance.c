@@ -19,6 +19,7 @@
 #include "angles.h"
 #include "mcl.h"
 #include "rng.h"
+#include "stats.h"
 
 #define MAX_TOKENS 1024
 #define BEARING_TOL 1e-12
@@ -526,6 +527,103 @@ static void check_mcl(const char *dir, enum jm_memory memory)
 	report(memory == JM_MEMORY_PREALLOCATED ? "mcl.txt (prealloc)" : "mcl.txt (alloc)", before, checked);
 }
 
+static enum jm_outcome outcome_of(struct vfile *v, const char *name)
+{
+	static const char *const names[] = { "pending", "done", "late", "skipped", "terminated" };
+	int o;
+
+	for (o = 0; o < 5; o++)
+		if (!strcmp(name, names[o]))
+			return (enum jm_outcome)o;
+	fail(v, "unknown outcome %s", name);
+	return JM_OUTCOME_PENDING;
+}
+
+/* deadlines.txt: the accounting and released quantiles of summary.json, as the Java side computes them. */
+static void check_deadlines(const char *dir)
+{
+	struct vfile v;
+	jm_timeline tl = { 0 };
+	int checked = 0, before = failures;
+
+	if (vopen(&v, dir, "deadlines.txt"))
+		return;
+	while (vnext(&v)) {
+		jm_task_summary s;
+		const char *kind = v.tok[0];
+		int task, q;
+
+		if (!strcmp(kind, "case")) {
+			if (need(&v, 3))
+				break;
+			free(tl.events);
+			free(tl.jobs);
+			memset(&tl, 0, sizeof(tl));
+			tl.n = (int)integer(&v, 2);
+			tl.events = calloc((size_t)tl.n + 1, sizeof(*tl.events));
+			tl.jobs = calloc((size_t)tl.n + 1, sizeof(*tl.jobs));
+			for (int k = 0; k < tl.n; k++) {
+				if (!vnext(&v) || need(&v, 6) || strcmp(v.tok[0], "job")) {
+					fail(&v, "expected a job line");
+					goto out;
+				}
+				tl.events[k].task = strcmp(v.tok[1], "predict") ? JM_TASK_UPDATE : JM_TASK_PREDICT;
+				tl.jobs[k].outcome = outcome_of(&v, v.tok[2]);
+				tl.jobs[k].release_ns = integer(&v, 3);
+				tl.jobs[k].start_ns = integer(&v, 4);
+				tl.jobs[k].end_ns = integer(&v, 5);
+				tl.jobs[k].cpu_ns = -1;
+			}
+			continue;
+		}
+		if (!strcmp(kind, "end"))
+			continue;
+		if (need(&v, 10))
+			break;
+		task = !strcmp(v.tok[1], "all") ? -1 : !strcmp(v.tok[1], "predict") ? JM_TASK_PREDICT : JM_TASK_UPDATE;
+		if (jm_task_summary_compute(&s, &tl, task)) {
+			fail(&v, "out of memory");
+			break;
+		}
+		if (!strcmp(kind, "count")) {
+			long want[6], got[6] = { s.released, s.done, s.late, s.skipped, s.terminated, s.deadline_misses };
+			double ratio = jm_miss_ratio(&s);
+
+			for (q = 0; q < 6; q++) {
+				want[q] = integer(&v, 2 + q);
+				if (want[q] != got[q])
+					fail(&v, "column %d: expected %ld, got %ld", 2 + q, want[q], got[q]);
+			}
+			if (!strcmp(v.tok[8], "null") ? !isnan(ratio) : bits(ratio) != bits(hexdouble(&v, 8)))
+				fail(&v, "missRatio: got %.17g", ratio);
+		} else if (!strcmp(kind, "response")) {
+			if (integer(&v, 2) != s.released || integer(&v, 3) != s.response.count)
+				fail(&v, "count/completed: got %ld %ld", s.released, s.response.count);
+			for (q = 0; q < JM_RELEASED_QUANTILES; q++) {
+				const char *want = v.tok[4 + q];
+				char got[32];
+
+				if (s.released == 0)
+					snprintf(got, sizeof(got), "null");
+				else if (s.released_response[q] == JM_NOT_COMPLETED)
+					snprintf(got, sizeof(got), "inf");
+				else
+					snprintf(got, sizeof(got), "%lld", (long long)s.released_response[q]);
+				if (strcmp(want, got))
+					fail(&v, "%s: expected %s, got %s", jm_released_names[q], want, got);
+			}
+		} else {
+			fail(&v, "unknown line kind %s", kind);
+		}
+		checked++;
+	}
+out:
+	free(tl.events);
+	free(tl.jobs);
+	vclose(&v);
+	report("deadlines.txt", before, checked);
+}
+
 int main(int argc, char **argv)
 {
 	const char *dir = argc > 1 ? argv[1] : "../conformance";
@@ -539,6 +637,7 @@ int main(int argc, char **argv)
 	check_resample(dir);
 	check_mcl(dir, JM_MEMORY_PREALLOCATED);
 	check_mcl(dir, JM_MEMORY_ALLOCATING);
+	check_deadlines(dir);
 	if (failures) {
 		fprintf(stderr, "conformance: %d failures\n", failures);
 		return 1;

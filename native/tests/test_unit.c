@@ -6,6 +6,7 @@
  */
 #define _GNU_SOURCE
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "angles.h"
@@ -451,6 +452,46 @@ static void test_reader(void)
 	}
 }
 
+/* The grammar's corners (docs/FORMATS.md 1.1): what the C reader once took differently from Java's. */
+static const char *parse_err(const char *bytes, size_t len, int cols)
+{
+	static char err[512];
+	FILE *f = fmemopen((void *)bytes, len, "r");
+	jm_series s;
+
+	err[0] = '\0';
+	if (!f)
+		return "fmemopen failed";
+	if (jm_series_parse(&s, f, "in", cols, err, sizeof(err)) == 0)
+		jm_series_free(&s);
+	fclose(f);
+	return err;
+}
+
+#define PARSE_ERR(lit, cols) parse_err(lit, sizeof(lit) - 1, cols)
+
+static void test_reader_grammar(void)
+{
+	char err[512], dir[128];
+	jm_series s;
+
+	/* a NUL no longer ends the line: main's C reader ran on this file, Java refused it */
+	CHECK_STR_PREFIX(PARSE_ERR("0.05 1 2 3\0junk\n", 4), "in:1: not a number: '3\\x00junk'");
+	CHECK_STR_PREFIX(PARSE_ERR("0 nan\0 2 3\n", 4), "in:1: not a number: 'nan\\x00'");
+	CHECK_STR_PREFIX(PARSE_ERR("0.05 1\r0.1 1\r", 2), "in:1: expected 2 columns but found 3");
+	CHECK_STR_PREFIX(PARSE_ERR("0.05 1\v2 3 4\n", 4), "in:1: not a number: '1\\x0b2'");
+	CHECK_STR_PREFIX(PARSE_ERR("\xef\xbb\xbf" "0 1\n", 2), "in:1: not a number: '\\xef\\xbb\\xbf0'");
+	CHECK_STR_PREFIX(PARSE_ERR("abc 1 2\n", 4), "in:1: expected 4 columns but found 3");
+	CHECK_INT((int)strlen(PARSE_ERR("0 1\r\n0.1 2\r\n", 2)), 0);
+	CHECK_STR_PREFIX(PARSE_ERR("0 12345678901234567890123456789012345678901x\n", 2),
+			 "in:1: not a number: '1234567890123456789012345678901234567890...'");
+	snprintf(dir, sizeof(dir), "%s/adir", tmpdir);
+	CHECK(mkdir(dir, 0700) == 0);
+	CHECK(jm_series_read(&s, dir, 2, err, sizeof(err)) == -1);
+	CHECK_CONTAINS(err, "adir: is a directory");
+	rmdir(dir);
+}
+
 static void test_dataset_properties(void)
 {
 	jm_dataset ds;
@@ -637,6 +678,7 @@ int main(void)
 	test_memory_styles_agree();
 	test_filter_tracks();
 	test_reader();
+	test_reader_grammar();
 	test_dataset_properties();
 	test_options();
 	test_stats();

@@ -30,6 +30,15 @@ public final class Area {
     /** An RTSJ scoped memory ({@code LTMemory}): lives while some thread is in it. */
     public static final int SCOPED = 4;
 
+    /**
+     * The names of the fields a verification listener reads from outside the program (Java
+     * PathFinder's heap has no accessors to call): keep them in step with the fields below.
+     */
+    public static final String NAME_FIELD = "name";
+    public static final String KIND_FIELD = "kind";
+    public static final String DEPTH_FIELD = "depth";
+    public static final String PARENT_FIELD = "parent";
+
     private final String name;
     private final int kind;
     private final int depth;
@@ -80,6 +89,11 @@ public final class Area {
 
     /** The kind as a word: immortal, mission, private, nested, scoped. */
     public String kindName() {
+        return kindName(kind);
+    }
+
+    /** A kind ({@link #IMMORTAL} ...) as a word: immortal, mission, private, nested. */
+    public static String kindName(int kind) {
         switch (kind) {
             case IMMORTAL:
                 return "immortal";

@@ -33,6 +33,9 @@ public class ScjThread extends Thread {
     /** The area receiving this thread's allocations now, or null (nothing is charged). */
     public Area current;
 
+    /** The name of {@link #current}, for a verification listener reading it from Java PathFinder's heap. */
+    public static final String CURRENT_FIELD = "current";
+
     /** This thread's side of asynchronous transfer of control (RTSJ's AIE; unused by SCJ code). */
     public final AtcState atc = new AtcState(this);
 

@@ -1,11 +1,17 @@
 package org.jmclbench.scj;
 
+import org.jmclbench.core.policy.OverrunPolicy;
+
 /**
- * The overrun policy's state, shared by the handlers: which event may use the robot, which job
- * must abort, and how many events have ended (so that the last one ends the mission).
+ * The overrun policy's whole rule and state, shared by the handlers: which event may use the
+ * robot, which job must abort, and how many events have ended (so that the last one ends the
+ * mission). The handlers report facts (a release, its time, a job's end); every decision of
+ * skip, terminate and queue is taken here.
  *
- * <p>Protocol per merged event k: at its release, {@link #admit(int)} (false: k is skipped);
- * its job polls {@link #abortRequested(int)}; when the job has ended, {@link #release(int)};
+ * <p>Protocol per merged event k: at its release, {@link #admit(int)}, or for the periodic task
+ * {@link #admitPeriodic(int, long)} (false: k is skipped); its job polls
+ * {@link #abortRequested(int)} and, periodic, also stops at {@link #periodicAbortAtNs(long)};
+ * when the job has ended, {@link #release(int)} (periodic: also {@link #periodicEnded(long)});
  * and exactly once per event, whatever its outcome, {@link #ended()}. Allocation-free; no
  * wait/notify (SCJ Level 1): a job waits for the robot only on the robot's monitor.
  * Not final: a verification test may replace it (see {@link MissionConfiguration#newGate}).
@@ -21,6 +27,9 @@ public class JobGate {
     // terminate: the latest released event, the only one allowed to run; read by the polls
     private volatile int latest = FREE;
     private int ended;
+    // skip: when the periodic task's previous job ended, ns from the mission start; written and
+    // read by that task's handler only, so it needs no lock
+    private long periodicEndNs = Long.MIN_VALUE;
 
     public JobGate(OverrunPolicy policy, int events) {
         this.policy = policy;
@@ -43,6 +52,32 @@ public class JobGate {
             latest = k; // the job in progress sees this at its next poll and aborts
         }
         return true;
+    }
+
+    /**
+     * At the periodic task's release of k, scheduled at {@code releaseNs}: as {@link #admit(int)},
+     * and under skip also dropped when the task's own previous job ended after that time (it
+     * overran into this release: the robot was busy with it).
+     */
+    public boolean admitPeriodic(int k, long releaseNs) {
+        if (policy == OverrunPolicy.SKIP && periodicEndNs > releaseNs) {
+            return false;
+        }
+        return admit(k);
+    }
+
+    /**
+     * When a periodic job must stop whatever the polls say, given its task's next release
+     * ({@code Long.MAX_VALUE}: none): terminate aborts it at that release, as a sensor release
+     * aborts an update; {@code Long.MAX_VALUE} (never) under the other policies.
+     */
+    public long periodicAbortAtNs(long nextReleaseNs) {
+        return policy == OverrunPolicy.TERMINATE ? nextReleaseNs : Long.MAX_VALUE;
+    }
+
+    /** The periodic task's job ended at {@code endNs} (ns from the mission start), completed or not. */
+    public void periodicEnded(long endNs) {
+        periodicEndNs = endNs;
     }
 
     /** Polled by k's job: true asks it to stop and leave the robot unchanged (terminate only). */

@@ -20,8 +20,8 @@ final class JobRunner implements AbortSignal {
     private final AbsoluteTime now = new AbsoluteTime();
     private final AbsoluteTime pollTime = new AbsoluteTime();
     private int event = JobGate.FREE;
-    // terminate, predict: the job also aborts at the release of the next odometry event
-    private long supersededAtNs = Long.MAX_VALUE;
+    // when the gate stops the job whatever the polls say (JobGate.periodicAbortAtNs); MAX_VALUE: never
+    private long abortAtNs = Long.MAX_VALUE;
 
     JobRunner(Robot robot, JobGate gate, ImmortalEntry entry, MissionClock clock, MclMission mission) {
         this.robot = robot;
@@ -36,7 +36,7 @@ final class JobRunner implements AbortSignal {
         if (gate.abortRequested(event)) {
             return true;
         }
-        return supersededAtNs != Long.MAX_VALUE && clock.nowNs(pollTime) >= supersededAtNs;
+        return abortAtNs != Long.MAX_VALUE && clock.nowNs(pollTime) >= abortAtNs;
     }
 
     /** Now, ns from the mission start. */
@@ -59,12 +59,12 @@ final class JobRunner implements AbortSignal {
     }
 
     /**
-     * Runs k's job; {@code supersededAtNs} is when a later release of the same handler aborts
-     * it (Long.MAX_VALUE: never). Returns the job's end, ns from the mission start.
+     * Runs k's job; {@code abortAtNs} is when the gate stops it whatever the polls say
+     * (Long.MAX_VALUE: never). Returns the job's end, ns from the mission start.
      */
-    long run(int k, boolean update, long supersededAtNs) {
+    long run(int k, boolean update, long abortAtNs) {
         event = k;
-        this.supersededAtNs = supersededAtNs;
+        this.abortAtNs = abortAtNs;
         long start;
         long end;
         boolean completed;

@@ -5,6 +5,7 @@ import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;
 import org.jmclbench.core.mcl.PreallocatedLocalizer;
 import org.jmclbench.core.mcl.ScopedLocalizer;
+import org.jmclbench.core.policy.OverrunPolicy;
 
 /**
  * Everything a run of the mission is parameterised by, and the factory of the parts a test may

@@ -8,14 +8,14 @@ import javax.safetycritical.PeriodicEventHandler;
 
 /**
  * The predict task: released every odometry period, its i-th release is the i-th odometry event,
- * whose increment it applies to the robot under the mission's policy.
+ * whose increment it applies to the robot; the gate decides, under the mission's policy, whether
+ * it runs and when it must stop.
  */
 public class PredictHandler extends PeriodicEventHandler {
     private final ImmortalEntry entry;
     private final JobGate gate;
     private final JobRunner runner;
     private int released;
-    private long lastEndNs = Long.MIN_VALUE;
 
     PredictHandler(PriorityParameters priority, PeriodicParameters release, ScopeParameters storage,
             ConfigurationParameters config, ImmortalEntry entry, JobGate gate, JobRunner runner) {
@@ -33,15 +33,11 @@ public class PredictHandler extends PeriodicEventHandler {
         }
         int k = entry.odoEvent[i];
         runner.released(k, runner.nowNs());
-        // Skip: dropped when the robot is busy at the release, this task's previous job included.
-        boolean overran = gate.policy() == OverrunPolicy.SKIP && lastEndNs > entry.releaseNs[k];
-        if (overran || !gate.admit(k)) {
+        if (!gate.admitPeriodic(k, entry.releaseNs[k])) {
             runner.skip(k);
             return;
         }
-        // Terminate: the next odometry release aborts this job, as the sensor's releases abort updates.
-        long supersededAt = gate.policy() == OverrunPolicy.TERMINATE && i + 1 < entry.odoEvent.length
-                ? entry.releaseNs[entry.odoEvent[i + 1]] : Long.MAX_VALUE;
-        lastEndNs = runner.run(k, false, supersededAt);
+        long nextReleaseNs = i + 1 < entry.odoEvent.length ? entry.releaseNs[entry.odoEvent[i + 1]] : Long.MAX_VALUE;
+        gate.periodicEnded(runner.run(k, false, gate.periodicAbortAtNs(nextReleaseNs)));
     }
 }

@@ -10,6 +10,7 @@ import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.PreallocatedLocalizer;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.rtsjcompat.AreaUsage;

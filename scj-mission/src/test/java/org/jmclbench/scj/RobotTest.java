@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
 import org.junit.jupiter.api.Test;
@@ -114,6 +115,36 @@ class RobotTest {
         assertTrue(g.admit(1));
         assertTrue(g.abortRequested(0), "a later release aborts the job in progress");
         assertFalse(g.abortRequested(1));
+    }
+
+    @Test
+    void skipDropsAPeriodicReleaseItsOwnPreviousJobOverranInto() {
+        JobGate g = new JobGate(OverrunPolicy.SKIP, 4);
+        assertTrue(g.admitPeriodic(0, 0));
+        g.release(0);
+        g.periodicEnded(60);
+        assertFalse(g.admitPeriodic(1, 50), "the previous job ended at 60, after this release at 50");
+        assertTrue(g.admitPeriodic(2, 100), "ended before this release: admitted");
+        assertFalse(g.admit(3), "the periodic job holds the robot");
+        assertEquals(Long.MAX_VALUE, g.periodicAbortAtNs(150), "skip never aborts");
+    }
+
+    @Test
+    void terminateAbortsAPeriodicJobAtItsTasksNextRelease() {
+        JobGate g = new JobGate(OverrunPolicy.TERMINATE, 4);
+        g.periodicEnded(60);
+        assertTrue(g.admitPeriodic(1, 50), "terminate never drops a release");
+        assertEquals(100, g.periodicAbortAtNs(100));
+        assertEquals(Long.MAX_VALUE, g.periodicAbortAtNs(Long.MAX_VALUE), "the last release runs to its end");
+    }
+
+    @Test
+    void queueRunsEveryPeriodicReleaseToItsEnd() {
+        JobGate g = new JobGate(OverrunPolicy.QUEUE, 4);
+        g.periodicEnded(60);
+        assertTrue(g.admitPeriodic(1, 50));
+        assertTrue(g.admitPeriodic(2, 55));
+        assertEquals(Long.MAX_VALUE, g.periodicAbortAtNs(100));
     }
 
     @Test

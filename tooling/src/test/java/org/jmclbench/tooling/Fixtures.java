@@ -61,6 +61,19 @@ public final class Fixtures {
         return "1000." + Math.abs(dir.toString().hashCode());
     }
 
+    /**
+     * The command that runs the CLI with {@code args} in a child JVM of the test's class path, on the home
+     * {@code dir}: for tests that kill the runner or run two at once.
+     */
+    public static java.util.List<String> childCli(Path dir, String... args) {
+        java.util.List<String> cmd = new java.util.ArrayList<>(java.util.List.of(
+                ProcessHandle.current().info().command().orElse("java"),
+                "-Djmclbench.home=" + dir, "-Djmclbench.cache=" + dir.resolve("cache"),
+                "-cp", System.getProperty("java.class.path"), JmclbenchCli.class.getName()));
+        cmd.addAll(java.util.List.of(args));
+        return cmd;
+    }
+
     /** What a CLI call printed and returned. */
     public record CliResult(int exitCode, String out, String err) {
     }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A fake runtime for the runner's tests: answers like a JVM to probes and, as the workload, does
 # what MODE says (ok, crash, hang, garbage, badjson, oom, badexit, wrongrun: a valid folder for
-# another particle count). Tests copy it with the
+# another particle count; gate: an ok run that first creates ../started beside its bin/ and waits
+# for ../open, so that a test can act while a matrix is surely mid-run). Tests copy it with the
 # placeholders replaced. Never a real measurement.
 MODE=@MODE@
 SLEEP=@SLEEP@
@@ -68,6 +69,10 @@ case $MODE in
         echo 'Exception in thread "main" java.lang.OutOfMemoryError: Java heap space' >&2; exit 1 ;;
     badexit)
         echo "jmclbench: something broke" >&2; exit 1 ;;
+    gate)
+        here=$(cd "$(dirname "$0")/.." && pwd)
+        touch "$here/started"
+        while [ ! -e "$here/open" ]; do sleep 0.1; done ;;
 esac
 leaf=$O/$j/nocov/$p/$T/$n
 mkdir -p "$leaf.partial"

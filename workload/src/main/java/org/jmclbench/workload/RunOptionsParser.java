@@ -3,6 +3,9 @@ package org.jmclbench.workload;
 import java.util.Locale;
 
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.workload.engine.Engine;
+import org.jmclbench.workload.engine.Engines;
+import org.jmclbench.core.policy.OverrunPolicy;
 
 /**
  * Parses the workload's command line (docs/FORMATS.md section 2): the thesis's short flags
@@ -115,7 +118,7 @@ public final class RunOptionsParser {
                     terminateFlag = true;
                     break;
                 case "--policy":
-                    o.policy = choice(name, value(name, inline, args, i), RunOptions.Policy.class);
+                    o.policy = policy(name, value(name, inline, args, i));
                     policyGiven = true;
                     i += inline == null ? 1 : 0;
                     break;
@@ -133,7 +136,7 @@ public final class RunOptionsParser {
                     i += inline == null ? 1 : 0;
                     break;
                 case "--engine":
-                    o.engine = engine(name, value(name, inline, args, i));
+                    o.engine = Engines.named(name, value(name, inline, args, i)).name();
                     i += inline == null ? 1 : 0;
                     break;
                 case "--area-size": {
@@ -209,11 +212,14 @@ public final class RunOptionsParser {
                     throw BadInputException.ofOption(arg, "unexpected argument (see --help)");
             }
         }
+        if (o.help) {
+            return o; // help is shown whatever else the line holds (the C baseline's rule too)
+        }
         if (terminateFlag) {
-            if (policyGiven && o.policy != RunOptions.Policy.TERMINATE) {
+            if (policyGiven && o.policy != OverrunPolicy.TERMINATE) {
                 throw BadInputException.ofOption("-T", "contradicts --policy " + o.policy.label);
             }
-            o.policy = RunOptions.Policy.TERMINATE;
+            o.policy = OverrunPolicy.TERMINATE;
         }
         int files = (o.odo != null ? 1 : 0) + (o.laser != null ? 1 : 0) + (o.real != null ? 1 : 0);
         if (files != 0 && files != 3) {
@@ -223,35 +229,22 @@ public final class RunOptionsParser {
         if (files == 3 && o.dataset != null) {
             throw BadInputException.ofOption("--dataset", "cannot be combined with -odo/-laser/-real");
         }
-        checkEngine(o);
+        Engine engine = Engines.named("--engine", o.engine);
+        engine.checkOptions(o);
+        o.engineRuntimeName = engine.runtimeName(RunOptions.defaultRuntimeName());
         return o;
     }
 
-    private static RunOptions.Engine engine(String name, String v) throws BadInputException {
-        for (RunOptions.Engine e : RunOptions.Engine.values()) {
-            if (e.label.equals(v)) {
-                return e;
+    private static OverrunPolicy policy(String name, String v) throws BadInputException {
+        OverrunPolicy p = OverrunPolicy.ofLabel(v);
+        if (p == null) {
+            StringBuilder allowed = new StringBuilder();
+            for (OverrunPolicy each : OverrunPolicy.values()) {
+                allowed.append(allowed.length() == 0 ? "" : "|").append(each.label);
             }
+            throw BadInputException.ofOption(name, "'" + v + "' is not one of " + allowed);
         }
-        throw BadInputException.ofOption(name, "'" + v + "' is not one of javase|scj|hvm");
-    }
-
-    /** The memory styles each engine has, and the options only one engine takes. */
-    private static void checkEngine(RunOptions o) throws BadInputException {
-        if (o.engine == RunOptions.Engine.SCJ || o.engine == RunOptions.Engine.HVM) {
-            if (o.memory == MclConfig.Memory.ALLOCATING) {
-                throw BadInputException.ofOption("--memory", "'allocating' is not a memory style of the "
-                        + o.engine.label + " engine (preallocated|scoped)");
-            }
-        } else {
-            if (o.memory == MclConfig.Memory.SCOPED) {
-                throw BadInputException.ofOption("--memory", "'scoped' is not a memory style of the javase engine"
-                        + " (preallocated|allocating; scoped is --engine scj)");
-            }
-            if (!o.areaSizes.isEmpty()) {
-                throw BadInputException.ofOption("--area-size", "sets SCJ memory areas: needs --engine scj");
-            }
-        }
+        return p;
     }
 
     private static String value(String name, String inline, String[] args, int i) throws BadInputException {
@@ -285,10 +278,16 @@ public final class RunOptionsParser {
         return v;
     }
 
+    /** An integer: {@code [+-]?[0-9]+}, nothing else (Long.parseLong takes other scripts' digits; C does not). */
+    private static final java.util.regex.Pattern INTEGER = java.util.regex.Pattern.compile("[+-]?[0-9]+");
+    /** A number: the data files' grammar (docs/FORMATS.md 1.1), the C baseline's too. */
+    private static final java.util.regex.Pattern DECIMAL =
+            java.util.regex.Pattern.compile("[+-]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][+-]?[0-9]+)?");
+
     private static int intIn(String name, String v, int min, int max) throws BadInputException {
         long x;
         try {
-            x = Long.parseLong(v.trim());
+            x = longOf(v);
         } catch (NumberFormatException e) {
             throw BadInputException.ofOption(name, "not an integer: '" + v + "'");
         }
@@ -298,21 +297,26 @@ public final class RunOptionsParser {
         return (int) x;
     }
 
+    private static long longOf(String v) {
+        if (!INTEGER.matcher(v).matches()) {
+            throw new NumberFormatException(v);
+        }
+        return Long.parseLong(v);
+    }
+
     private static long longValue(String name, String v) throws BadInputException {
         try {
-            return Long.parseLong(v.trim());
+            return longOf(v);
         } catch (NumberFormatException e) {
             throw BadInputException.ofOption(name, "not an integer: '" + v + "'");
         }
     }
 
     private static double doubleIn(String name, String v, boolean zeroAllowed) throws BadInputException {
-        double x;
-        try {
-            x = Double.parseDouble(v.trim());
-        } catch (NumberFormatException e) {
+        if (!DECIMAL.matcher(v).matches()) {
             throw BadInputException.ofOption(name, "not a number: '" + v + "'");
         }
+        double x = Double.parseDouble(v);
         if (Double.isNaN(x) || Double.isInfinite(x) || x < 0 || (!zeroAllowed && x == 0)) {
             throw BadInputException.ofOption(name, "'" + v + "' must be a finite number "
                     + (zeroAllowed ? ">= 0" : "> 0"));

@@ -11,6 +11,7 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.junit.jupiter.api.Test;
 
 /** The workload's command line (FORMATS 2): thesis flags, long options, errors naming the option. */
@@ -21,7 +22,7 @@ class RunOptionsParserTest {
         assertEquals(400, o.particles);
         assertEquals(1, o.number);
         assertEquals("results", o.out);
-        assertEquals(RunOptions.Policy.SKIP, o.policy);
+        assertEquals(OverrunPolicy.SKIP, o.policy);
         assertFalse(o.ideal);
         assertFalse(o.covariance);
         assertEquals(MclConfig.Memory.PREALLOCATED, o.memory);
@@ -38,10 +39,10 @@ class RunOptionsParserTest {
     @Test
     void theEngineDefaultsToJavaSeAndTheScjEnginesRunsGetTheirOwnRuntimeName() throws BadInputException {
         RunOptions se = RunOptionsParser.parse(new String[] {"run"});
-        assertEquals(RunOptions.Engine.JAVASE, se.engine);
+        assertEquals("javase", se.engine);
         RunOptions scj = RunOptionsParser.parse(new String[] {"run", "--engine", "scj", "--memory", "scoped",
                 "--area-size", "mission=300000", "--area-size=update=4096"});
-        assertEquals(RunOptions.Engine.SCJ, scj.engine);
+        assertEquals("scj", scj.engine);
         assertEquals(MclConfig.Memory.SCOPED, scj.memory);
         assertEquals(se.effectiveRuntimeName() + "-scj", scj.effectiveRuntimeName());
         assertEquals(300000L, scj.areaSizes.get("mission"));
@@ -60,7 +61,7 @@ class RunOptionsParserTest {
         assertEquals("a.txt", o.odo);
         assertEquals("b.txt", o.laser);
         assertEquals("c.txt", o.real);
-        assertEquals(RunOptions.Policy.TERMINATE, o.policy);
+        assertEquals(OverrunPolicy.TERMINATE, o.policy);
         assertEquals("TermTest", o.testFolder());
         assertTrue(o.covariance);
         assertTrue(RunOptionsParser.parse(new String[] {"-h"}).help);
@@ -77,7 +78,7 @@ class RunOptionsParserTest {
         assertEquals(3, o.number);
         assertEquals("temurin-25", o.effectiveRuntimeName());
         assertEquals("data/stay", o.dataset);
-        assertEquals(RunOptions.Policy.QUEUE, o.policy);
+        assertEquals(OverrunPolicy.QUEUE, o.policy);
         assertTrue(o.covariance);
         assertEquals(MclConfig.Memory.ALLOCATING, o.memory);
         assertEquals(MclConfig.Estimate.BEST, o.estimate);

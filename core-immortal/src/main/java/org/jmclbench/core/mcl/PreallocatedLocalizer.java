@@ -5,16 +5,8 @@ package org.jmclbench.core.mcl;
  * particle buffers and a working copy of the generator, so that a job writes only into the
  * spare buffer and commits by swapping references. No allocation once constructed.
  */
-public final class PreallocatedLocalizer implements Localizer {
-    private final int n;
-    private final int pollMask;
-    private final Playground playground;
-    private final MclConfig config;
-
-    // Committed particles and the spare buffer a job writes into.
-    private double[] x;
-    private double[] y;
-    private double[] theta;
+public final class PreallocatedLocalizer extends CommittedParticles {
+    // The spare buffer a job writes into, swapped with the committed particles at its commit.
     private double[] spareX;
     private double[] spareY;
     private double[] spareTheta;
@@ -27,20 +19,12 @@ public final class PreallocatedLocalizer implements Localizer {
     private Rng rng;
     private Rng work;
 
-    // The committed estimate (x, y, theta) and covariance, and an update's results before its commit.
-    private final double[] est = new double[3];
-    private final double[] cov = new double[6];
+    // An update's results before its commit.
     private final double[] newEst = new double[3];
     private final double[] newCov = new double[6];
 
     public PreallocatedLocalizer(MclConfig config, Playground playground, double startX, double startY, double startTheta) {
-        this.n = config.particles;
-        this.pollMask = config.pollMask();
-        this.config = config;
-        this.playground = playground;
-        x = new double[n];
-        y = new double[n];
-        theta = new double[n];
+        super(config, playground);
         spareX = new double[n];
         spareY = new double[n];
         spareTheta = new double[n];
@@ -87,12 +71,7 @@ public final class PreallocatedLocalizer implements Localizer {
         swapBuffers();
         work = rng;
         rng = r;
-        est[0] = newEst[0];
-        est[1] = newEst[1];
-        est[2] = newEst[2];
-        for (int i = 0; i < 6; i++) {
-            cov[i] = config.covariance ? newCov[i] : 0.0;
-        }
+        commitEstimate(newEst, newCov);
         return true;
     }
 
@@ -106,37 +85,5 @@ public final class PreallocatedLocalizer implements Localizer {
         t = theta;
         theta = spareTheta;
         spareTheta = t;
-    }
-
-    @Override
-    public double estimateX() {
-        return est[0];
-    }
-
-    @Override
-    public double estimateY() {
-        return est[1];
-    }
-
-    @Override
-    public double estimateTheta() {
-        return est[2];
-    }
-
-    @Override
-    public void covariance(double[] out) {
-        System.arraycopy(cov, 0, out, 0, 6);
-    }
-
-    @Override
-    public int particleCount() {
-        return n;
-    }
-
-    @Override
-    public void particle(int i, double[] out) {
-        out[0] = x[i];
-        out[1] = y[i];
-        out[2] = theta[i];
     }
 }

@@ -8,28 +8,12 @@ package org.jmclbench.core.mcl;
  * the release ends. A completed job copies its result back into the committed arrays; an aborted
  * one leaves them untouched. The arithmetic is {@link PreallocatedLocalizer}'s, bit for bit.
  */
-public final class ScopedLocalizer implements Localizer {
-    private final int n;
-    private final int pollMask;
-    private final Playground playground;
-    private final MclConfig config;
-
-    // Committed state: the only arrays that outlive a job.
-    private final double[] x;
-    private final double[] y;
-    private final double[] theta;
+public final class ScopedLocalizer extends CommittedParticles {
+    // The committed generator: with the committed particles, the only state that outlives a job.
     private final Rng rng;
-    private final double[] est = new double[3];
-    private final double[] cov = new double[6];
 
     public ScopedLocalizer(MclConfig config, Playground playground, double startX, double startY, double startTheta) {
-        this.n = config.particles;
-        this.pollMask = config.pollMask();
-        this.config = config;
-        this.playground = playground;
-        x = new double[n];
-        y = new double[n];
-        theta = new double[n];
+        super(config, playground);
         rng = new Rng(config.seed);
         Initialisation.place(config, playground, startX, startY, startTheta, rng, x, y, theta, est);
     }
@@ -101,12 +85,7 @@ public final class ScopedLocalizer implements Localizer {
             return false;
         }
         commit(qx, qy, qt, r);
-        est[0] = newEst[0];
-        est[1] = newEst[1];
-        est[2] = newEst[2];
-        for (int i = 0; i < 6; i++) {
-            cov[i] = newCov[i];
-        }
+        commitEstimate(newEst, newCov);
         return true;
     }
 
@@ -116,37 +95,5 @@ public final class ScopedLocalizer implements Localizer {
         System.arraycopy(qy, 0, y, 0, n);
         System.arraycopy(qt, 0, theta, 0, n);
         rng.copyFrom(r);
-    }
-
-    @Override
-    public double estimateX() {
-        return est[0];
-    }
-
-    @Override
-    public double estimateY() {
-        return est[1];
-    }
-
-    @Override
-    public double estimateTheta() {
-        return est[2];
-    }
-
-    @Override
-    public void covariance(double[] out) {
-        System.arraycopy(cov, 0, out, 0, 6);
-    }
-
-    @Override
-    public int particleCount() {
-        return n;
-    }
-
-    @Override
-    public void particle(int i, double[] out) {
-        out[0] = x[i];
-        out[1] = y[i];
-        out[2] = theta[i];
     }
 }

@@ -11,7 +11,7 @@ import java.util.Map;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
-import org.jmclbench.workload.BadInputException;
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /**
  * What the store keeps of a run's attribution (docs/FORMATS.md section 5): one
@@ -36,7 +36,7 @@ public record AttributionData(List<Row> rows, List<MetricRow> metrics, String pa
     }
 
     /** Attributes the run in {@code dir} (a run folder or a folder holding one) for the store. */
-    public static AttributionData of(Path dir) throws IOException, BadInputException {
+    public static AttributionData of(Path dir) throws IOException, BadUsageException {
         return of(RunEvidence.load(dir), Attribution.Settings.defaults(), WarmupSplit.DEFAULT_BOUNDARY_NS);
     }
 

@@ -9,7 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 
-import org.jmclbench.workload.BadInputException;
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /** Reads job lines ({@code odoData.txt}, {@code laserData.txt}: docs/FORMATS.md section 3). */
 public final class JobFileReader {
@@ -18,8 +18,8 @@ public final class JobFileReader {
     private JobFileReader() {
     }
 
-    /** The jobs of one task from its job file; a malformed line is a {@link BadInputException} naming file:line. */
-    public static List<JobRecord> read(Path file, String task) throws IOException, BadInputException {
+    /** The jobs of one task from its job file; a malformed line is a {@link BadUsageException} naming file:line. */
+    public static List<JobRecord> read(Path file, String task) throws IOException, BadUsageException {
         List<JobRecord> jobs = new ArrayList<>();
         try (BufferedReader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
             String line;
@@ -32,16 +32,16 @@ public final class JobFileReader {
                 }
                 String[] f = t.split("\\s+");
                 if (f.length != 7) {
-                    throw BadInputException.atLine(file.toString(), n, "expected 7 columns (index release_ns start_ns end_ns deadline_ns outcome cpu_ns), found " + f.length);
+                    throw BadUsageException.atLine(file.toString(), n, "expected 7 columns (index release_ns start_ns end_ns deadline_ns outcome cpu_ns), found " + f.length);
                 }
                 if (!OUTCOMES.contains(f[5])) {
-                    throw BadInputException.atLine(file.toString(), n, "unknown outcome '" + f[5] + "'");
+                    throw BadUsageException.atLine(file.toString(), n, "unknown outcome '" + f[5] + "'");
                 }
                 try {
                     jobs.add(new JobRecord(task, Integer.parseInt(f[0]), Long.parseLong(f[1]), Long.parseLong(f[2]),
                             Long.parseLong(f[3]), Long.parseLong(f[4]), f[5], Long.parseLong(f[6])));
                 } catch (NumberFormatException e) {
-                    throw BadInputException.atLine(file.toString(), n, "not an integer: " + e.getMessage());
+                    throw BadUsageException.atLine(file.toString(), n, "not an integer: " + e.getMessage());
                 }
             }
         }

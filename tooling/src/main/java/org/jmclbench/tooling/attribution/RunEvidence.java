@@ -10,7 +10,7 @@ import java.util.stream.Stream;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
-import org.jmclbench.workload.BadInputException;
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /**
  * Everything one run folder says about its jobs and its runtime: the job lines of both tasks,
@@ -37,22 +37,22 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
      * Loads the run in {@code dir}: either the run folder itself, or a folder holding exactly
      * one run folder somewhere below it (such as the runner's {@code runs/<run_key>/}).
      */
-    public static RunEvidence load(Path dir) throws IOException, BadInputException {
+    public static RunEvidence load(Path dir) throws IOException, BadUsageException {
         if (!Files.isDirectory(dir)) {
-            throw new BadInputException(dir + ": not a folder");
+            throw new BadUsageException(dir + ": not a folder");
         }
         Path runDir = findRunDir(dir);
         JsonNode summary;
         try {
             summary = new ObjectMapper().readTree(runDir.resolve("summary.json").toFile());
         } catch (IOException e) {
-            throw new BadInputException(runDir.resolve("summary.json") + ": unreadable: " + e.getMessage());
+            throw new BadUsageException(runDir.resolve("summary.json") + ": unreadable: " + e.getMessage());
         }
         List<JobRecord> jobs = new ArrayList<>();
         for (String[] f : new String[][] {{PREDICT_FILE, "predict"}, {UPDATE_FILE, "update"}}) {
             Path p = runDir.resolve(f[0]);
             if (!Files.isRegularFile(p)) {
-                throw new BadInputException(p + ": missing");
+                throw new BadUsageException(p + ": missing");
             }
             jobs.addAll(JobFileReader.read(p, f[1]));
         }
@@ -93,7 +93,7 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
         }
     }
 
-    private static Path findRunDir(Path dir) throws IOException, BadInputException {
+    private static Path findRunDir(Path dir) throws IOException, BadUsageException {
         if (Files.isRegularFile(dir.resolve("summary.json"))) {
             return dir;
         }
@@ -102,10 +102,10 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
             found = s.map(Path::getParent).filter(p -> !p.getFileName().toString().endsWith(".partial")).sorted().toList();
         }
         if (found.isEmpty()) {
-            throw new BadInputException(dir + ": no run folder (summary.json) in it");
+            throw new BadUsageException(dir + ": no run folder (summary.json) in it");
         }
         if (found.size() > 1) {
-            throw new BadInputException(dir + ": " + found.size() + " run folders in it; name one, e.g. " + found.get(0));
+            throw new BadUsageException(dir + ": " + found.size() + " run folders in it; name one, e.g. " + found.get(0));
         }
         return found.get(0);
     }

@@ -5,10 +5,10 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.load.LoadScenario;
 import org.jmclbench.tooling.load.LoadSession;
 import org.jmclbench.tooling.load.LoadSettings;
-import org.jmclbench.workload.BadInputException;
 
 /**
  * What the runner adds around one workload process for attribution and load: the event
@@ -74,7 +74,7 @@ public final class RunInstrumentation implements AutoCloseable {
      * The attribution of the finished run in {@code runFolder}: the store's rows. Never fails
      * the run: a run whose events cannot be read is attributed from its job lines alone.
      */
-    public static AttributionData attribute(Path runFolder) throws IOException, BadInputException {
+    public static AttributionData attribute(Path runFolder) throws IOException, BadUsageException {
         return AttributionData.of(runFolder);
     }
 }

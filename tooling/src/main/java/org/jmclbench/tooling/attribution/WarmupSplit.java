@@ -4,8 +4,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
-import org.jmclbench.workload.record.Stats;
-
 /**
  * Separates the first seconds of a run (class loading, interpretation, JIT compilation) from
  * the rest, so that start-up effects show instead of hiding in the run's averages.
@@ -41,8 +39,8 @@ public final class WarmupSplit {
                         .mapToLong(j -> j.endNs() - j.startNs()).toArray();
                 long[] response = in.stream().filter(j -> j.completed() && j.endNs() >= 0)
                         .mapToLong(j -> j.endNs() - j.releaseNs()).toArray();
-                addStats(rows, task, "taskLatencyNs." + part, Stats.of(latency, latency.length));
-                addStats(rows, task, "responseTimeNs." + part, Stats.of(response, response.length));
+                addStats(rows, task, "taskLatencyNs." + part, SampleStats.of(latency));
+                addStats(rows, task, "responseTimeNs." + part, SampleStats.of(response));
                 rows.add(new MetricRow(task, "released." + part, "value", in.size()));
                 rows.add(new MetricRow(task, "missedOrLate." + part, "value", in.stream().filter(JobRecord::missedOrLate).count()));
             }
@@ -51,14 +49,14 @@ public final class WarmupSplit {
     }
 
     /** The stats of an empty sample are left out (no row), as summary.json writes them as null. */
-    private static void addStats(List<MetricRow> rows, String task, String metric, Stats s) {
-        rows.add(new MetricRow(task, metric, "count", s.count));
-        if (s.count == 0) {
+    private static void addStats(List<MetricRow> rows, String task, String metric, SampleStats s) {
+        rows.add(new MetricRow(task, metric, "count", s.count()));
+        if (s.count() == 0) {
             return;
         }
-        for (Map.Entry<String, Double> e : Map.of("mean", s.mean, "stdev", s.stdev, "min", (double) s.min,
-                "p50", (double) s.p50, "p90", (double) s.p90, "p99", (double) s.p99, "p999", (double) s.p999,
-                "max", (double) s.max).entrySet()) {
+        for (Map.Entry<String, Double> e : Map.of("mean", s.mean(), "stdev", s.stdev(), "min", (double) s.min(),
+                "p50", (double) s.p50(), "p90", (double) s.p90(), "p99", (double) s.p99(), "p999", (double) s.p999(),
+                "max", (double) s.max()).entrySet()) {
             rows.add(new MetricRow(task, metric, e.getKey(), e.getValue()));
         }
     }

@@ -13,7 +13,6 @@ import org.jmclbench.tooling.runner.QuickCommand;
 import org.jmclbench.tooling.runtime.JvmCommand;
 import org.jmclbench.tooling.runtime.JvmsCommand;
 import org.jmclbench.tooling.store.MergeCommand;
-import org.jmclbench.workload.BadInputException;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -54,9 +53,18 @@ public final class JmclbenchCli implements Callable<Integer> {
             return EXIT_BAD_INPUT;
         });
         cli.setExecutionExceptionHandler((ex, cmd, parsed) -> {
-            if (ex instanceof BadInputException) {
+            if (ex instanceof BadUsageException) {
                 System.err.println("jmclbench: " + ex.getMessage());
                 return EXIT_BAD_INPUT;
+            }
+            if (ex instanceof java.io.UncheckedIOException u) {
+                ex = u.getCause();
+            }
+            if (ex instanceof java.io.IOException || ex instanceof java.sql.SQLException) {
+                // the machine failed the command (a full disk, a lost file): one line, not a stack trace
+                String message = String.valueOf(ex.getMessage()).replaceAll("\\s+", " ").strip();
+                System.err.println("jmclbench: " + cmd.getCommandName() + ": " + message);
+                return EXIT_FAILURE;
             }
             throw ex;
         });

@@ -15,7 +15,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.stream.Stream;
 
-import org.jmclbench.workload.BadInputException;
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /**
  * Writes a simulated run as a dataset folder (docs/FORMATS.md section 1). The files are
@@ -37,11 +37,11 @@ public final class DatasetWriter {
      * Writes the dataset into {@code out}. An existing non-empty {@code out} is replaced only
      * with {@code force}, and only when it holds nothing but dataset files.
      */
-    public static void write(SimulatedRun run, Path out, boolean force) throws BadInputException, IOException {
+    public static void write(SimulatedRun run, Path out, boolean force) throws BadUsageException, IOException {
         Path target = out.toAbsolutePath().normalize();
         Path parent = target.getParent();
         if (parent == null) {
-            throw BadInputException.ofOption("--out", "cannot write a dataset at " + out);
+            throw BadUsageException.ofOption("--out", "cannot write a dataset at " + out);
         }
         checkTarget(target, out, force);
         Files.createDirectories(parent);
@@ -64,12 +64,12 @@ public final class DatasetWriter {
         }
     }
 
-    private static void checkTarget(Path target, Path shown, boolean force) throws BadInputException, IOException {
+    private static void checkTarget(Path target, Path shown, boolean force) throws BadUsageException, IOException {
         if (!Files.exists(target)) {
             return;
         }
         if (!Files.isDirectory(target)) {
-            throw BadInputException.ofOption("--out", shown + " exists and is not a folder");
+            throw BadUsageException.ofOption("--out", shown + " exists and is not a folder");
         }
         boolean empty = true;
         boolean onlyDataset = true;
@@ -85,10 +85,10 @@ public final class DatasetWriter {
             return;
         }
         if (!force) {
-            throw BadInputException.ofOption("--out", shown + " is not empty (--force replaces a dataset folder)");
+            throw BadUsageException.ofOption("--out", shown + " is not empty (--force replaces a dataset folder)");
         }
         if (!onlyDataset) {
-            throw BadInputException.ofOption("--out", shown + " holds files that are not a dataset's; not replacing it");
+            throw BadUsageException.ofOption("--out", shown + " holds files that are not a dataset's; not replacing it");
         }
     }
 

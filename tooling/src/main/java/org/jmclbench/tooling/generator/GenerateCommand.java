@@ -4,7 +4,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
-import org.jmclbench.workload.BadInputException;
+import org.jmclbench.tooling.cli.BadUsageException;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -47,10 +47,10 @@ public final class GenerateCommand implements Callable<Integer> {
     boolean noNoise;
 
     @Override
-    public Integer call() throws BadInputException {
+    public Integer call() throws BadUsageException {
         Scenario s = Scenario.byName(scenario);
         if (s == null) {
-            throw BadInputException.ofOption("--scenario",
+            throw BadUsageException.ofOption("--scenario",
                     "unknown scenario '" + scenario + "' (known: " + String.join(", ", Scenario.names()) + ")");
         }
         int odometryCount = odometryCount(duration == null ? s.defaultDuration() : duration);
@@ -60,7 +60,7 @@ public final class GenerateCommand implements Callable<Integer> {
             DatasetWriter.write(run, out, force);
         } catch (IOException e) {
             // Nothing half-written is left under the name; say what the file system refused.
-            throw BadInputException.ofOption("--out", "cannot write " + out + ": " + e.getClass().getSimpleName()
+            throw BadUsageException.ofOption("--out", "cannot write " + out + ": " + e.getClass().getSimpleName()
                     + " " + e.getMessage());
         }
         System.out.printf("jmclbench: wrote %s: %s, seed %d, %.2f s, %d odometry and %d laser events%n", out,
@@ -69,14 +69,14 @@ public final class GenerateCommand implements Callable<Integer> {
     }
 
     /** The number of 50 ms odometry periods in a duration, which must be a positive multiple of 0.05 s. */
-    static int odometryCount(double seconds) throws BadInputException {
+    static int odometryCount(double seconds) throws BadUsageException {
         if (!(seconds > 0) || seconds > MAX_DURATION) {
-            throw BadInputException.ofOption("--duration", "must be more than 0 and at most " + MAX_DURATION + " s");
+            throw BadUsageException.ofOption("--duration", "must be more than 0 and at most " + MAX_DURATION + " s");
         }
         double periods = seconds * Simulator.ODOMETRY_RATE;
         long n = Math.round(periods);
         if (n < 1 || Math.abs(periods - n) > 1e-6) {
-            throw BadInputException.ofOption("--duration", "must be a multiple of the odometry period 0.05 s");
+            throw BadUsageException.ofOption("--duration", "must be a multiple of the odometry period 0.05 s");
         }
         return (int) n;
     }

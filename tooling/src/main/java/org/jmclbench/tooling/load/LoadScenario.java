@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
-import org.jmclbench.workload.BadInputException;
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /** The load a run carries beside its own work: one dimension of the matrix ({@code --load}). */
 public enum LoadScenario {
@@ -32,13 +32,13 @@ public enum LoadScenario {
         return this == ALLOC || this == MIXED;
     }
 
-    /** Parses {@code none,cpu,alloc,mixed} (any subset, no repeats); a bad name is a {@link BadInputException} naming {@code option}. */
-    public static List<LoadScenario> parseList(String option, String value) throws BadInputException {
+    /** Parses {@code none,cpu,alloc,mixed} (any subset, no repeats); a bad name is a {@link BadUsageException} naming {@code option}. */
+    public static List<LoadScenario> parseList(String option, String value) throws BadUsageException {
         List<LoadScenario> out = new ArrayList<>();
         for (String part : value.split(",", -1)) {
             LoadScenario s = parse(option, part.trim());
             if (out.contains(s)) {
-                throw BadInputException.ofOption(option, "'" + part.trim() + "' given twice");
+                throw BadUsageException.ofOption(option, "'" + part.trim() + "' given twice");
             }
             out.add(s);
         }
@@ -46,12 +46,12 @@ public enum LoadScenario {
     }
 
     /** Parses one scenario name. */
-    public static LoadScenario parse(String option, String name) throws BadInputException {
+    public static LoadScenario parse(String option, String name) throws BadUsageException {
         for (LoadScenario s : values()) {
             if (s.label().equals(name)) {
                 return s;
             }
         }
-        throw BadInputException.ofOption(option, "'" + name + "' is not one of none, cpu, alloc, mixed");
+        throw BadUsageException.ofOption(option, "'" + name + "' is not one of none, cpu, alloc, mixed");
     }
 }

@@ -11,7 +11,9 @@ import java.util.TreeSet;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 
-import org.jmclbench.workload.BadInputException;
+import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.store.StoredRun;
+import org.jmclbench.tooling.store.StoredRuns;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -63,21 +65,21 @@ public final class CompareCommand implements Callable<Integer> {
     PrintStream out = System.out;
 
     @Override
-    public Integer call() throws BadInputException {
-        List<ResultsStore.Run> runsA;
-        List<ResultsStore.Run> runsB;
+    public Integer call() throws BadUsageException {
+        List<StoredRun> runsA;
+        List<StoredRun> runsB;
         String nameA;
         String nameB;
         boolean pairByConfig;
         if (db != null) {
             if (!databases.isEmpty()) {
-                throw new BadInputException("--db: give either --db with --a/--b or two databases, not both");
+                throw new BadUsageException("--db: give either --db with --a/--b or two databases, not both");
             }
             if (a == null || b == null) {
-                throw new BadInputException((a == null ? "--a" : "--b") + ": needed with --db (RUNTIME[/PROFILE])");
+                throw new BadUsageException((a == null ? "--a" : "--b") + ": needed with --db (RUNTIME[/PROFILE])");
             }
-            try (ResultsStore store = ResultsStore.open(db, "--db")) {
-                List<ResultsStore.Run> all = filtered(store.runs());
+            try (StoredRuns store = StoredRuns.open(db, "--db")) {
+                List<StoredRun> all = filtered(store.runs());
                 runsA = select(all, a, "--a", db);
                 runsB = select(all, b, "--b", db);
             }
@@ -86,17 +88,17 @@ public final class CompareCommand implements Callable<Integer> {
             pairByConfig = false;
         } else {
             if (databases.size() != 2) {
-                throw new BadInputException("compare: give two databases (A.db B.db) or --db FILE --a RUNTIME --b RUNTIME");
+                throw new BadUsageException("compare: give two databases (A.db B.db) or --db FILE --a RUNTIME --b RUNTIME");
             }
-            try (ResultsStore sa = ResultsStore.open(databases.get(0), "A");
-                 ResultsStore sb = ResultsStore.open(databases.get(1), "B")) {
+            try (StoredRuns sa = StoredRuns.open(databases.get(0), "A");
+                 StoredRuns sb = StoredRuns.open(databases.get(1), "B")) {
                 runsA = filtered(sa.runs());
                 runsB = filtered(sb.runs());
             }
             // one labelling for both sides, so that a configuration is named alike in A and B
-            List<ResultsStore.Run> both = new ArrayList<>(runsA);
+            List<StoredRun> both = new ArrayList<>(runsA);
             both.addAll(runsB);
-            ResultsStore.labelEngines(both);
+            StoredRun.labelEngines(both);
             if (a != null) {
                 runsA = select(runsA, a, "--a", databases.get(0));
             }
@@ -107,13 +109,13 @@ public final class CompareCommand implements Callable<Integer> {
             nameB = databases.get(1) + (b == null ? "" : " " + b);
             pairByConfig = a == null || b == null;
         }
-        Map<String, List<ResultsStore.Run>> groupsA = group(runsA, pairByConfig);
-        Map<String, List<ResultsStore.Run>> groupsB = group(runsB, pairByConfig);
+        Map<String, List<StoredRun>> groupsA = group(runsA, pairByConfig);
+        Map<String, List<StoredRun>> groupsB = group(runsB, pairByConfig);
         out.println("A: " + nameA);
         out.println("B: " + nameB);
         int compared = 0;
-        for (Map.Entry<String, List<ResultsStore.Run>> e : groupsA.entrySet()) {
-            List<ResultsStore.Run> gb = groupsB.get(e.getKey());
+        for (Map.Entry<String, List<StoredRun>> e : groupsA.entrySet()) {
+            List<StoredRun> gb = groupsB.get(e.getKey());
             if (gb == null) {
                 continue;
             }
@@ -123,7 +125,7 @@ public final class CompareCommand implements Callable<Integer> {
             compared++;
         }
         if (compared == 0) {
-            throw new BadInputException("compare: no setting (dataset, policy, particles" + (pairByConfig ? ", runtime" : "")
+            throw new BadUsageException("compare: no setting (dataset, policy, particles" + (pairByConfig ? ", runtime" : "")
                     + ") has runs in both A and B" + (hasFilter() ? " with the given filters" : ""));
         }
         out.println();
@@ -136,7 +138,7 @@ public final class CompareCommand implements Callable<Integer> {
         return policy != null || particles != null || dataset != null;
     }
 
-    private List<ResultsStore.Run> filtered(List<ResultsStore.Run> runs) {
+    private List<StoredRun> filtered(List<StoredRun> runs) {
         return runs.stream()
                 .filter(r -> policy == null || policy.equals(r.policy))
                 .filter(r -> particles == null || particles == r.particles)
@@ -151,9 +153,9 @@ public final class CompareCommand implements Callable<Integer> {
      * What is not named defaults to the Java SE engine and the preallocated style when the runtime
      * has them, so that {@code temurin-25} is the Java SE engine beside {@code temurin-25/scj}.
      */
-    static List<ResultsStore.Run> select(List<ResultsStore.Run> runs, String spec, String option, Path file)
-            throws BadInputException {
-        List<ResultsStore.Run> exact = runs.stream().filter(r -> r.config().equals(spec)).toList();
+    static List<StoredRun> select(List<StoredRun> runs, String spec, String option, Path file)
+            throws BadUsageException {
+        List<StoredRun> exact = runs.stream().filter(r -> r.config().equals(spec)).toList();
         if (!exact.isEmpty()) {
             return exact;
         }
@@ -175,7 +177,7 @@ public final class CompareCommand implements Callable<Integer> {
         final String e = engine;
         final String m = memory;
         final String pr = profile;
-        List<ResultsStore.Run> byRuntime = runs.stream().filter(r -> r.runtime.equals(runtime))
+        List<StoredRun> byRuntime = runs.stream().filter(r -> r.runtime.equals(runtime))
                 .filter(r -> pr == null || pr.equals(r.profile))
                 .filter(r -> e == null || e.equals(r.engine))
                 .filter(r -> m == null || m.equals(r.memory)).toList();
@@ -185,14 +187,14 @@ public final class CompareCommand implements Callable<Integer> {
         if (m == null && byRuntime.stream().anyMatch(r -> "preallocated".equals(r.memory))) {
             byRuntime = byRuntime.stream().filter(r -> "preallocated".equals(r.memory)).toList();
         }
-        TreeSet<String> configs = byRuntime.stream().map(ResultsStore.Run::config).collect(Collectors.toCollection(TreeSet::new));
+        TreeSet<String> configs = byRuntime.stream().map(StoredRun::config).collect(Collectors.toCollection(TreeSet::new));
         if (configs.size() > 1) {
-            throw new BadInputException(option + ": " + spec + " has several configurations in " + file + ", say which: "
+            throw new BadUsageException(option + ": " + spec + " has several configurations in " + file + ", say which: "
                     + String.join(", ", configs));
         }
         if (byRuntime.isEmpty()) {
-            TreeSet<String> known = runs.stream().map(ResultsStore.Run::config).collect(Collectors.toCollection(TreeSet::new));
-            throw new BadInputException(option + ": unknown runtime '" + spec + "' in " + file
+            TreeSet<String> known = runs.stream().map(StoredRun::config).collect(Collectors.toCollection(TreeSet::new));
+            throw new BadUsageException(option + ": unknown runtime '" + spec + "' in " + file
                     + (known.isEmpty() ? " (no runs match the filters)" : " (known: " + String.join(", ", known) + ")"));
         }
         return byRuntime;
@@ -202,9 +204,9 @@ public final class CompareCommand implements Callable<Integer> {
     static final List<String> ENGINES = List.of("javase", "scj", "native", "hvm");
     static final List<String> MEMORY_STYLES = List.of("preallocated", "allocating", "scoped");
 
-    private static Map<String, List<ResultsStore.Run>> group(List<ResultsStore.Run> runs, boolean withConfig) {
-        Map<String, List<ResultsStore.Run>> out = new LinkedHashMap<>();
-        for (ResultsStore.Run r : runs) {
+    private static Map<String, List<StoredRun>> group(List<StoredRun> runs, boolean withConfig) {
+        Map<String, List<StoredRun>> out = new LinkedHashMap<>();
+        for (StoredRun r : runs) {
             String key = String.format(Locale.ROOT, "%s  %s  %d particles%s", r.dataset, r.policy, r.particles,
                     withConfig ? "  " + r.config() : "");
             out.computeIfAbsent(key, k -> new ArrayList<>()).add(r);
@@ -212,7 +214,7 @@ public final class CompareCommand implements Callable<Integer> {
         return out;
     }
 
-    private void printTable(List<ResultsStore.Run> ra, List<ResultsStore.Run> rb) {
+    private void printTable(List<StoredRun> ra, List<StoredRun> rb) {
         String fmt = "%-26s %-24s %-24s %8s  %-20s %s%n";
         out.printf(Locale.ROOT, fmt, "metric", "A", "B", "B/A", "95% CI of B/A", "difference");
         for (Metric m : METRICS) {
@@ -255,7 +257,7 @@ public final class CompareCommand implements Callable<Integer> {
         return new Row(ratio, ci, verdict);
     }
 
-    private static double[] values(List<ResultsStore.Run> runs, Metric m) {
+    private static double[] values(List<StoredRun> runs, Metric m) {
         return runs.stream().map(m::of).filter(v -> v != null).mapToDouble(Double::doubleValue).toArray();
     }
 

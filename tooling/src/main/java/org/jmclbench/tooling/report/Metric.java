@@ -1,8 +1,8 @@
 package org.jmclbench.tooling.report;
 
+import org.jmclbench.tooling.store.StoredRun;
+
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.node.MissingNode;
 
 /**
  * A per-run value the report and compare aggregate over repetitions: read from the
@@ -20,7 +20,6 @@ public enum Metric {
     DEVIATION("deviation xy mean", "m", 1, "/deviation/xy/mean", "run/deviationXY/mean", "run/deviationXY/value",
             "all/deviationXY/mean", "all/deviationXY/value");
 
-    private static final ObjectMapper JSON = SeriesTable.JSON;
 
     /** Name shown in tables. */
     public final String label;
@@ -39,13 +38,13 @@ public enum Metric {
     }
 
     /** The value of a run in {@link #unit}, or null when the run has none (failed, or not recorded). */
-    public Double of(ResultsStore.Run run) {
+    public Double of(StoredRun run) {
         if (!run.ok()) {
             return null;
         }
         Double v = run.metric(metricKeys);
         if (v == null) {
-            JsonNode n = summary(run).at(summaryPointer);
+            JsonNode n = run.summary().at(summaryPointer);
             if (n.isNumber()) {
                 v = n.asDouble();
             }
@@ -53,19 +52,8 @@ public enum Metric {
         return v == null || v.isNaN() ? null : v * scale;
     }
 
-    private static JsonNode summary(ResultsStore.Run run) {
-        if (run.summary == null) {
-            try {
-                run.summary = run.summaryJson == null ? MissingNode.getInstance() : JSON.readTree(run.summaryJson);
-            } catch (Exception e) {
-                run.summary = MissingNode.getInstance();
-            }
-        }
-        return run.summary;
-    }
-
     /** The run's summary.json as a tree (missing node when there is none). */
-    static JsonNode summaryOf(ResultsStore.Run run) {
-        return summary(run);
+    static JsonNode summaryOf(StoredRun run) {
+        return run.summary();
     }
 }

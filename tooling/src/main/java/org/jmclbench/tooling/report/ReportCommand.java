@@ -5,7 +5,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
-import org.jmclbench.workload.BadInputException;
+import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.store.StoredRuns;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -28,7 +29,18 @@ public final class ReportCommand implements Callable<Integer> {
     boolean noExport;
 
     @Override
-    public Integer call() throws BadInputException, IOException {
+    public Integer call() throws BadUsageException, IOException {
+        build(db, out, !noExport);
+        return 0;
+    }
+
+    /**
+     * Builds the report of the database {@code db} into {@code out} ({@code report/} beside the database when
+     * null), the charts' SVG/PNG files too when {@code export}; {@code quick} calls this after its matrix.
+     *
+     * @return the page written, {@code index.html}
+     */
+    public static Path build(Path db, Path out, boolean export) throws BadUsageException, IOException {
         System.setProperty("java.awt.headless", "true");
         long t0 = System.nanoTime();
         if (out == null) {
@@ -36,10 +48,10 @@ public final class ReportCommand implements Callable<Integer> {
             out = parent == null ? Path.of("report") : parent.resolve("report");
         }
         if (Files.exists(out) && !Files.isDirectory(out)) {
-            throw new BadInputException("--out: " + out + ": not a folder");
+            throw new BadUsageException("--out: " + out + ": not a folder");
         }
         ReportModel model;
-        try (ResultsStore store = ResultsStore.open(db, "--db")) {
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
             model = ReportModel.build(store, ReportCommand::progress);
         }
         Files.createDirectories(out);
@@ -47,13 +59,13 @@ public final class ReportCommand implements Callable<Integer> {
         Path resultsDir = db.toAbsolutePath().getParent();
         ReportPage.write(model, index, resultsDir);
         progress("wrote " + index);
-        if (!noExport) {
-            int files = new ChartExporter(model, out.resolve("charts")).exportAll(ReportCommand::progress);
+        if (export) {
+            int files = new ChartExporter(out.resolve("charts")).exportAll(model.charts, ReportCommand::progress);
             progress("wrote " + files + " chart files to " + out.resolve("charts"));
         }
         System.out.printf(java.util.Locale.ROOT, "report: %s (%d runs, %.1f s)%n", index, model.runCount,
                 (System.nanoTime() - t0) / 1e9);
-        return 0;
+        return index;
     }
 
     private static void progress(String line) {

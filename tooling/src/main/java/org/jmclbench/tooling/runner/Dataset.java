@@ -9,9 +9,10 @@ import java.nio.file.Path;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.HexFormat;
-import java.util.Properties;
 
-import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.workload.BadInputException;
+import org.jmclbench.workload.data.DatasetMetadata;
 
 /**
  * A dataset folder given to a matrix by name ({@code match-short}: the project's {@code data/})
@@ -42,18 +43,17 @@ public record Dataset(String label, Path dir, double durationS, String digest) {
     static double duration(Path dir) {
         Path props = dir.resolve("dataset.properties");
         if (Files.isRegularFile(props)) {
-            Properties p = new Properties();
+            // the workload's reader (docs/FORMATS.md 1.2): one grammar for the file everywhere
             try (InputStream in = Files.newInputStream(props)) {
-                p.load(in);
-                String d = p.getProperty("duration");
+                String d = DatasetMetadata.read(in, props.toString()).properties.getProperty("duration");
                 if (d != null) {
                     double v = Double.parseDouble(d.strip());
                     if (v > 0 && Double.isFinite(v)) {
                         return v;
                     }
                 }
-            } catch (IOException | NumberFormatException ignored) {
-                // fall back to the data itself
+            } catch (IOException | BadInputException | NumberFormatException ignored) {
+                // fall back to the data itself; the workload reports a bad file
             }
         }
         return lastTime(dir.resolve("odometry.txt"));

@@ -11,7 +11,6 @@ import java.util.concurrent.Callable;
 import java.util.function.Predicate;
 
 import org.jmclbench.tooling.report.EvaluationDocument;
-import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.JdkInstaller;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
@@ -65,14 +64,9 @@ public final class EvaluateCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         Path home = JmclbenchPaths.home();
         Path file = matrix != null ? matrix : home.resolve("evaluation").resolve(smoke ? "smoke.txt" : "matrix.txt");
-        EvaluationMatrix m;
-        try {
-            m = EvaluationMatrix.read(file);
-            for (EvaluationMatrix.Section s : m.sections) {
-                MatrixOptions.apply(s.spec(), "db", db, "--db");
-            }
-        } catch (BadUsageException e) {
-            throw e.checked();
+        EvaluationMatrix m = EvaluationMatrix.read(file);
+        for (EvaluationMatrix.Section s : m.sections) {
+            MatrixOptions.apply(s.spec(), "db", db, "--db");
         }
         PrintStream o = System.out;
         Path document = out.toAbsolutePath().getParent().resolve("EVALUATION.md");
@@ -111,12 +105,8 @@ public final class EvaluateCommand implements Callable<Integer> {
                 double left = b.sectionSeconds().subList(n - 1, b.sectionSeconds().size()).stream().mapToDouble(Double::doubleValue).sum();
                 o.printf(Locale.ROOT, "evaluate [%s] (section %d/%d; the evaluation's ETA: at most %.1f min, less for runs already in the store)%n",
                         s.name(), n, m.sections.size(), left / 60);
-                MatrixSession.Result r;
-                try {
-                    r = MatrixSession.execute(s.spec(), "jmclbench evaluate [" + s.name() + "] " + file.getFileName(), o, () -> d);
-                } catch (BadUsageException e) {
-                    throw e.checked();
-                }
+                MatrixSession.Result r = MatrixSession.execute(s.spec(), "jmclbench evaluate [" + s.name() + "] "
+                        + file.getFileName(), o, () -> d);
                 if (r.exitCode() != 0) {
                     return r.exitCode();
                 }

@@ -8,7 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
-import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /**
  * The evaluation's matrix file: the lines of a matrix file ({@link MatrixFile}) in {@code [sections]},

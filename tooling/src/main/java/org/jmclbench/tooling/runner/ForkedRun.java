@@ -12,7 +12,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.stream.Stream;
 
 import org.jmclbench.tooling.runtime.ProcessTree;
-import org.jmclbench.tooling.store.RunRecord;
+import org.jmclbench.tooling.store.RunRow;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -50,7 +50,7 @@ public final class ForkedRun {
      * Runs {@code command} with its output in {@code folder} (which must exist), {@code out} being
      * where the command was told to write its run tree.
      */
-    public static RunOutcome execute(List<String> command, Path folder, Path out, double timeoutS,
+    public static ForkOutcome execute(List<String> command, Path folder, Path out, double timeoutS,
                                      java.util.Map<String, String> env) throws IOException {
         Path stdout = folder.resolve("stdout.txt");
         Path stderr = folder.resolve("stderr.txt");
@@ -64,7 +64,7 @@ public final class ForkedRun {
         try {
             p = pb.start();
         } catch (IOException e) {
-            return new RunOutcome(RunRecord.FAILED, null, "cannot start " + command.get(0) + ": " + e.getMessage(), "", 0,
+            return new ForkOutcome(RunRow.FAILED, null, "cannot start " + command.get(0) + ": " + e.getMessage(), "", 0,
                     null, null, null);
         }
         CURRENT.set(p);
@@ -88,18 +88,18 @@ public final class ForkedRun {
         double wall = (System.nanoTime() - t0) / 1e9;
         String tail = tail(stderr);
         if (!finished) {
-            return new RunOutcome(RunRecord.TIMEOUT, null, String.format(java.util.Locale.ROOT,
+            return new ForkOutcome(RunRow.TIMEOUT, null, String.format(java.util.Locale.ROOT,
                     "timed out after %.0f s: process tree killed", timeoutS), tail, wall, null, null, null);
         }
         int code = p.exitValue();
         if (code != 0) {
-            return new RunOutcome(RunRecord.FAILED, code, describeExit(code, tail), tail, wall, null, null, null);
+            return new ForkOutcome(RunRow.FAILED, code, describeExit(code, tail), tail, wall, null, null, null);
         }
         Path leaf;
         try {
             leaf = findLeaf(out);
         } catch (IOException e) {
-            return new RunOutcome(RunRecord.FAILED, code, e.getMessage(), tail, wall, null, null, null);
+            return new ForkOutcome(RunRow.FAILED, code, e.getMessage(), tail, wall, null, null, null);
         }
         Path summaryFile = leaf.resolve("summary.json");
         String text = org.jmclbench.tooling.runtime.ProcessRunner.readText(summaryFile);
@@ -107,15 +107,15 @@ public final class ForkedRun {
         try {
             summary = JSON.readTree(text);
         } catch (IOException e) {
-            return new RunOutcome(RunRecord.FAILED, code, "garbage output: summary.json is not JSON ("
+            return new ForkOutcome(RunRow.FAILED, code, "garbage output: summary.json is not JSON ("
                     + firstLine(e.getMessage()) + ")", tail, wall, leaf, null, null);
         }
         if (summary == null || !summary.isObject() || !SUMMARY_SCHEMA.equals(summary.path("schema").asText())
                 || !"complete".equals(summary.path("status").asText()) || !summary.path("tasks").isObject()) {
-            return new RunOutcome(RunRecord.FAILED, code, "garbage output: summary.json is not a complete "
+            return new ForkOutcome(RunRow.FAILED, code, "garbage output: summary.json is not a complete "
                     + SUMMARY_SCHEMA + " summary", tail, wall, leaf, null, null);
         }
-        return new RunOutcome(RunRecord.OK, code, null, tail, wall, leaf, text, summary);
+        return new ForkOutcome(RunRow.OK, code, null, tail, wall, leaf, text, summary);
     }
 
     static final String PID_FILE = "runner.pid";

@@ -5,7 +5,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 
-import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 
 import picocli.CommandLine.Command;
@@ -79,13 +78,9 @@ public final class MatrixCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        try {
-            MatrixSpec spec = toSpec();
-            String command = "jmclbench matrix " + String.join(" ", commandSpec.commandLine().getParseResult().originalArgs());
-            return MatrixSession.execute(spec, command, System.out, RuntimeDiscovery::discover).exitCode();
-        } catch (BadUsageException e) {
-            throw e.checked();
-        }
+        MatrixSpec spec = toSpec();
+        String command = "jmclbench matrix " + String.join(" ", commandSpec.commandLine().getParseResult().originalArgs());
+        return MatrixSession.execute(spec, command, System.out, RuntimeDiscovery::discover).exitCode();
     }
 
     MatrixSpec toSpec() {

@@ -1,11 +1,14 @@
 package org.jmclbench.tooling.runner;
 
 import java.util.List;
+import java.util.stream.Stream;
+
+import org.jmclbench.core.policy.OverrunPolicy;
 
 /** What an unset matrix option means; the help text quotes these. */
 public final class MatrixDefaults {
     public static final List<String> PROFILES = List.of("default");
-    public static final List<String> POLICIES = List.of("skip");
+    public static final List<String> POLICIES = List.of(OverrunPolicy.SKIP.label);
     /** The engine of JVM runs; native runs are always engine {@code native}. */
     public static final List<String> ENGINES = List.of(Engines.JAVASE);
     /** The memory style; every engine has it. */
@@ -20,7 +23,8 @@ public final class MatrixDefaults {
     public static final double TIMEOUT_FACTOR = 3.0;
     public static final double TIMEOUT_SLACK_S = 60.0;
     /** Policies the workload knows; {@code ideal} is its {@code --ideal} mode. */
-    public static final List<String> KNOWN_POLICIES = List.of("skip", "terminate", "queue", "ideal");
+    public static final List<String> KNOWN_POLICIES = Stream.concat(Stream.of(OverrunPolicy.values()).map(p -> p.label),
+            Stream.of("ideal")).toList();
 
     private MatrixDefaults() {
     }

@@ -6,7 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
-import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /**
  * Reads a matrix file: one {@code key = value} a line, the keys being the long options of

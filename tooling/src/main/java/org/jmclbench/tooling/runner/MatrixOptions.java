@@ -3,9 +3,9 @@ package org.jmclbench.tooling.runner;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.load.LoadScenario;
 import org.jmclbench.tooling.load.LoadSettings;
-import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.CpuList;
 
 /** Parses one matrix setting, from the command line or a matrix file, into a {@link MatrixSpec}. */
@@ -53,11 +53,7 @@ final class MatrixOptions {
             case "particles" -> items(value, at).forEach(v -> spec.particles.add(new Sourced<>(positiveInt(v, at), at)));
             case "datasets" -> items(value, at).forEach(v -> spec.datasets.add(new Sourced<>(v, at)));
             case "load" -> items(value, at).forEach(v -> {
-                try {
-                    LoadScenario.parse(at, v);
-                } catch (org.jmclbench.workload.BadInputException e) {
-                    throw new BadUsageException(e.getMessage());
-                }
+                LoadScenario.parse(at, v);
                 spec.loads.add(new Sourced<>(v, at));
             });
             case "workload-arg" -> spec.workloadArgs.add(new Sourced<>(value, at));
@@ -93,9 +89,18 @@ final class MatrixOptions {
                 }
                 spec.pinCpu = value.strip();
             }
-            case "db" -> spec.db = Path.of(value.strip());
-            case "native" -> spec.nativeBinary = Path.of(value.strip());
+            case "db" -> spec.db = path(value.strip(), at);
+            case "native" -> spec.nativeBinary = path(value.strip(), at);
             default -> throw new BadUsageException(where + ": unknown key '" + key + "' (known: " + String.join(", ", KEYS) + ")");
+        }
+    }
+
+    /** A path, or bad usage (a NUL byte makes Path.of throw; found by MatrixFileFuzzTest). */
+    private static Path path(String v, String at) {
+        try {
+            return Path.of(v);
+        } catch (java.nio.file.InvalidPathException e) {
+            throw new BadUsageException(at + ": '" + v.replace("\0", "\\x00") + "' is not a path");
         }
     }
 

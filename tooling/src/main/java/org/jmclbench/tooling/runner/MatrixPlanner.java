@@ -13,8 +13,8 @@ import java.util.Set;
 import java.util.function.Supplier;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.load.LoadScenario;
-import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.Profile;
@@ -79,13 +79,9 @@ public final class MatrixPlanner {
         }
         List<LoadScenario> loads = new ArrayList<>();
         for (Sourced<String> l : spec.loads) {
-            try {
-                LoadScenario s = LoadScenario.parse(l.where(), l.value());
-                if (!loads.contains(s)) {
-                    loads.add(s);
-                }
-            } catch (org.jmclbench.workload.BadInputException e) {
-                throw new BadUsageException(e.getMessage());
+            LoadScenario s = LoadScenario.parse(l.where(), l.value());
+            if (!loads.contains(s)) {
+                loads.add(s);
             }
         }
         if (loads.isEmpty()) {

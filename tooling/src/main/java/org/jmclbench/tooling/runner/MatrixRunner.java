@@ -16,10 +16,10 @@ import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.ProfileComponent;
 import org.jmclbench.tooling.runtime.ProfileProbe;
 import org.jmclbench.tooling.store.MachineInfo;
-import org.jmclbench.tooling.store.ResultStore;
-import org.jmclbench.tooling.store.RunData;
-import org.jmclbench.tooling.store.RunIngest;
-import org.jmclbench.tooling.store.RunRecord;
+import org.jmclbench.tooling.store.RunDetails;
+import org.jmclbench.tooling.store.RunFolderIngest;
+import org.jmclbench.tooling.store.RunRecorder;
+import org.jmclbench.tooling.store.RunRow;
 import org.jmclbench.tooling.store.StoreMerger;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -39,14 +39,14 @@ public final class MatrixRunner {
     private static final ObjectMapper JSON = new ObjectMapper();
 
     private final ResolvedMatrix matrix;
-    private final ResultStore store;
+    private final RunRecorder store;
     private final MachineInfo machine;
     private final String matrixId;
     private final Path home;
     private final Path jar;
     private final ProfileProbe probe;
 
-    public MatrixRunner(ResolvedMatrix matrix, ResultStore store, MachineInfo machine, String matrixId, Path home,
+    public MatrixRunner(ResolvedMatrix matrix, RunRecorder store, MachineInfo machine, String matrixId, Path home,
                         Path jar, ProfileProbe probe) {
         this.matrix = matrix;
         this.store = store;
@@ -63,7 +63,7 @@ public final class MatrixRunner {
         List<PlannedRun> todo = new ArrayList<>();
         for (PlannedRun r : matrix.plan()) {
             String s = status.get(r.runKey());
-            if (s == null || retryFailed && (s.equals(RunRecord.FAILED) || s.equals(RunRecord.TIMEOUT))) {
+            if (s == null || retryFailed && (s.equals(RunRow.FAILED) || s.equals(RunRow.TIMEOUT))) {
                 todo.add(r);
             }
         }
@@ -81,15 +81,21 @@ public final class MatrixRunner {
         for (PlannedRun run : todo) {
             progress.started(run);
             Finished f = execute(run, aot);
-            RunRecord rec = f.record();
-            store.saveRun(rec, f.data());
+            RunRow rec = f.record();
+            try {
+                store.saveRun(rec, f.data());
+            } catch (SQLException e) {
+                // rolled back: the store holds every run before this one and nothing of it
+                throw new SQLException("--db: " + store.dbFile() + ": cannot record " + run.label() + " ("
+                        + e.getMessage() + "); the runs recorded before it are kept: rerun the same command to resume", e);
+            }
             switch (rec.status()) {
-                case RunRecord.OK -> ok++;
-                case RunRecord.TIMEOUT -> timedOut++;
-                case RunRecord.UNSUPPORTED -> unsupported++;
+                case RunRow.OK -> ok++;
+                case RunRow.TIMEOUT -> timedOut++;
+                case RunRow.UNSUPPORTED -> unsupported++;
                 default -> failed++;
             }
-            if (!rec.status().equals(RunRecord.OK)) {
+            if (!rec.status().equals(RunRow.OK)) {
                 problems.add(String.format("%-11s %s: %s%s", rec.status(), run.label(), rec.failure(),
                         rec.runDir() == null ? "" : " [" + store.baseDir().resolve(rec.runDir()) + "]"));
             }
@@ -101,15 +107,15 @@ public final class MatrixRunner {
     }
 
     /** A run's row and what the store keeps beside it. */
-    private record Finished(RunRecord record, RunData data) {
+    private record Finished(RunRow record, RunDetails data) {
     }
 
     private Finished execute(PlannedRun run, AotTrainer aot) throws IOException {
         String startedAt = Instant.now().toString();
         String engineProblem = Engines.unsupported(run.engine(), run.memory());
         if (engineProblem != null) {
-            return new Finished(record(run, RunRecord.UNSUPPORTED, null, engineProblem, null, startedAt, null, null, null,
-                    List.of()), RunData.empty());
+            return new Finished(record(run, RunRow.UNSUPPORTED, null, engineProblem, null, startedAt, null, null, null,
+                    List.of()), RunDetails.empty());
         }
         ProfileProbe.Support support = probe.check(run.runtime(), run.profile(), matrix.pinCpu());
         LaunchPlan plan = LaunchPlan.of(run.runtime(), run.profile(), matrix.pinCpu());
@@ -130,12 +136,12 @@ public final class MatrixRunner {
             support = ProfileProbe.Support.no(loadProblem);
         }
         if (!support.supported()) {
-            return new Finished(record(run, RunRecord.UNSUPPORTED, null, support.reason(), null, startedAt, null, null,
-                    null, List.of()), RunData.empty());
+            return new Finished(record(run, RunRow.UNSUPPORTED, null, support.reason(), null, startedAt, null, null,
+                    null, List.of()), RunDetails.empty());
         }
         Files.createDirectories(folder);
         List<String> cmd;
-        RunOutcome o;
+        ForkOutcome o;
         // Event capture and load (docs/FORMATS.md sections 3 and 5): the load ends with the run.
         try (RunInstrumentation inst = RunInstrumentation.start(run.runtime().isJvm() ? run.runtime().major() : 0,
                 run.load(), matrix.loadSettings(), folder, java.time.Duration.ofMillis((long) (matrix.timeoutFor(run) * 1000)))) {
@@ -148,41 +154,41 @@ public final class MatrixRunner {
         }
         String status = o.status();
         String failure = o.failure();
-        RunData data = RunData.empty();
-        if (status.equals(RunRecord.OK)) {
+        RunDetails data = RunDetails.empty();
+        if (status.equals(RunRow.OK)) {
             String mismatch = describesAnotherRun(o.summary(), run);
             if (mismatch != null) {
-                status = RunRecord.FAILED;
+                status = RunRow.FAILED;
                 failure = "garbage output: summary.json describes another run (" + mismatch + ")";
             }
         }
-        if (status.equals(RunRecord.OK)) {
+        if (status.equals(RunRow.OK)) {
             try {
-                data = RunIngest.ingest(o.leaf(), o.summary(), run.dataset().dir().resolve("real.txt"));
+                data = RunFolderIngest.ingest(o.leaf(), o.summary(), run.dataset().dir().resolve("real.txt"));
             } catch (IOException | RuntimeException e) {
-                status = RunRecord.FAILED;
+                status = RunRow.FAILED;
                 failure = "garbage output: " + e.getMessage();
-                data = RunData.empty();
+                data = RunDetails.empty();
             }
         }
-        if (status.equals(RunRecord.OK)) {
+        if (status.equals(RunRow.OK)) {
             try {
                 AttributionData a = RunInstrumentation.attribute(o.leaf());
                 for (org.jmclbench.tooling.attribution.MetricRow m : a.metrics()) {
                     if (Double.isFinite(m.value())) {
-                        data.metrics.add(new RunData.Metric(m.task(), m.metric(), m.stat(), m.value()));
+                        data.metrics.add(new RunDetails.Metric(m.task(), m.metric(), m.stat(), m.value()));
                     }
                 }
-                data.series.add(new RunData.Series("pauses", a.pauses()));
+                data.series.add(new RunDetails.Series("pauses", a.pauses()));
                 data.attributions.addAll(a.rows());
-            } catch (IOException | org.jmclbench.workload.BadInputException | RuntimeException e) {
+            } catch (IOException | RuntimeException e) {
                 // The run stands on its own; only its attribution is missing (explain says why).
                 System.err.println("jmclbench: " + run.label() + ": no attribution: " + e.getMessage());
             }
         }
         Path dir = o.leaf() != null ? o.leaf() : folder;
         return new Finished(record(run, status, o.exitCode(), failure, o.stderrTail(), startedAt, o.wallS(),
-                store.baseDir().relativize(dir).toString(), status.equals(RunRecord.OK) ? o.summaryText() : null, cmd), data);
+                store.baseDir().relativize(dir).toString(), status.equals(RunRow.OK) ? o.summaryText() : null, cmd), data);
     }
 
     /**
@@ -215,7 +221,7 @@ public final class MatrixRunner {
         return null;
     }
 
-    private RunRecord record(PlannedRun run, String status, Integer exitCode, String failure, String stderrTail,
+    private RunRow record(PlannedRun run, String status, Integer exitCode, String failure, String stderrTail,
                              String startedAt, Double wallS, String runDir, String summary, List<String> cmd) {
         String cmdJson;
         try {
@@ -223,7 +229,7 @@ public final class MatrixRunner {
         } catch (IOException e) {
             cmdJson = null;
         }
-        return new RunRecord(run.runKey(), matrixId, machine.machineId(), run.runtime().name(), run.runtime().version(),
+        return new RunRow(run.runKey(), matrixId, machine.machineId(), run.runtime().name(), run.runtime().version(),
                 run.profile().name(), run.policy(), run.particles(), run.dataset().label(), run.load().label(), run.repetition(), status,
                 exitCode, failure, stderrTail, startedAt, Instant.now().toString(), wallS, runDir, summary, run.seed(), cmdJson,
                 run.engine(), run.memory());

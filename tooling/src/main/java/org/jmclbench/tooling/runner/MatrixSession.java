@@ -2,11 +2,8 @@ package org.jmclbench.tooling.runner;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.channels.FileChannel;
-import java.nio.channels.FileLock;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.time.Instant;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -14,22 +11,22 @@ import java.util.Map;
 import java.util.UUID;
 import java.util.function.Supplier;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.doctor.Doctor;
-import org.jmclbench.tooling.runtime.BadUsageException;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.ProfileProbe;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.runtime.RuntimeInfo;
 import org.jmclbench.tooling.store.MachineInfo;
-import org.jmclbench.tooling.store.ResultStore;
+import org.jmclbench.tooling.store.RunRecorder;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 
 /**
  * One invocation of {@code matrix} or {@code quick}: resolve the spec (all bad input is found here,
- * before anything runs), take the database's lock, record the machine (with the doctor's checks)
- * and the invocation, run what is left, and print what failed.
+ * before anything runs), open the database to write (which takes its lock), record the machine
+ * (with the doctor's checks) and the invocation, run what is left, and print what failed.
  */
 public final class MatrixSession {
 
@@ -61,43 +58,24 @@ public final class MatrixSession {
             }
             return new Result(0, m.db());
         }
-        Path lockFile = m.db().resolveSibling(m.db().getFileName() + ".lock");
-        FileChannel ch;
-        try {
-            Files.createDirectories(m.db().getParent());
-            ch = FileChannel.open(lockFile, StandardOpenOption.CREATE, StandardOpenOption.WRITE);
-        } catch (IOException e) {
-            throw new BadUsageException("--db: " + m.db() + ": cannot write there (" + e.getClass().getSimpleName() + ")");
-        }
-        try (ch; FileLock lock = ch.tryLock()) {
-            if (lock == null) {
-                throw new BadUsageException("--db: " + m.db() + ": another matrix is writing to it");
+        try (RunRecorder store = RunRecorder.open(m.db(), "--db")) {
+            store.saveMachine(machine, Doctor.toJson(Doctor.system().run()));
+            String matrixId = UUID.randomUUID().toString();
+            store.saveMatrix(matrixId, machine.machineId(), commandText, m.orderSeed(), Instant.now().toString(),
+                    specJson(m));
+            MatrixRunner runner = new MatrixRunner(m, store, machine, matrixId, home, jar, ProfileProbe.withUserCache());
+            List<PlannedRun> todo = runner.remaining(spec.retryFailed);
+            out.printf("matrix %s: %d runs%s, %d already in %s, %d to run (order seed %d)%n", matrixId.substring(0, 8),
+                    m.plan().size(), shardText(m), m.plan().size() - todo.size(), m.db(), todo.size(), m.orderSeed());
+            out.flush();
+            MatrixRunner.Summary s = runner.run(todo, Progress.forConsole(out));
+            out.printf("matrix done: %d ran (%d ok, %d failed, %d timed out, %d unsupported); results in %s%n", s.ran(),
+                    s.ok(), s.failed(), s.timedOut(), s.unsupported(), m.db());
+            if (!s.problems().isEmpty()) {
+                out.println("runs that did not succeed:");
+                s.problems().forEach(p -> out.println("  " + p));
             }
-            ResultStore opened;
-            try {
-                opened = ResultStore.open(m.db());
-            } catch (java.sql.SQLException e) {
-                throw new BadUsageException("--db: " + m.db() + ": not a usable results store (" + e.getMessage() + ")");
-            }
-            try (ResultStore store = opened) {
-                store.saveMachine(machine, Doctor.toJson(Doctor.system().run()));
-                String matrixId = UUID.randomUUID().toString();
-                store.saveMatrix(matrixId, machine.machineId(), commandText, m.orderSeed(), Instant.now().toString(),
-                        specJson(m));
-                MatrixRunner runner = new MatrixRunner(m, store, machine, matrixId, home, jar, ProfileProbe.withUserCache());
-                List<PlannedRun> todo = runner.remaining(spec.retryFailed);
-                out.printf("matrix %s: %d runs%s, %d already in %s, %d to run (order seed %d)%n", matrixId.substring(0, 8),
-                        m.plan().size(), shardText(m), m.plan().size() - todo.size(), m.db(), todo.size(), m.orderSeed());
-                out.flush();
-                MatrixRunner.Summary s = runner.run(todo, Progress.forConsole(out));
-                out.printf("matrix done: %d ran (%d ok, %d failed, %d timed out, %d unsupported); results in %s%n", s.ran(),
-                        s.ok(), s.failed(), s.timedOut(), s.unsupported(), m.db());
-                if (!s.problems().isEmpty()) {
-                    out.println("runs that did not succeed:");
-                    s.problems().forEach(p -> out.println("  " + p));
-                }
-                return new Result(0, m.db());
-            }
+            return new Result(0, m.db());
         }
     }
 

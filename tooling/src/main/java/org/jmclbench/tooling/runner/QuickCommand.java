@@ -5,8 +5,8 @@ import java.util.Locale;
 import java.util.stream.Collectors;
 import java.util.concurrent.Callable;
 
-import org.jmclbench.tooling.cli.JmclbenchCli;
-import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.report.ReportCommand;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 
 import picocli.CommandLine.Command;
@@ -58,23 +58,18 @@ public final class QuickCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        MatrixSession.Result r;
-        try {
-            MatrixSpec spec = spec(db);
-            RuntimeDiscovery d = RuntimeDiscovery.discover();
-            if (timeScale != null) {
-                MatrixOptions.apply(spec, "time-scale", timeScale, "--time-scale");
-            } else {
-                double scale = fitScale(d, spec);
-                if (scale < 1.0) {
-                    MatrixOptions.apply(spec, "time-scale", String.valueOf(scale), "quick");
-                }
+        MatrixSpec spec = spec(db);
+        RuntimeDiscovery d = RuntimeDiscovery.discover();
+        if (timeScale != null) {
+            MatrixOptions.apply(spec, "time-scale", timeScale, "--time-scale");
+        } else {
+            double scale = fitScale(d, spec);
+            if (scale < 1.0) {
+                MatrixOptions.apply(spec, "time-scale", String.valueOf(scale), "quick");
             }
-            r = MatrixSession.execute(spec, "jmclbench quick" + (timeScale == null ? "" : " --time-scale " + timeScale),
-                    System.out, () -> d);
-        } catch (BadUsageException e) {
-            throw e.checked();
         }
+        MatrixSession.Result r = MatrixSession.execute(spec, "jmclbench quick" + (timeScale == null ? "" : " --time-scale " + timeScale),
+                System.out, () -> d);
         if (r.exitCode() != 0) {
             return r.exitCode();
         }
@@ -82,8 +77,11 @@ public final class QuickCommand implements Callable<Integer> {
             System.out.println("results in " + r.db() + " (report: ./jmclbench report --db " + r.db() + ")");
             return 0;
         }
-        int rc = JmclbenchCli.execute("report", "--db", r.db().toString());
-        if (rc != 0) {
+        try {
+            ReportCommand.build(r.db(), null, true);
+        } catch (BadUsageException | java.io.IOException e) {
+            // the runs are recorded either way: say why the page is missing and how to build it later
+            System.err.println("jmclbench: report: " + e.getMessage());
             System.out.println("results in " + r.db() + "; the report could not be built (./jmclbench report --db " + r.db() + ")");
         }
         return 0;

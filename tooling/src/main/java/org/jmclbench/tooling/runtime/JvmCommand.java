@@ -3,6 +3,7 @@ package org.jmclbench.tooling.runtime;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
@@ -27,14 +28,6 @@ public final class JvmCommand implements Callable<Integer> {
 
         @Override
         public Integer call() throws Exception {
-            try {
-                return install();
-            } catch (BadUsageException e) {
-                throw e.checked();
-            }
-        }
-
-        private int install() throws Exception {
             int m;
             try {
                 m = Integer.parseInt(major.trim());

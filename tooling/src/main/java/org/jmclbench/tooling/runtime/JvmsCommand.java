@@ -30,14 +30,6 @@ public final class JvmsCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        try {
-            return list();
-        } catch (BadUsageException e) {
-            throw e.checked();
-        }
-    }
-
-    private int list() throws Exception {
         RuntimeDiscovery d = RuntimeDiscovery.discover();
         for (String j : javas) {
             d.addJava(j);

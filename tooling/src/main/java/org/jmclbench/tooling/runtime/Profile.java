@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /**
  * A runtime profile: components joined by {@code +} ({@code g1+fifo+pinned}); {@code default} is the

@@ -1,11 +1,8 @@
 package org.jmclbench.tooling.store;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
-
-import org.jmclbench.workload.BadInputException;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -26,38 +23,14 @@ public final class MergeCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         for (Path s : sources) {
-            if (!Files.isRegularFile(s)) {
-                throw new BadInputException(s + ": no such database");
-            }
-            checkSchema(s); // every source is checked before the target is touched
+            ResultsDatabase.openToRead(s, null).close(); // every source is checked before the target is touched
         }
-        try (ResultStore target = ResultStore.open(into)) {
+        try (RunRecorder target = RunRecorder.open(into, "--into")) {
             for (Path s : sources) {
-                StoreMerger.Outcome o;
-                try {
-                    o = StoreMerger.merge(target, s);
-                } catch (java.io.IOException | java.sql.SQLException e) {
-                    throw new BadInputException(s + ": " + e.getMessage());
-                }
+                StoreMerger.Outcome o = StoreMerger.merge(target, s);
                 System.out.println(s + ": " + o.taken() + " runs merged, " + o.kept() + " already in " + into);
             }
         }
         return 0;
-    }
-
-    /** A source must be a results store of a schema version this tool reads. */
-    private static void checkSchema(Path db) throws BadInputException {
-        try (java.sql.Connection c = java.sql.DriverManager.getConnection("jdbc:sqlite:file:" + db.toAbsolutePath() + "?mode=ro");
-             java.sql.Statement st = c.createStatement();
-             java.sql.ResultSet rs = st.executeQuery("PRAGMA user_version")) {
-            int v = rs.next() ? rs.getInt(1) : 0;
-            try (java.sql.ResultSet t = st.executeQuery("SELECT count(*) FROM sqlite_master WHERE name = 'runs'")) {
-                if (v < Schema.OLDEST || v > Schema.VERSION || !t.next() || t.getInt(1) != 1) {
-                    throw new BadInputException(db + ": not a jmclbench results store (schema version " + v + ")");
-                }
-            }
-        } catch (java.sql.SQLException e) {
-            throw new BadInputException(db + ": not a jmclbench results store (" + e.getMessage() + ")");
-        }
     }
 }

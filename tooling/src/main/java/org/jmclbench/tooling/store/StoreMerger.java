@@ -31,15 +31,18 @@ public final class StoreMerger {
     private StoreMerger() {
     }
 
-    /** Merges {@code source} into {@code target}. */
-    public static Outcome merge(ResultStore target, Path source) throws SQLException, IOException {
+    /**
+     * Merges {@code source} into {@code target}.
+     *
+     * @throws org.jmclbench.tooling.cli.BadUsageException when the source is not a store this tool reads
+     *                                                     ({@link ResultsDatabase#openToRead}); nothing is merged then
+     */
+    public static Outcome merge(RunRecorder target, Path source) throws SQLException, IOException {
         Path src = source.toAbsolutePath().normalize();
-        if (!Files.isRegularFile(src)) {
-            throw new IOException(source + ": no such database");
-        }
         if (src.equals(target.dbFile())) {
             return new Outcome(0, 0);
         }
+        ResultsDatabase.openToRead(source, null).close();
         var conn = target.connection();
         try (Statement s = conn.createStatement()) {
             conn.commit();
@@ -50,14 +53,6 @@ public final class StoreMerger {
             }
             conn.setAutoCommit(false);
             try {
-                int version;
-                try (ResultSet rs = s.executeQuery("PRAGMA src.user_version")) {
-                    version = rs.next() ? rs.getInt(1) : 0;
-                }
-                if (version < Schema.OLDEST || version > Schema.VERSION) {
-                    throw new IOException(source + ": not a jmclbench results store of schema version " + Schema.OLDEST
-                            + " to " + Schema.VERSION + " (user_version " + version + ")");
-                }
                 java.util.Map<String, String> columns = new java.util.HashMap<>();
                 for (String t : Schema.RUN_TABLES) {
                     List<String> common = columns(s, "src", t);

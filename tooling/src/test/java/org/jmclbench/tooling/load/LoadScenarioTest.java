@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 
-import org.jmclbench.workload.BadInputException;
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.junit.jupiter.api.Test;
 
 class LoadScenarioTest {
@@ -21,9 +21,9 @@ class LoadScenarioTest {
 
     @Test
     void badNamesNameTheOption() {
-        BadInputException e = assertThrows(BadInputException.class, () -> LoadScenario.parseList("--load", "none,gpu"));
+        BadUsageException e = assertThrows(BadUsageException.class, () -> LoadScenario.parseList("--load", "none,gpu"));
         assertEquals("--load: 'gpu' is not one of none, cpu, alloc, mixed", e.getMessage());
-        assertThrows(BadInputException.class, () -> LoadScenario.parseList("--load", "cpu,cpu"));
-        assertThrows(BadInputException.class, () -> LoadScenario.parseList("--load", ""));
+        assertThrows(BadUsageException.class, () -> LoadScenario.parseList("--load", "cpu,cpu"));
+        assertThrows(BadUsageException.class, () -> LoadScenario.parseList("--load", ""));
     }
 }

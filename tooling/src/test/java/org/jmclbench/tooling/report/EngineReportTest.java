@@ -11,6 +11,7 @@ import java.util.Map;
 import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.jmclbench.tooling.store.StoredRuns;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -24,7 +25,7 @@ class EngineReportTest {
     Path dir;
 
     private ReportModel model(Path db) throws Exception {
-        try (ResultsStore store = ResultsStore.open(db, "--db")) {
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
             return ReportModel.build(store, line -> { });
         }
     }

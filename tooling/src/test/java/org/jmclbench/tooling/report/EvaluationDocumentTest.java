@@ -14,6 +14,9 @@ import java.util.TreeMap;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import org.jmclbench.tooling.store.StoredRun;
+import org.jmclbench.tooling.store.StoredRuns;
+
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.Test;
@@ -32,7 +35,7 @@ class EvaluationDocumentTest {
 
     private Path db;
     private String doc;
-    private List<ResultsStore.Run> runs;
+    private List<StoredRun> runs;
 
     /** native, one JVM with both engines and all four memory styles, a JVM with three collectors, hvm. */
     static FixtureDb evaluationStore() {
@@ -89,7 +92,7 @@ class EvaluationDocumentTest {
                 }
             }
         }
-        try (ResultsStore store = ResultsStore.open(db, "--db")) {
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
             runs = store.runs();
         }
     }
@@ -111,7 +114,7 @@ class EvaluationDocumentTest {
     }
 
     private List<String> configs() {
-        return runs.stream().map(ResultsStore.Run::config).distinct().toList();
+        return runs.stream().map(StoredRun::config).distinct().toList();
     }
 
     /** The rows of the table that follows {@code caption}, as cells (header and rule left out). */
@@ -275,7 +278,7 @@ class EvaluationDocumentTest {
         for (List<String> row : rows) {
             Map<String, Double> sum = new TreeMap<>();
             int attributed = 0;
-            for (ResultsStore.Run r : runs) {
+            for (StoredRun r : runs) {
                 if (r.ok() && r.config().equals(row.get(0)) && r.policy.equals("skip") && r.particles == 1600) {
                     attributed++;
                     r.metrics.forEach((k, v) -> {

@@ -15,6 +15,8 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.jmclbench.tooling.store.StoredRun;
+import org.jmclbench.tooling.store.StoredRuns;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -86,20 +88,21 @@ class ReportCommandTest {
         }
         assertNotNull(xss, "the hostile name survives as data");
         assertEquals(3, xss.at("/metrics/MISS_COUNT/n").asInt());
-        assertFalse(xss.get("latencySpectrum").isEmpty());
-        assertEquals(3, xss.get("deviation").size());
+        // the cell's series reach the page through its charts
+        assertFalse(seriesOf(chart(data, "skip", 400, "spectrum"), xss.get("config").asText()).get(0).get("points").isEmpty());
+        assertEquals(3, seriesOf(chart(data, "skip", 400, "deviation-time"), xss.get("config").asText()).size());
         assertNotNull(unsupported);
         assertEquals(3, unsupported.get("unsupported").asInt());
         assertTrue(unsupported.at("/metrics/MISS_COUNT/mean").isNull());
 
         // The mean missCount of a cell is the mean of the runs' summary.json missCount.
-        try (ResultsStore store = ResultsStore.open(db, "--db")) {
-            List<ResultsStore.Run> runs = store.runs().stream()
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
+            List<StoredRun> runs = store.runs().stream()
                     .filter(r -> r.config().equals("temurin-17/g1") && r.policy.equals("terminate") && r.particles == 1600).toList();
             assertEquals(3, runs.size());
             ObjectMapper json = new ObjectMapper();
             double sum = 0;
-            for (ResultsStore.Run r : runs) {
+            for (StoredRun r : runs) {
                 sum += json.readTree(r.summaryJson).get("missCount").asDouble();
             }
             for (JsonNode c : data.get("cells")) {
@@ -109,6 +112,27 @@ class ReportCommandTest {
                 }
             }
         }
+    }
+
+    /** The page's chart of one figure at one setting. */
+    static JsonNode chart(JsonNode data, String policy, Integer particles, String id) {
+        for (JsonNode c : data.get("charts")) {
+            if (c.get("id").asText().equals(id) && c.at("/setting/policy").asText().equals(policy)
+                    && (particles == null ? c.at("/setting/particles").isMissingNode() : c.at("/setting/particles").asInt() == particles)) {
+                return c;
+            }
+        }
+        throw new AssertionError("no chart " + id + " at " + policy + " " + particles);
+    }
+
+    static List<JsonNode> seriesOf(JsonNode chart, String config) {
+        List<JsonNode> out = new java.util.ArrayList<>();
+        chart.get("series").forEach(s -> {
+            if (config.equals(s.path("config").asText(null))) {
+                out.add(s);
+            }
+        });
+        return out;
     }
 
     @Test
@@ -169,9 +193,9 @@ class ReportCommandTest {
         try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + bare); var st = c.createStatement()) {
             st.execute("DELETE FROM metrics");
         }
-        try (ResultsStore full = ResultsStore.open(db, "--db"); ResultsStore summaryOnly = ResultsStore.open(bare, "--db")) {
-            List<ResultsStore.Run> a = full.runs();
-            List<ResultsStore.Run> b = summaryOnly.runs();
+        try (StoredRuns full = StoredRuns.open(db, "--db"); StoredRuns summaryOnly = StoredRuns.open(bare, "--db")) {
+            List<StoredRun> a = full.runs();
+            List<StoredRun> b = summaryOnly.runs();
             assertEquals(a.size(), b.size());
             int compared = 0;
             for (int i = 0; i < a.size(); i++) {

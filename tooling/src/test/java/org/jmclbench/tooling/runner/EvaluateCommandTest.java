@@ -11,8 +11,9 @@ import java.util.Set;
 import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.Fixtures;
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.cli.JmclbenchCli;
-import org.jmclbench.tooling.runtime.BadUsageException;
+import org.jmclbench.tooling.store.StoredRun;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -137,14 +138,14 @@ class EvaluateCommandTest {
         assertEquals(0, JmclbenchCli.execute(args));
         String doc = Files.readString(dir.resolve("docs/EVALUATION.md"));
         assertTrue(doc.contains("- everything but the fake C baseline"), doc);
-        try (var store = org.jmclbench.tooling.report.ResultsStore.open(db, "--db")) {
-            List<org.jmclbench.tooling.report.ResultsStore.Run> runs = store.runs();
+        try (var store = org.jmclbench.tooling.store.StoredRuns.open(db, "--db")) {
+            List<org.jmclbench.tooling.store.StoredRun> runs = store.runs();
             assertEquals(4, runs.size(), "2 sections x 2 repetitions of native; the absent runtime is left out");
             assertEquals(Set.of("skip", "terminate"), runs.stream().map(r -> r.policy).collect(Collectors.toSet()));
         }
         assertTrue(Files.isRegularFile(out.resolve("misses-skip.svg")));
         assertEquals(0, JmclbenchCli.execute(args), "a rerun resumes: nothing is run twice");
-        try (var store = org.jmclbench.tooling.report.ResultsStore.open(db, "--db")) {
+        try (var store = org.jmclbench.tooling.store.StoredRuns.open(db, "--db")) {
             assertEquals(4, store.runs().size());
         }
     }

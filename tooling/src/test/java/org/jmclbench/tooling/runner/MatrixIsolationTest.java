@@ -17,7 +17,7 @@ import java.util.Map;
 
 import org.HdrHistogram.Histogram;
 import org.jmclbench.tooling.Fixtures;
-import org.jmclbench.tooling.store.RunIngest;
+import org.jmclbench.tooling.store.RunFolderIngest;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -91,7 +91,7 @@ class MatrixIsolationTest {
             try (ResultSet rs = s.executeQuery("SELECT h.hdr FROM histograms h JOIN runs r USING (run_key)"
                     + " WHERE r.runtime = 'fake-21' AND h.task = 'predict' AND h.metric = 'taskLatencyNs'")) {
                 assertTrue(rs.next());
-                Histogram h = RunIngest.decode(rs.getString(1));
+                Histogram h = RunFolderIngest.decode(rs.getString(1));
                 assertEquals(9, h.getTotalCount(), "9 completed predict jobs, the skipped one has no latency");
                 assertEquals(2_000_000, h.getMinValue(), 2_000);
             }

@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 
 import org.jmclbench.tooling.Fixtures;
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 

@@ -69,7 +69,7 @@ class StoreMigrationTest {
     @Test
     void openingMigratesTheRunsInPlace() throws Exception {
         Path db = v1Store("old.db");
-        try (ResultStore store = ResultStore.open(db)) {
+        try (RunRecorder store = RunRecorder.open(db, "--db")) {
             assertEquals(4, store.runStatuses().size());
         }
         assertEquals(MIGRATED, enginesAndStyles(db));

@@ -94,14 +94,14 @@ class StoreTest {
 
     @Test
     void latencySeriesKeepsPeaksWhenDownSampled() throws Exception {
-        List<RunIngest.Job> jobs = new ArrayList<>();
+        List<RunFolderIngest.Job> jobs = new ArrayList<>();
         for (int i = 0; i < 5000; i++) {
             long lat = i == 3333 ? 99_000_000 : 1_000_000 + i;
-            jobs.add(new RunIngest.Job(i, i * 50_000_000L, i * 50_000_000L + 1000, i * 50_000_000L + 1000 + lat,
+            jobs.add(new RunFolderIngest.Job(i, i * 50_000_000L, i * 50_000_000L + 1000, i * 50_000_000L + 1000 + lat,
                     i * 50_000_000L + 50_000_000L, "done", lat));
         }
-        JsonNode s = new ObjectMapper().readTree(RunIngest.latencySeries(jobs));
-        assertTrue(s.get("rows").size() <= RunIngest.MAX_SERIES_ROWS);
+        JsonNode s = new ObjectMapper().readTree(RunFolderIngest.latencySeries(jobs));
+        assertTrue(s.get("rows").size() <= RunFolderIngest.MAX_SERIES_ROWS);
         boolean peak = false;
         for (JsonNode row : s.get("rows")) {
             peak |= row.get(2).asLong() == 99_000_000;
@@ -111,8 +111,8 @@ class StoreTest {
         for (int i = 0; i < 4501; i++) {
             rows.add(new double[] {i});
         }
-        List<double[]> kept = RunIngest.strided(rows);
-        assertTrue(kept.size() <= RunIngest.MAX_SERIES_ROWS, "" + kept.size());
+        List<double[]> kept = RunFolderIngest.strided(rows);
+        assertTrue(kept.size() <= RunFolderIngest.MAX_SERIES_ROWS, "" + kept.size());
         assertEquals(4500, kept.get(kept.size() - 1)[0]);
     }
 
@@ -122,7 +122,7 @@ class StoreTest {
         for (int i = 1; i <= 1000; i++) {
             h.recordValue(i * 1000L);
         }
-        Histogram back = RunIngest.decode(RunIngest.encode(h));
+        Histogram back = RunFolderIngest.decode(RunFolderIngest.encode(h));
         assertEquals(1000, back.getTotalCount());
         assertEquals(h.getValueAtPercentile(99), back.getValueAtPercentile(99));
     }

@@ -1,21 +1,18 @@
 package org.jmclbench.workload.data;
 
-import java.io.BufferedReader;
+import java.io.BufferedInputStream;
 import java.io.File;
-import java.io.FileInputStream;
 import java.io.IOException;
-import java.io.InputStreamReader;
-import java.io.Reader;
-import java.nio.charset.StandardCharsets;
-import java.util.Properties;
-import java.util.regex.Pattern;
+import java.io.InputStream;
+import java.util.Arrays;
 
 import org.jmclbench.workload.BadInputException;
-import org.jmclbench.core.mcl.Playground;
 
 /**
  * Reads a dataset folder or the thesis's three bare files (docs/FORMATS.md section 1),
- * rejecting anything malformed with a one-line {@code file:line: problem} message.
+ * rejecting anything malformed with a one-line {@code file:line: problem} message. The grammar
+ * is native/src/dataset.c's too, byte for byte: both readers accept the same files, read the
+ * same doubles and name the same line (DatasetDifferentialTest).
  */
 public final class DatasetReader {
     public static final String ODOMETRY = "odometry.txt";
@@ -26,121 +23,53 @@ public final class DatasetReader {
     private DatasetReader() {
     }
 
-    /** Reads {@code odometry.txt}, {@code laser.txt}, {@code real.txt} and the optional {@code dataset.properties}. */
+    /**
+     * Reads {@code odometry.txt}, {@code laser.txt}, {@code real.txt} and the optional
+     * {@code dataset.properties}, in this order (the C reader's too, so that a folder with two
+     * problems is named by the same one).
+     */
     public static Dataset readFolder(File dir) throws BadInputException {
         if (!dir.isDirectory()) {
             throw new BadInputException(dir.getPath() + ": no such dataset folder");
         }
-        Properties meta = new Properties();
+        File odo = new File(dir, ODOMETRY);
+        File laser = new File(dir, LASER);
+        File real = new File(dir, REAL);
+        double[][] o = readColumns(odo, 4);
+        double[][] l = readColumns(laser, 2);
+        double[][] r = readColumns(real, 4);
         File metaFile = new File(dir, METADATA);
-        if (metaFile.isFile()) {
-            try (Reader r = new InputStreamReader(new FileInputStream(metaFile), StandardCharsets.UTF_8)) {
-                meta.load(r);
-            } catch (IOException | IllegalArgumentException e) {
-                throw new BadInputException(metaFile.getPath() + ": cannot read: " + e.getMessage());
+        DatasetMetadata meta = DatasetMetadata.none();
+        InputStream in = DataGrammar.open(metaFile, true);
+        if (in != null) {
+            try (InputStream stream = in) {
+                meta = DatasetMetadata.read(new BufferedInputStream(stream), metaFile.getPath());
+            } catch (IOException e) {
+                throw new BadInputException(metaFile.getPath() + ": cannot read");
             }
         }
-        return read(new File(dir, ODOMETRY), new File(dir, LASER), new File(dir, REAL), meta, metaFile, dir);
+        return dataset(o, l, r, meta, dir, odo, laser, real);
     }
 
     /** Reads the thesis's three files (no metadata: the thesis's playground, the first real pose as start). */
     public static Dataset readFiles(File odo, File laser, File real) throws BadInputException {
-        return read(odo, laser, real, new Properties(), null, null);
+        double[][] o = readColumns(odo, 4);
+        double[][] l = readColumns(laser, 2);
+        double[][] r = readColumns(real, 4);
+        return dataset(o, l, r, DatasetMetadata.none(), null, odo, laser, real);
     }
 
-    private static Dataset read(File odoFile, File laserFile, File realFile, Properties meta, File metaFile,
-            File folder) throws BadInputException {
-        double[][] odo = readColumns(odoFile, 4);
-        double[][] laser = readColumns(laserFile, 2);
-        double[][] real = readColumns(realFile, 4);
-        String metaName = metaFile == null ? "" : metaFile.getPath();
-        Playground playground = playground(meta, metaName);
-        double sx;
-        double sy;
-        double st;
-        if (meta.getProperty("start.x") != null || meta.getProperty("start.y") != null
-                || meta.getProperty("start.theta") != null) {
-            sx = number(meta, "start.x", metaName);
-            sy = number(meta, "start.y", metaName);
-            st = number(meta, "start.theta", metaName);
-        } else {
-            sx = real[1][0];
-            sy = real[2][0];
-            st = real[3][0];
-        }
-        String name = meta.getProperty("scenario");
+    private static Dataset dataset(double[][] odo, double[][] laser, double[][] real, DatasetMetadata meta,
+            File folder, File odoFile, File laserFile, File realFile) {
+        double sx = meta.startKnown ? meta.startX : real[1][0];
+        double sy = meta.startKnown ? meta.startY : real[2][0];
+        double st = meta.startKnown ? meta.startTheta : real[3][0];
+        String name = meta.properties.getProperty("scenario");
         if (name == null || name.isEmpty()) {
             name = folder != null ? folder.getName() : odoFile.getName();
         }
-        return new Dataset(odo, laser, real, playground, sx, sy, st, meta, name, folder, odoFile, laserFile,
-                realFile);
-    }
-
-    private static Playground playground(Properties meta, String metaName) throws BadInputException {
-        Playground thesis = Playground.thesis();
-        double w = meta.getProperty("playground.width") == null ? thesis.width
-                : number(meta, "playground.width", metaName);
-        double h = meta.getProperty("playground.height") == null ? thesis.height
-                : number(meta, "playground.height", metaName);
-        double[] bx = thesis.beaconX;
-        double[] by = thesis.beaconY;
-        String beacons = meta.getProperty("beacons");
-        if (beacons != null) {
-            String[] pairs = beacons.trim().split(";");
-            bx = new double[pairs.length];
-            by = new double[pairs.length];
-            for (int i = 0; i < pairs.length; i++) {
-                String[] xy = pairs[i].trim().split(",");
-                if (xy.length != 2) {
-                    throw new BadInputException(metaName + ": beacons: expected x,y;x,y;... but got '" + beacons + "'");
-                }
-                bx[i] = parseFinite(xy[0].trim(), metaName + ": beacons");
-                by[i] = parseFinite(xy[1].trim(), metaName + ": beacons");
-            }
-        }
-        if (!(w > 0) || !(h > 0)) {
-            throw new BadInputException(metaName + ": playground size must be positive");
-        }
-        return new Playground(w, h, bx, by);
-    }
-
-    private static double number(Properties meta, String key, String metaName) throws BadInputException {
-        String v = meta.getProperty(key);
-        if (v == null) {
-            throw new BadInputException(metaName + ": " + key + ": missing");
-        }
-        return parseFinite(v.trim(), metaName + ": " + key);
-    }
-
-    private static double parseFinite(String token, String where) throws BadInputException {
-        double v;
-        try {
-            v = Double.parseDouble(token);
-        } catch (NumberFormatException e) {
-            throw new BadInputException(where + ": not a number: '" + token + "'");
-        }
-        if (Double.isNaN(v) || Double.isInfinite(v)) {
-            throw new BadInputException(where + ": not a finite number: '" + token + "'");
-        }
-        return v;
-    }
-
-    /** A plain decimal number (what %.16e and C's strtod agree on): no hex, no 'd'/'f' suffix, no NaN or infinity. */
-    private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
-
-    private static double number(String token, String file, int line) throws BadInputException {
-        if (!DECIMAL.matcher(token).matches()) {
-            String t = token.toLowerCase(java.util.Locale.ROOT).replace("+", "").replace("-", "");
-            if (t.equals("nan") || t.equals("inf") || t.equals("infinity")) {
-                throw BadInputException.atLine(file, line, "not a finite number: '" + token + "'");
-            }
-            throw BadInputException.atLine(file, line, "not a number: '" + token + "'");
-        }
-        double v = Double.parseDouble(token);
-        if (Double.isInfinite(v)) {
-            throw BadInputException.atLine(file, line, "not a finite number: '" + token + "' (overflows)");
-        }
-        return v;
+        return new Dataset(odo, laser, real, meta.playground, sx, sy, st, meta.properties, name, folder, odoFile,
+                laserFile, realFile);
     }
 
     /**
@@ -149,55 +78,97 @@ public final class DatasetReader {
      */
     static double[][] readColumns(File file, int columns) throws BadInputException {
         String name = file.getPath();
-        if (!file.isFile()) {
-            throw new BadInputException(name + ": no such file");
+        try (InputStream in = DataGrammar.open(file, false)) {
+            return readColumns(in, name, columns);
+        } catch (IOException e) {
+            throw new BadInputException(name + ": cannot read");
         }
+    }
+
+    /**
+     * The same from a stream (docs/FORMATS.md 1.1), {@code name} being what messages call it:
+     * {@code columns} arrays of the rows' values.
+     */
+    public static double[][] readColumns(InputStream in, String name, int columns) throws BadInputException {
         double[][] out = new double[columns][256];
+        int[] start = new int[columns];
+        int[] length = new int[columns];
+        double[] value = new double[1];
         int count = 0;
-        try (BufferedReader r = new BufferedReader(
-                new InputStreamReader(new FileInputStream(file), StandardCharsets.UTF_8))) {
-            String line;
-            int lineNo = 0;
-            double previous = 0.0;
-            while ((line = r.readLine()) != null) {
+        DataGrammar.Lines lines = new DataGrammar.Lines(in);
+        int lineNo = 0;
+        double previous = 0.0;
+        try {
+            while (lines.next()) {
                 lineNo++;
-                String s = line.trim();
-                if (s.isEmpty() || s.charAt(0) == '#') {
-                    continue;
+                byte[] b = lines.line;
+                int n = lines.length;
+                int first = 0;
+                while (first < n && DataGrammar.isBlank(b[first])) {
+                    first++;
                 }
-                String[] tokens = s.split("\\s+");
-                if (tokens.length != columns) {
+                if (first == n || b[first] == '#') {
+                    continue; // blank line or comment
+                }
+                int tokens = split(b, n, start, length);
+                if (tokens != columns) {
                     throw BadInputException.atLine(name, lineNo,
-                            "expected " + columns + " columns but found " + tokens.length);
+                            "expected " + columns + " columns but found " + tokens);
                 }
                 if (count == out[0].length) {
                     for (int c = 0; c < columns; c++) {
-                        out[c] = java.util.Arrays.copyOf(out[c], count * 2);
+                        out[c] = Arrays.copyOf(out[c], count * 2);
                     }
                 }
                 for (int c = 0; c < columns; c++) {
-                    out[c][count] = number(tokens[c], name, lineNo);
+                    int r = DataGrammar.parseNumber(b, start[c], length[c], value);
+                    if (r != DataGrammar.NUM_OK) {
+                        throw BadInputException.atLine(name, lineNo,
+                                DataGrammar.numberProblem(r, b, start[c], length[c]));
+                    }
+                    out[c][count] = value[0];
                 }
                 double t = out[0][count];
-                if (t < 0) {
-                    throw BadInputException.atLine(name, lineNo, "negative time " + tokens[0]);
-                }
-                if (count > 0 && t < previous) {
-                    throw BadInputException.atLine(name, lineNo,
-                            "time " + tokens[0] + " is before the previous line's (not sorted by time)");
+                if (t < 0 || (count > 0 && t < previous)) {
+                    String time = DataGrammar.quote(b, start[0], length[0]);
+                    throw BadInputException.atLine(name, lineNo, t < 0 ? "negative time " + time
+                            : "time " + time + " is before the previous line's (not sorted by time)");
                 }
                 previous = t;
                 count++;
             }
         } catch (IOException e) {
-            throw new BadInputException(name + ": cannot read: " + e.getMessage());
+            throw new BadInputException(name + ": cannot read");
         }
         if (count == 0) {
             throw new BadInputException(name + ": empty file (no data lines)");
         }
         for (int c = 0; c < columns; c++) {
-            out[c] = java.util.Arrays.copyOf(out[c], count);
+            out[c] = Arrays.copyOf(out[c], count);
         }
         return out;
+    }
+
+    /** The blank-separated tokens of {@code b[0..n)}: the first starts and lengths, and their count. */
+    private static int split(byte[] b, int n, int[] start, int[] length) {
+        int tokens = 0;
+        int i = 0;
+        for (;;) {
+            while (i < n && DataGrammar.isBlank(b[i])) {
+                i++;
+            }
+            if (i == n) {
+                return tokens;
+            }
+            int from = i;
+            while (i < n && !DataGrammar.isBlank(b[i])) {
+                i++;
+            }
+            if (tokens < start.length) {
+                start[tokens] = from;
+                length[tokens] = i - from;
+            }
+            tokens++;
+        }
     }
 }

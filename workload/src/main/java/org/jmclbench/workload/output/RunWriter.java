@@ -11,6 +11,7 @@ import java.util.Locale;
 
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.engine.EngineFacts;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.core.record.Deviation;
 import org.jmclbench.core.record.JobRecords;
@@ -29,7 +30,7 @@ public final class RunWriter {
     private final Timeline timeline;
     private final JobRecords records;
     private final Environment environment;
-    private java.util.Map<String, Object> engine;
+    private EngineFacts engine = EngineFacts.NONE;
     private java.util.List<MemoryArea> memory = java.util.Collections.emptyList();
 
     public RunWriter(RunOptions options, Dataset dataset, Timeline timeline, JobRecords records,
@@ -41,12 +42,8 @@ public final class RunWriter {
         this.environment = environment;
     }
 
-    /**
-     * Facts about the release engine of a real-time run (thread priorities, how CPU time and
-     * the GC log were obtained, allocation in the measured window), written as summary.json's
-     * {@code "engine"} object; values are strings, numbers, booleans or null.
-     */
-    public RunWriter engine(java.util.Map<String, Object> facts) {
+    /** What the engine tells about how it ran, written after its kind in summary.json's {@code "engine"} object. */
+    public RunWriter engine(EngineFacts facts) {
         this.engine = facts;
         return this;
     }
@@ -131,7 +128,7 @@ public final class RunWriter {
         j.name("status").value("complete");
         j.name("parameters").beginObject();
         j.name("runtimeName").value(options.effectiveRuntimeName());
-        j.name("engine").value(options.engine.label);
+        j.name("engine").value(options.engine);
         j.name("particles").value(options.particles);
         j.name("number").value(options.number);
         j.name("policy").value(options.policy.label);
@@ -177,16 +174,8 @@ public final class RunWriter {
         writeStats(j, dispatcherLateness());
         // Every run, ideal ones included, says which engine produced it.
         j.name("engine").beginObject();
-        j.name("kind").value(options.engine.label);
-        if (engine != null) {
-            for (java.util.Map.Entry<String, Object> e : engine.entrySet()) {
-                if (e.getKey().equals("kind")) {
-                    continue;
-                }
-                // Json.any: nested maps (engine.clock, engine.loadAlloc) stay JSON objects.
-                j.name(e.getKey()).any(e.getValue());
-            }
-        }
+        j.name("kind").value(options.engine);
+        engine.writeTo(j);
         j.endObject();
         j.name("memory").beginObject();
         j.name("areas").beginArray();
@@ -264,105 +253,6 @@ public final class RunWriter {
     private static void writeText(File f, String text) throws IOException {
         try (Writer w = new BufferedWriter(new OutputStreamWriter(new FileOutputStream(f), StandardCharsets.UTF_8))) {
             w.write(text);
-        }
-    }
-
-    /** The counts and statistics of one task (or of all, task = -1) for summary.json. */
-    static final class TaskSummary {
-        int released;
-        int completed;
-        int done;
-        int late;
-        int skipped;
-        int terminated;
-        int missCount;
-        Stats releaseJitter;
-        Stats taskLatency;
-        Stats responseTime;
-        Stats cpu;
-
-        static TaskSummary of(JobRecords r, int task, RunOptions o) {
-            TaskSummary s = new TaskSummary();
-            int n = r.size();
-            long[] jitter = new long[n];
-            long[] latency = new long[n];
-            long[] response = new long[n];
-            long[] cpu = new long[n];
-            int nj = 0;
-            int nl = 0;
-            int nr = 0;
-            int nc = 0;
-            for (int k = 0; k < n; k++) {
-                if (task >= 0 && r.timeline.task(k) != task) {
-                    continue;
-                }
-                byte out = r.outcome[k];
-                if (out == JobRecords.PENDING) {
-                    continue; // never released (a run cut short)
-                }
-                s.released++;
-                switch (out) {
-                    case JobRecords.DONE:
-                        s.done++;
-                        break;
-                    case JobRecords.LATE:
-                        s.late++;
-                        break;
-                    case JobRecords.SKIPPED:
-                        s.skipped++;
-                        break;
-                    case JobRecords.TERMINATED:
-                        s.terminated++;
-                        break;
-                    default:
-                        break;
-                }
-                if (r.startNs[k] >= 0 && r.releaseNs[k] >= 0) {
-                    jitter[nj++] = r.startNs[k] - r.releaseNs[k];
-                }
-                if (r.completed(k) && r.startNs[k] >= 0 && r.endNs[k] >= 0) {
-                    latency[nl++] = r.endNs[k] - r.startNs[k];
-                    if (r.releaseNs[k] >= 0) {
-                        response[nr++] = r.endNs[k] - r.releaseNs[k];
-                    }
-                }
-                if (r.cpuNs[k] >= 0) {
-                    cpu[nc++] = r.cpuNs[k];
-                }
-            }
-            s.completed = s.done + s.late;
-            if (o.ideal) {
-                s.missCount = 0;
-            } else if (o.policy == RunOptions.Policy.QUEUE) {
-                s.missCount = s.late;
-            } else {
-                s.missCount = s.skipped + s.terminated;
-            }
-            s.releaseJitter = Stats.of(jitter, nj);
-            s.taskLatency = Stats.of(latency, nl);
-            s.responseTime = Stats.of(response, nr);
-            s.cpu = Stats.of(cpu, nc);
-            return s;
-        }
-
-        void writeTo(Json j) {
-            j.beginObject();
-            j.name("released").value(released);
-            j.name("completed").value(completed);
-            j.name("done").value(done);
-            j.name("late").value(late);
-            j.name("skipped").value(skipped);
-            j.name("terminated").value(terminated);
-            j.name("missCount").value(missCount);
-            j.name("releaseJitterNs");
-            writeStats(j, releaseJitter);
-            j.name("taskLatencyNs");
-            writeStats(j, taskLatency);
-            j.name("responseTimeNs");
-            writeStats(j, responseTime);
-            j.name("cpuNs");
-            writeStats(j, cpu);
-            j.endObject();
         }
     }
 }

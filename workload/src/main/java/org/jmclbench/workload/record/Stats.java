@@ -65,6 +65,21 @@ public final class Stats {
         return sorted[Math.max(0, Math.min(sorted.length - 1, i))];
     }
 
+    /** Stands for +infinity in {@link #rankOfReleases}: a release whose job never completed. */
+    public static final long NOT_COMPLETED = Long.MAX_VALUE;
+
+    /**
+     * The nearest-rank value at q = perMille / 1000 of a sample of {@code released} values of which
+     * the {@code completed} smallest are {@code sorted[0..completed-1]} and the rest are +infinity
+     * (jobs dropped or aborted, which never answer): {@link #NOT_COMPLETED} when the rank falls
+     * among those. Requires {@code 0 < released} and {@code completed <= released}.
+     */
+    public static long rankOfReleases(long[] sorted, int completed, int released, int perMille) {
+        int i = (int) ((perMille * (long) released + 999) / 1000) - 1;
+        i = Math.max(0, Math.min(released - 1, i));
+        return i < completed ? sorted[i] : NOT_COMPLETED;
+    }
+
     /** An empty sample's statistics. */
     public static Stats empty() {
         return of(new long[0], 0);

@@ -97,7 +97,7 @@ public final class ReleaseAccuracyMain {
             deadline[k] = release[k] + periodUs * 1000L;
         }
         JobRecords records = Records.periodic(loops, periodUs / 1e6);
-        new ReleaseEngine(ReleaseSchedule.of(release, deadline, task), new SkipPolicy(), EMPTY_JOB,
+        new ReleaseEngine(ReleaseSchedule.of(release, deadline, task), new SkipGate(), EMPTY_JOB,
                 records, cpu, spinUs * 1000L).run();
         return records;
     }

@@ -6,7 +6,7 @@ import org.jmclbench.core.record.JobRecords;
 /**
  * The one thread that walks the merged timeline: it sleeps until each event's absolute
  * release time on the monotonic clock, notes when it actually woke, lets the
- * {@link OverrunPolicy} admit or drop the event, and releases it to its task's handler.
+ * {@link PolicyGate} admit or drop the event, and releases it to its task's handler.
  *
  * <p>The wait is cyclictest's: park until the absolute target (re-parking after early
  * returns), optionally park only until {@code spinNs} before it and busy-spin the rest.
@@ -16,7 +16,7 @@ public final class ReleaseDispatcher implements Runnable {
     private final long[] releaseNs;
     private final int[] task;
     private final TaskHandler[] handlers;
-    private final OverrunPolicy policy;
+    private final PolicyGate policy;
     private final JobRecords records;
     private final long spinNs;
     private long runStartNs;
@@ -28,7 +28,7 @@ public final class ReleaseDispatcher implements Runnable {
      * @param task      each event's task, an index into {@code handlers}
      */
     public ReleaseDispatcher(long[] releaseNs, int[] task, TaskHandler[] handlers,
-                             OverrunPolicy policy, JobRecords records, long spinNs) {
+                             PolicyGate policy, JobRecords records, long spinNs) {
         this.releaseNs = releaseNs;
         this.task = task;
         this.handlers = handlers;

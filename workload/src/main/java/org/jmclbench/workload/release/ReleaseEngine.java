@@ -18,7 +18,7 @@ public final class ReleaseEngine {
     private static final String[] TASK_NAMES = {"predict", "update"};
 
     private final ReleaseSchedule schedule;
-    private final OverrunPolicy policy;
+    private final PolicyGate policy;
     private final EventJob job;
     private final JobRecords records;
     private final ThreadCpuClock cpuClock;
@@ -26,7 +26,7 @@ public final class ReleaseEngine {
     private long runStartNanoTime;
     private long allocatedBytes = -1;
 
-    public ReleaseEngine(ReleaseSchedule schedule, OverrunPolicy policy, EventJob job,
+    public ReleaseEngine(ReleaseSchedule schedule, PolicyGate policy, EventJob job,
                          JobRecords records, ThreadCpuClock cpuClock, long spinNs) {
         if (records.outcome.length < schedule.size()) {
             throw new IllegalArgumentException("records hold " + records.outcome.length

@@ -7,7 +7,7 @@ import org.jmclbench.core.record.JobRecords;
 /**
  * The dedicated thread of one task (predict or update), like RTSJ's BoundAsyncEventHandler:
  * it takes the events the dispatcher released to it, in order, runs their jobs on the robot
- * under the run's {@link OverrunPolicy}, and records each job's times and outcome.
+ * under the run's {@link PolicyGate}, and records each job's times and outcome.
  *
  * <p>The release queue is a preallocated single-producer (dispatcher), single-consumer
  * (this thread) ring large enough for every event of the task, so it never fills and never
@@ -17,7 +17,7 @@ public final class TaskHandler implements Runnable {
     private static final int STOP = -1;
 
     private final String name;
-    private final OverrunPolicy policy;
+    private final PolicyGate policy;
     private final EventJob job;
     private final JobRecords records;
     private final ThreadCpuClock cpuClock;
@@ -34,7 +34,7 @@ public final class TaskHandler implements Runnable {
      * @param capacity the number of events of this task in the replay (the queue's size
      *                 beyond that is for the stop mark)
      */
-    public TaskHandler(String name, int capacity, OverrunPolicy policy, EventJob job,
+    public TaskHandler(String name, int capacity, PolicyGate policy, EventJob job,
                        JobRecords records, ThreadCpuClock cpuClock) {
         this.name = name;
         this.policy = policy;

@@ -82,6 +82,25 @@ class IdealCrossCheckTest {
             assertTrue(Math.abs(dj.get(k) - dc.get(k)) <= TOL,
                     k + ": Java " + dj.get(k) + ", C " + dc.get(k) + " (" + options + ")");
         }
+        // The deadline accounting of summary.json (predict, update, all in order) is the same in both.
+        String sj = read(javaRun.resolve("summary.json"));
+        String sc = read(cRun.resolve("summary.json"));
+        for (String k : new String[] {"released", "completed", "done", "late", "skipped", "terminated", "missCount",
+            "deadlineMisses", "missRatio"}) {
+            List<String> vj = jsonNumbers(sj, k);
+            assertTrue(vj.size() >= 3, "summary.json lacks " + k);
+            assertEquals(vj, jsonNumbers(sc, k), k + " in summary.json (Java, C; " + options + ")");
+        }
+    }
+
+    /** Every value of the key {@code "name": <number>} in the text, in order, as numbers' texts normalised. */
+    private static List<String> jsonNumbers(String json, String name) {
+        List<String> out = new ArrayList<>();
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\"" + name + "\": (-?[0-9.eE+-]+)").matcher(json);
+        while (m.find()) {
+            out.add(Double.toString(Double.parseDouble(m.group(1))));
+        }
+        return out;
     }
 
     /** Runs one ideal run and returns its run folder. */

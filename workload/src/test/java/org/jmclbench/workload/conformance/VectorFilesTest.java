@@ -18,6 +18,7 @@ import org.junit.jupiter.api.io.TempDir;
 class VectorFilesTest {
     private static final String[] FILES = {
         "rng.txt", "uniform.txt", "gaussian.txt", "wrap.txt", "bearing.txt", "likelihood.txt", "resample.txt", "mcl.txt",
+        "deadlines.txt",
     };
 
     @Test

@@ -158,6 +158,7 @@ class DatasetReaderTest {
         Files.write(new File(dir, "dataset.properties").toPath(), "start.x=NaN\nstart.y=1\nstart.theta=0\n"
                 .getBytes(StandardCharsets.UTF_8));
         BadInputException e = assertThrows(BadInputException.class, () -> DatasetReader.readFolder(dir));
-        assertTrue(e.getMessage().contains("dataset.properties: start.x"), e.getMessage());
+        assertEquals(new File(dir, "dataset.properties").getPath() + ":1: start.x: not a finite number: 'NaN'",
+                e.getMessage());
     }
 }

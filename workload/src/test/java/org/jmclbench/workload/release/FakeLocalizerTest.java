@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.concurrent.TimeUnit;
+
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
@@ -92,7 +94,7 @@ class FakeLocalizerTest {
             FakeLocalizer fake = new FakeLocalizer(25_000_000L);
             EventJob job = new LocalizerJob(zeros, zeros, zeros, zeros, t, fake, r);
             ReleaseSchedule s = ReleaseEngineTest.periodicSchedule(t, 10_000_000L);
-            new ReleaseEngine(s, OverrunPolicy.forName(policy), job, r, ThreadCpuClock.probe(), 0).run();
+            new ReleaseEngine(s, PolicyGate.of(OverrunPolicy.ofLabel(policy)), job, r, ThreadCpuClock.probe(), 0).run();
             ReleaseEngineTest.assertAccountedOnce(r, t.size());
             int completed = 0;
             for (int k = 0; k < t.size(); k++) {

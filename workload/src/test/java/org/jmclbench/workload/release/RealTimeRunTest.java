@@ -10,6 +10,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.WorkloadMain;
 import org.jmclbench.workload.data.Dataset;
@@ -44,7 +45,7 @@ class RealTimeRunTest {
             Timeline t = d.timeline();
             MclConfig config = MclConfig.builder().particles(40_000).memory(memory).seed(7).build();
             RunOptions options = new RunOptions();
-            options.policy = RunOptions.Policy.TERMINATE;
+            options.policy = OverrunPolicy.TERMINATE;
             options.particles = config.particles;
             options.memory = memory;
             options.seed = 7;
@@ -92,13 +93,13 @@ class RealTimeRunTest {
         options.timeScale = 0.25;
         options.covariance = true;
         JobRecords records = new JobRecords(t, true);
-        java.util.Map<String, Object> facts = RealTimeRun.run(options, d, t,
+        JavaSeFacts facts = RealTimeRun.run(options, d, t,
                 create(options.mclConfig(), d), records, tmp, System.err);
-        Object allocated = facts.get("allocatedBytes");
+        Long allocated = facts.allocatedBytes();
         if (allocated != null) {
-            assertTrue(((Number) allocated).longValue() < 512, "allocated " + allocated + " bytes");
+            assertTrue(allocated < 512, "allocated " + allocated + " bytes");
         }
-        assertEquals(0, facts.get("warmupEvents"));
+        assertEquals(0, facts.warmupEvents());
     }
 
     private static Localizer create(MclConfig c, Dataset d) {

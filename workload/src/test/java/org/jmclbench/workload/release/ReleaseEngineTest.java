@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.concurrent.TimeUnit;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.record.JobRecords;
@@ -92,7 +93,7 @@ class ReleaseEngineTest {
     static JobRecords run(String policy, int n, long periodNs, EventJob job) throws Exception {
         Timeline t = periodicTimeline(n, periodNs);
         JobRecords records = new JobRecords(t, false);
-        new ReleaseEngine(periodicSchedule(t, periodNs), OverrunPolicy.forName(policy), job, records,
+        new ReleaseEngine(periodicSchedule(t, periodNs), PolicyGate.of(OverrunPolicy.ofLabel(policy)), job, records,
                 ThreadCpuClock.probe(), 0).run();
         assertAccountedOnce(records, n);
         return records;
@@ -206,7 +207,7 @@ class ReleaseEngineTest {
         for (int round = 0; round < 2; round++) {
             Timeline t = periodicTimeline(400, MS);
             JobRecords records = new JobRecords(t, false);
-            ReleaseEngine engine = new ReleaseEngine(periodicSchedule(t, MS), OverrunPolicy.forName("queue"),
+            ReleaseEngine engine = new ReleaseEngine(periodicSchedule(t, MS), PolicyGate.of(OverrunPolicy.ofLabel("queue")),
                     empty, records, ThreadCpuClock.probe(), 0);
             engine.run();
             allocated = engine.allocatedBytes();

@@ -1,0 +1,76 @@
+package org.jmclbench.core.policy;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.Test;
+
+class OverrunPolicyTest {
+
+    @Test
+    void codesAndLabelsAreStableAndFindTheirPolicy() {
+        // the codes are in files (the HVM run file) and in C: they never change
+        assertEquals(0, OverrunPolicy.SKIP.code);
+        assertEquals(1, OverrunPolicy.TERMINATE.code);
+        assertEquals(2, OverrunPolicy.QUEUE.code);
+        assertEquals("SkipTest", OverrunPolicy.SKIP.folder);
+        assertEquals("TermTest", OverrunPolicy.TERMINATE.folder);
+        assertEquals("QueueTest", OverrunPolicy.QUEUE.folder);
+        for (OverrunPolicy p : OverrunPolicy.values()) {
+            assertSame(p, OverrunPolicy.ofCode(p.code));
+            assertSame(p, OverrunPolicy.ofLabel(p.label));
+        }
+    }
+
+    @Test
+    void unknownCodesAndLabelsFindNothing() {
+        assertNull(OverrunPolicy.ofCode(3));
+        assertNull(OverrunPolicy.ofCode(-1));
+        assertNull(OverrunPolicy.ofCode(1L << 32)); // not aliased to 0 by a narrowing cast
+        assertNull(OverrunPolicy.ofLabel("SKIP"));
+        assertNull(OverrunPolicy.ofLabel(null));
+    }
+
+    /** The C baseline's one definition (native/src/policy.h) has the same codes, labels and test names. */
+    @Test
+    void theCBaselineDefinesTheSamePolicies() throws IOException {
+        Path header = Paths.get("..", "native", "src", "policy.h");
+        String c = new String(Files.readAllBytes(header), StandardCharsets.UTF_8);
+        StringBuilder labels = new StringBuilder();
+        for (OverrunPolicy p : OverrunPolicy.values()) {
+            String constant = "JM_POLICY_" + p.name();
+            assertTrue(c.contains(constant + " = " + p.code), constant + " = " + p.code + " in " + header);
+            labels.append(labels.length() == 0 ? "" : "|").append(p.label);
+            assertReturns(c, "jm_policy_name", constant, p.label);
+            assertReturns(c, "jm_policy_folder", constant, p.folder);
+        }
+        assertTrue(c.contains("#define JM_POLICY_LABELS \"" + labels + "\""), "labels in code order: " + labels);
+    }
+
+    /** In the C function, the case of the constant (or the default, for code 0) returns the text. */
+    private static void assertReturns(String c, String function, String constant, String text) {
+        Matcher body = Pattern.compile(function + "\\(enum jm_policy p\\)\\s*\\{(.*?)\\n\\}", Pattern.DOTALL).matcher(c);
+        assertTrue(body.find(), function + " in policy.h");
+        String b = body.group(1);
+        Matcher m = Pattern.compile("case " + constant + ":\\s*return \"([^\"]*)\"").matcher(b);
+        String got;
+        if (m.find()) {
+            got = m.group(1);
+        } else {
+            Matcher d = Pattern.compile("default:\\s*return \"([^\"]*)\"").matcher(b);
+            assertTrue(d.find() && constant.equals("JM_POLICY_SKIP"), function + " has no case for " + constant);
+            got = d.group(1);
+        }
+        assertEquals(text, got, function + "(" + constant + ")");
+    }
+}

@@ -1,0 +1,34 @@
+package org.jmclbench.hvm.launcher;
+
+import java.io.IOException;
+
+import org.jmclbench.workload.RunFailure;
+import org.jmclbench.workload.engine.EngineInput;
+import org.jmclbench.workload.engine.EngineResult;
+import org.jmclbench.workload.scj.ScjEngine;
+
+/**
+ * {@code --engine hvm}: the same SCJ mission as {@link ScjEngine}, with its options and checks,
+ * compiled to a native executable by the icecap HVM ({@link HvmRun}, docs/HVM.md).
+ */
+public final class HvmEngine extends ScjEngine {
+    /** The registration through java.util.ServiceLoader (META-INF/services) needs a public constructor. */
+    public HvmEngine() {
+    }
+
+
+    @Override
+    public String name() {
+        return "hvm";
+    }
+
+    @Override
+    public String runtimeName(String jvmName) {
+        return "hvm"; // a VM of its own, not the JVM that drives it
+    }
+
+    @Override
+    public EngineResult run(EngineInput in) throws RunFailure, IOException {
+        return HvmRun.run(in.options, in.dataset, in.folder, in.err);
+    }
+}

@@ -1,0 +1,333 @@
+package org.jmclbench.hvm.launcher;
+
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.EOFException;
+import java.io.File;
+import java.io.FileInputStream;
+import java.io.FileOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.scj.MissionConfiguration;
+import org.jmclbench.scj.MissionRunFile;
+import org.jmclbench.scj.MissionSizes;
+import org.jmclbench.workload.scj.ScjRun;
+import org.jmclbench.workload.RunFailure;
+import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.engine.EngineResult;
+import org.jmclbench.workload.output.MemoryArea;
+
+/**
+ * The {@code --engine hvm} run: the SCJ mission compiled by the icecap HVM into a native
+ * executable (hvm/build-mission.sh, cached). This side validates the options and dataset as
+ * the scj engine does (before anything is built or started), writes them as a run file of
+ * 64-bit words, runs the executable under a timeout, and reads its job records back from a
+ * result file; doubles cross as raw IEEE 754 bits both ways. A crash, a hang, an overflowing
+ * memory area or missing records is that run's {@link RunFailure}. Layouts: docs/HVM.md.
+ */
+public final class HvmRun {
+    /**
+     * The hang timeout is this many times the replay's length plus {@link #TIMEOUT_MARGIN_S}: an
+     * overloaded queue run ends after its backlog, and the VM's single thread shares the CPU
+     * with the machine's other work (a loaded 2-core VM ran a 20 s replay for over 80 s).
+     */
+    static final long TIMEOUT_FACTOR = 4;
+    /** Beyond the replay itself: start-up and write-out (the executable is built before). */
+    static final long TIMEOUT_MARGIN_S = 120;
+    // icecap's message when an area cannot hold an allocation: "out of memory: 0x<area size>, 0x<bytes>"
+    private static final Pattern OUT_OF_MEMORY = Pattern.compile("out of memory: 0x([0-9A-Fa-f]+), 0x([0-9A-Fa-f]+)");
+
+    private HvmRun() {
+    }
+
+    /** Builds (or takes from the cache) the executable, runs the mission on the dataset and returns its records. */
+    static EngineResult run(RunOptions options, Dataset dataset, File runFolder, PrintStream err)
+            throws RunFailure, IOException {
+        MissionConfiguration config = ScjRun.configuration(options, options.mclConfig(), options.timeScale, true);
+        long[] sizes = areaSizes(config, dataset);
+        File exe = build(err);
+
+        File work = Files.createTempDirectory("jmclbench-hvm").toFile();
+        try {
+            File in = new File(work, "run.bin");
+            File out = new File(work, "result.bin");
+            File log = new File(runFolder, "hvm.log");
+            writeInput(in, options, config, dataset);
+            long timeoutS = (long) Math.ceil(TIMEOUT_FACTOR * dataset.duration() * options.timeScale) + TIMEOUT_MARGIN_S;
+            ProcessBuilder pb = new ProcessBuilder(exe.getPath());
+            pb.environment().put("JMCLBENCH_HVM_INPUT", in.getPath());
+            pb.environment().put("JMCLBENCH_HVM_OUTPUT", out.getPath());
+            pb.redirectErrorStream(true).redirectOutput(log);
+            long started = System.nanoTime();
+            Process p = pb.start();
+            boolean ended;
+            try {
+                ended = p.waitFor(timeoutS, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                p.destroyForcibly();
+                Thread.currentThread().interrupt();
+                throw new RunFailure("interrupted while the HVM ran");
+            }
+            if (!ended) {
+                p.destroyForcibly();
+                throw new RunFailure("the HVM executable did not end within " + timeoutS + " s (hung); log: " + log);
+            }
+            long wallNs = System.nanoTime() - started;
+            String output = new String(Files.readAllBytes(log.toPath()), StandardCharsets.UTF_8);
+            String overflow = overflow(output, sizes);
+            if (overflow != null) {
+                throw new RunFailure(overflow);
+            }
+            if (p.exitValue() != 0 || !out.isFile()) {
+                throw new RunFailure("the HVM executable failed (exit status " + p.exitValue() + "): "
+                        + lastLines(output, 3) + " (log: " + log + ")");
+            }
+            long[] peaks = new long[MissionSizes.AREA_COUNT];
+            JobRecords records = readRecords(out, dataset, options.covariance, peaks);
+            List<MemoryArea> areas = new ArrayList<>();
+            for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
+                // icecap keeps no peak for private memory (-1): unknown, not a byte count
+                areas.add(new MemoryArea(MissionSizes.AREA_NAMES[a], sizes[a], peaks[a] < 0 ? null : Long.valueOf(peaks[a]), null));
+            }
+            return new EngineResult(records, areas, new HvmFacts(exe, wallNs));
+        } finally {
+            deleteTree(work);
+        }
+    }
+
+    /**
+     * The sizes the executable gives icecap: the mission's, plus icecap's own infrastructure in
+     * immortal memory and the handlers' stacks in mission memory (unless set with --area-size).
+     */
+    static long[] areaSizes(MissionConfiguration config, Dataset d) {
+        MissionSizes s = new MissionSizes(config, d.odometryCount(), d.laserCount());
+        long[] sizes = new long[MissionSizes.AREA_COUNT];
+        for (int a = 0; a < sizes.length; a++) {
+            sizes[a] = s.size(a);
+        }
+        sizes[MissionSizes.IMMORTAL] += MissionRunFile.IMMORTAL_INFRASTRUCTURE;
+        if (config.areaSize(MissionSizes.MISSION) == 0) {
+            sizes[MissionSizes.MISSION] += MissionRunFile.HANDLER_STACKS;
+        }
+        return sizes;
+    }
+
+    /** The area icecap reported full, named by its size; null when no area overflowed. */
+    static String overflow(String output, long[] sizes) {
+        Matcher m = OUT_OF_MEMORY.matcher(output);
+        if (!m.find()) {
+            return null;
+        }
+        long size = Long.parseLong(m.group(1), 16);
+        long needed = Long.parseLong(m.group(2), 16);
+        StringBuilder names = new StringBuilder();
+        for (int a = 0; a < sizes.length; a++) {
+            if (sizes[a] == size) {
+                names.append(names.length() == 0 ? "" : " or ").append(MissionSizes.AREA_NAMES[a]);
+            }
+        }
+        String area = names.length() == 0 ? "of " + size + " bytes (an icecap-internal area)" : "'" + names + "'";
+        return "memory area " + area + " overflowed on the HVM: an allocation of " + needed
+                + " bytes did not fit its " + size + " bytes (--area-size AREA=BYTES)";
+    }
+
+    private static File build(PrintStream err) throws RunFailure, IOException {
+        String home = System.getProperty("jmclbench.home", ".");
+        File script = new File(new File(home, "hvm"), "build-mission.sh");
+        if (!script.isFile()) {
+            throw new RunFailure("no " + script + " (the hvm engine needs the jmclbench source tree)");
+        }
+        ProcessBuilder pb = new ProcessBuilder(script.getPath()).redirectError(ProcessBuilder.Redirect.INHERIT);
+        Process p = pb.start();
+        String path;
+        try (InputStream s = p.getInputStream()) {
+            path = new String(readAll(s), StandardCharsets.UTF_8).trim();
+        }
+        int status;
+        try {
+            status = p.waitFor();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new RunFailure("interrupted while building the HVM executable");
+        }
+        if (status != 0 || path.isEmpty() || !new File(path).canExecute()) {
+            throw new RunFailure("cannot build the HVM executable (hvm/build-mission.sh exit status " + status
+                    + "; HVM_SRC=" + System.getenv("HVM_SRC") + ")");
+        }
+        return new File(path);
+    }
+
+    /** The run file: filter, policy, time scale, area sizes set, then the dataset (docs/HVM.md). */
+    static void writeInput(File f, RunOptions o, MissionConfiguration config, Dataset d) throws IOException {
+        MclConfig mcl = config.mcl;
+        try (OutputStream os = new BufferedOutputStream(new FileOutputStream(f))) {
+            LittleEndian w = new LittleEndian(os);
+            // In the word order of MissionRunFile's positions, MAGIC_WORD to TIME_SCALE.
+            w.word(MissionRunFile.INPUT_MAGIC);
+            w.word(MissionRunFile.VERSION);
+            w.word(mcl.particles);
+            w.word(MissionRunFile.code(mcl.estimate));
+            w.word(MissionRunFile.code(mcl.resample));
+            w.word(MissionRunFile.code(mcl.init));
+            w.word(MissionRunFile.code(mcl.memory));
+            w.word(mcl.seed);
+            w.word(mcl.covariance ? 1 : 0);
+            w.word(mcl.pollInterval);
+            w.word(config.policy.code);
+            w.real(config.timeScale);
+            for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
+                w.word(config.areaSize(a));
+            }
+            w.word(d.odometryCount());
+            w.word(d.laserCount());
+            w.real(d.playground.width);
+            w.real(d.playground.height);
+            w.word(d.playground.beaconCount());
+            for (double x : d.playground.beaconX) {
+                w.real(x);
+            }
+            for (double y : d.playground.beaconY) {
+                w.real(y);
+            }
+            w.real(d.startX);
+            w.real(d.startY);
+            w.real(d.startTheta);
+            for (double[] column : new double[][] {d.odoTime, d.odoDx, d.odoDy, d.odoDtheta, d.laserTime, d.laserAngle}) {
+                for (double v : column) {
+                    w.real(v);
+                }
+            }
+        }
+    }
+
+    /**
+     * The result file: the job records, as HvmOutput writes them (docs/HVM.md), and into peaks
+     * each area's use as the executable measured it (-1: not measurable on icecap).
+     */
+    static JobRecords readRecords(File f, Dataset d, boolean covariance, long[] peaks) throws RunFailure, IOException {
+        JobRecords r = new JobRecords(d.timeline(), covariance);
+        try (InputStream is = new BufferedInputStream(new FileInputStream(f))) {
+            LittleEndianIn in = new LittleEndianIn(is);
+            if (in.word() != MissionRunFile.OUTPUT_MAGIC || in.word() != MissionRunFile.VERSION) {
+                throw new RunFailure("the HVM's result file is not a jmclbench result: " + f);
+            }
+            int n = (int) in.word();
+            boolean cov = in.word() != 0;
+            if (n != r.size() || cov != covariance) {
+                throw new RunFailure("the HVM returned " + n + " events, expected " + r.size());
+            }
+            for (long[] a : new long[][] {r.releaseNs, r.startNs, r.endNs, r.deadlineNs, r.wakeNs}) {
+                for (int k = 0; k < n; k++) {
+                    a[k] = in.word();
+                }
+            }
+            for (int k = 0; k < n; k++) {
+                r.outcome[k] = (byte) in.word();
+                r.cpuNs[k] = -1; // SCJ has no per-thread CPU clock
+            }
+            for (double[] a : new double[][] {r.estX, r.estY, r.estTheta}) {
+                for (int k = 0; k < n; k++) {
+                    a[k] = in.real();
+                }
+            }
+            if (cov) {
+                for (int i = 0; i < r.cov.length; i++) {
+                    r.cov[i] = in.real();
+                }
+            }
+            double x = in.real();
+            double y = in.real();
+            double theta = in.real();
+            r.setInitialEstimate(x, y, theta);
+            r.durationNs = in.word();
+            for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
+                peaks[a] = in.word();
+            }
+        } catch (EOFException e) {
+            throw new RunFailure("the HVM's result file is truncated: " + f);
+        }
+        for (int k = 0; k < r.size(); k++) {
+            if (r.outcome[k] == JobRecords.PENDING) {
+                throw new RunFailure("event " + k + " never ended on the HVM (the mission terminated early)");
+            }
+        }
+        return r;
+    }
+
+    private static String lastLines(String s, int n) {
+        String[] lines = s.trim().split("\n");
+        StringBuilder b = new StringBuilder();
+        for (int i = Math.max(0, lines.length - n); i < lines.length; i++) {
+            b.append(b.length() == 0 ? "" : " | ").append(lines[i].trim());
+        }
+        return b.length() == 0 ? "(no output)" : b.toString();
+    }
+
+    private static byte[] readAll(InputStream s) throws IOException {
+        java.io.ByteArrayOutputStream b = new java.io.ByteArrayOutputStream();
+        byte[] buf = new byte[8192];
+        for (int n; (n = s.read(buf)) > 0;) {
+            b.write(buf, 0, n);
+        }
+        return b.toByteArray();
+    }
+
+    private static void deleteTree(File f) {
+        File[] children = f.listFiles();
+        if (children != null) {
+            for (File c : children) {
+                deleteTree(c);
+            }
+        }
+        f.delete();
+    }
+
+    /** 64-bit little-endian words; a double as its raw bits. */
+    static final class LittleEndian {
+        private final DataOutputStream out;
+
+        LittleEndian(OutputStream os) {
+            out = new DataOutputStream(os);
+        }
+
+        void word(long v) throws IOException {
+            out.writeLong(Long.reverseBytes(v));
+        }
+
+        void real(double v) throws IOException {
+            word(Double.doubleToRawLongBits(v));
+        }
+    }
+
+    /** Reads what {@link LittleEndian} writes. */
+    static final class LittleEndianIn {
+        private final DataInputStream in;
+
+        LittleEndianIn(InputStream is) {
+            in = new DataInputStream(is);
+        }
+
+        long word() throws IOException {
+            return Long.reverseBytes(in.readLong());
+        }
+
+        double real() throws IOException {
+            return Double.longBitsToDouble(word());
+        }
+    }
+}

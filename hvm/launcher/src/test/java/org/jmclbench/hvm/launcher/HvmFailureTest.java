@@ -1,0 +1,100 @@
+package org.jmclbench.hvm.launcher;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.stream.Stream;
+
+import org.jmclbench.workload.WorkloadMain;
+import org.jmclbench.workload.testing.SyntheticDataset;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * An HVM executable that crashes, or reports an SCJ memory area full, is that run's failure: exit 1,
+ * one line (the area named), no summary.json. A stand-in for hvm/build-mission.sh hands the run an
+ * executable that does so, so these need no HVM tool chain (HvmRunTest overflows a real one).
+ */
+class HvmFailureTest {
+
+    @TempDir
+    File tmp;
+
+    private final String home = System.getProperty("jmclbench.home");
+    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+
+    @AfterEach
+    void restoreHome() {
+        if (home == null) {
+            System.clearProperty("jmclbench.home");
+        } else {
+            System.setProperty("jmclbench.home", home);
+        }
+    }
+
+    /** A home whose hvm/build-mission.sh "builds" an executable running {@code body}. */
+    private void homeWithExecutable(String body) throws IOException {
+        Path h = tmp.toPath().resolve("home");
+        Path exe = h.resolve("fake-hvm");
+        Path build = h.resolve("hvm/build-mission.sh");
+        Files.createDirectories(build.getParent());
+        write(exe, "#!/usr/bin/env bash\necho 'HVM: starting the mission'\n" + body + "\n");
+        write(build, "#!/usr/bin/env bash\necho '" + exe + "'\n");
+        for (Path p : new Path[] {exe, build}) {
+            Files.setPosixFilePermissions(p, PosixFilePermissions.fromString("rwxr-xr-x"));
+        }
+        System.setProperty("jmclbench.home", h.toString());
+    }
+
+    private static void write(Path p, String text) throws IOException {
+        Files.write(p, text.getBytes(StandardCharsets.UTF_8));
+    }
+
+    private int run(String... extra) throws IOException {
+        File ds = SyntheticDataset.write(new File(tmp, "ds"), 2.0, 3, true, true);
+        String[] args = Stream.concat(Stream.of("run", "--engine", "hvm", "-p", "100", "--dataset", ds.getPath(),
+                "-O", new File(tmp, "out").getPath()), Stream.of(extra)).toArray(String[]::new);
+        err.reset();
+        return WorkloadMain.run(args, new PrintStream(new ByteArrayOutputStream()), new PrintStream(err, true, "UTF-8"));
+    }
+
+    private String err() {
+        return new String(err.toByteArray(), StandardCharsets.UTF_8);
+    }
+
+    private void assertNothingRecorded() throws IOException {
+        try (Stream<Path> s = Files.walk(tmp.toPath().resolve("out"))) {
+            assertFalse(s.anyMatch(p -> p.getFileName().toString().equals("summary.json")), "nothing recorded as valid");
+        }
+    }
+
+    @Test
+    void aCrashingExecutableIsTheRunsFailure() throws Exception {
+        homeWithExecutable("kill -SEGV $$");
+        assertEquals(1, run(), err());
+        assertTrue(err().startsWith("jmclbench: failure: the HVM executable failed (exit status 139)"), err());
+        assertEquals(1, err().trim().split("\n").length, err());
+        assertNothingRecorded();
+    }
+
+    @Test
+    void aFullMemoryAreaIsNamedAndTheRunsFailure() throws Exception {
+        // icecap's words when an allocation does not fit: the area's size and the request, in hex (2000 = 0x7d0)
+        homeWithExecutable("echo 'out of memory: 0x7d0, 0x1f40'\nexit 1");
+        assertEquals(1, run("--memory", "scoped", "--area-size", "update=2000"), err());
+        assertTrue(err().startsWith("jmclbench: failure: memory area 'update' overflowed on the HVM: an allocation of 8000"
+                + " bytes did not fit its 2000 bytes"), err());
+        assertEquals(1, err().trim().split("\n").length, err());
+        assertNothingRecorded();
+    }
+}

@@ -1,0 +1,192 @@
+package org.jmclbench.hvm.launcher;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.WorkloadMain;
+import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.data.DatasetReader;
+import org.jmclbench.workload.mcl.Localizers;
+import org.jmclbench.workload.testing.SyntheticDataset;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The {@code --engine hvm} run (the SCJ mission on the icecap HVM). The tests that run the VM
+ * need its tool chain (HVM_SRC, see docs/HVM.md) and are skipped without it; the others do not.
+ */
+class HvmRunTest {
+    /** As IdealCrossCheckTest (Java vs C): a larger difference is a real divergence. */
+    private static final double TOL = 1e-9;
+
+    @TempDir
+    File tmp;
+
+    private final String home = System.getProperty("jmclbench.home");
+
+    @org.junit.jupiter.api.AfterEach
+    void restoreHome() {
+        if (home == null) {
+            System.clearProperty("jmclbench.home");
+        } else {
+            System.setProperty("jmclbench.home", home);
+        }
+    }
+
+    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
+    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+
+    private int main(String... args) {
+        out.reset();
+        err.reset();
+        return WorkloadMain.run(args, new PrintStream(out), new PrintStream(err));
+    }
+
+    private String err() {
+        return new String(err.toByteArray(), StandardCharsets.UTF_8);
+    }
+
+    private static File projectHome() {
+        File dir = new File("").getAbsoluteFile();
+        while (dir != null && !new File(dir, "hvm/build-mission.sh").isFile()) {
+            dir = dir.getParentFile();
+        }
+        return dir;
+    }
+
+    /** Points the workload at the project (for hvm/build-mission.sh) and skips when the tool chain cannot be built here. */
+    private static void assumeHvm() throws Exception {
+        File home = projectHome();
+        Assumptions.assumeTrue(home != null, "no hvm/ folder above the working directory");
+        System.setProperty("jmclbench.home", home.getPath());
+        Process p = new ProcessBuilder(new File(home, "hvm/build-hvm.sh").getPath(), "--check")
+                .redirectErrorStream(true).start();
+        String why = new String(readAll(p), StandardCharsets.UTF_8).trim();
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "build-hvm.sh --check hung");
+        Assumptions.assumeTrue(p.exitValue() == 0 && System.getenv("HVM_SRC") != null,
+                "the icecap HVM cannot be built here (set HVM_SRC): " + why);
+    }
+
+    @Test
+    void anAreaIsNamedByTheSizeIcecapReports() {
+        long[] sizes = {1200000, 300000, 4096, 2000, 4096};
+        String full = HvmRun.overflow("x\nout of memory: 0x000007D0, 0x00000C84\n", sizes);
+        assertEquals("memory area 'update' overflowed on the HVM: an allocation of 3204 bytes did not fit its 2000"
+                + " bytes (--area-size AREA=BYTES)", full);
+        assertTrue(HvmRun.overflow("out of memory: 0x00001000, 0x00000010", sizes).contains("'predict or sensor'"));
+        assertTrue(HvmRun.overflow("out of memory: 0x00000100, 0x00000010", sizes).contains("icecap-internal"));
+        assertNull(HvmRun.overflow("warning: unimplemented function executed [0x02EB]", sizes));
+    }
+
+    @Test
+    void badInputIsRejectedBeforeAnythingIsBuilt() throws Exception {
+        // No build script under this home: reaching the build would be a failure (1), not bad input (2).
+        System.setProperty("jmclbench.home", tmp.getPath());
+        File ds = SyntheticDataset.write(new File(tmp, "ds"), 2.0, 3, true, false);
+        File odo = new File(ds, "odometry.txt");
+        List<String> lines = Files.readAllLines(odo.toPath(), StandardCharsets.UTF_8);
+        int line = 0;
+        for (int i = 0, rows = -1; i < lines.size(); i++) {
+            if (!lines.get(i).startsWith("#") && ++rows == 10) {
+                String[] t = lines.get(i).trim().split("\\s+");
+                t[0] = String.format(Locale.ROOT, "%.16e", Double.parseDouble(t[0]) + 0.010);
+                lines.set(i, String.join(" ", t));
+                line = i + 1;
+            }
+        }
+        Files.write(odo.toPath(), lines, StandardCharsets.UTF_8);
+        File o = new File(tmp, "out");
+        assertEquals(2, main("run", "--engine", "hvm", "--dataset", ds.getPath(), "-O", o.getPath()), err());
+        assertTrue(err().startsWith("jmclbench: " + odo.getPath() + ":" + line + ": odometry is not periodic"), err());
+        assertEquals(2, main("run", "--engine", "hvm", "--memory", "allocating", "--dataset", ds.getPath()), err());
+        assertEquals(2, main("run", "--engine", "hvm", "--area-size", "nursery=100", "--dataset", ds.getPath()), err());
+        assertFalse(o.exists() && o.list().length > 0, "nothing recorded");
+    }
+
+    @Test
+    void aQueueRunAgreesWithTheIdealComputationOfItsJobs() throws Exception {
+        assumeHvm();
+        // Under queue every job runs to completion, so each estimate depends only on the jobs
+        // before it. The HVM releases on a 1 ms tick and the machine's load decides overlaps, so
+        // its order can differ from the timeline's (two events a tick apart run in priority
+        // order): replay on the JVM, with the one Java MCL, the jobs in the order the HVM
+        // started them, and compare every estimate. Independent of load by construction.
+        File home = projectHome();
+        RunOptions o = org.jmclbench.workload.RunOptionsParser.parse(new String[] {"run", "--engine", "hvm", "-p", "50",
+            "--policy", "queue", "--dataset", new File(home, "data/match-short").getPath()});
+        Dataset d = DatasetReader.readFolder(new File(home, "data/match-short"));
+        File folder = new File(tmp, "run");
+        folder.mkdirs();
+        org.jmclbench.workload.engine.EngineResult result = HvmRun.run(o, d, folder, System.err);
+        JobRecords r = result.records;
+        for (org.jmclbench.workload.output.MemoryArea a : result.areas) {
+            // the store rejects a negative byte count: a peak the VM does not keep is null
+            assertTrue(a.peakBytes == null || a.peakBytes >= 0, a.name + " peak " + a.peakBytes);
+        }
+
+        Integer[] order = new Integer[r.size()];
+        for (int k = 0; k < order.length; k++) {
+            assertTrue(r.completed(k), "queue: event " + k + " completed");
+            order[k] = k;
+        }
+        java.util.Arrays.sort(order, (a, b) -> Long.compare(r.startNs[a], r.startNs[b]));
+        Localizer l = Localizers.create(o.mclConfig(), d.playground, d.startX, d.startY, d.startTheta);
+        assertEquals(l.estimateX(), r.initialX, TOL, "initial x");
+        Timeline t = r.timeline;
+        int reordered = 0;
+        for (int n = 0; n < order.length; n++) {
+            int k = order[n];
+            reordered += k != n ? 1 : 0;
+            int i = t.taskIndex(k);
+            if (t.task(k) == Timeline.PREDICT) {
+                l.predict(d.odoDx[i], d.odoDy[i], d.odoDtheta[i], AbortSignal.NEVER);
+            } else {
+                l.update(d.laserAngle[i], AbortSignal.NEVER);
+            }
+            assertEquals(l.estimateX(), r.estX[k], TOL, "x after event " + k + " (job " + n + " on the HVM)");
+            assertEquals(l.estimateY(), r.estY[k], TOL, "y after event " + k);
+            double dt = Math.abs(l.estimateTheta() - r.estTheta[k]);
+            assertTrue(Math.min(dt, 2 * Math.PI - dt) <= TOL, "theta after event " + k);
+        }
+        System.out.println("HvmRunTest: " + order.length + " jobs agree; " + reordered
+                + " ran out of the timeline's order (1 ms tick, load)");
+    }
+
+    @Test
+    void aPrivateMemoryTooSmallFailsWithTheAreaNamed() throws Exception {
+        assumeHvm();
+        File ds = SyntheticDataset.write(new File(tmp, "ds"), 2.0, 3, true, true);
+        File o = new File(tmp, "out");
+        assertEquals(1, main("run", "--engine", "hvm", "--memory", "scoped", "--area-size", "update=2000", "-p", "400",
+                "--policy", "queue", "--dataset", ds.getPath(), "-O", o.getPath()), err());
+        assertTrue(err().contains("memory area 'update' overflowed"), err());
+        assertFalse(new File(o, "hvm/nocov/400/QueueTest/1/summary.json").exists(), "nothing recorded as valid");
+    }
+
+    private static byte[] readAll(Process p) throws IOException {
+        ByteArrayOutputStream b = new ByteArrayOutputStream();
+        byte[] buf = new byte[4096];
+        for (int n; (n = p.getInputStream().read(buf)) > 0;) {
+            b.write(buf, 0, n);
+        }
+        return b.toByteArray();
+    }
+}

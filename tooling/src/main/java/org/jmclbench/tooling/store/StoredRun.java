@@ -1,0 +1,116 @@
+package org.jmclbench.tooling.store;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.MissingNode;
+
+/** One row of {@code runs} as the report reads it back ({@link StoredRuns}), with its flattened metrics. */
+public final class StoredRun {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    public String runKey;
+    public String matrixId;
+    public String machineId;
+    public String runtime;
+    public String runtimeVersion;
+    public String profile;
+    public String policy;
+    public int particles;
+    public String dataset;
+    public String load;
+    /** javase | scj | native (later hvm); from the column, else the summary, else the runtime (a store before engines). */
+    public String engine;
+    /** preallocated | allocating | scoped. */
+    public String memory;
+    /** The run's memory areas (summary.json memory.areas), in the order the run reported them. */
+    public final List<MemoryAreaRow> areas = new ArrayList<>();
+    public int repetition;
+    public String status;
+    public Integer exitCode;
+    public String failure;
+    public String stderrTail;
+    public String startedAt;
+    public Double wallS;
+    public String runDir;
+    public String summaryJson;
+    /** {@code task/metric/stat} -> value. */
+    public final Map<String, Double> metrics = new HashMap<>();
+    /** summary_json parsed on first use; a missing node when absent or invalid. */
+    private JsonNode summary;
+
+    /** Set by the report when the store holds several machines: the same runtime on two machines is two configurations. */
+    public String machineLabel;
+    /** Set by {@link #labelEngines} when the runs have several engines or memory styles. */
+    private boolean showEngine;
+    private boolean showMemory;
+
+    /**
+     * The configuration under test: runtime, and profile when there is one; then, when the runs
+     * shown together have several engines or memory styles, the engine and memory style:
+     * {@code temurin-25/default / scj scoped}, {@code native / allocating}.
+     */
+    public String config() {
+        String c = profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
+        List<String> parts = new ArrayList<>();
+        if (showEngine && !"native".equals(engine)) {
+            parts.add(engine);
+        }
+        if (showMemory) {
+            parts.add(memory);
+        }
+        return parts.isEmpty() ? c : c + " / " + String.join(" ", parts);
+    }
+
+    /** {@link #config()}, with " @host" when the report tells machines apart. */
+    public String configOnMachine() {
+        return machineLabel == null ? config() : config() + " @" + machineLabel;
+    }
+
+    public boolean ok() {
+        return "ok".equals(status);
+    }
+
+    /** The first of {@code task/metric/stat} keys present, or null. */
+    public Double metric(String... keys) {
+        for (String k : keys) {
+            Double v = metrics.get(k);
+            if (v != null) {
+                return v;
+            }
+        }
+        return null;
+    }
+
+    /** The run's summary.json as a tree (a missing node when there is none or it is not JSON). */
+    public JsonNode summary() {
+        if (summary == null) {
+            try {
+                summary = summaryJson == null ? MissingNode.getInstance() : JSON.readTree(summaryJson);
+            } catch (Exception e) {
+                summary = MissingNode.getInstance();
+            }
+        }
+        return summary;
+    }
+
+    /**
+     * Marks the runs' labels to show the engine when the JVM runs among them have more than one,
+     * and the memory style when they have more than one, so that a store of one engine keeps its
+     * short labels ({@code temurin-25/g1}).
+     */
+    public static void labelEngines(Collection<StoredRun> runs) {
+        boolean engines = runs.stream().filter(r -> !"native".equals(r.engine)).map(r -> r.engine).distinct().count() > 1;
+        boolean memory = runs.stream().map(r -> r.memory).distinct().count() > 1;
+        for (StoredRun r : runs) {
+            r.showEngine = engines;
+            r.showMemory = memory;
+        }
+    }
+}

@@ -1,0 +1,137 @@
+package org.jmclbench.tooling.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.ResultSet;
+import java.sql.Statement;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+
+import org.jmclbench.tooling.Fixtures;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The runner itself is killed with SIGKILL at a random point of a matrix (after a random number of
+ * committed runs, then a random part of the next run); rerunning the same command must finish it with
+ * every run present exactly once and the runs committed before the kill untouched. A few trials:
+ * bench/kill-trials.sh runs many, on real runs.
+ */
+class KillTrialsTest {
+
+    /** Runs in the matrix: 2 runtimes x 2 policies x 3 sizes. */
+    private static final int PLANNED = 12;
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void aMatrixKilledAtRandomPointsResumesWithEveryRunOnce() throws Exception {
+        Fixtures.home(dir);
+        Random random = new Random(20);
+        for (int trial = 1; trial <= 3; trial++) {
+            trial(dir.resolve("t" + trial), random.nextInt(PLANNED - 1), random.nextInt(1000));
+        }
+    }
+
+    /** Kills the matrix after {@code committed} runs are in its store and {@code laterMs} more. */
+    private void trial(Path t, int committed, int laterMs) throws Exception {
+        Path db = t.resolve("out/results.db");
+        List<String> cmd = Fixtures.childCli(dir,
+                "matrix", "--java", Fixtures.fakeJava(dir, "a", "ok", 0.3, null, 17).toString(),
+                "--java", Fixtures.fakeJava(dir, "b", "ok", 0.3, null, 21).toString(),
+                "--policies", "skip,terminate", "--particles", "100,200,300", "--datasets", "tiny",
+                "--db", db.toString());
+        Files.createDirectories(t);
+        Path log1 = t.resolve("first.log");
+        Process first = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log1.toFile()).start();
+        // wait (generously: the machine is shared) until enough runs are committed, then kill -9
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(240);
+        while (rows(db).size() < committed && System.nanoTime() < deadline && first.isAlive()) {
+            Thread.sleep(50);
+        }
+        Thread.sleep(laterMs);
+        // a runner that ended first (a fast machine) makes this trial a plain rerun: the checks hold as well
+        String when = t + ": killed after " + committed + " runs and " + laterMs + " ms" + (first.isAlive() ? "" : " (had ended)");
+        first.destroyForcibly(); // SIGKILL: no shutdown hook runs
+        assertTrue(first.waitFor(30, TimeUnit.SECONDS), when);
+        assertEquals("ok", integrity(db), when + ": the store as the kill left it");
+        Map<String, String> before = rows(db);
+
+        Path log2 = t.resolve("second.log");
+        Process second = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log2.toFile()).start();
+        assertTrue(second.waitFor(300, TimeUnit.SECONDS), when + ": the resumed matrix did not finish");
+        String out2 = Files.readString(log2);
+        assertEquals(0, second.exitValue(), when + ": " + out2);
+        assertTrue(out2.contains(before.size() + " already in"), when + ": " + out2);
+
+        Map<String, String> after = rows(db);
+        assertEquals(PLANNED, after.size(), when);
+        assertEquals("ok", integrity(db), when);
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
+             ResultSet rs = s.executeQuery("SELECT count(*), count(DISTINCT runtime || profile || policy || particles || repetition),"
+                     + " sum(status = 'ok') FROM runs")) {
+            assertTrue(rs.next());
+            assertEquals(PLANNED, rs.getInt(1), when);
+            assertEquals(PLANNED, rs.getInt(2), when + ": no configuration twice");
+            assertEquals(PLANNED, rs.getInt(3), when + ": all ok: " + out2);
+        }
+        for (Map.Entry<String, String> e : before.entrySet()) {
+            assertEquals(e.getValue(), after.get(e.getKey()), when + ": a run committed before the kill was redone");
+        }
+        // one complete run folder per run, no leftovers of the killed run
+        for (String key : after.keySet()) {
+            try (Stream<Path> s = Files.walk(db.getParent().resolve("runs").resolve(key))) {
+                List<Path> leaves = s.filter(p -> p.getFileName().toString().equals("summary.json")).toList();
+                assertEquals(1, leaves.size(), when + ": " + key + ": " + leaves);
+            }
+            try (Stream<Path> s = Files.walk(db.getParent().resolve("runs").resolve(key))) {
+                assertTrue(s.noneMatch(p -> p.getFileName().toString().endsWith(".partial")), when + ": " + key);
+            }
+        }
+        try (Stream<Path> s = Files.list(db.getParent().resolve("runs"))) {
+            assertEquals(PLANNED, s.count(), when + ": one folder per run");
+        }
+    }
+
+    /** run_key -> started_at of every committed run. */
+    private static Map<String, String> rows(Path db) {
+        Map<String, String> m = new HashMap<>();
+        if (!Files.isRegularFile(db)) {
+            return m;
+        }
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement()) {
+            s.execute("PRAGMA busy_timeout = 5000");
+            try (ResultSet rs = s.executeQuery("SELECT run_key, started_at FROM runs")) {
+                while (rs.next()) {
+                    m.put(rs.getString(1), rs.getString(2));
+                }
+            }
+        } catch (java.sql.SQLException e) {
+            return m; // the schema may not exist yet
+        }
+        return m;
+    }
+
+    /** SQLite's verdict on the whole file ("ok" when none was written yet). */
+    private static String integrity(Path db) throws Exception {
+        if (!Files.isRegularFile(db)) {
+            return "ok";
+        }
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement()) {
+            s.execute("PRAGMA busy_timeout = 5000");
+            try (ResultSet rs = s.executeQuery("PRAGMA integrity_check")) {
+                return rs.next() ? rs.getString(1) : "no answer";
+            }
+        }
+    }
+}

@@ -122,10 +122,15 @@ public class Samples implements Interruptible {
         log("not reached");
     }
 
+    /** An AI-enabled step: the AIE pending on return from fire() is delivered before it logs. */
+    private void interruptibleLog(String line) throws AsynchronouslyInterruptedException {
+        log(line);
+    }
+
     private void caught(AsynchronouslyInterruptedException aie, boolean clear) throws AsynchronouslyInterruptedException {
         try {
             aie.fire();
-            log("not reached");
+            interruptibleLog("not reached"); // declares the AIE, so that javac allows the catch
         } catch (AsynchronouslyInterruptedException e) {
             if (clear && e.happened(true)) {
                 log("cleared");

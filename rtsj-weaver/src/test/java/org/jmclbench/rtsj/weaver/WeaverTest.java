@@ -139,7 +139,7 @@ class WeaverTest {
         assertEquals(0, points.get("log"));
         assertEquals(0, points.get("<init>"));
         assertTrue(points.get("loop") >= 3, points.toString());
-        assertEquals(8, r.aiMethods, "run, loop, inSynchronized, inFinally, nonAiCaller, aiCallee, caught, crossThread");
+        assertEquals(9, r.aiMethods, "run, loop, inSynchronized, inFinally, nonAiCaller, aiCallee, interruptibleLog, caught, crossThread");
         assertEquals(r.deliveryPoints, points.values().stream().mapToInt(Integer::intValue).sum());
         Weaver.Result again = new Weaver().weave(r.bytes);
         assertArrayEquals(r.bytes, again.bytes);

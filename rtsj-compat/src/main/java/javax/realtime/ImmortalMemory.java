@@ -2,9 +2,13 @@ package javax.realtime;
 
 import javax.safetycritical.annotate.SCJAllowed;
 import org.jmclbench.rtsjcompat.Area;
+import org.jmclbench.rtsjcompat.RtsjRuntime;
 import org.jmclbench.rtsjcompat.RunState;
 
-/** The area that lives as long as the application; its size is the Safelet's {@code immortalMemorySize()}. */
+/**
+ * The area that lives as long as the application. In an SCJ launch its size is the Safelet's
+ * {@code immortalMemorySize()}; for RTSJ code outside a launch it is measured, not bounded.
+ */
 @SCJAllowed
 public final class ImmortalMemory extends MemoryArea {
 
@@ -14,7 +18,8 @@ public final class ImmortalMemory extends MemoryArea {
 
     /** The immortal memory of the application running. */
     public static ImmortalMemory instance() {
-        Area a = RunState.current().immortal();
+        RunState run = RunState.currentOrNull();
+        Area a = run == null ? RtsjRuntime.immortal() : run.immortal();
         if (a == null) {
             throw new IllegalStateException("immortal memory does not exist before the launcher created it");
         }

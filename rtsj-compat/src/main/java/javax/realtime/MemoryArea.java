@@ -68,6 +68,14 @@ public abstract class MemoryArea {
     }
 
     /**
+     * Runs {@code logic} with this area as the calling thread's allocation context (RTSJ's
+     * {@code enter}; for immortal memory the same as {@link #executeInArea(Runnable)}).
+     */
+    public void enter(Runnable logic) {
+        executeInArea(logic);
+    }
+
+    /**
      * Whether an object in this area may refer to {@code value}: value's area must live at
      * least as long. Throws UnsupportedOperationException when value's area is unknown (see
      * {@link org.jmclbench.rtsjcompat.ObjectAreaResolver}).

@@ -27,6 +27,8 @@ public final class Area {
     public static final int PRIVATE = 2;
     /** A private memory entered with {@code enterPrivateMemory}: lives while its logic runs. */
     public static final int NESTED = 3;
+    /** An RTSJ scoped memory ({@code LTMemory}): lives while some thread is in it. */
+    public static final int SCOPED = 4;
 
     /**
      * The names of the fields a verification listener reads from outside the program (Java
@@ -80,12 +82,12 @@ public final class Area {
         return name;
     }
 
-    /** {@link #IMMORTAL}, {@link #MISSION}, {@link #PRIVATE} or {@link #NESTED}. */
+    /** {@link #IMMORTAL}, {@link #MISSION}, {@link #PRIVATE}, {@link #NESTED} or {@link #SCOPED}. */
     public int kind() {
         return kind;
     }
 
-    /** The kind as a word: immortal, mission, private, nested. */
+    /** The kind as a word: immortal, mission, private, nested, scoped. */
     public String kindName() {
         return kindName(kind);
     }
@@ -99,6 +101,8 @@ public final class Area {
                 return "mission";
             case PRIVATE:
                 return "private";
+            case SCOPED:
+                return "scoped";
             default:
                 return "nested";
         }

@@ -36,6 +36,9 @@ public class ScjThread extends Thread {
     /** The name of {@link #current}, for a verification listener reading it from Java PathFinder's heap. */
     public static final String CURRENT_FIELD = "current";
 
+    /** This thread's side of asynchronous transfer of control (RTSJ's AIE; unused by SCJ code). */
+    public final AtcState atc = new AtcState(this);
+
     private final Area[] stack = new Area[MAX_DEPTH];
     private int top = -1;
     private final AllocationMeter meter;

@@ -10,24 +10,13 @@ import org.jmclbench.core.policy.OverrunPolicy;
  * produced by {@link RunOptionsParser}. Fields are plain data, set only by the parser (and tests).
  */
 public final class RunOptions {
-    /** The engine that runs the jobs (SPEC sections 4 and 12). */
-    public enum Engine {
-        /** The Java SE release engine: a dispatcher thread and one handler thread per task. */
-        JAVASE("javase"),
-        /** The Safety-Critical Java mission (scj-mission) on the rtsj-compat layer. */
-        SCJ("scj"),
-        /** The same mission compiled to a native executable by the icecap HVM (docs/HVM.md). */
-        HVM("hvm");
-
-        /** The option value, summary.json name and runtime-name suffix. */
-        public final String label;
-
-        Engine(String label) {
-            this.label = label;
-        }
-    }
-
-    public Engine engine = Engine.JAVASE;
+    /** The {@code --engine} that runs the jobs (SPEC sections 4 and 12): a name of {@code engine.Engines}. */
+    public String engine = "javase";
+    /**
+     * The runtime name of the run path when {@code -j} is not given: the engine's, set by the
+     * parser ({@code engine.Engine#runtimeName}); null = the running JVM's.
+     */
+    public String engineRuntimeName;
     /**
      * Memory area sizes set with {@code --area-size AREA=BYTES} (scj engine), in the order given;
      * empty = every area sized from the workload.
@@ -80,19 +69,12 @@ public final class RunOptions {
         return loadName != null ? loadName : loadAllocMbPerS > 0 ? "alloc" : "none";
     }
 
-    /**
-     * The runtime name used in the output path: the option, else derived from the JVM, with
-     * {@code -scj} appended for the scj engine so that its runs never land in the Java SE
-     * engine's folders of the same JVM.
-     */
+    /** The runtime name used in the output path: the option, else the engine's, else the running JVM's. */
     public String effectiveRuntimeName() {
         if (runtimeName != null) {
             return runtimeName;
         }
-        if (engine == Engine.HVM) {
-            return "hvm"; // a VM of its own, not the JVM that drives it
-        }
-        return engine == Engine.JAVASE ? defaultRuntimeName() : defaultRuntimeName() + "-" + engine.label;
+        return engineRuntimeName != null ? engineRuntimeName : defaultRuntimeName();
     }
 
     /** The test folder: IdealTest for ideal runs, else the policy's (SkipTest, TermTest, QueueTest). */

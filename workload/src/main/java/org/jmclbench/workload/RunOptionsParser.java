@@ -3,6 +3,8 @@ package org.jmclbench.workload;
 import java.util.Locale;
 
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.workload.engine.Engine;
+import org.jmclbench.workload.engine.Engines;
 import org.jmclbench.core.policy.OverrunPolicy;
 
 /**
@@ -134,7 +136,7 @@ public final class RunOptionsParser {
                     i += inline == null ? 1 : 0;
                     break;
                 case "--engine":
-                    o.engine = engine(name, value(name, inline, args, i));
+                    o.engine = Engines.named(name, value(name, inline, args, i)).name();
                     i += inline == null ? 1 : 0;
                     break;
                 case "--area-size": {
@@ -227,7 +229,9 @@ public final class RunOptionsParser {
         if (files == 3 && o.dataset != null) {
             throw BadInputException.ofOption("--dataset", "cannot be combined with -odo/-laser/-real");
         }
-        checkEngine(o);
+        Engine engine = Engines.named("--engine", o.engine);
+        engine.checkOptions(o);
+        o.engineRuntimeName = engine.runtimeName(RunOptions.defaultRuntimeName());
         return o;
     }
 
@@ -241,33 +245,6 @@ public final class RunOptionsParser {
             throw BadInputException.ofOption(name, "'" + v + "' is not one of " + allowed);
         }
         return p;
-    }
-
-    private static RunOptions.Engine engine(String name, String v) throws BadInputException {
-        for (RunOptions.Engine e : RunOptions.Engine.values()) {
-            if (e.label.equals(v)) {
-                return e;
-            }
-        }
-        throw BadInputException.ofOption(name, "'" + v + "' is not one of javase|scj|hvm");
-    }
-
-    /** The memory styles each engine has, and the options only one engine takes. */
-    private static void checkEngine(RunOptions o) throws BadInputException {
-        if (o.engine == RunOptions.Engine.SCJ || o.engine == RunOptions.Engine.HVM) {
-            if (o.memory == MclConfig.Memory.ALLOCATING) {
-                throw BadInputException.ofOption("--memory", "'allocating' is not a memory style of the "
-                        + o.engine.label + " engine (preallocated|scoped)");
-            }
-        } else {
-            if (o.memory == MclConfig.Memory.SCOPED) {
-                throw BadInputException.ofOption("--memory", "'scoped' is not a memory style of the javase engine"
-                        + " (preallocated|allocating; scoped is --engine scj)");
-            }
-            if (!o.areaSizes.isEmpty()) {
-                throw BadInputException.ofOption("--area-size", "sets SCJ memory areas: needs --engine scj");
-            }
-        }
     }
 
     private static String value(String name, String inline, String[] args, int i) throws BadInputException {

@@ -6,20 +6,15 @@ import java.io.PrintStream;
 
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
-import org.jmclbench.core.timeline.Timeline;
-import org.jmclbench.core.mcl.Localizer;
-import org.jmclbench.workload.mcl.Localizers;
-import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.workload.engine.Engine;
+import org.jmclbench.workload.engine.EngineInput;
+import org.jmclbench.workload.engine.EngineResult;
+import org.jmclbench.workload.engine.Engines;
 import org.jmclbench.workload.output.Environment;
 import org.jmclbench.workload.output.RunFolder;
 import org.jmclbench.workload.output.RunWriter;
-import org.jmclbench.core.record.JobRecords;
-import org.jmclbench.workload.release.GcLog;
-import org.jmclbench.workload.release.RealTimeRun;
-import org.jmclbench.workload.output.HeapUse;
-import org.jmclbench.workload.output.MemoryArea;
-import org.jmclbench.workload.scj.HvmRun;
-import org.jmclbench.workload.scj.ScjRun;
+
+
 
 /**
  * Entry point of the workload process: {@code run [options]} reads a dataset, runs one test
@@ -74,21 +69,19 @@ public final class WorkloadMain {
         }
     }
 
+    /**
+     * The one run lifecycle: the engine checks the dataset before anything is written or
+     * started, then the run folder is begun, the environment captured, the engine run, its
+     * result written and the folder committed.
+     */
     private static int execute(RunOptions options, PrintStream out, PrintStream err)
             throws BadInputException, IOException, RunFailure {
         Dataset dataset = load(options);
-        if (options.engine == RunOptions.Engine.SCJ && !options.ideal) {
-            return executeScj(options, dataset, out);
-        }
-        if (options.engine == RunOptions.Engine.HVM && !options.ideal) {
-            return executeHvm(options, dataset, out, err);
-        }
-        Timeline timeline = dataset.timeline();
-        MclConfig config = options.mclConfig();
+        Engine engine = Engines.of(options);
+        engine.validate(options, dataset);
         RunFolder folder = RunFolder.of(options);
         folder.checkNotComplete();
         Environment environment = Environment.capture();
-        JobRecords records = new JobRecords(timeline, options.covariance);
         File partial;
         try {
             partial = folder.begin();
@@ -96,95 +89,13 @@ public final class WorkloadMain {
             // Almost always a place that cannot be written: bad usage, not a benchmark failure.
             throw BadInputException.ofOption("-O", "cannot create " + folder.partial.getPath() + ": " + e);
         }
-
-        if (options.warmupS > 0 && options.ideal) {
-            // real-time runs warm up through the release engine itself (RealTimeRun)
-            IdealRun.warmup(dataset, timeline, newLocalizer(config, dataset), options.warmupS);
-        }
-        Localizer localizer = newLocalizer(config, dataset);
-        java.util.Map<String, Object> engineFacts = null;
-        HeapUse heap = HeapUse.begin();
-        if (options.ideal) {
-            // The GC log covers the measured replay only, as in real-time runs.
-            GcLog gcLog = options.gcLog ? GcLog.start(new File(partial, "gc.log")) : null;
-            if (gcLog != null && !gcLog.active()) {
-                err.println("jmclbench: --gc-log: " + gcLog.status());
-            }
-            try {
-                IdealRun.run(dataset, timeline, localizer, records);
-            } finally {
-                if (gcLog != null) {
-                    gcLog.stop();
-                }
-            }
-        } else {
-            engineFacts = RealTimeRun.run(options, dataset, timeline, localizer, records, partial, err);
-        }
-
-        java.util.List<MemoryArea> areas = java.util.Collections.singletonList(heap.end(
-                engineFacts == null ? null : (Long) engineFacts.get("allocatedBytes"), released(records)));
-        new RunWriter(options, dataset, timeline, records, environment).engine(engineFacts).memory(areas)
-                .writeAll(partial);
+        EngineResult result = engine.run(new EngineInput(options, dataset, partial, err));
+        new RunWriter(options, dataset, result.records.timeline, result.records, environment).engine(result.facts)
+                .memory(result.areas).writeAll(partial);
         folder.commit();
         // The complete run folder, the one line a script needs.
         out.println(folder.dir.getPath());
         return OK;
-    }
-
-    /** The scj engine: the SCJ mission on rtsj-compat, written out through the same run writer. */
-    private static int executeScj(RunOptions options, Dataset dataset, PrintStream out)
-            throws BadInputException, IOException, RunFailure {
-        ScjRun.checkPeriodic(dataset); // bad input: before anything is written
-        RunFolder folder = RunFolder.of(options);
-        folder.checkNotComplete();
-        Environment environment = Environment.capture();
-        File partial;
-        try {
-            partial = folder.begin();
-        } catch (IOException e) {
-            throw BadInputException.ofOption("-O", "cannot create " + folder.partial.getPath() + ": " + e);
-        }
-        ScjRun.Result result = ScjRun.run(options, dataset);
-        new RunWriter(options, dataset, result.records.timeline, result.records, environment).engine(result.facts)
-                .memory(result.areas).writeAll(partial);
-        folder.commit();
-        out.println(folder.dir.getPath());
-        return OK;
-    }
-
-    /** The hvm engine: the SCJ mission as an icecap HVM executable, written out through the same run writer. */
-    private static int executeHvm(RunOptions options, Dataset dataset, PrintStream out, PrintStream err)
-            throws BadInputException, IOException, RunFailure {
-        HvmRun.check(options, dataset); // bad input is rejected before anything is built or started
-        RunFolder folder = RunFolder.of(options);
-        folder.checkNotComplete();
-        Environment environment = Environment.capture();
-        File partial;
-        try {
-            partial = folder.begin();
-        } catch (IOException e) {
-            throw BadInputException.ofOption("-O", "cannot create " + folder.partial.getPath() + ": " + e);
-        }
-        ScjRun.Result result = HvmRun.run(options, dataset, partial, err);
-        new RunWriter(options, dataset, result.records.timeline, result.records, environment).engine(result.facts)
-                .memory(result.areas).writeAll(partial);
-        folder.commit();
-        out.println(folder.dir.getPath());
-        return OK;
-    }
-
-    private static int released(JobRecords r) {
-        int n = 0;
-        for (int k = 0; k < r.size(); k++) {
-            if (r.startNs[k] >= 0) {
-                n++;
-            }
-        }
-        return n;
-    }
-
-    private static Localizer newLocalizer(MclConfig config, Dataset d) {
-        return Localizers.create(config, d.playground, d.startX, d.startY, d.startTheta);
     }
 
     /** The dataset the options name: -odo/-laser/-real, --dataset, else data/match-short under the home. */

@@ -39,10 +39,10 @@ class RunOptionsParserTest {
     @Test
     void theEngineDefaultsToJavaSeAndTheScjEnginesRunsGetTheirOwnRuntimeName() throws BadInputException {
         RunOptions se = RunOptionsParser.parse(new String[] {"run"});
-        assertEquals(RunOptions.Engine.JAVASE, se.engine);
+        assertEquals("javase", se.engine);
         RunOptions scj = RunOptionsParser.parse(new String[] {"run", "--engine", "scj", "--memory", "scoped",
                 "--area-size", "mission=300000", "--area-size=update=4096"});
-        assertEquals(RunOptions.Engine.SCJ, scj.engine);
+        assertEquals("scj", scj.engine);
         assertEquals(MclConfig.Memory.SCOPED, scj.memory);
         assertEquals(se.effectiveRuntimeName() + "-scj", scj.effectiveRuntimeName());
         assertEquals(300000L, scj.areaSizes.get("mission"));

@@ -4,6 +4,8 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryPoolMXBean;
 import java.lang.management.MemoryType;
 
+import org.jmclbench.core.record.JobRecords;
+
 /**
  * The Java SE engine's one memory area, the heap: its maximum size, the peak used over the run
  * (the heap pools' peaks, reset when the run begins) and bytes allocated per release.
@@ -26,9 +28,15 @@ public final class HeapUse {
      * The heap area after the run.
      *
      * @param allocatedBytes bytes the engine's threads allocated in the measured window, or null (unknown, ideal runs)
-     * @param releases       the jobs released in the window
+     * @param records        the run's jobs: those released in the window share the allocation
      */
-    public MemoryArea end(Long allocatedBytes, int releases) {
+    public MemoryArea end(Long allocatedBytes, JobRecords records) {
+        int releases = 0;
+        for (int k = 0; k < records.size(); k++) {
+            if (records.startNs[k] >= 0) {
+                releases++;
+            }
+        }
         long peak = 0;
         for (MemoryPoolMXBean p : ManagementFactory.getMemoryPoolMXBeans()) {
             if (p.getType() == MemoryType.HEAP && p.isValid() && p.getPeakUsage() != null) {

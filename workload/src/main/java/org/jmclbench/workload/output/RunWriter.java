@@ -11,6 +11,7 @@ import java.util.Locale;
 
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.engine.EngineFacts;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.core.record.Deviation;
 import org.jmclbench.core.record.JobRecords;
@@ -29,7 +30,7 @@ public final class RunWriter {
     private final Timeline timeline;
     private final JobRecords records;
     private final Environment environment;
-    private java.util.Map<String, Object> engine;
+    private EngineFacts engine = EngineFacts.NONE;
     private java.util.List<MemoryArea> memory = java.util.Collections.emptyList();
 
     public RunWriter(RunOptions options, Dataset dataset, Timeline timeline, JobRecords records,
@@ -41,12 +42,8 @@ public final class RunWriter {
         this.environment = environment;
     }
 
-    /**
-     * Facts about the release engine of a real-time run (thread priorities, how CPU time and
-     * the GC log were obtained, allocation in the measured window), written as summary.json's
-     * {@code "engine"} object; values are strings, numbers, booleans or null.
-     */
-    public RunWriter engine(java.util.Map<String, Object> facts) {
+    /** What the engine tells about how it ran, written after its kind in summary.json's {@code "engine"} object. */
+    public RunWriter engine(EngineFacts facts) {
         this.engine = facts;
         return this;
     }
@@ -131,7 +128,7 @@ public final class RunWriter {
         j.name("status").value("complete");
         j.name("parameters").beginObject();
         j.name("runtimeName").value(options.effectiveRuntimeName());
-        j.name("engine").value(options.engine.label);
+        j.name("engine").value(options.engine);
         j.name("particles").value(options.particles);
         j.name("number").value(options.number);
         j.name("policy").value(options.policy.label);
@@ -177,16 +174,8 @@ public final class RunWriter {
         writeStats(j, dispatcherLateness());
         // Every run, ideal ones included, says which engine produced it.
         j.name("engine").beginObject();
-        j.name("kind").value(options.engine.label);
-        if (engine != null) {
-            for (java.util.Map.Entry<String, Object> e : engine.entrySet()) {
-                if (e.getKey().equals("kind")) {
-                    continue;
-                }
-                // Json.any: nested maps (engine.clock, engine.loadAlloc) stay JSON objects.
-                j.name(e.getKey()).any(e.getValue());
-            }
-        }
+        j.name("kind").value(options.engine);
+        engine.writeTo(j);
         j.endObject();
         j.name("memory").beginObject();
         j.name("areas").beginArray();

@@ -1,8 +1,6 @@
 package org.jmclbench.workload.release;
 
 import java.lang.management.ManagementFactory;
-import java.util.LinkedHashMap;
-import java.util.Map;
 
 /**
  * Ties the run's time base (System.nanoTime) to the wall clock and to the JVM's start, so that
@@ -32,20 +30,16 @@ public final class ClockAnchor {
                 wall.getEpochSecond() * 1_000_000_000L + wall.getNano());
     }
 
-    /** The {@code clock} object for a run whose time 0 is {@code runStartNanoTime}. */
-    public Map<String, Object> forRunStart(long runStartNanoTime) {
-        Map<String, Object> m = new LinkedHashMap<String, Object>();
-        m.put("runStartEpochNs", epochNs + (runStartNanoTime - nanoTime));
-        m.put("runStartNanoTime", runStartNanoTime);
-        long jvmStart = -1;
+    /** Sets the facts' {@code clock} for a run whose time 0 is {@code runStartNanoTime}. */
+    void stampRunStart(JavaSeFacts facts, long runStartNanoTime) {
+        facts.runStartEpochNs = epochNs + (runStartNanoTime - nanoTime);
+        facts.runStartNanoTime = runStartNanoTime;
         try {
-            jvmStart = ManagementFactory.getRuntimeMXBean().getStartTime();
+            facts.jvmStartEpochMs = ManagementFactory.getRuntimeMXBean().getStartTime();
         } catch (RuntimeException e) {
             // left at -1: uptime-stamped logs cannot be placed
         } catch (LinkageError e) {
             // the same on runtimes without java.lang.management
         }
-        m.put("jvmStartEpochMs", jvmStart);
-        return m;
     }
 }

@@ -7,8 +7,7 @@ import java.io.OutputStreamWriter;
 import java.io.PrintStream;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.util.LinkedHashMap;
-import java.util.Map;
+import org.jmclbench.rtsjcompat.ScjLauncher;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.core.timeline.Timeline;
@@ -37,15 +36,13 @@ public final class RealTimeRun {
      * @param runDir the (partial) run folder, for the GC log
      * @param err    where the one-line notes about the runtime go (before the measured window)
      */
-    public static Map<String, Object> run(RunOptions options, Dataset dataset, Timeline timeline,
+    public static JavaSeFacts run(RunOptions options, Dataset dataset, Timeline timeline,
                                           Localizer localizer, JobRecords records, File runDir, PrintStream err)
             throws IOException {
-        Map<String, Object> facts = new LinkedHashMap<>();
-        facts.put("dispatcherPriority", ReleaseEngine.DISPATCHER_PRIORITY);
-        facts.put("handlerPriority", ReleaseEngine.HANDLER_PRIORITY);
+        JavaSeFacts facts = new JavaSeFacts();
         // one rule for both engines: the SCJ layer's (HotSpot ignores priorities on Linux without
         // -XX:ThreadPriorityPolicy=1, and under chrt every thread inherits one priority anyway)
-        facts.put("prioritiesApplied", org.jmclbench.rtsjcompat.Priorities.applied());
+        facts.prioritiesApplied = ScjLauncher.prioritiesApplied();
         GcLog gcLog = options.gcLog ? GcLog.start(new File(runDir, "gc.log")) : null;
         AllocationNoise noise = null;
         try {
@@ -57,8 +54,8 @@ public final class RealTimeRun {
             if (!cpuClock.usable()) {
                 err.println("jmclbench: per-job CPU time: " + cpuClock.status() + "; cpu_ns is -1");
             }
-            facts.put("cpuTime", cpuClock.status());
-            facts.put("gcLog", gcLog == null ? null : gcLog.status());
+            facts.cpuTime = cpuClock.status();
+            facts.gcLog = gcLog == null ? null : gcLog.status();
             ReleaseSchedule schedule = ReleaseSchedule.of(timeline, options.timeScale);
             long spinNs = options.spinUs * 1000L;
             PolicyGate policy = PolicyGate.of(options.policy);
@@ -67,7 +64,7 @@ public final class RealTimeRun {
                 noise = AllocationNoise.start(options.loadAllocMbPerS, options.loadAllocLiveMb);
             }
             int warmupEvents = options.warmupS > 0 ? schedule.countBefore(options.warmupS, options.timeScale) : 0;
-            facts.put("warmupEvents", warmupEvents);
+            facts.warmupEvents = warmupEvents;
             if (options.warmupS > 0 && warmupEvents > 0) {
                 Localizer throwaway = Localizers.create(options.mclConfig(), dataset.playground,
                         dataset.startX, dataset.startY, dataset.startTheta);
@@ -87,8 +84,8 @@ public final class RealTimeRun {
             ClockAnchor anchor = ClockAnchor.now();
             engine.run();
             records.durationNs = System.nanoTime() - engine.runStartNanoTime();
-            facts.put("clock", anchor.forRunStart(engine.runStartNanoTime()));
-            facts.put("allocatedBytes", engine.allocatedBytes() < 0 ? null : engine.allocatedBytes());
+            anchor.stampRunStart(facts, engine.runStartNanoTime());
+            facts.allocatedBytes = engine.allocatedBytes() < 0 ? null : Long.valueOf(engine.allocatedBytes());
             if (options.memory == MclConfig.Memory.PREALLOCATED && engine.allocatedBytes() > 0) {
                 err.println("jmclbench: warning: the measured window allocated " + engine.allocatedBytes()
                         + " bytes on the engine's threads (expected none)");
@@ -100,11 +97,9 @@ public final class RealTimeRun {
         } finally {
             if (noise != null) {
                 noise.stop();
-                Map<String, Object> load = new LinkedHashMap<>();
-                load.put("allocMbPerS", options.loadAllocMbPerS);
-                load.put("allocLiveMb", options.loadAllocLiveMb);
-                load.put("allocatedBytes", noise.allocatedBytes());
-                facts.put("loadAlloc", load);
+                facts.loadAllocMbPerS = options.loadAllocMbPerS;
+                facts.loadAllocLiveMb = options.loadAllocLiveMb;
+                facts.loadAllocatedBytes = noise.allocatedBytes();
             }
             if (gcLog != null) {
                 gcLog.stop();

@@ -15,9 +15,7 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -26,10 +24,10 @@ import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.scj.MissionConfiguration;
 import org.jmclbench.scj.MissionSizes;
-import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.engine.EngineResult;
 import org.jmclbench.workload.output.MemoryArea;
 
 /**
@@ -62,18 +60,8 @@ public final class HvmRun {
     private HvmRun() {
     }
 
-    /** The rejections of the scj engine: odometry with a period, area names and sizes, the filter. */
-    public static void check(RunOptions options, Dataset dataset) throws BadInputException {
-        ScjRun.checkPeriodic(dataset);
-        try {
-            ScjRun.configuration(options, options.mclConfig(), options.timeScale, true);
-        } catch (IllegalArgumentException e) {
-            throw BadInputException.ofOption("--area-size", e.getMessage());
-        }
-    }
-
     /** Builds (or takes from the cache) the executable, runs the mission on the dataset and returns its records. */
-    public static ScjRun.Result run(RunOptions options, Dataset dataset, File runFolder, PrintStream err)
+    static EngineResult run(RunOptions options, Dataset dataset, File runFolder, PrintStream err)
             throws RunFailure, IOException {
         MissionConfiguration config = ScjRun.configuration(options, options.mclConfig(), options.timeScale, true);
         long[] sizes = areaSizes(config, dataset);
@@ -116,13 +104,12 @@ public final class HvmRun {
             }
             long[] peaks = new long[MissionSizes.AREA_COUNT];
             JobRecords records = readRecords(out, dataset, options.covariance, peaks);
-            Map<String, Object> facts = facts(exe, wallNs);
             List<MemoryArea> areas = new ArrayList<>();
             for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
                 // icecap keeps no peak for private memory (-1): unknown, not a byte count
                 areas.add(new MemoryArea(MissionSizes.AREA_NAMES[a], sizes[a], peaks[a] < 0 ? null : Long.valueOf(peaks[a]), null));
             }
-            return new ScjRun.Result(records, areas, facts);
+            return new EngineResult(records, areas, new HvmFacts(exe, wallNs));
         } finally {
             deleteTree(work);
         }
@@ -284,21 +271,6 @@ public final class HvmRun {
             }
         }
         return r;
-    }
-
-    private static Map<String, Object> facts(File exe, long wallNs) {
-        Map<String, Object> facts = new LinkedHashMap<>();
-        facts.put("kind", "hvm");
-        facts.put("vm", "icecap HVM (interpreter), github.com/scj-devel/hvm-scj, with jmclbench's patches (hvm/patches)");
-        facts.put("level", 1);
-        facts.put("executable", exe.getPath());
-        facts.put("executableBytes", exe.length());
-        facts.put("toolchain", exe.getParentFile().getParentFile().getName());
-        facts.put("clock", "CLOCK_MONOTONIC read to the ns; releases on a 1 ms tick");
-        facts.put("timeSource", "clock_gettime(CLOCK_MONOTONIC)");
-        facts.put("warmupEvents", 0);
-        facts.put("processWallNs", wallNs);
-        return facts;
     }
 
     private static String lastLines(String s, int n) {

@@ -7,7 +7,6 @@ import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -15,11 +14,7 @@ import java.util.Map;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.MotionModel;
 import org.jmclbench.core.record.JobRecords;
-import org.jmclbench.rtsjcompat.AreaUsage;
-import org.jmclbench.rtsjcompat.HandlerStats;
-import org.jmclbench.rtsjcompat.MissionFailure;
-import org.jmclbench.rtsjcompat.RunReport;
-import org.jmclbench.rtsjcompat.ScjRuntime;
+import org.jmclbench.rtsjcompat.ScjLauncher;
 import org.jmclbench.scj.MclSafelet;
 import org.jmclbench.scj.MissionConfiguration;
 import org.jmclbench.scj.MissionSizes;
@@ -28,6 +23,7 @@ import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.engine.EngineResult;
 import org.jmclbench.workload.output.MemoryArea;
 
 /**
@@ -41,34 +37,19 @@ public final class ScjRun {
     /** Events of the class-loading mission run before the measured one (when there is no warm-up). */
     static final int PRELOAD_EVENTS = 4;
 
-    /** What a finished mission left: its records, memory areas and facts for summary.json's engine object. */
-    public static final class Result {
-        public final JobRecords records;
-        public final List<MemoryArea> areas;
-        public final Map<String, Object> facts;
-
-        Result(JobRecords records, List<MemoryArea> areas, Map<String, Object> facts) {
-            this.records = records;
-            this.areas = areas;
-            this.facts = facts;
-        }
-    }
-
     private ScjRun() {
     }
 
-    /** Runs the mission of the options on the dataset. */
-    public static Result run(RunOptions options, Dataset dataset) throws BadInputException, RunFailure {
-        checkPeriodic(dataset);
+    /** Runs the mission of the options on the dataset (checked by {@link ScjEngine#validate}). */
+    static EngineResult run(RunOptions options, Dataset dataset) throws RunFailure {
         MissionConfiguration config = configuration(options, options.mclConfig(), options.timeScale, true);
 
         // Class loading allocates (some 30 KB, charged to whatever area is current): a short
         // mission of the same kind first, so that no measured release pays for it.
-        Map<String, Object> facts = new LinkedHashMap<>();
-        facts.put("kind", "scj");
+        int warmupEvents = 0;
         if (options.warmupS > 0) {
             DatasetInput warm = DatasetInput.before(dataset, options.warmupS);
-            facts.put("warmupEvents", warm.odometryCount() + warm.laserCount());
+            warmupEvents = warm.odometryCount() + warm.laserCount();
             launch(new MclSafelet(roomy(configuration(options, options.mclConfig(), options.timeScale, false), warm),
                     warm, new RecordCapture()), "the warm-up mission");
         } else {
@@ -78,12 +59,11 @@ public final class ScjRun {
                     Math.min(PRELOAD_EVENTS, dataset.laserCount()));
             launch(new MclSafelet(roomy(configuration(options, small, 0.1, false), first), first,
                     new RecordCapture()), "the class-loading mission");
-            facts.put("warmupEvents", 0);
         }
 
         RecordCapture output = new RecordCapture();
         MclSafelet safelet = new MclSafelet(config, new DatasetInput(dataset), output);
-        RunReport report = launch(safelet, "the mission");
+        ScjLauncher mission = launch(safelet, "the mission");
         JobRecords records = output.records();
         if (records == null) {
             throw new RunFailure("the mission ended without handing over its records");
@@ -93,23 +73,7 @@ public final class ScjRun {
                 throw new RunFailure("event " + k + " never ended (the mission terminated early)");
             }
         }
-        facts.put("level", report.level());
-        facts.put("prioritiesApplied", report.prioritiesApplied());
-        facts.put("allocationMeter", report.allocationMeter());
-        facts.put("timeSource", report.timeSource());
-        Map<String, Object> handlers = new LinkedHashMap<>();
-        for (HandlerStats h : report.handlers()) {
-            Map<String, Object> m = new LinkedHashMap<>();
-            m.put("kind", h.kind());
-            m.put("priority", h.priority());
-            m.put("releases", h.releases());
-            m.put("deadlineMisses", h.deadlineMisses());
-            m.put("lateReleases", h.lateReleases());
-            handlers.put(h.name(), m);
-        }
-        facts.put("handlers", handlers);
-        facts.put("outOfOrderJobs", outOfOrder(records));
-        return new Result(records, areas(report), facts);
+        return new EngineResult(records, areas(mission), new ScjFacts(warmupEvents, mission, outOfOrder(records)));
     }
 
     /**
@@ -155,36 +119,31 @@ public final class ScjRun {
         return c;
     }
 
-    private static RunReport launch(MclSafelet safelet, String what) throws RunFailure {
-        RunReport report = ScjRuntime.launch(safelet, 1);
-        if (report == null) {
+    private static ScjLauncher launch(MclSafelet safelet, String what) throws RunFailure {
+        ScjLauncher mission = ScjLauncher.launch(safelet);
+        if (mission == null) {
             throw new RunFailure(what + " did not run (no report from rtsj-compat)");
         }
-        if (!report.succeeded()) {
-            MissionFailure f = report.failure();
-            if (f.areaName() != null) {
-                String area = areaName(f.areaName());
-                long size = 0;
-                for (AreaUsage a : report.areas()) {
-                    if (a.name().equals(f.areaName())) {
-                        size = a.size();
-                    }
-                }
+        if (!mission.succeeded()) {
+            int a = mission.overflowedArea();
+            if (a >= 0) {
+                String area = areaName(mission.areaName(a));
                 throw new RunFailure("memory area '" + area + "' overflowed in " + what + ": it needed "
-                        + f.bytesNeeded() + " bytes, its size is " + size + " bytes (--area-size " + area + "=BYTES)");
+                        + mission.overflowBytesNeeded() + " bytes, its size is " + mission.areaSize(a)
+                        + " bytes (--area-size " + area + "=BYTES)");
             }
-            throw new RunFailure(what + " failed: " + f.getMessage());
+            throw new RunFailure(what + " failed: " + mission.failureMessage());
         }
-        return report;
+        return mission;
     }
 
     /** The compat layer's areas under the mission's names (immortal, mission, the handlers' names). */
-    static List<MemoryArea> areas(RunReport report) {
+    static List<MemoryArea> areas(ScjLauncher mission) {
         List<MemoryArea> out = new ArrayList<>();
-        for (AreaUsage a : report.areas()) {
-            Long perRelease = "private".equals(a.kind()) && a.cycles() > 0
-                    ? Math.round(a.bytesPerCycle()) : null;
-            out.add(new MemoryArea(areaName(a.name()), a.size(), a.peakBytes(), perRelease));
+        for (int a = 0; a < mission.areaCount(); a++) {
+            Long perRelease = mission.areaIsPrivate(a) && mission.areaReleases(a) > 0
+                    ? Math.round(mission.areaBytesPerRelease(a)) : null;
+            out.add(new MemoryArea(areaName(mission.areaName(a)), mission.areaSize(a), mission.areaPeakBytes(a), perRelease));
         }
         return out;
     }

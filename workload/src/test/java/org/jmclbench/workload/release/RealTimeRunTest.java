@@ -93,13 +93,13 @@ class RealTimeRunTest {
         options.timeScale = 0.25;
         options.covariance = true;
         JobRecords records = new JobRecords(t, true);
-        java.util.Map<String, Object> facts = RealTimeRun.run(options, d, t,
+        JavaSeFacts facts = RealTimeRun.run(options, d, t,
                 create(options.mclConfig(), d), records, tmp, System.err);
-        Object allocated = facts.get("allocatedBytes");
+        Long allocated = facts.allocatedBytes();
         if (allocated != null) {
-            assertTrue(((Number) allocated).longValue() < 512, "allocated " + allocated + " bytes");
+            assertTrue(allocated < 512, "allocated " + allocated + " bytes");
         }
-        assertEquals(0, facts.get("warmupEvents"));
+        assertEquals(0, facts.warmupEvents());
     }
 
     private static Localizer create(MclConfig c, Dataset d) {

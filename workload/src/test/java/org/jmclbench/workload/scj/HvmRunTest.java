@@ -135,7 +135,7 @@ class HvmRunTest {
         Dataset d = DatasetReader.readFolder(new File(home, "data/match-short"));
         File folder = new File(tmp, "run");
         folder.mkdirs();
-        org.jmclbench.workload.scj.ScjRun.Result result = HvmRun.run(o, d, folder, System.err);
+        org.jmclbench.workload.engine.EngineResult result = HvmRun.run(o, d, folder, System.err);
         JobRecords r = result.records;
         for (org.jmclbench.workload.output.MemoryArea a : result.areas) {
             // the store rejects a negative byte count: a peak the VM does not keep is null

@@ -1,0 +1,63 @@
+package org.jmclbench.workload;
+
+import java.io.File;
+import java.util.Collections;
+
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.engine.Engine;
+import org.jmclbench.workload.engine.EngineFacts;
+import org.jmclbench.workload.engine.EngineInput;
+import org.jmclbench.workload.engine.EngineResult;
+import org.jmclbench.workload.mcl.Localizers;
+import org.jmclbench.workload.output.HeapUse;
+import org.jmclbench.workload.release.GcLog;
+
+/**
+ * {@code --ideal}, whatever {@code --engine} names: the {@link IdealRun} on the calling thread,
+ * the reference for localisation accuracy. Its one memory area is the heap.
+ */
+public final class IdealEngine implements Engine {
+
+    @Override
+    public String name() {
+        return "ideal";
+    }
+
+    @Override
+    public void checkOptions(RunOptions options) {
+        // --ideal is checked with the engine it is asked of
+    }
+
+    @Override
+    public EngineResult run(EngineInput in) {
+        RunOptions options = in.options;
+        Dataset dataset = in.dataset;
+        Timeline timeline = dataset.timeline();
+        JobRecords records = new JobRecords(timeline, options.covariance);
+        if (options.warmupS > 0) {
+            IdealRun.warmup(dataset, timeline, newLocalizer(options, dataset), options.warmupS);
+        }
+        Localizer localizer = newLocalizer(options, dataset);
+        HeapUse heap = HeapUse.begin();
+        // The GC log covers the measured replay only, as in real-time runs.
+        GcLog gcLog = options.gcLog ? GcLog.start(new File(in.folder, "gc.log")) : null;
+        if (gcLog != null && !gcLog.active()) {
+            in.err.println("jmclbench: --gc-log: " + gcLog.status());
+        }
+        try {
+            IdealRun.run(dataset, timeline, localizer, records);
+        } finally {
+            if (gcLog != null) {
+                gcLog.stop();
+            }
+        }
+        return new EngineResult(records, Collections.singletonList(heap.end(null, records)), EngineFacts.NONE);
+    }
+
+    private static Localizer newLocalizer(RunOptions o, Dataset d) {
+        return Localizers.create(o.mclConfig(), d.playground, d.startX, d.startY, d.startTheta);
+    }
+}

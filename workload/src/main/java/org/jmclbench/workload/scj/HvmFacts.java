@@ -1,0 +1,30 @@
+package org.jmclbench.workload.scj;
+
+import java.io.File;
+
+import org.jmclbench.workload.engine.EngineFacts;
+import org.jmclbench.workload.output.Json;
+
+/** summary.json's {@code engine} object of an hvm run (docs/FORMATS.md section 4): which executable ran, and how long. */
+final class HvmFacts implements EngineFacts {
+    private final File executable;
+    private final long processWallNs;
+
+    HvmFacts(File executable, long processWallNs) {
+        this.executable = executable;
+        this.processWallNs = processWallNs;
+    }
+
+    @Override
+    public void writeTo(Json j) {
+        j.name("vm").value("icecap HVM (interpreter), github.com/scj-devel/hvm-scj, with jmclbench's patches (hvm/patches)");
+        j.name("level").value(1);
+        j.name("executable").value(executable.getPath());
+        j.name("executableBytes").value(executable.length());
+        j.name("toolchain").value(executable.getParentFile().getParentFile().getName());
+        j.name("clock").value("CLOCK_MONOTONIC read to the ns; releases on a 1 ms tick");
+        j.name("timeSource").value("clock_gettime(CLOCK_MONOTONIC)");
+        j.name("warmupEvents").value(0);
+        j.name("processWallNs").value(processWallNs);
+    }
+}

@@ -7,6 +7,7 @@ import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.scj.MclSafelet;
 import org.jmclbench.scj.MissionConfiguration;
+import org.jmclbench.scj.MissionRunFile;
 import org.jmclbench.scj.MissionSizes;
 
 import vm.VMTest;
@@ -18,17 +19,6 @@ import vm.VMTest;
  * the mission ended and its records were written.
  */
 public final class HvmMain {
-    static final long MAGIC = 0x314956484C434D4AL; // "JMCLHVI1", little-endian
-    static final long VERSION = 1;
-    /** Words before the area sizes: magic, version, 9 filter and policy fields, time scale. */
-    static final int HEADER = 12;
-    /**
-     * What icecap's own Level 1 infrastructure places in immortal memory besides the mission's
-     * data (its scheduler's queues, the processes and their stacks), in bytes.
-     */
-    static final int IMMORTAL_INFRASTRUCTURE = 1024 * 1024;
-    /** The stacks of the mission's three handlers (int[STACK_WORDS] each), in bytes. */
-    static final long HANDLER_STACKS = 3 * (4 * MissionSizes.STACK_WORDS + 64);
     /** Room for the bookkeeping of nested backing stores, in bytes. */
     static final int NESTING_SLACK = 256 * 1024;
 
@@ -37,33 +27,34 @@ public final class HvmMain {
 
     public static void main(String[] args) {
         VMTest.markResult(true);
-        if (HvmData.open() < HEADER || HvmData.word(0) != MAGIC || HvmData.word(1) != VERSION) {
+        if (HvmData.open() < MissionRunFile.DATA || HvmData.word(MissionRunFile.MAGIC_WORD) != MissionRunFile.INPUT_MAGIC
+                || HvmData.word(MissionRunFile.VERSION_WORD) != MissionRunFile.VERSION) {
             HvmData.fail(1);
             return;
         }
         MclConfig.Builder b = MclConfig.builder()
-                .particles((int) HvmData.word(2))
-                .estimate(MclConfig.Estimate.values()[(int) HvmData.word(3)])
-                .resample(MclConfig.Resample.values()[(int) HvmData.word(4)])
-                .init(MclConfig.Init.values()[(int) HvmData.word(5)])
-                .memory(MclConfig.Memory.values()[(int) HvmData.word(6)])
-                .seed(HvmData.word(7))
-                .covariance(HvmData.word(8) != 0)
-                .pollInterval((int) HvmData.word(9));
-        OverrunPolicy policy = OverrunPolicy.ofCode(HvmData.word(10));
-        MissionConfiguration config = new MissionConfiguration(b.build(), policy, HvmData.real(11));
+                .particles((int) HvmData.word(MissionRunFile.PARTICLES))
+                .estimate(MissionRunFile.estimate(HvmData.word(MissionRunFile.ESTIMATE)))
+                .resample(MissionRunFile.resample(HvmData.word(MissionRunFile.RESAMPLE)))
+                .init(MissionRunFile.init(HvmData.word(MissionRunFile.INIT)))
+                .memory(MissionRunFile.memory(HvmData.word(MissionRunFile.MEMORY)))
+                .seed(HvmData.word(MissionRunFile.SEED))
+                .covariance(HvmData.word(MissionRunFile.COVARIANCE) != 0)
+                .pollInterval((int) HvmData.word(MissionRunFile.POLL_INTERVAL));
+        OverrunPolicy policy = OverrunPolicy.ofCode(HvmData.word(MissionRunFile.POLICY));
+        MissionConfiguration config = new MissionConfiguration(b.build(), policy, HvmData.real(MissionRunFile.TIME_SCALE));
         for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
-            long size = HvmData.word(HEADER + a);
+            long size = HvmData.word(MissionRunFile.AREA_SIZES + a);
             if (size > 0) {
                 config.areaSize(a, size);
             }
         }
-        HvmInput input = new HvmInput(HEADER + MissionSizes.AREA_COUNT);
+        HvmInput input = new HvmInput(MissionRunFile.DATA);
         if (config.areaSize(MissionSizes.MISSION) == 0) {
             // icecap allocates each handler's stack (ConfigurationParameters) in mission memory
             long computed = new MissionSizes(config, input.odometryCount(), input.laserCount())
                     .size(MissionSizes.MISSION);
-            config.areaSize(MissionSizes.MISSION, computed + HANDLER_STACKS);
+            config.areaSize(MissionSizes.MISSION, computed + MissionRunFile.HANDLER_STACKS);
         }
         HvmOutput output = new HvmOutput();
         MclSafelet safelet = new MclSafelet(config, input, output);
@@ -71,7 +62,7 @@ public final class HvmMain {
         // icecap sizes its backing store and immortal memory from these constants, not from
         // the Safelet; the handlers' private memories are their ScopeParameters' sizes.
         MissionSizes sizes = safelet.sizes();
-        Const.IMMORTAL_MEM = (int) (sizes.size(MissionSizes.IMMORTAL) + IMMORTAL_INFRASTRUCTURE);
+        Const.IMMORTAL_MEM = (int) (sizes.size(MissionSizes.IMMORTAL) + MissionRunFile.IMMORTAL_INFRASTRUCTURE);
         // icecap nests the areas: the mission memory inside the sequencer's private memory
         // (each of the mission's size), the handlers' private memories and their backing
         // stores inside the mission memory's reservation. The backing store is generous so

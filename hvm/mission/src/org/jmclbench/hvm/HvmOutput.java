@@ -4,22 +4,20 @@ import javax.realtime.MemoryArea;
 
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.scj.MissionOutput;
+import org.jmclbench.scj.MissionRunFile;
 import org.jmclbench.scj.MissionSizes;
 
 import vm.Memory;
 
 /** The mission's output on the HVM: the job records, written to the result file by the natives. */
 final class HvmOutput implements MissionOutput {
-    static final long MAGIC = 0x314F56484C434D4AL; // "JMCLHVO1", little-endian
-    static final long VERSION = 1;
-
     private boolean written;
 
     @Override
     public void missionEnded(JobRecords r) {
         int n = r.size();
-        HvmData.put(MAGIC);
-        HvmData.put(VERSION);
+        HvmData.put(MissionRunFile.OUTPUT_MAGIC);
+        HvmData.put(MissionRunFile.VERSION);
         HvmData.put(n);
         HvmData.put(r.cov != null ? 1 : 0);
         putLongs(r.releaseNs, n);

@@ -28,6 +28,15 @@ public final class Area {
     /** A private memory entered with {@code enterPrivateMemory}: lives while its logic runs. */
     public static final int NESTED = 3;
 
+    /**
+     * The names of the fields a verification listener reads from outside the program (Java
+     * PathFinder's heap has no accessors to call): keep them in step with the fields below.
+     */
+    public static final String NAME_FIELD = "name";
+    public static final String KIND_FIELD = "kind";
+    public static final String DEPTH_FIELD = "depth";
+    public static final String PARENT_FIELD = "parent";
+
     private final String name;
     private final int kind;
     private final int depth;
@@ -78,6 +87,11 @@ public final class Area {
 
     /** The kind as a word: immortal, mission, private, nested. */
     public String kindName() {
+        return kindName(kind);
+    }
+
+    /** A kind ({@link #IMMORTAL} ...) as a word: immortal, mission, private, nested. */
+    public static String kindName(int kind) {
         switch (kind) {
             case IMMORTAL:
                 return "immortal";

@@ -70,6 +70,7 @@ final class Preload {
             "org.jmclbench.rtsjcompat.Priorities",
             "org.jmclbench.rtsjcompat.RunReport",
             "org.jmclbench.rtsjcompat.RunState",
+            "org.jmclbench.rtsjcompat.ScjLauncher",
             "org.jmclbench.rtsjcompat.ScjRuntime",
             "org.jmclbench.rtsjcompat.ScjThread",
             "org.jmclbench.rtsjcompat.SystemTimeSource",

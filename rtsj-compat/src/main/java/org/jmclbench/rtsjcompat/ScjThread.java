@@ -33,6 +33,9 @@ public class ScjThread extends Thread {
     /** The area receiving this thread's allocations now, or null (nothing is charged). */
     public Area current;
 
+    /** The name of {@link #current}, for a verification listener reading it from Java PathFinder's heap. */
+    public static final String CURRENT_FIELD = "current";
+
     private final Area[] stack = new Area[MAX_DEPTH];
     private int top = -1;
     private final AllocationMeter meter;

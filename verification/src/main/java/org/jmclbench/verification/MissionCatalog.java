@@ -24,11 +24,11 @@ public final class MissionCatalog implements CheckCatalog {
     public List<StaticCheck> staticChecks() {
         return List.of(
                 // The preallocated style: the scoped localizer is the other style's code, left out.
-                new StaticCheck("P6-static-preallocated", "P6 no allocation reachable from a release",
+                new StaticCheck("P6-static-preallocated", Property.P6,
                         StaticCheck.Kind.ALLOCATION,
                         n -> isMission(n) && !n.startsWith("org/jmclbench/core/mcl/ScopedLocalizer"),
                         RELEASES::contains, Set.of()),
-                new StaticCheck("P4-static-abort-poll", "P4 every particle loop polls the abort request",
+                new StaticCheck("P4-static-abort-poll", Property.P4,
                         StaticCheck.Kind.ABORT_POLL, MissionCatalog::isMission, n -> false, Set.of()));
     }
 

@@ -1,28 +1,39 @@
 package org.jmclbench.verification;
 
-import org.jmclbench.core.policy.OverrunPolicy;
+import org.jmclbench.verification.jpf.AreaReferenceListener;
 import org.jmclbench.verification.jpf.AtomicRuntimeSyncPolicy;
+import org.jmclbench.verification.jpf.JmmRaceDetector;
 import org.jmclbench.verification.jpf.JpfCheck;
 import org.jmclbench.verification.jpf.JpfCheck.Expectation;
+import org.jmclbench.verification.jpf.ReleaseAllocationListener;
+import org.jmclbench.verification.jpf.VolatileAccessScheduler;
+import org.jmclbench.verification.mission.HorizonTimeSource;
 import org.jmclbench.verification.mission.MissionDriver;
 
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * JPF checks of the real mission ({@link MissionDriver}: scj-mission on rtsj-compat with virtual
- * time), each under skip, terminate and queue. The input: two odometry events 50 ms apart and
- * two laser events, each at the instant of an odometry event, one particle. Virtual time stands
- * still while a job runs, so a release falls within a job only at the same instant: on this
- * input the terminate policy aborts, skip drops and queue waits, and the periodic, one-shot
- * and aperiodic handlers are each released twice.
+ * time), under skip, terminate and queue, in both memory styles. The input ({@link MissionRun#of}):
+ * two odometry events 50 ms apart and two laser events, each at the instant of an odometry event,
+ * one particle. Virtual time stands still while a job runs, so a release falls within a job only
+ * at the same instant: on this input the terminate policy aborts, skip drops and queue waits, and
+ * the periodic, one-shot and aperiodic handlers are each released twice.
  *
- * <p>Each search checks P1 (JPF's deadlock property), P3 and P4 (the {@link
- * org.jmclbench.verification.mission.CheckedLocalizer} around the mission's localizer), P5
- * (the driver, from the job records) and P6 (both listeners). P2 has its own search per policy,
- * on one odometry and one laser event (on two of each it took 188,900 states and 110 s).
+ * <p>One search per policy and style checks {@link #SEARCH}: P1 (JPF's deadlock property), P3 and
+ * P4 (the {@link org.jmclbench.verification.mission.CheckedRobot} around every job, and the
+ * driver's functional oracle), P5 (the driver, from the gate's count and the job records, and the
+ * horizon of virtual time) and P6 (in the preallocated style: no allocation in a release; in both:
+ * no reference to a shorter-lived area, and the private memory empty after each release). A
+ * search per property would explore the same states once per property. A policy's search must
+ * also reach the outcome it exists for (terminate: an aborted job of each task; skip: a dropped
+ * event of each task), else it passed vacuously. P2 has its own search per policy, on one
+ * odometry and one laser event (on two of each it took 188,900 states and 110 s).
  *
  * <p>Reduction: JPF switches threads at the mission's synchronisation actions (monitors, its
  * volatile abort request, thread start and end, blocking) and not inside rtsj-compat, which
@@ -31,16 +42,11 @@ import java.util.Map;
  * also switch at every field access of the mission's classes, establish that it has none.
  */
 public final class MissionChecks {
-    static final int ODOMETRY = 2;
-    static final int LASER = 2;
-    static final int RACE_ODOMETRY = 1;
-    static final int RACE_LASER = 1;
-    static final int PARTICLES = 1;
-    static final String PROPERTY = "P1 no deadlock, P3 an aborted job leaves the robot bit-identical, "
-            + "P4 abort honoured at the first poll, P5 each event ends once, P6 no release allocates, "
-            + "no reference to a shorter-lived area";
-    static final String RACE_PROPERTY = "P2 no data race on mission or robot state";
-    private static final String JPF = "org.jmclbench.verification.jpf.";
+    /** What one mission search checks. */
+    public static final Set<Property> SEARCH = EnumSet.of(Property.P1, Property.P3, Property.P4, Property.P5,
+            Property.P6);
+    static final List<String> POLICIES = List.of("skip", "terminate", "queue");
+    static final List<String> STYLES = List.of("preallocated", "scoped");
 
     /**
      * Fields whose stores the reference listener lets pass, each a known finding awaiting a fix
@@ -48,19 +54,22 @@ public final class MissionChecks {
      */
     static final List<String> KNOWN_AREA_FINDINGS = List.of();
 
+    /** The mission's code (with the seeded bugs plugged into it), as class-name prefixes. */
+    static final String MISSION_CODE = "org.jmclbench.scj.,org.jmclbench.core.,org.jmclbench.verification.seeded.";
+
+    /** The code whose field accesses the race detector judges. */
+    static final String RACE_SCOPE = "org.jmclbench.scj.*,org.jmclbench.core.*,org.jmclbench.verification.seeded.*";
+
     private MissionChecks() {}
 
-    /** The JPF settings every mission check uses (the reduction, and both P6 listeners). */
-    public static Map<String, String> config() {
-        return configWith(JPF + "ReleaseAllocationListener", JPF + "AreaReferenceListener");
-    }
-
     /**
-     * The mission checks' settings with only the given listeners: a seeded bug checked by one, or
-     * none (a P3 or P4 violation is an AssertionError, itself an allocation in the release).
+     * The JPF settings of a mission search in a memory style: the reduction, and P6's listeners
+     * (a scoped release allocates in its private memory by design, so only the reference and
+     * emptiness rules apply there).
      */
-    public static Map<String, String> configWith(String... listeners) {
-        Map<String, String> c = scheduling(listeners);
+    public static Map<String, String> config(String memory) {
+        Map<String, String> c = memory.equals("scoped") ? scheduling(AreaReferenceListener.class)
+                : scheduling(ReleaseAllocationListener.class, AreaReferenceListener.class);
         // No thread switch at plain field and array accesses anywhere (the P2 searches' part).
         c.put("vm.shared.never_break_methods", "org.jmclbench.*.*");
         return c;
@@ -75,7 +84,7 @@ public final class MissionChecks {
      * robot's synchronized predict and update, which these searches do not re-check.
      */
     public static Map<String, String> raceConfig() {
-        Map<String, String> c = scheduling(JPF + "JmmRaceDetector");
+        Map<String, String> c = scheduling(JmmRaceDetector.class);
         c.put("race.include", RACE_SCOPE);
         c.put("vm.shared.always_break_types", "org.jmclbench.scj.*,org.jmclbench.verification.seeded.*");
         c.put("vm.shared.never_break_types", "java.*,jdk.*,javax.*,org.jmclbench.rtsjcompat.*");
@@ -83,12 +92,17 @@ public final class MissionChecks {
     }
 
     /** Switch at the mission's monitors and volatiles, not inside the SCJ layer. */
-    private static Map<String, String> scheduling(String... listeners) {
+    private static Map<String, String> scheduling(Class<?>... listeners) {
         Map<String, String> c = new LinkedHashMap<>();
-        List<String> all = new ArrayList<>(List.of(JPF + "VolatileAccessScheduler"));
-        all.addAll(List.of(listeners));
+        List<String> all = new ArrayList<>(List.of(VolatileAccessScheduler.class.getName()));
+        for (Class<?> l : listeners) {
+            all.add(l.getName());
+        }
         c.put("listener", String.join(",", all));
         c.put("vm.scheduler.sync.class", AtomicRuntimeSyncPolicy.class.getName());
+        // The SCJ layer, and the driver's horizon on its clock, act as the VM: not preempted inside.
+        c.put("jmclbench.atomic.packages", "org.jmclbench.rtsjcompat.,javax.realtime.,javax.safetycritical.,"
+                + HorizonTimeSource.class.getName());
         c.put("jmclbench.volatile.classes", MISSION_CODE);
         c.put("jmclbench.release.classes", "org.jmclbench.scj.");
         c.put("jmclbench.areas.known", String.join(",", KNOWN_AREA_FINDINGS));
@@ -97,58 +111,51 @@ public final class MissionChecks {
         return c;
     }
 
-    /** The mission's code (with the seeded bugs plugged into it), as class-name prefixes. */
-    static final String MISSION_CODE = "org.jmclbench.scj.,org.jmclbench.core.,org.jmclbench.verification.seeded.";
-
-    /** The code whose field accesses the race detector judges. */
-    static final String RACE_SCOPE = "org.jmclbench.scj.*,org.jmclbench.core.*,org.jmclbench.verification.seeded.*";
-
-    /** The scope of a mission check, for the table and the JSON. */
-    public static String scope() {
-        return scope(ODOMETRY, LASER);
+    /** The outcomes a policy's search must reach on some path (else it passed vacuously). */
+    public static Set<String> coverage(String policy) {
+        return switch (policy) {
+            case "terminate" -> Set.of("predict terminated", "update terminated");
+            case "skip" -> Set.of("predict skipped", "update skipped");
+            default -> Set.of();
+        };
     }
 
-    /** The scope of a check on {@code odometry} and {@code laser} events. */
-    public static String scope(int odometry, int laser) {
-        return odometry + " odometry + " + laser + " laser events" + (laser > 0 ? " (coinciding)" : "") + ", "
-                + PARTICLES + " particle, poll every 64";
+    /** A mission check: {@code run} with {@code fault} (null: the shipped mission) under {@code config}. */
+    public static JpfCheck check(String id, Set<Property> properties, MissionRun run, Map<String, String> config,
+                                 Expectation expect, Class<?> fault, String what) {
+        return new JpfCheck(id, properties, run.policy(), MissionDriver.class.getName(), run.args(fault), config,
+                expect, run.scope() + (what == null ? "" : ", " + what));
     }
 
-    /** The driver's arguments for a policy and an optional configuration class (a seam). */
-    public static List<String> args(String policy, String configurationClass) {
-        return args(policy, ODOMETRY, LASER, configurationClass);
+    /** The P2 searches' input for a policy: one odometry and one laser event at the same instant. */
+    public static MissionRun raceRun(String policy) {
+        return MissionRun.of(policy, "preallocated").events(1, 1);
     }
 
-    /** As {@link #args(String, String)}, on {@code odometry} and {@code laser} events. */
-    public static List<String> args(String policy, int odometry, int laser, String configurationClass) {
-        List<String> a = new ArrayList<>(List.of(policy, Integer.toString(odometry), Integer.toString(laser),
-                Integer.toString(PARTICLES)));
-        if (configurationClass != null) {
-            a.add(configurationClass);
-        }
-        return a;
+    /**
+     * The P4 interval search's input (terminate, one odometry and one laser event at the same
+     * instant): five particles and a poll every two, so that a job polling less than once per
+     * interval makes fewer polls than a complete pass needs; with the covariance computed, so
+     * that the {@code -c} path runs too.
+     */
+    public static MissionRun intervalRun() {
+        return MissionRun.of("terminate", "preallocated").events(1, 1).particles(5, 2).withCovariance();
     }
 
-    /** The driver's arguments on the P2 searches' input. */
-    public static List<String> raceArgs(String policy, String configurationClass) {
-        return args(policy, RACE_ODOMETRY, RACE_LASER, configurationClass);
-    }
-
-    /** The scope of a P2 search. */
-    public static String raceScope() {
-        return scope(RACE_ODOMETRY, RACE_LASER) + ", switching at every field access of the mission";
-    }
-
-    /** Per policy: the correct mission's search, and its P2 search. */
+    /** Per policy and style, the shipped mission's search; the interval search; per policy, its P2 search. */
     public static List<JpfCheck> all() {
         List<JpfCheck> l = new ArrayList<>();
-        String main = MissionDriver.class.getName();
-        for (OverrunPolicy p : OverrunPolicy.values()) {
-            String policy = p.label;
-            l.add(new JpfCheck("mission-" + policy, PROPERTY, policy, main, args(policy, null), config(),
-                    Expectation.holds(), scope()));
-            l.add(new JpfCheck("mission-race-" + policy, RACE_PROPERTY, policy, main, raceArgs(policy, null),
-                    raceConfig(), Expectation.holds(), raceScope()));
+        for (String memory : STYLES) {
+            for (String policy : POLICIES) {
+                l.add(check("mission-" + memory + "-" + policy, SEARCH, MissionRun.of(policy, memory), config(memory),
+                        Expectation.holdsReaching(coverage(policy)), null, null));
+            }
+        }
+        l.add(check("mission-interval-terminate", SEARCH, intervalRun(), config("preallocated"),
+                Expectation.holdsReaching(coverage("terminate")), null, null));
+        for (String policy : POLICIES) {
+            l.add(check("mission-race-" + policy, EnumSet.of(Property.P2), raceRun(policy), raceConfig(),
+                    Expectation.holds(), null, "switching at every field access of the mission"));
         }
         return l;
     }

@@ -15,17 +15,32 @@ import java.util.function.Predicate;
  * or the exact set of {@code class:method} a seeded bug must be reported at.
  *
  * @param id        short unique name
- * @param property  the property in words
- * @param kind      ALLOCATION (from releases of classes {@code releases} accepts) or ABORT_POLL
+ * @param property  the property the rule is part of
+ * @param kind      the rule: ALLOCATION (from releases of classes {@code releases} accepts) or ABORT_POLL
  * @param classes   which classes of the pool the check looks at (internal names)
  * @param releases  release classes (ALLOCATION only)
  * @param expected  empty: must hold; else the {@code class:method} of every expected violation
  */
-public record StaticCheck(String id, String property, Kind kind, Predicate<String> classes,
+public record StaticCheck(String id, Property property, Kind kind, Predicate<String> classes,
                           Predicate<String> releases, Set<String> expected) {
 
     /** The two static rules. */
-    public enum Kind { ALLOCATION, ABORT_POLL }
+    public enum Kind {
+        ALLOCATION("no allocation reachable from a release"),
+        ABORT_POLL("every particle loop polls the abort request within the poll interval");
+
+        /** The rule in words. */
+        public final String rule;
+
+        Kind(String rule) {
+            this.rule = rule;
+        }
+    }
+
+    /** The property and the rule, for the table. */
+    public String propertyText() {
+        return property.name() + " " + kind.rule;
+    }
 
     /** The violations the rule finds in the pool. */
     public List<Violation> run(ClassPool pool) {

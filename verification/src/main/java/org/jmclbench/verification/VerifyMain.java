@@ -116,13 +116,13 @@ public final class VerifyMain {
                 seeded |= !s.expected().isEmpty();
                 ok &= met;
                 String verdict = verdictOf(met, !s.expected().isEmpty());
-                print(s.id(), s.property(), "-", verdict, "-", secs);
+                print(s.id(), s.propertyText(), "-", verdict, "-", secs);
                 if (!met || !s.expected().isEmpty()) {
                     for (Violation v : found) {
                         System.out.println("    " + v);
                     }
                 }
-                Map<String, Object> row = row(catalog.name(), s.id(), s.property(), "-", "static", verdict, met,
+                Map<String, Object> row = row(catalog.name(), s.id(), s.propertyText(), List.of(s.property()), "-", "static", verdict, met,
                         !s.expected().isEmpty(), secs);
                 row.put("violations", found.stream().map(Violation::toString).toList());
                 rows.add(row);
@@ -138,11 +138,11 @@ public final class VerifyMain {
                 seeded |= c.seeded();
                 ok &= r.passed();
                 String verdict = verdictOf(r.passed(), c.seeded());
-                print(c.id(), c.property(), c.policy(), verdict, Long.toString(r.newStates()), r.seconds());
+                print(c.id(), c.propertyText(), c.policy(), verdict, Long.toString(r.newStates()), r.seconds());
                 if (!r.passed()) {
                     System.out.println("    " + r.verdict() + " (log " + r.log() + ")");
                 }
-                Map<String, Object> row = row(catalog.name(), c.id(), c.property(), c.policy(), "jpf", verdict,
+                Map<String, Object> row = row(catalog.name(), c.id(), c.propertyText(), c.properties(), c.policy(), "jpf", verdict,
                         r.passed(), c.seeded(), r.seconds());
                 row.put("detail", r.verdict());
                 row.put("scope", c.scope());
@@ -203,12 +203,14 @@ public final class VerifyMain {
                 property.length() > 48 ? property.substring(0, 47) + "~" : property, policy, verdict, states, secs);
     }
 
-    private static Map<String, Object> row(String catalog, String id, String property, String policy, String kind,
+    private static Map<String, Object> row(String catalog, String id, String property,
+                                           java.util.Collection<Property> properties, String policy, String kind,
                                            String verdict, boolean passed, boolean seeded, double secs) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("catalog", catalog);
         m.put("id", id);
         m.put("property", property);
+        m.put("properties", properties.stream().sorted().map(Property::name).toList());
         m.put("policy", policy);
         m.put("kind", kind);
         m.put("seeded", seeded);

@@ -2,27 +2,32 @@ package org.jmclbench.verification;
 
 import org.jmclbench.verification.jpf.JpfCheck;
 import org.jmclbench.verification.jpf.JpfCheck.Expectation;
-import org.jmclbench.verification.mission.MissionDriver;
 import org.jmclbench.verification.seeded.AllocatingRelease;
 import org.jmclbench.verification.seeded.PollingJob;
-import org.jmclbench.verification.seeded.mission.CommitBeforePollConfiguration;
-import org.jmclbench.verification.seeded.mission.LockInversionConfiguration;
-import org.jmclbench.verification.seeded.mission.LostReleaseConfiguration;
-import org.jmclbench.verification.seeded.mission.PollIgnoredConfiguration;
-import org.jmclbench.verification.seeded.mission.PrivateIntoMissionConfiguration;
-import org.jmclbench.verification.seeded.mission.StrayAllocationConfiguration;
-import org.jmclbench.verification.seeded.mission.UnguardedReadConfiguration;
+import org.jmclbench.verification.seeded.mission.CachedScratch;
+import org.jmclbench.verification.seeded.mission.CommitBeforePoll;
+import org.jmclbench.verification.seeded.mission.GeneratorAdvanced;
+import org.jmclbench.verification.seeded.mission.LockInversion;
+import org.jmclbench.verification.seeded.mission.LostRelease;
+import org.jmclbench.verification.seeded.mission.NeverEnds;
+import org.jmclbench.verification.seeded.mission.PollIgnored;
+import org.jmclbench.verification.seeded.mission.PrivateIntoMission;
+import org.jmclbench.verification.seeded.mission.RecordsAborted;
+import org.jmclbench.verification.seeded.mission.StrayAllocation;
+import org.jmclbench.verification.seeded.mission.UnguardedRead;
+import org.jmclbench.verification.seeded.mission.WidePoll;
 import org.jmclbench.verification.toy.ToyChecks;
 
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 
 /**
  * The seeded bugs verify must catch (test sources: never shipped with the mission): bugs
- * plugged into the real mission through its configuration seam, the small SCJ-like program's
- * checks with one seeded bug per property, and the static checks' seeded classes.
+ * plugged into the real mission through its configuration seam, each expected as one violation
+ * of its property at the seeded method, the small SCJ-like program's seeded bugs, and the static
+ * checks' seeded classes.
  */
 public final class SeededCatalog implements CheckCatalog {
 
@@ -31,45 +36,46 @@ public final class SeededCatalog implements CheckCatalog {
         return "seeded";
     }
 
+    /** A seeded bug in the mission: run with its fault, it must violate {@code p} in {@code at.method}. */
+    private static JpfCheck mission(String name, Property p, MissionRun run, Class<?> fault, Class<?> at,
+                                    String method, String what) {
+        String memory = run.memory();
+        return MissionChecks.check("mission-seeded-" + name, EnumSet.of(p), run,
+                p == Property.P2 ? MissionChecks.raceConfig() : MissionChecks.config(memory),
+                Expectation.violation(p, at, method), fault, "seeded " + what);
+    }
+
     @Override
     public List<JpfCheck> jpfChecks() {
-        List<JpfCheck> l = new ArrayList<>();
-        String main = MissionDriver.class.getName();
-        l.add(new JpfCheck("mission-seeded-stray-allocation", "P6 no release allocates", "queue",
-                main, MissionChecks.args("queue", StrayAllocationConfiguration.class.getName()),
-                MissionChecks.config(), Expectation.violation("ReleaseAllocationListener", "allocated a [D at"),
-                MissionChecks.scope() + ", seeded stray allocation"));
-        // Only the reference listener: the stray allocation would be reported first otherwise.
-        l.add(new JpfCheck("mission-seeded-private-into-mission", "P6 no reference to a shorter-lived area", "queue",
-                main,
-                MissionChecks.args("queue", PrivateIntoMissionConfiguration.class.getName()),
-                MissionChecks.configWith("org.jmclbench.verification.jpf.AreaReferenceListener"),
-                Expectation.violation("AreaReferenceListener", "stores a reference to an object of [D in"),
-                MissionChecks.scope() + ", seeded private-memory array kept by the mission's localizer"));
-        // The inversion deadlocks when a laser release falls within a predict job.
-        l.add(new JpfCheck("mission-seeded-lock-inversion", "P1 no deadlock", "queue", main,
-                MissionChecks.args("queue", LockInversionConfiguration.class.getName()), MissionChecks.config(),
-                Expectation.violation("NotDeadlockedProperty", "deadlock"),
-                MissionChecks.scope() + ", seeded robot/gate lock-order inversion"));
-        l.add(new JpfCheck("mission-seeded-lost-release", "P5 every event ends exactly once", "queue",
-                main, MissionChecks.args("queue", LostReleaseConfiguration.class.getName()),
-                MissionChecks.config(), Expectation.violation("NoUncaughtExceptionsProperty", "P5 an event never ended"),
-                MissionChecks.scope() + ", seeded gate ending the mission after the first event"));
-        // P3 and P4 run without the P6 listeners, as their violation (an AssertionError) allocates.
-        Map<String, String> p3p4 = MissionChecks.configWith();
-        l.add(new JpfCheck("mission-seeded-unguarded-read", MissionChecks.RACE_PROPERTY, "terminate", main,
-                MissionChecks.raceArgs("terminate", UnguardedReadConfiguration.class.getName()),
-                MissionChecks.raceConfig(), Expectation.violation("JmmRaceDetector", ".admitted"),
-                MissionChecks.raceScope() + ", seeded admission count read by the abort poll without the gate's lock"));
-        l.add(new JpfCheck("mission-seeded-commit-before-poll", "P3 an aborted job leaves the robot bit-identical",
-                "terminate", main, MissionChecks.args("terminate", CommitBeforePollConfiguration.class.getName()),
-                p3p4, Expectation.violation("NoUncaughtExceptionsProperty", "P3 an aborted job changed the robot"),
-                MissionChecks.scope() + ", seeded job that applies its step before it polls"));
-        l.add(new JpfCheck("mission-seeded-poll-ignored", "P4 abort honoured at the first poll", "terminate", main,
-                MissionChecks.args("terminate", PollIgnoredConfiguration.class.getName()),
-                p3p4, Expectation.violation("NoUncaughtExceptionsProperty",
-                        "P4 a job went on after a poll saw its abort request"),
-                MissionChecks.scope() + ", seeded job that carries on after seeing the request"));
+        MissionRun queue = MissionRun.of("queue", "preallocated");
+        MissionRun terminate = MissionRun.of("terminate", "preallocated");
+        MissionRun scopedQueue = MissionRun.of("queue", "scoped");
+        List<JpfCheck> l = new ArrayList<>(List.of(
+                mission("stray-allocation", Property.P6, queue, StrayAllocation.class, StrayAllocation.class,
+                        "predict", "stray allocation in a release"),
+                mission("private-into-mission", Property.P6, scopedQueue, PrivateIntoMission.class,
+                        PrivateIntoMission.class, "predict", "private-memory array kept by the mission's localizer"),
+                mission("cached-scratch", Property.P6, scopedQueue, CachedScratch.class, CachedScratch.class,
+                        "update", "private-memory array cached in a thread-local"),
+                mission("lock-inversion", Property.P1, queue, LockInversion.class, LockInversion.InvertingRobot.class,
+                        "predict", "robot/gate lock-order inversion"),
+                mission("lost-release", Property.P5, queue, LostRelease.class, LostRelease.EarlyEnd.class, "ended",
+                        "gate ending the mission after the first event"),
+                mission("never-ends", Property.P5, queue, NeverEnds.class, NeverEnds.OffByOne.class, "ended",
+                        "gate that never ends the mission"),
+                mission("unguarded-read", Property.P2, MissionChecks.raceRun("terminate"), UnguardedRead.class,
+                        UnguardedRead.CountingGate.class, "abortRequested",
+                        "admission count read by the abort poll without the gate's lock"),
+                mission("commit-before-poll", Property.P3, terminate, CommitBeforePoll.class, CommitBeforePoll.class,
+                        "predict", "job that applies its step before it polls"),
+                mission("generator-advanced", Property.P3, terminate, GeneratorAdvanced.class,
+                        GeneratorAdvanced.class, "predict", "aborted job that advances the committed generator"),
+                mission("records-aborted", Property.P3, terminate, RecordsAborted.class, RecordsAborted.Recording.class,
+                        "predict", "robot recording an aborted job's estimate"),
+                mission("poll-ignored", Property.P4, terminate, PollIgnored.class, PollIgnored.class, "predict",
+                        "job that carries on after seeing the request"),
+                mission("wide-poll", Property.P4, MissionChecks.intervalRun(), WidePoll.class, WidePoll.class, "predict",
+                        "job polling every fourth interval")));
         l.addAll(ToyChecks.all());
         return l;
     }
@@ -79,13 +85,11 @@ public final class SeededCatalog implements CheckCatalog {
         String alloc = AllocatingRelease.class.getName();
         String poll = PollingJob.class.getName();
         return List.of(
-                new StaticCheck("static-seeded-allocation", "P6 no allocation reachable from a release",
-                        StaticCheck.Kind.ALLOCATION, n -> n.startsWith("org/jmclbench/verification/seeded/"),
-                        n -> n.equals(internal(alloc)),
+                new StaticCheck("static-seeded-allocation", Property.P6, StaticCheck.Kind.ALLOCATION,
+                        n -> n.startsWith("org/jmclbench/verification/seeded/"), n -> n.equals(internal(alloc)),
                         Set.of(alloc + ":handleAsyncEvent", alloc + ":helper", alloc + "$AllocatingStep:apply")),
-                new StaticCheck("static-seeded-abort-poll", "P4 every particle loop polls the abort request",
-                        StaticCheck.Kind.ABORT_POLL, n -> n.equals(internal(poll)), n -> false,
-                        Set.of(poll + ":update", poll + ":siblings")));
+                new StaticCheck("static-seeded-abort-poll", Property.P4, StaticCheck.Kind.ABORT_POLL,
+                        n -> n.equals(internal(poll)), n -> false, Set.of(poll + ":update", poll + ":siblings")));
     }
 
     private static String internal(String className) {

@@ -15,11 +15,13 @@ import java.util.TreeSet;
 import java.util.function.Predicate;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.store.StoredRuns;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
+
+import static org.jmclbench.tooling.report.EvaluationData.*;
 
 /**
  * Writes the evaluation (docs/EVALUATION.md and its SVG figures) from a results store: method,
@@ -27,36 +29,17 @@ import com.fasterxml.jackson.databind.ObjectMapper;
  * the store through the report's own aggregation ({@link ReportModel}: mean over repetitions with
  * a 95% Student-t interval); where the store has no data for a question, the document says so.
  */
-public final class EvaluationDocument {
+public final class EvaluationDocument extends EvaluationSections {
 
     /** The dataset period the "sustained with no miss" question is asked at (the odometry period). */
     static final String PERIOD = "50 ms";
 
-    private final ReportModel model;
-    private final Path figures;
-    private final String figureLink;
-    private final ChartExporter charts;
     private final List<String> cuts;
-    private final JsonNode verification;
-    private final Path verificationFile;
-    private final StringBuilder md = new StringBuilder();
-    /** The dataset the document is about: the one with the most runs. */
-    private final String dataset;
 
     private EvaluationDocument(ReportModel model, Path document, Path figures, List<String> cuts, Path verificationFile)
             throws IOException {
-        this.model = model;
-        this.figures = figures;
-        Path base = document.toAbsolutePath().getParent();
-        this.figureLink = base.relativize(figures.toAbsolutePath()).toString().replace('\\', '/');
-        this.charts = new ChartExporter(model, figures);
+        super(new EvaluationData(model), document, figures, verificationFile);
         this.cuts = cuts;
-        this.verificationFile = verificationFile;
-        this.verification = verificationFile != null && Files.isRegularFile(verificationFile)
-                ? new ObjectMapper().readTree(verificationFile.toFile()) : null;
-        Map<String, Integer> runsPerDataset = new LinkedHashMap<>();
-        model.cells.forEach(c -> runsPerDataset.merge(c.dataset, c.runs, Integer::sum));
-        this.dataset = runsPerDataset.entrySet().stream().max(Map.Entry.comparingByValue()).map(Map.Entry::getKey).orElse(null);
     }
 
     /**
@@ -76,7 +59,7 @@ public final class EvaluationDocument {
         d.build();
         Path parent = document.toAbsolutePath().getParent();
         Files.createDirectories(parent);
-        Files.writeString(document, d.md.toString(), StandardCharsets.UTF_8);
+        Files.writeString(document, d.text(), StandardCharsets.UTF_8);
     }
 
     /** A figure of an earlier store (another heaviest count, say) must not stay beside the new document. */
@@ -100,7 +83,7 @@ public final class EvaluationDocument {
                 + "below is read from that store; the figures are drawn by the report's chart code. Regenerate with "
                 + "`./jmclbench evaluate`.");
         line("");
-        if (dataset == null) {
+        if (data.dataset == null) {
             line("The store holds no runs: there is nothing to evaluate yet.");
             return;
         }
@@ -112,21 +95,20 @@ public final class EvaluationDocument {
         sustainable();
         scjCost();
         hvm();
-        memoryModel();
-        policies();
-        collectors();
-        attribution();
-        verification();
+        EvaluationExplanations explanations = new EvaluationExplanations(this);
+        explanations.memoryModel();
+        explanations.policies();
+        explanations.collectors();
+        explanations.attribution();
+        explanations.verification();
         threats();
         conclusions();
     }
 
-    private final List<String> findings = new ArrayList<>();
-
     private void method() throws IOException {
         line("## 1. Method");
         line("");
-        line("**Workload.** Monte-Carlo Localization replayed on its recorded timeline (dataset `" + dataset + "`): "
+        line("**Workload.** Monte-Carlo Localization replayed on its recorded timeline (dataset `" + data.dataset + "`): "
                 + "predict is released with each odometry reading (period " + PERIOD + "), update at each laser time; "
                 + "a job that has not finished by its deadline is a miss, handled by the run's policy (skip, terminate "
                 + "or queue). Task latency is completion time minus release time; release jitter is the start's lateness "
@@ -152,7 +134,7 @@ public final class EvaluationDocument {
         table(List.of("configuration", "version", "runs", "ok", "failed or timed out", "unsupported"), rows);
         int total = model.cells.stream().mapToInt(c -> c.runs).sum();
         int ok = model.cells.stream().mapToInt(c -> c.ok).sum();
-        IntSummary reps = repetitions();
+        IntSummary reps = data.repetitions();
         line(String.format(Locale.ROOT, "**Runs.** %d runs in the store, %d completed. Each configuration and setting "
                 + "completed %s repetitions; runs were shuffled within each repetition round so that drift of the machine spreads over "
                 + "every configuration. Values are means over the completed repetitions with a 95%% Student-t confidence "
@@ -169,55 +151,20 @@ public final class EvaluationDocument {
         line("");
     }
 
-    private record IntSummary(int min, int max) {
-        String text() {
-            return min == max ? String.valueOf(min) : min + " to " + max;
-        }
-    }
-
-    private IntSummary repetitions() {
-        int min = Integer.MAX_VALUE;
-        int max = 0;
-        for (ReportModel.Cell c : model.cells) {
-            if (c.ok > 0) {
-                min = Math.min(min, c.ok);
-                max = Math.max(max, c.ok);
-            }
-        }
-        return min == Integer.MAX_VALUE ? new IntSummary(0, 0) : new IntSummary(min, max);
-    }
-
-    /** The particle sweep: skip-policy cells of the dataset, per configuration. */
-    private List<ReportModel.Cell> sweep() {
-        return cells(c -> c.policy.equals("skip"));
-    }
-
-    private List<Integer> sweepCounts() {
-        return sweep().stream().map(c -> c.particles).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
-    }
-
-    /** Configurations of the sweep that ran the most particle counts (the ones the sweep compares). */
-    private List<String> sweepConfigs() {
-        Map<String, Integer> counts = new LinkedHashMap<>();
-        sweep().stream().filter(c -> c.ok > 0).forEach(c -> counts.merge(c.config, 1, Integer::sum));
-        int most = counts.values().stream().max(Integer::compare).orElse(0);
-        return order(counts.entrySet().stream().filter(e -> e.getValue() == most).map(Map.Entry::getKey).toList());
-    }
-
     private void misses() throws IOException {
         line("### 2.1 Deadline misses per runtime and particle count (Table 1, Figure 1)");
         line("");
-        List<ReportModel.Cell> sweep = sweep();
+        List<ReportModel.Cell> sweep = data.sweep();
         if (sweep.isEmpty()) {
             line("No run with the skip policy is in the store.");
             line("");
             return;
         }
-        List<Integer> counts = sweepCounts();
+        List<Integer> counts = data.sweepCounts();
         List<String> header = new ArrayList<>(List.of("configuration"));
         counts.forEach(n -> header.add(n + " particles"));
         List<List<String>> rows = new ArrayList<>();
-        for (String config : order(sweep.stream().map(c -> c.config).distinct().toList())) {
+        for (String config : data.order(sweep.stream().map(c -> c.config).distinct().toList())) {
             List<String> row = new ArrayList<>(List.of(config));
             for (int n : counts) {
                 row.add(cell(sweep, config, n).map(c -> agg(c, Metric.MISS_COUNT, 1)).orElse(""));
@@ -229,13 +176,12 @@ public final class EvaluationDocument {
         table(header, rows);
         // The figure shows the configurations of the whole sweep, except the HVM: its misses (Table 1,
         // section 2.5) would flatten every other bar to the axis.
-        List<String> compared = sweepConfigs();
-        List<ReportModel.Cell> drawn = sweep.stream().filter(c -> compared.contains(c.config) && !isHvm(c)).toList();
-        boolean hvmLeftOut = sweep.stream().anyMatch(this::isHvm);
+        List<String> compared = data.sweepConfigs();
+        List<ReportModel.Cell> drawn = sweep.stream().filter(c -> compared.contains(c.config) && !data.isHvm(c)).toList();
+        boolean hvmLeftOut = sweep.stream().anyMatch(data::isHvm);
         figure("misses-skip", "Figure 1: deadline misses per run vs particles, policy skip, 95% CI error bars"
                         + (hvmLeftOut ? "; the HVM's rows are in Table 1 only (its scale would hide the others)." : "."),
-                () -> charts.evaluationMisses("misses-skip", "Deadline misses vs particles (" + dataset + ", skip)",
-                        drawn.isEmpty() ? sweep : drawn));
+                () -> charts.write(ChartSpecs.misses(scope(null, drawn.isEmpty() ? sweep : drawn)).withStem("misses-skip")));
         int heaviest = counts.get(counts.size() - 1);
         List<ReportModel.Cell> at = compared.stream().map(c -> cell(sweep, c, heaviest).orElse(null)).filter(Objects::nonNull)
                 .filter(c -> mean(c, Metric.MISS_COUNT) != null).sorted(Comparator.comparingDouble((ReportModel.Cell c) -> mean(c, Metric.MISS_COUNT))
@@ -253,27 +199,10 @@ public final class EvaluationDocument {
         }
     }
 
-    /** The particle count latency is compared at: the largest of the sweep at which the C baseline missed nothing. */
-    private Integer referenceCount() {
-        List<Integer> counts = sweepCounts();
-        if (counts.isEmpty()) {
-            return null;
-        }
-        Integer ref = null;
-        for (int n : counts) {
-            boolean nativeMissed = sweep().stream().filter(c -> c.particles == n && isNative(c))
-                    .anyMatch(c -> orZero(max(c, Metric.MISS_COUNT)) > 0);
-            if (!nativeMissed) {
-                ref = n;
-            }
-        }
-        return ref != null ? ref : counts.get(0);
-    }
-
     /** Why the latency table is at {@code ref}, as the store says it. */
     private String referenceReason(int ref) {
-        boolean hasNative = sweep().stream().anyMatch(c -> c.particles == ref && isNative(c) && c.ok > 0);
-        boolean nativeMissed = sweep().stream().filter(c -> c.particles == ref && isNative(c))
+        boolean hasNative = data.sweep().stream().anyMatch(c -> c.particles == ref && data.isNative(c) && c.ok > 0);
+        boolean nativeMissed = data.sweep().stream().filter(c -> c.particles == ref && data.isNative(c))
                 .anyMatch(c -> orZero(max(c, Metric.MISS_COUNT)) > 0);
         if (!hasNative) {
             return ref + " particles is the smallest count of the sweep (the store has no C baseline run to choose by).";
@@ -287,14 +216,14 @@ public final class EvaluationDocument {
     private void latency() throws IOException {
         line("### 2.2 Latency and jitter, and the distance to C (Table 2, Figure 2)");
         line("");
-        Integer ref = referenceCount();
+        Integer ref = data.referenceCount();
         if (ref == null) {
             line("No run with the skip policy is in the store.");
             line("");
             return;
         }
-        List<ReportModel.Cell> at = order(sweep().stream().filter(c -> c.particles == ref && c.ok > 0).toList());
-        ReportModel.Cell c0 = at.stream().filter(this::isNative).findFirst().orElse(null);
+        List<ReportModel.Cell> at = data.order(data.sweep().stream().filter(c -> c.particles == ref && c.ok > 0).toList());
+        ReportModel.Cell c0 = at.stream().filter(data::isNative).findFirst().orElse(null);
         Double nativeLatency = c0 == null ? null : mean(c0, Metric.LATENCY_MEAN);
         line(String.format(Locale.ROOT, "Table 2: task latency and release jitter at %d particles, policy skip (ms; mean ± 95%% CI "
                 + "over repetitions of each run's mean, p99 and max). %s The last column is the mean task latency divided by C's.",
@@ -309,8 +238,8 @@ public final class EvaluationDocument {
         }
         table(List.of("configuration", "latency mean", "latency p99", "latency max", "jitter mean", "jitter p99", "latency / C"), rows);
         figure("spectrum-skip-" + ref, "Figure 2: task latency by percentile (all jobs of all repetitions, log scales), "
-                + ref + " particles, policy skip.", () -> charts.evaluationSpectrum("spectrum-skip-" + ref, dataset + ", skip, " + ref + " particles", at));
-        List<ReportModel.Cell> jvms = at.stream().filter(c -> !isNative(c) && mean(c, Metric.LATENCY_P99) != null)
+                + ref + " particles, policy skip.", () -> charts.write(ChartSpecs.spectrum(scope(ref, at)).withStem("spectrum-skip-" + ref)));
+        List<ReportModel.Cell> jvms = at.stream().filter(c -> !data.isNative(c) && mean(c, Metric.LATENCY_P99) != null)
                 .sorted(Comparator.comparingDouble(c -> mean(c, Metric.LATENCY_P99))).toList();
         if (!jvms.isEmpty()) {
             ReportModel.Cell best = jvms.get(0);
@@ -329,37 +258,21 @@ public final class EvaluationDocument {
         }
     }
 
-    /**
-     * The largest particle count a configuration sustained with no miss in any completed repetition,
-     * every smaller count of its sweep included; 0 when even its smallest count missed.
-     */
-    static int sustained(List<ReportModel.Cell> cellsOfConfig) {
-        int best = 0;
-        for (ReportModel.Cell c : cellsOfConfig.stream().filter(x -> x.ok > 0).sorted(Comparator.comparingInt(x -> x.particles)).toList()) {
-            ReportModel.Agg a = c.metrics.get(Metric.MISS_COUNT.name());
-            if (a == null || a.max() == null || a.max() > 0) {
-                break;
-            }
-            best = c.particles;
-        }
-        return best;
-    }
-
     private void sustainable() throws IOException {
         line("### 2.3 The largest load each runtime sustains with no miss at " + PERIOD + " (Table 3, Figure 3)");
         line("");
-        List<String> configs = sweepConfigs();
+        List<String> configs = data.sweepConfigs();
         if (configs.isEmpty()) {
             line("No completed run with the skip policy is in the store.");
             line("");
             return;
         }
-        List<Integer> counts = sweepCounts();
+        List<Integer> counts = data.sweepCounts();
         int largest = counts.get(counts.size() - 1);
         Map<String, Integer> loads = new LinkedHashMap<>();
         List<List<String>> rows = new ArrayList<>();
         for (String config : configs) {
-            List<ReportModel.Cell> cs = sweep().stream().filter(c -> c.config.equals(config)).toList();
+            List<ReportModel.Cell> cs = data.sweep().stream().filter(c -> c.config.equals(config)).toList();
             int n = sustained(cs);
             loads.put(config, n);
             String first = cs.stream().filter(c -> c.ok > 0 && c.particles > n).map(c -> String.valueOf(c.particles)).findFirst().orElse("");
@@ -371,8 +284,8 @@ public final class EvaluationDocument {
         line("");
         table(List.of("configuration", "sustained particles", "first count with a miss"), rows);
         figure("sustainable-load", "Figure 3: the largest particle count sustained with no miss, per configuration.",
-                () -> charts.evaluationSustainable("sustainable-load", "Largest particle count with no deadline miss ("
-                        + dataset + ", skip, " + PERIOD + " period)", loads));
+                () -> charts.write(ChartSpecs.sustained(scope(null, data.sweep()), "sustainable-load",
+                        "Largest particle count with no deadline miss (" + data.dataset + ", skip, " + PERIOD + " period)", loads)));
         int most = loads.values().stream().max(Integer::compare).orElseThrow();
         String top = loads.entrySet().stream().filter(e -> e.getValue() == most).map(e -> "**" + e.getKey() + "**")
                 .collect(Collectors.joining(", "));
@@ -395,11 +308,11 @@ public final class EvaluationDocument {
         line("");
         List<List<String>> rows = new ArrayList<>();
         List<double[]> ratios = new ArrayList<>();
-        for (ReportModel.Cell scj : order(sweep().stream().filter(c -> "scj".equals(c.engine) && "preallocated".equals(c.memory)
-                && !isHvm(c) && c.ok > 0).toList())) {
-            ReportModel.ConfigInfo info = info(scj);
-            ReportModel.Cell se = sweep().stream().filter(c -> c.particles == scj.particles && "javase".equals(c.engine)
-                    && "preallocated".equals(c.memory) && c.ok > 0 && sameJvm(info(c), info)).findFirst().orElse(null);
+        for (ReportModel.Cell scj : data.order(data.sweep().stream().filter(c -> "scj".equals(c.engine) && "preallocated".equals(c.memory)
+                && !data.isHvm(c) && c.ok > 0).toList())) {
+            ReportModel.ConfigInfo info = data.info(scj);
+            ReportModel.Cell se = data.sweep().stream().filter(c -> c.particles == scj.particles && "javase".equals(c.engine)
+                    && "preallocated".equals(c.memory) && c.ok > 0 && sameJvm(data.info(c), info)).findFirst().orElse(null);
             if (se == null) {
                 continue;
             }
@@ -434,7 +347,7 @@ public final class EvaluationDocument {
     private void hvm() throws IOException {
         line("### 2.5 SCJ on a real SCJ VM (HVM) against SCJ on HotSpot (Table 5)");
         line("");
-        List<ReportModel.Cell> hvm = order(cells(c -> isHvm(c) && c.policy.equals("skip") && c.ok > 0));
+        List<ReportModel.Cell> hvm = data.order(data.cells(c -> data.isHvm(c) && c.policy.equals("skip") && c.ok > 0));
         if (hvm.isEmpty()) {
             line("**No data.** The store holds no completed run of the `hvm` runtime (the icecap HVM was not built or not found "
                     + "on this machine), so SCJ on a real SCJ VM is not compared here.");
@@ -444,11 +357,11 @@ public final class EvaluationDocument {
         }
         List<List<String>> rows = new ArrayList<>();
         for (ReportModel.Cell h : hvm) {
-            List<ReportModel.Cell> hotspot = sweep().stream().filter(c -> c.particles == h.particles && "scj".equals(c.engine)
-                    && Objects.equals(c.memory, h.memory) && !isHvm(c) && !isNative(c) && c.ok > 0).toList();
+            List<ReportModel.Cell> hotspot = data.sweep().stream().filter(c -> c.particles == h.particles && "scj".equals(c.engine)
+                    && Objects.equals(c.memory, h.memory) && !data.isHvm(c) && !data.isNative(c) && c.ok > 0).toList();
             rows.add(List.of(h.config, String.valueOf(h.particles), agg(h, Metric.MISS_COUNT, 1), agg(h, Metric.LATENCY_MEAN, 3),
                     agg(h, Metric.LATENCY_P99, 3), "", ""));
-            for (ReportModel.Cell c : order(hotspot)) {
+            for (ReportModel.Cell c : data.order(hotspot)) {
                 rows.add(List.of(c.config, String.valueOf(c.particles), agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATENCY_MEAN, 3),
                         agg(c, Metric.LATENCY_P99, 3), ratio(mean(h, Metric.LATENCY_MEAN), mean(c, Metric.LATENCY_MEAN)),
                         ratio(mean(h, Metric.LATENCY_P99), mean(c, Metric.LATENCY_P99))));
@@ -463,243 +376,6 @@ public final class EvaluationDocument {
                 agg(first, Metric.MISS_COUNT, 1), agg(first, Metric.LATENCY_MEAN, 3)));
     }
 
-    private void memoryModel() throws IOException {
-        line("### 2.6 The memory-model experiment (Table 6, Figure 4)");
-        line("");
-        // runtimes that ran more than one engine/memory style combination at the same count
-        Map<String, List<ReportModel.Cell>> byRuntime = new LinkedHashMap<>();
-        for (ReportModel.Cell c : sweep()) {
-            if (c.ok > 0) {
-                byRuntime.computeIfAbsent(info(c).runtime() + "/" + info(c).profile() + "@" + c.particles, k -> new ArrayList<>()).add(c);
-            }
-        }
-        List<ReportModel.Cell> exp = new ArrayList<>();
-        for (List<ReportModel.Cell> group : byRuntime.values()) {
-            long styles = group.stream().map(c -> c.engine + " " + c.memory).distinct().count();
-            boolean hasOther = group.stream().anyMatch(c -> "allocating".equals(c.memory) || "scoped".equals(c.memory));
-            if (styles > 1 && hasOther) {
-                exp.addAll(group);
-            }
-        }
-        if (exp.isEmpty()) {
-            line("The store has no runtime that ran the allocating or scoped style beside another style at the same particle count, "
-                    + "so the memory-model experiment is not in it.");
-            line("");
-            return;
-        }
-        exp = order(exp);
-        List<List<String>> rows = new ArrayList<>();
-        for (ReportModel.Cell c : exp) {
-            String areas = c.memoryAreas.stream().map(a -> a.name() + " " + bytes(a.peakBytes())
-                    + (a.bytesPerRelease() == null ? "" : " (" + bytes(a.bytesPerRelease() == null ? null : Math.round(a.bytesPerRelease()))
-                    + "/release)")).collect(Collectors.joining("; "));
-            rows.add(List.of(c.config, String.valueOf(c.particles), agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATENCY_MEAN, 3),
-                    agg(c, Metric.LATENCY_P99, 3), areas.isEmpty() ? "not reported" : areas));
-        }
-        line("Table 6: heap with GC (javase allocating) against everything preallocated (javase preallocated: heap, no allocation "
-                + "per job; scj preallocated: immortal and mission memory) against per-release scoped memory (scj scoped), same "
-                + "runtime and particle count, policy skip: misses per run, task latency (ms), and per memory area its peak use "
-                + "and bytes allocated per release.");
-        line("");
-        table(List.of("configuration", "particles", "misses", "latency mean", "latency p99", "memory areas: peak (allocated per release)"), rows);
-        // The figure's count: the one with the most configurations reporting their areas (so HotSpot
-        // and the HVM side by side where both ran), the heavier on a tie.
-        List<ReportModel.Cell> finalExp = exp;
-        int shown = exp.stream().map(c -> c.particles).distinct()
-                .max(Comparator.comparingLong((Integer n) -> finalExp.stream()
-                        .filter(c -> c.particles == n && !c.memoryAreas.isEmpty()).count()).thenComparing(n -> n))
-                .orElseThrow();
-        List<ReportModel.Cell> fig = exp.stream().filter(c -> c.particles == shown).toList();
-        figure("memory-" + shown, "Figure 4: peak bytes per memory area, " + shown + " particles (log scale).",
-                () -> charts.evaluationMemory("memory-" + shown, dataset + ", skip, " + shown + " particles", fig));
-        ReportModel.Cell best = fig.stream().filter(c -> mean(c, Metric.LATENCY_P99) != null)
-                .min(Comparator.comparingDouble(c -> mean(c, Metric.LATENCY_P99))).orElse(null);
-        if (best != null) {
-            ReportModel.Cell worst = fig.stream().filter(c -> mean(c, Metric.LATENCY_P99) != null)
-                    .max(Comparator.comparingDouble(c -> mean(c, Metric.LATENCY_P99))).orElseThrow();
-            line(String.format(Locale.ROOT, "At %d particles the lowest p99 task latency of the memory styles is **%s**'s, %s ms, "
-                    + "with %s misses per run; the highest is **%s**'s, %s ms (Table 6). %s", shown, best.config,
-                    agg(best, Metric.LATENCY_P99, 3), agg(best, Metric.MISS_COUNT, 1), worst.config, agg(worst, Metric.LATENCY_P99, 3),
-                    separation(best, worst, Metric.LATENCY_P99)));
-            line("");
-            findings.add(String.format(Locale.ROOT, "Memory model at %d particles: lowest p99 latency with %s (%s ms) (2.6).", shown,
-                    best.config, num(mean(best, Metric.LATENCY_P99), 3)));
-        }
-    }
-
-    private void policies() throws IOException {
-        line("### 2.7 Overrun policies: skip, terminate, queue (Table 7)");
-        line("");
-        List<ReportModel.Cell> cs = cells(c -> c.ok > 0);
-        Map<String, List<ReportModel.Cell>> byConfigCount = new LinkedHashMap<>();
-        cs.forEach(c -> byConfigCount.computeIfAbsent(c.config + "@" + c.particles, k -> new ArrayList<>()).add(c));
-        List<ReportModel.Cell> rowsCells = byConfigCount.values().stream().filter(g -> g.stream().map(c -> c.policy).distinct().count() > 1)
-                .flatMap(List::stream).toList();
-        if (rowsCells.isEmpty()) {
-            line("The store has no configuration that ran more than one policy at the same particle count.");
-            line("");
-            return;
-        }
-        List<List<String>> rows = new ArrayList<>();
-        for (ReportModel.Cell c : order(rowsCells)) {
-            rows.add(List.of(c.config, String.valueOf(c.particles), c.policy, agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATE, 1),
-                    agg(c, Metric.LATENCY_MEAN, 3), agg(c, Metric.DEVIATION, 3)));
-        }
-        line("Table 7: per configuration and particle count, each policy: misses and late jobs per run, task latency (ms) and "
-                + "mean localization deviation (m): what a policy saves in time it may cost in accuracy.");
-        line("");
-        table(List.of("configuration", "particles", "policy", "misses", "late", "latency mean", "deviation"), rows);
-    }
-
-    private void collectors() throws IOException {
-        line("### 2.8 Garbage collectors on one JVM (Table 8)");
-        line("");
-        Map<String, List<ReportModel.Cell>> byRuntime = new LinkedHashMap<>();
-        sweep().stream().filter(c -> c.ok > 0 && !isNative(c))
-                .forEach(c -> byRuntime.computeIfAbsent(info(c).runtime() + " " + c.engine + " " + c.memory + "@" + c.particles,
-                        k -> new ArrayList<>()).add(c));
-        List<ReportModel.Cell> gc = byRuntime.values().stream().filter(g -> g.stream().map(c -> info(c).profile()).distinct().count() > 2)
-                .flatMap(List::stream).toList();
-        if (gc.isEmpty()) {
-            line("The store has no JVM that ran several collectors (profiles) at the same particle count.");
-            line("");
-            return;
-        }
-        List<List<String>> rows = new ArrayList<>();
-        for (ReportModel.Cell c : order(gc)) {
-            rows.add(List.of(c.config, String.valueOf(c.particles), agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATENCY_P99, 3),
-                    agg(c, Metric.LATENCY_MAX, 3), agg(c, Metric.JITTER_P99, 3)));
-        }
-        line("Table 8: one JVM with each collector (profile), policy skip: misses per run, task latency p99 and max, release "
-                + "jitter p99 (ms).");
-        line("");
-        table(List.of("configuration", "particles", "misses", "latency p99", "latency max", "jitter p99"), rows);
-    }
-
-    private void attribution() throws IOException {
-        line("### 2.9 Why deadlines were missed (Table 9, Figure 5)");
-        line("");
-        List<ReportModel.Cell> missed = sweep().stream().filter(c -> c.ok > 0 && !c.causes.isEmpty()
-                && c.causes.values().stream().anyMatch(v -> v > 0)).toList();
-        if (missed.isEmpty()) {
-            line("No run in the store has attributed misses or late jobs (either nothing was missed, or the runs carry no "
-                    + "attribution rows).");
-            line("");
-            return;
-        }
-        int count = missed.stream().mapToInt(c -> c.particles).max().orElseThrow();
-        List<ReportModel.Cell> at = order(missed.stream().filter(c -> c.particles == count).toList());
-        List<String> kinds = at.stream().flatMap(c -> c.causes.keySet().stream()).distinct().sorted().toList();
-        List<String> header = new ArrayList<>(List.of("configuration"));
-        header.addAll(kinds);
-        List<List<String>> rows = new ArrayList<>();
-        for (ReportModel.Cell c : at) {
-            List<String> row = new ArrayList<>(List.of(c.config));
-            kinds.forEach(k -> row.add(c.causes.containsKey(k) ? num(c.causes.get(k), 1) : ""));
-            rows.add(row);
-        }
-        line(String.format(Locale.ROOT, "Table 9: at %d particles (policy skip), the missed or late jobs per run by primary cause, "
-                + "from the runtime's own events (JFR, GC log) aligned with the job records (docs/RUNNER.md, \"Why a deadline was "
-                + "missed\"); mean over the attributed repetitions.", count));
-        line("");
-        table(header, rows);
-        figure("causes-skip-" + count, "Figure 5: missed or late jobs per run by primary cause, " + count + " particles.",
-                () -> charts.evaluationCauses("causes-skip-" + count, dataset + ", skip, " + count + " particles", at));
-        line("The largest primary cause per configuration (Table 9):");
-        line("");
-        Map<String, Integer> dominant = new LinkedHashMap<>();
-        for (ReportModel.Cell c : at) {
-            Map.Entry<String, Double> top = c.causes.entrySet().stream().max(Map.Entry.comparingByValue()).orElseThrow();
-            double total = c.causes.values().stream().mapToDouble(Double::doubleValue).sum();
-            line(String.format(Locale.ROOT, "- %s: %s of %s attributed jobs per run were %s.", c.config, num(top.getValue(), 1),
-                    num(total, 1), top.getKey()));
-            dominant.merge(top.getKey(), 1, Integer::sum);
-        }
-        line("");
-        if (at.stream().anyMatch(c -> "scj".equals(c.engine))) {
-            line("The scj engine's jobs carry no CPU time (SCJ has no per-thread CPU clock; the job records say -1), so "
-                    + "the attribution cannot name *compute* for them: a job of theirs that ran long shows as the *overlap* "
-                    + "of the release it delayed. Compare the scj and javase rows by their totals, not by cause.");
-            line("");
-        }
-        lightestCauses(missed, count);
-        findings.add(String.format(Locale.ROOT, "Why deadlines were missed at %d particles, the largest cause per configuration: %s (2.9).",
-                count, dominant.entrySet().stream().map(e -> e.getKey() + " for " + e.getValue() + " of " + at.size())
-                        .collect(Collectors.joining(", "))));
-    }
-
-    /**
-     * The misses at the lightest attributed count, where no job computes for anything near its
-     * deadline: under skip they are events dropped because the other task's job held the robot.
-     */
-    private void lightestCauses(List<ReportModel.Cell> missed, int heaviest) {
-        int lightest = missed.stream().mapToInt(c -> c.particles).min().orElseThrow();
-        if (lightest == heaviest) {
-            return;
-        }
-        Map<String, Double> sum = new java.util.TreeMap<>();
-        missed.stream().filter(c -> c.particles == lightest)
-                .forEach(c -> c.causes.forEach((k, v) -> sum.merge(k, v, Double::sum)));
-        double total = sum.values().stream().mapToDouble(Double::doubleValue).sum();
-        line(String.format(Locale.ROOT, "At %d particles, the lightest load with a miss, the attributed jobs per run summed over "
-                + "the configurations were %s (%s in all). Under skip a miss is also an event dropped because the other task's "
-                + "job held the robot at its release (*overlap*: released while that job, running normally, had not yet ended), "
-                + "so a light load is not free of misses, on C either.", lightest,
-                sum.entrySet().stream().map(e -> e.getKey() + " " + num(e.getValue(), 1)).collect(Collectors.joining(", ")),
-                num(total, 1)));
-        line("");
-    }
-
-    private void verification() throws IOException {
-        line("### 2.10 What the verification proves (Table 10)");
-        line("");
-        if (verification == null) {
-            line("**No data.** `" + verificationFile + "` does not exist: the model checking (`verification/`, Java PathFinder) "
-                    + "was not run before this document was written, so no property is claimed here.");
-            line("");
-            findings.add("Verification: no results file (2.10).");
-            return;
-        }
-        // The format ./jmclbench verify writes (verification/VerifyMain): schema 1, one row per check.
-        List<List<String>> rows = new ArrayList<>();
-        long missionStates = 0;
-        int properties = 0;
-        int held = 0;
-        int seeded = 0;
-        int caught = 0;
-        for (JsonNode c : verification.path("checks")) {
-            boolean isSeeded = c.path("seeded").asBoolean();
-            boolean passed = c.path("passed").asBoolean();
-            boolean mission = c.path("catalog").asText().equals("mission");
-            String role = isSeeded ? "seeded bug" : mission ? "mission" : "toy program";
-            if (isSeeded) {
-                seeded++;
-                caught += passed ? 1 : 0;
-            } else if (mission) {
-                properties++;
-                held += passed ? 1 : 0;
-                missionStates += c.path("states").asLong(0);
-            }
-            String scope = c.path("kind").asText().equals("static") ? "all bytecode of the release classes"
-                    : first(c, "scope");
-            rows.add(List.of(c.path("id").asText(), role, first(c, "property"), first(c, "policy"), scope,
-                    first(c, "verdict"), first(c, "states").isEmpty() ? "-" : first(c, "states"), first(c, "seconds")));
-        }
-        line("Table 10: the checks of `./jmclbench verify` (from `" + verificationFile + "`, finished "
-                + first(verification, "finished") + "). *mission*: a property of the real scj-mission on rtsj-compat "
-                + "(Java PathFinder on the inputs in *scope*, or ASM on the bytecode); *seeded bug*: a mutant the "
-                + "same check must report (a check that passes is one that caught it); *toy program*: the properties "
-                + "on a small SCJ-like program, where every property has its seeded bug.");
-        line("");
-        table(List.of("check", "role", "property", "policy", "scope", "verdict", "states", "s"), rows);
-        line(String.format(Locale.ROOT, "On the real mission %d of %d checks hold, over %d states; %d of %d seeded bugs "
-                + "were caught (Table 10). Model checking covers the tiny inputs in its scope column, not the "
-                + "benchmark's datasets.", held, properties, missionStates, caught, seeded));
-        line("");
-        findings.add(String.format(Locale.ROOT, "Verification: %d of %d mission checks hold over %d states, %d of %d seeded "
-                + "bugs caught (2.10).", held, properties, missionStates, caught, seeded));
-    }
-
     private void threats() throws IOException {
         line("## 3. Threats to validity");
         line("");
@@ -710,7 +386,7 @@ public final class EvaluationDocument {
                         + "disadvantaged here and may do better on more cores.", m.processors(), s(m.hostname())));
             }
         }
-        List<DoctorFinding> found = doctorFindings();
+        List<DoctorFinding> found = data.doctorFindings();
         boolean notRt = found.stream().anyMatch(f -> f.check().equals("preempt-rt"));
         boolean rtKnown = model.machines.stream().anyMatch(m -> m.checks() != null
                 && m.checks().stream().anyMatch(c -> "preempt-rt".equals(c.get("check"))));
@@ -720,7 +396,7 @@ public final class EvaluationDocument {
         } else if (!rtKnown) {
             line("- **Kernel**: the store does not say whether the kernel is PREEMPT_RT (no doctor check `preempt-rt` recorded).");
         }
-        line("- **Short replays**: each run replays dataset `" + dataset + "` once; a JIT that warms up late or a collector that "
+        line("- **Short replays**: each run replays dataset `" + data.dataset + "` once; a JIT that warms up late or a collector that "
                 + "needs a long run to reach steady state is measured mostly in its warm-up.");
         line("- **Other work on the machine**: runs never overlap, but the machine is not isolated from other users.");
         if (!found.isEmpty()) {
@@ -733,25 +409,6 @@ public final class EvaluationDocument {
         line("");
     }
 
-    private record DoctorFinding(String host, String check, String status, String value, String advice) {
-    }
-
-    private List<DoctorFinding> doctorFindings() {
-        List<DoctorFinding> out = new ArrayList<>();
-        for (ReportModel.MachineInfo m : model.machines) {
-            if (m.checks() == null) {
-                continue;
-            }
-            for (Map<String, String> c : m.checks()) {
-                String status = s(c.get("status"));
-                if (status.equalsIgnoreCase("WARN") || status.equalsIgnoreCase("FAIL")) {
-                    out.add(new DoctorFinding(s(m.hostname()), s(c.get("check")), status, s(c.get("value")), s(c.get("advice"))));
-                }
-            }
-        }
-        return out;
-    }
-
     private void conclusions() throws IOException {
         line("## 4. Conclusions");
         line("");
@@ -761,147 +418,5 @@ public final class EvaluationDocument {
         line("");
         line("Where two confidence intervals overlap, the store does not separate the two configurations: more repetitions "
                 + "(`repeat` in the matrix file) would be needed before ranking them.");
-    }
-
-    // ---------------------------------------------------------------- helpers
-
-    private interface ChartJob {
-        void run() throws IOException;
-    }
-
-    private void figure(String stem, String caption, ChartJob job) throws IOException {
-        job.run();
-        line("![" + caption + "](" + (figureLink.isEmpty() ? "" : figureLink + "/") + stem + ".svg)");
-        line("");
-        line("*" + caption + "*");
-        line("");
-    }
-
-    private List<ReportModel.Cell> cells(Predicate<ReportModel.Cell> p) {
-        return model.cells.stream().filter(c -> c.dataset.equals(dataset)).filter(p).toList();
-    }
-
-    private static java.util.Optional<ReportModel.Cell> cell(List<ReportModel.Cell> cs, String config, int particles) {
-        return cs.stream().filter(c -> c.config.equals(config) && c.particles == particles).findFirst();
-    }
-
-    /** Configurations in the report's order (native first, then by name), cells then by particles and policy. */
-    private List<String> order(List<String> configs) {
-        return configs.stream().sorted(Comparator.comparingInt(this::configRank).thenComparing(Comparator.naturalOrder())).toList();
-    }
-
-    private List<ReportModel.Cell> order(java.util.Collection<ReportModel.Cell> cs) {
-        return cs.stream().sorted(Comparator.comparingInt((ReportModel.Cell c) -> configRank(c.config)).thenComparing(c -> c.config)
-                .thenComparingInt(c -> c.particles).thenComparing(c -> c.policy)).toList();
-    }
-
-    private int configRank(String config) {
-        ReportModel.ConfigInfo i = model.configs.stream().filter(c -> c.id().equals(config)).findFirst().orElse(null);
-        return i != null && i.nativeBaseline() ? 0 : 1;
-    }
-
-    private ReportModel.ConfigInfo info(ReportModel.Cell c) {
-        return model.configs.stream().filter(i -> i.id().equals(c.config)).findFirst().orElseThrow();
-    }
-
-    private boolean isNative(ReportModel.Cell c) {
-        return info(c).nativeBaseline() && !isHvm(c);
-    }
-
-    private boolean isHvm(ReportModel.Cell c) {
-        String r = info(c).runtime();
-        return r.equals("hvm") || r.startsWith("hvm-") || "hvm".equals(c.engine);
-    }
-
-    private static boolean sameJvm(ReportModel.ConfigInfo a, ReportModel.ConfigInfo b) {
-        return baseRuntime(a.runtime()).equals(baseRuntime(b.runtime())) && Objects.equals(a.profile(), b.profile())
-                && Objects.equals(a.machines(), b.machines());
-    }
-
-    /** An scj run's runtime is named {@code <jvm>-scj} (docs/RUNNER.md): the JVM is the name without it. */
-    static String baseRuntime(String runtime) {
-        return runtime.endsWith("-scj") ? runtime.substring(0, runtime.length() - 4) : runtime;
-    }
-
-    static Double mean(ReportModel.Cell c, Metric m) {
-        ReportModel.Agg a = c.metrics.get(m.name());
-        return a == null ? null : a.mean();
-    }
-
-    private static Double max(ReportModel.Cell c, Metric m) {
-        ReportModel.Agg a = c.metrics.get(m.name());
-        return a == null ? null : a.max();
-    }
-
-    private static double orZero(Double d) {
-        return d == null ? 0 : d;
-    }
-
-    /** {@code mean ± half} with {@code decimals} digits; the half-width is left out with one repetition. */
-    static String agg(ReportModel.Cell c, Metric m, int decimals) {
-        ReportModel.Agg a = c.metrics.get(m.name());
-        if (a == null || a.mean() == null) {
-            return "n/a";
-        }
-        return a.half() == null ? num(a.mean(), decimals) : num(a.mean(), decimals) + " ± " + num(a.half(), decimals);
-    }
-
-    /** Whether the 95% intervals of two cells separate them, said in a sentence. */
-    private static String separation(ReportModel.Cell a, ReportModel.Cell b, Metric m) {
-        ReportModel.Agg x = a.metrics.get(m.name());
-        ReportModel.Agg y = b.metrics.get(m.name());
-        if (x == null || y == null || x.half() == null || y.half() == null || x.mean() == null || y.mean() == null) {
-            return "With a single repetition the difference has no confidence interval.";
-        }
-        boolean apart = x.mean() + x.half() < y.mean() - y.half() || y.mean() + y.half() < x.mean() - x.half();
-        return apart ? "Their 95% confidence intervals do not overlap." : "Their 95% confidence intervals overlap: the store does not separate them.";
-    }
-
-    private static String ratio(Double a, Double b) {
-        return a == null || b == null || b == 0 ? "" : num(a / b, 2) + "x";
-    }
-
-    static String num(double v, int decimals) {
-        return String.format(Locale.ROOT, "%." + decimals + "f", v);
-    }
-
-    private static String bytes(Long b) {
-        if (b == null) {
-            return "?";
-        }
-        StringBuffer sb = new StringBuffer();
-        new ChartExporter.ByteFormat().format(b.doubleValue(), sb, new java.text.FieldPosition(0));
-        return sb.toString();
-    }
-
-    private static String first(JsonNode n, String... keys) {
-        for (String k : keys) {
-            if (n.hasNonNull(k)) {
-                return n.get(k).asText();
-            }
-        }
-        return "";
-    }
-
-    private static String s(String v) {
-        return v == null ? "?" : v;
-    }
-
-    private void table(List<String> header, List<List<String>> rows) {
-        line("| " + header.stream().map(EvaluationDocument::escape).collect(Collectors.joining(" | ")) + " |");
-        line("|" + " --- |".repeat(header.size()));
-        for (List<String> r : rows) {
-            line("| " + r.stream().map(EvaluationDocument::escape).collect(Collectors.joining(" | ")) + " |");
-        }
-        line("");
-    }
-
-    /** Table cells come from the store (runtime names, versions): a pipe or markup must not break the table. */
-    static String escape(String v) {
-        return v.replace("\\", "\\\\").replace("|", "\\|").replace("<", "&lt;").replace(">", "&gt;").replace("\n", " ");
-    }
-
-    private void line(String s) {
-        md.append(s).append('\n');
     }
 }

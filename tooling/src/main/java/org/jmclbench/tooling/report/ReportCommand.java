@@ -60,7 +60,7 @@ public final class ReportCommand implements Callable<Integer> {
         ReportPage.write(model, index, resultsDir);
         progress("wrote " + index);
         if (export) {
-            int files = new ChartExporter(model, out.resolve("charts")).exportAll(ReportCommand::progress);
+            int files = new ChartExporter(out.resolve("charts")).exportAll(model.charts, ReportCommand::progress);
             progress("wrote " + files + " chart files to " + out.resolve("charts"));
         }
         System.out.printf(java.util.Locale.ROOT, "report: %s (%d runs, %.1f s)%n", index, model.runCount,

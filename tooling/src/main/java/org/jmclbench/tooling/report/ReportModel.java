@@ -14,29 +14,23 @@ import java.util.TreeSet;
 import java.util.function.Consumer;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.store.MemoryAreaRow;
 import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
 
-import org.HdrHistogram.Histogram;
-import org.HdrHistogram.HistogramIterationValue;
-
+import com.fasterxml.jackson.annotation.JsonIgnore;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
 /**
  * Everything the report shows, aggregated from the store: one {@link Cell} per
  * (dataset, policy, particles, runtime/profile) with the repetitions' statistics, the
- * merged histograms' spectra and a few series; serialised as the page's inlined JSON.
+ * merged histograms' spectra and a few series, and the charts built from them once
+ * ({@link ChartSpecs}); serialised as the page's inlined JSON (the cells' series reach the page
+ * through the charts only).
  */
 public final class ReportModel {
-
-    /** Repetitions drawn in "deviation over time" per configuration. */
-    static final int MAX_REPETITION_SERIES = 5;
-    /** Points per series after down-sampling (the store keeps up to 2000). */
-    static final int MAX_POINTS = 400;
-    /** Points of a task latency series: each bucket keeps its slowest job. */
-    static final int MAX_LATENCY_POINTS = 1000;
 
     public String schema = "jmclbench-report/1";
     public String generatedAt;
@@ -52,10 +46,22 @@ public final class ReportModel {
     public List<Cell> cells = new ArrayList<>();
     public Map<String, Playground> playgrounds = new LinkedHashMap<>();
     public Selection defaults;
+    /** The page's figures (heading, caption) in page order. */
+    public List<ChartSpecs.Figure> figures = ChartSpecs.FIGURES;
+    /** Every chart of every setting: the page draws them and the export writes them. */
+    public List<ChartSpec> charts = new ArrayList<>();
 
-    /** A runtime/profile as shown in the legend and the tables. */
-    public record ConfigInfo(String id, String runtime, String profile, String engine, String memory, boolean nativeBaseline,
-                             List<String> versions, List<String> flags, List<String> machines, List<String> facts) {
+    /**
+     * A runtime/profile as shown in the legend and the tables, with its kind (decided once,
+     * {@link RuntimeKind}) and its colour in every chart ({@link Palette}).
+     */
+    public record ConfigInfo(String id, String runtime, String profile, String engine, String memory, RuntimeKind kind,
+                             String color, List<String> versions, List<String> flags, List<String> machines, List<String> facts) {
+        /** The C baseline the Java runtimes are compared with. */
+        @com.fasterxml.jackson.annotation.JsonProperty("nativeBaseline")
+        public boolean nativeBaseline() {
+            return kind == RuntimeKind.NATIVE;
+        }
     }
 
     /**
@@ -68,6 +74,12 @@ public final class ReportModel {
 
     /** Areas in the order of the memory chart: the heap, then SCJ's from the longest-lived, then the handlers' private ones. */
     static final List<String> AREA_ORDER = List.of("heap", "immortal", "mission");
+
+    /** An area's place in {@link #AREA_ORDER}; the handlers' private areas after those. */
+    static int areaRank(String name) {
+        int i = AREA_ORDER.indexOf(name);
+        return i < 0 ? AREA_ORDER.size() : i;
+    }
 
     /** A machine with the doctor's facts. */
     public record MachineInfo(String id, String hostname, String kernel, String cpu, Integer processors,
@@ -122,23 +134,33 @@ public final class ReportModel {
         public int unsupported;
         public Map<String, Agg> metrics = new LinkedHashMap<>();
         /** [1/(1-p), latency ms, percentile] of every job's task latency, all repetitions merged. */
+        @JsonIgnore
         public List<double[]> latencySpectrum = new ArrayList<>();
         /** [release jitter ms, cumulative fraction], all repetitions merged. */
+        @JsonIgnore
         public List<double[]> jitterCdf = new ArrayList<>();
         /** [event index, task latency ms] of the first repetition. */
+        @JsonIgnore
         public List<double[]> latencyPredict = new ArrayList<>();
+        @JsonIgnore
         public List<double[]> latencyUpdate = new ArrayList<>();
         /** Per repetition (up to five): [time s, deviation xy m]. */
+        @JsonIgnore
         public List<List<double[]>> deviation = new ArrayList<>();
+        @JsonIgnore
         public List<Integer> deviationRepetitions = new ArrayList<>();
         /** [x, y] estimated and real, of the first repetition. */
+        @JsonIgnore
         public List<double[]> trajectory = new ArrayList<>();
+        @JsonIgnore
         public List<double[]> real = new ArrayList<>();
         public List<Failure> failures = new ArrayList<>();
         /** Cause kind to the mean over repetitions of {@code run/cause.<kind>/primary} (jobs per run); empty without attribution. */
         public Map<String, Double> causes = new LinkedHashMap<>();
         /** [start, end] event index of the first repetition's GC/safepoint pauses, and their kind. */
+        @JsonIgnore
         public List<double[]> pauses = new ArrayList<>();
+        @JsonIgnore
         public List<String> pauseKinds = new ArrayList<>();
         /** The configuration's memory areas (empty when its runs reported none). */
         public List<MemoryArea> memoryAreas = new ArrayList<>();
@@ -200,6 +222,7 @@ public final class ReportModel {
             }
         }
         m.defaults = defaults(m, runs);
+        m.charts = ChartSpecs.all(m);
         return m;
     }
 
@@ -252,40 +275,7 @@ public final class ReportModel {
         if (ok.isEmpty()) {
             return c;
         }
-        List<String> keys = ok.stream().map(r -> r.runKey).toList();
-        Histogram latency = merged(store.histograms(keys, "all", "taskLatencyNs"));
-        if (latency != null) {
-            for (HistogramIterationValue v : latency.percentiles(5)) {
-                double p = v.getPercentileLevelIteratedTo();
-                double x = p >= 100 ? 1e7 : Math.min(1e7, 100.0 / (100.0 - p));
-                c.latencySpectrum.add(new double[] {SeriesTable.round(x), SeriesTable.round(v.getValueIteratedTo() / 1e6),
-                        SeriesTable.round(p)});
-            }
-        }
-        Histogram jitter = merged(store.histograms(keys, "all", "releaseJitterNs"));
-        if (jitter != null) {
-            for (HistogramIterationValue v : jitter.percentiles(5)) {
-                c.jitterCdf.add(new double[] {SeriesTable.round(Math.max(1e-4, v.getValueIteratedTo() / 1e6)),
-                        SeriesTable.round(v.getPercentileLevelIteratedTo() / 100.0)});
-            }
-        }
-        StoredRun rep = ok.get(0);
-        c.latencyPredict = latencyPoints(store.series(rep.runKey, "taskLatency.predict"));
-        c.latencyUpdate = latencyPoints(store.series(rep.runKey, "taskLatency.update"));
-        for (StoredRun r : ok.subList(0, Math.min(MAX_REPETITION_SERIES, ok.size()))) {
-            SeriesTable t = SeriesTable.parse(store.series(r.runKey, "deviation"));
-            if (t != null) {
-                c.deviation.add(t.points(t.column("time", "t", "timeS"), 1, t.column("dxy", "deviationXY", "xy", "exy"), 1, MAX_POINTS));
-                c.deviationRepetitions.add(r.repetition);
-            }
-        }
-        pauses(c, store.series(rep.runKey, "pauses"), store.series(rep.runKey, "taskLatency.predict"),
-                store.series(rep.runKey, "taskLatency.update"));
-        SeriesTable t = SeriesTable.parse(store.series(rep.runKey, "trajectory"));
-        if (t != null) {
-            c.trajectory = t.points(t.column("x", "estX", "estimateX", "xEst"), 1, t.column("y", "estY", "estimateY", "yEst"), 1, MAX_POINTS);
-            c.real = t.points(t.column("realX", "trueX", "xReal"), 1, t.column("realY", "trueY", "yReal"), 1, MAX_POINTS);
-        }
+        CellSeries.read(store, ok, c);
         return c;
     }
 
@@ -307,10 +297,7 @@ public final class ReportModel {
                     : SeriesTable.round(perRelease.stream().mapToDouble(Double::doubleValue).average().orElse(0));
             out.add(new MemoryArea(e.getKey(), size, peak, mean, as.size()));
         }
-        out.sort(Comparator.comparingInt((MemoryArea a) -> {
-            int i = AREA_ORDER.indexOf(a.name());
-            return i < 0 ? AREA_ORDER.size() : i;
-        }));
+        out.sort(Comparator.comparingInt((MemoryArea a) -> areaRank(a.name())));
         return out;
     }
 
@@ -342,115 +329,18 @@ public final class ReportModel {
         return out;
     }
 
-    /**
-     * The pauses (seconds on the run's timeline) as event-index intervals, through the release
-     * times of the latency series (predict's, else update's: one task, so that indices never mix),
-     * so that they can be drawn on the task latency vs event index chart.
-     */
-    private static void pauses(Cell c, String pausesJson, String... latencyJson) {
-        SeriesTable p = SeriesTable.parse(pausesJson);
-        if (p == null || p.size() == 0) {
-            return;
-        }
-        java.util.TreeMap<Double, Double> indexAt = new java.util.TreeMap<>();
-        for (String json : latencyJson) {
-            if (indexAt.size() >= 2) {
-                break; // one task's jobs only: the regular predict releases, update's when predict has none
-            }
-            SeriesTable t = SeriesTable.parse(json);
-            if (t == null) {
-                continue;
-            }
-            int index = t.column("index", "i", "job");
-            int release = t.column("releaseS", "release");
-            if (index < 0 || release < 0) {
-                continue;
-            }
-            for (int i = 0; i < t.size(); i++) {
-                double s = t.value(i, release);
-                double x = t.value(i, index);
-                if (Double.isFinite(s) && Double.isFinite(x)) {
-                    indexAt.put(s, x);
-                }
-            }
-        }
-        int start = p.column("start");
-        int end = p.column("end");
-        int kind = p.column("kind");
-        if (indexAt.size() < 2 || start < 0 || end < 0) {
-            return;
-        }
-        for (int i = 0; i < p.size(); i++) {
-            double a = indexAt(indexAt, p.value(i, start));
-            double b = indexAt(indexAt, p.value(i, end));
-            if (Double.isFinite(a) && Double.isFinite(b)) {
-                c.pauses.add(new double[] {SeriesTable.round(a), SeriesTable.round(b)});
-                c.pauseKinds.add(kind >= 0 ? p.text(i, kind) : "pause");
-            }
-        }
-    }
-
-    /** The event index at time {@code s}, interpolated between the nearest releases (NaN outside them). */
-    private static double indexAt(java.util.TreeMap<Double, Double> indexAt, double s) {
-        Map.Entry<Double, Double> lo = indexAt.floorEntry(s);
-        Map.Entry<Double, Double> hi = indexAt.ceilingEntry(s);
-        if (lo == null || hi == null) {
-            return Double.NaN;
-        }
-        if (hi.getKey().equals(lo.getKey())) {
-            return lo.getValue();
-        }
-        return lo.getValue() + (hi.getValue() - lo.getValue()) * (s - lo.getKey()) / (hi.getKey() - lo.getKey());
-    }
-
-    private static List<double[]> latencyPoints(String json) {
-        SeriesTable t = SeriesTable.parse(json);
-        if (t == null) {
-            return new ArrayList<>();
-        }
-        int index = t.column("index", "i", "job");
-        int ns = t.column("latencyNs", "taskLatencyNs", "latency", "taskLatency");
-        if (ns >= 0) {
-            return t.peakPoints(index, 1, ns, 1e-6, MAX_LATENCY_POINTS);
-        }
-        int ms = t.column("latencyMs", "taskLatencyMs");
-        if (ms >= 0) {
-            return t.peakPoints(index, 1, ms, 1, MAX_LATENCY_POINTS);
-        }
-        int start = t.column("startNs", "start");
-        int end = t.column("endNs", "end");
-        List<double[]> out = new ArrayList<>();
-        if (index < 0 || start < 0 || end < 0) {
-            return out;
-        }
-        double step = Math.max(1.0, (double) t.size() / MAX_LATENCY_POINTS);
-        for (double d = 0; d < t.size(); d += step) {
-            int i = (int) d;
-            double s = t.value(i, start);
-            double e = t.value(i, end);
-            if (Double.isFinite(s) && Double.isFinite(e) && s >= 0 && e >= 0) {
-                out.add(new double[] {t.value(i, index), SeriesTable.round((e - s) / 1e6)});
-            }
-        }
-        return out;
-    }
-
-    private static Histogram merged(Map<String, Histogram> histograms) {
-        Histogram sum = null;
-        for (Histogram h : histograms.values()) {
-            if (sum == null) {
-                sum = new Histogram(h.getNumberOfSignificantValueDigits());
-                sum.setAutoResize(true);
-            }
-            sum.add(h);
-        }
-        return sum == null || sum.getTotalCount() == 0 ? null : sum;
+    /** The kind of a stored run, from its runtime, engine and summary. */
+    static RuntimeKind kindOf(StoredRun run) {
+        return RuntimeKind.of(run.runtime, run.engine, Metric.summaryOf(run));
     }
 
     private static List<ConfigInfo> configs(List<StoredRun> runs) {
         Map<String, List<StoredRun>> byConfig = new LinkedHashMap<>();
         runs.stream().sorted(Comparator.comparing(StoredRun::configOnMachine))
                 .forEach(r -> byConfig.computeIfAbsent(r.configOnMachine(), k -> new ArrayList<>()).add(r));
+        Map<String, RuntimeKind> kinds = new LinkedHashMap<>();
+        byConfig.forEach((id, rs) -> kinds.put(id, kindOf(rs.stream().filter(StoredRun::ok).findFirst().orElse(rs.get(0)))));
+        Map<String, String> colors = Palette.runtimes(kinds);
         List<ConfigInfo> out = new ArrayList<>();
         for (Map.Entry<String, List<StoredRun>> e : byConfig.entrySet()) {
             StoredRun first = e.getValue().get(0);
@@ -458,7 +348,6 @@ public final class ReportModel {
             List<String> flags = new ArrayList<>(); // a list: an argument may repeat ("-n 1 ... --seed 1")
             Set<String> machines = new LinkedHashSet<>();
             List<String> facts = new ArrayList<>();
-            boolean nativeBaseline = "native".equals(first.runtime) || "native".equals(first.engine);
             for (StoredRun r : e.getValue()) {
                 if (r.runtimeVersion != null) {
                     versions.add(r.runtimeVersion);
@@ -472,17 +361,13 @@ public final class ReportModel {
                 if (r.ok() && flags.isEmpty()) {
                     JsonNode rt = Metric.summaryOf(r).at("/environment/runtime");
                     rt.path("inputArguments").forEach(a -> flags.add(a.asText()));
-                    if ("c".equalsIgnoreCase(rt.path("language").asText())) {
-                        nativeBaseline = true;
-                    }
                     if (versions.isEmpty() && rt.hasNonNull("version")) {
                         versions.add(rt.path("version").asText());
                     }
                 }
             }
-            out.add(new ConfigInfo(e.getKey(), first.runtime, first.profile, first.engine, first.memory, nativeBaseline,
-                    List.copyOf(versions),
-                    List.copyOf(flags), List.copyOf(machines), List.copyOf(facts)));
+            out.add(new ConfigInfo(e.getKey(), first.runtime, first.profile, first.engine, first.memory, kinds.get(e.getKey()),
+                    colors.get(e.getKey()), List.copyOf(versions), List.copyOf(flags), List.copyOf(machines), List.copyOf(facts)));
         }
         return out;
     }

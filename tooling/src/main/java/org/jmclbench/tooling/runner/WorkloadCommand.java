@@ -5,6 +5,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
+import org.jmclbench.tooling.runtime.RuntimeKind;
+import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.ProfileComponent;
 import org.jmclbench.tooling.runtime.RuntimeInfo;
@@ -31,11 +33,11 @@ public final class WorkloadCommand {
         List<String> cmd = new ArrayList<>(plan.prefix());
         RuntimeInfo rt = run.runtime();
         cmd.add(rt.path().toString());
-        if (rt.kind() == RuntimeInfo.Kind.HVM) {
-            // the workload on this JVM validates, builds and drives the HVM executable
+        if (rt.kind() == RuntimeKind.HVM) {
+            // the HVM launcher on this JVM validates, builds and drives the HVM executable
             cmd.add("-Djmclbench.home=" + home);
             cmd.add("-cp");
-            cmd.add(jar.toString());
+            cmd.add(JmclbenchPaths.hvmLauncherClassPath());
             cmd.add(MAIN_CLASS);
         } else if (rt.isJvm()) {
             cmd.addAll(plan.jvmFlags());
@@ -46,7 +48,7 @@ public final class WorkloadCommand {
             cmd.add(MAIN_CLASS);
         }
         cmd.add("run");
-        if (rt.kind() == RuntimeInfo.Kind.HVM) {
+        if (rt.kind() == RuntimeKind.HVM) {
             cmd.addAll(List.of("--engine", "hvm"));
         }
         cmd.addAll(List.of("-p", String.valueOf(run.particles()), "-n", String.valueOf(run.repetition()),
@@ -66,7 +68,7 @@ public final class WorkloadCommand {
         if (timeScale != 1.0) {
             cmd.addAll(List.of("--time-scale", String.format(Locale.ROOT, "%s", timeScale)));
         }
-        if (rt.kind() == RuntimeInfo.Kind.NATIVE && !run.profile().has(ProfileComponent.FIFO)) {
+        if (rt.kind() == RuntimeKind.NATIVE && !run.profile().has(ProfileComponent.FIFO)) {
             // the C program raises itself to SCHED_FIFO when permitted; without the fifo profile it
             // must run under the same scheduling as the JVMs it is compared with
             cmd.add("--no-fifo");

@@ -65,7 +65,7 @@ public final class HvmRuntime {
         } catch (java.io.IOException e) {
             real = java;
         }
-        return new RuntimeInfo(NAME, RuntimeInfo.Kind.HVM, "icecap", VERSION, 0, java, real);
+        return new RuntimeInfo(NAME, RuntimeKind.HVM, "icecap", VERSION, 0, java, real);
     }
 
     private static String lastLine(String s) {

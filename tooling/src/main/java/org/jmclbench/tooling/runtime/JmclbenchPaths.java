@@ -32,6 +32,11 @@ public final class JmclbenchPaths {
         return cache().resolve("jdks");
     }
 
+    /** The HVM launcher's class path: the host side of the hvm engine, with the workload jar it runs through. */
+    public static String hvmLauncherClassPath() {
+        return home().resolve("hvm/launcher/target/jmclbench-hvm-launcher.jar") + java.io.File.pathSeparator + workloadJar();
+    }
+
     /** The workload jar, run on every JVM under test. */
     public static Path workloadJar() {
         return home().resolve("workload/target/jmclbench-workload.jar");

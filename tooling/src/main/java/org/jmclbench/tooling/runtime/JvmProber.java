@@ -43,7 +43,7 @@ public final class JvmProber {
         String vendor = props.getOrDefault("java.vendor", "unknown");
         String version = props.getOrDefault("java.runtime.version", props.getOrDefault("java.version", "unknown"));
         String name = flavour(real, props) + "-" + major;
-        return Optional.of(new RuntimeInfo(name, RuntimeInfo.Kind.JVM, vendor, version, major, java, real));
+        return Optional.of(new RuntimeInfo(name, RuntimeKind.JVM, vendor, version, major, java, real));
     }
 
     /** The {@code key = value} lines of {@code -XshowSettings:properties} (continuation lines ignored). */

@@ -67,7 +67,7 @@ public final class RuntimeDiscovery {
         }
         ProcessRunner.Result r = ProcessRunner.run(List.of(binary.toString(), "--version"), 10_000);
         String version = r.ok() && !r.stdout().isBlank() ? r.stdout().strip().lines().findFirst().orElse("unknown") : "unknown";
-        return new RuntimeInfo("native", RuntimeInfo.Kind.NATIVE, "native", version, 0, binary, real);
+        return new RuntimeInfo("native", RuntimeKind.NATIVE, "native", version, 0, binary, real);
     }
 
     /** Adds a runtime; a second one with the same name gets its full version, then a number, appended. */

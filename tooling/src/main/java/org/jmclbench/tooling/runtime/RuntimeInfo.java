@@ -13,13 +13,10 @@ import java.nio.file.Path;
  * @param path     the executable as found (may be a symlink)
  * @param realPath the executable after resolving links: two paths with one real path are one runtime
  */
-public record RuntimeInfo(String name, Kind kind, String vendor, String version, int major, Path path, Path realPath) {
-
-    /** What kind of program the runtime is, which decides which profile components apply. */
-    public enum Kind { JVM, NATIVE, HVM }
+public record RuntimeInfo(String name, RuntimeKind kind, String vendor, String version, int major, Path path, Path realPath) {
 
     public boolean isJvm() {
-        return kind == Kind.JVM;
+        return kind == RuntimeKind.JVM;
     }
 
     /** A copy under another name (to tell two JVMs with the same vendor and major apart). */

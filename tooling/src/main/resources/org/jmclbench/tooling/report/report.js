@@ -11,10 +11,6 @@
   var DATA = JSON.parse(document.getElementById('jmclbench-data').textContent);
   var charts = {};
   window.jmclbenchCharts = charts;
-  var PALETTE = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b', '#e377c2', '#17becf',
-    '#bcbd22', '#7f7f7f', '#393b79', '#ad494a', '#637939', '#8c6d31', '#843c39', '#7b4173'];
-  var colorOf = {};
-  DATA.configs.forEach(function (c, i) { colorOf[c.id] = PALETTE[i % PALETTE.length]; });
   var configById = {};
   DATA.configs.forEach(function (c) { configById[c.id] = c; });
 
@@ -45,13 +41,6 @@
     if (!agg || agg.mean === null) { return '\u2013'; }
     return agg.half === null ? fmt(agg.mean, digits) : fmt(agg.mean, digits) + ' \u00b1 ' + fmt(agg.half, digits);
   }
-  /** Same reduction as ChartExporter.safe so that the export links find their files. */
-  function safe(s) { var t = String(s).replace(/[^A-Za-z0-9._-]/g, '_'); return (t === '' || t.charAt(0) === '.') ? '_' + t : t; }
-  function stem(kind, withParticles) {
-    var s = safe(state.dataset) + '-' + safe(state.policy);
-    if (withParticles) { s += '-' + state.particles; }
-    return s + '-' + kind;
-  }
 
   function cellsWhere(pred) { return DATA.cells.filter(pred); }
   /** A cell is shown when both its runtime and its engine are chosen. */
@@ -60,9 +49,6 @@
     return cellsWhere(function (c) {
       return c.dataset === state.dataset && c.policy === state.policy && c.particles === state.particles && chosen(c);
     });
-  }
-  function policyCells() {
-    return cellsWhere(function (c) { return c.dataset === state.dataset && c.policy === state.policy && chosen(c); });
   }
   function configOrder(cells) {
     var ids = DATA.configs.map(function (c) { return c.id; });
@@ -91,7 +77,7 @@
       box.checked = true;
       box.onchange = function () { if (box.checked) { state.configs.add(c.id); } else { state.configs.delete(c.id); } render(); };
       var sw = el('span', { 'class': 'swatch' });
-      sw.style.background = colorOf[c.id];
+      sw.style.background = c.color;
       label.appendChild(box); label.appendChild(sw); label.appendChild(document.createTextNode(c.id));
       fs.appendChild(label);
     });
@@ -151,7 +137,7 @@
     h.appendChild(p);
   }
   /** The native baseline to compare a runtime with: on the same machine when the store has several. */
-  function isNative(c) { return configById[c.config] && configById[c.config].nativeBaseline; }
+  function isNative(c) { return configById[c.config] && configById[c.config].kind === 'NATIVE'; }
   function machineOf(id) { var i = id.lastIndexOf(' @'); return i < 0 ? '' : id.substring(i); }
   function nativeFor(config, cells) {
     var natives = cells.filter(isNative);
@@ -254,7 +240,7 @@
         if (col.key === 'config') {
           td.className = 'name';
           var sw = el('span', { 'class': 'swatch' });
-          sw.style.background = colorOf[r.cell.config];
+          sw.style.background = configById[r.cell.config].color;
           td.insertBefore(sw, td.firstChild);
         }
         if (best[col.key] !== undefined && r.values[col.key] === best[col.key]) { td.classList.add('best'); td.title = 'best of this column'; }
@@ -336,9 +322,12 @@
   }
 
   // ---- charts ----------------------------------------------------------------------------
+  // Each chart is a specification built once in Java (ChartSpecs, DATA.charts) and drawn here as it
+  // is: this script only leaves out what belongs to runtimes or engines not chosen.
   var errorBars = {
     id: 'jmclbenchErrorBars',
     afterDatasetsDraw: function (chart) {
+      if (chart.options.indexAxis === 'y') { return; }
       var ctx = chart.ctx;
       chart.data.datasets.forEach(function (ds, i) {
         if (!ds.errorBars) { return; }
@@ -358,92 +347,66 @@
       });
     }
   };
-  var playgroundFrame = {
-    id: 'jmclbenchPlayground',
+  var frame = {
+    id: 'jmclbenchFrame',
     beforeDatasetsDraw: function (chart) {
-      var pg = chart.options.plugins.jmclbenchPlayground;
-      if (!pg || !pg.width) { return; }
+      var f = chart.options.plugins.jmclbenchFrame;
+      if (!f || !f.width) { return; }
       var x = chart.scales.x, y = chart.scales.y, ctx = chart.ctx;
       ctx.save(); ctx.strokeStyle = '#888'; ctx.setLineDash([4, 3]);
-      ctx.strokeRect(x.getPixelForValue(0), y.getPixelForValue(pg.height), x.getPixelForValue(pg.width) - x.getPixelForValue(0),
-        y.getPixelForValue(0) - y.getPixelForValue(pg.height));
+      ctx.strokeRect(x.getPixelForValue(0), y.getPixelForValue(f.height), x.getPixelForValue(f.width) - x.getPixelForValue(0),
+        y.getPixelForValue(0) - y.getPixelForValue(f.height));
       ctx.restore();
     }
   };
-  // GC and safepoint pauses of the first repetition as shaded bands on an event-index axis.
-  var PAUSE_COLORS = { gc: 'rgba(214, 39, 40, 0.16)', safepoint: 'rgba(148, 103, 189, 0.16)' };
-  var pauseBands = {
+  var bands = {
     id: 'jmclbenchPauses',
     beforeDatasetsDraw: function (chart) {
-      var bands = chart.options.plugins.jmclbenchPauses;
-      if (!bands || !bands.length) { return; }
+      var list = chart.options.plugins.jmclbenchPauses;
+      if (!list || !list.length) { return; }
       var x = chart.scales.x, area = chart.chartArea, ctx = chart.ctx;
       ctx.save();
-      bands.forEach(function (b) {
+      list.forEach(function (b) {
         var a = Math.max(area.left, x.getPixelForValue(b.from)), e = Math.min(area.right, x.getPixelForValue(b.to));
         if (e < area.left || a > area.right) { return; }
-        ctx.fillStyle = PAUSE_COLORS[b.kind] || 'rgba(127, 127, 127, 0.16)';
+        ctx.fillStyle = b.color;
         ctx.fillRect(a, area.top, Math.max(1, e - a), area.bottom - area.top); // a pause shorter than a pixel still shows
       });
       ctx.restore();
     }
   };
-  // An area with nothing allocated (peak 0) has no bar on a log axis: a "0" marks it at the axis.
+  // A value of 0 has no bar on a log axis: a "0" marks it at the axis.
   var zeroMarks = {
     id: 'jmclbenchZeroMarks',
     afterDatasetsDraw: function (chart) {
-      if (!chart.options.plugins.jmclbenchZeroMarks) { return; }
       var ctx = chart.ctx, area = chart.chartArea;
       ctx.save(); ctx.fillStyle = '#333'; ctx.font = '10px sans-serif'; ctx.textAlign = 'center';
       chart.data.datasets.forEach(function (ds, i) {
         var meta = chart.getDatasetMeta(i);
-        if (meta.hidden || !ds.areas) { return; }
-        ds.areas.forEach(function (a, j) {
-          if (a && a.peakBytes === 0 && meta.data[j]) { ctx.fillText('0', meta.data[j].x, area.bottom - 3); }
-        });
+        if (meta.hidden || !ds.zeros) { return; }
+        ds.zeros.forEach(function (zero, j) { if (zero && meta.data[j]) { ctx.fillText('0', meta.data[j].x, area.bottom - 3); } });
       });
       ctx.restore();
     }
   };
-  Chart.register(errorBars, playgroundFrame, pauseBands, zeroMarks);
+  Chart.register(errorBars, frame, bands, zeroMarks);
   Chart.defaults.animation = false;
   Chart.defaults.font.size = 12;
 
-  /** Cause kinds of docs/FORMATS.md 5, VM causes first, in a stable order and colour across settings. */
-  var CAUSE_ORDER = ['gc', 'safepoint', 'jit', 'deopt', 'classload', 'lock', 'os', 'preemption', 'compute', 'queued', 'overlap', 'unknown'];
-  var CAUSE_COLORS = { gc: '#d62728', safepoint: '#9467bd', jit: '#ff7f0e', deopt: '#ffbb78', classload: '#e7ba52', lock: '#393b79', os: '#8c564b',
-    preemption: '#e377c2', compute: '#1f77b4', queued: '#17becf', overlap: '#bcbd22', unknown: '#7f7f7f' };
-  /** Memory areas: the heap, then SCJ's from the longest-lived, then the handlers' private ones (ReportModel.AREA_ORDER). */
-  var AREA_ORDER = ['heap', 'immortal', 'mission'];
-  var AREA_COLORS = { heap: '#7f7f7f', immortal: '#393b79', mission: '#2ca02c' };
-  var PRIVATE_COLORS = ['#ff7f0e', '#e377c2', '#17becf', '#bcbd22', '#8c564b', '#9467bd'];
-  /** Bytes in decimal units (kB = 1000 B), as the log axis' powers of ten read best. */
+  /** Bytes in decimal units (kB = 1000 B), as the log axis' powers of ten read best (ChartFormats.bytes). */
   function bytes(v) {
     if (v === null || v === undefined) { return '\u2013'; }
     var units = ['B', 'kB', 'MB', 'GB'], i = 0;
     while (Math.abs(v) >= 1000 && i < units.length - 1) { v /= 1000; i++; }
-    return (i === 0 ? String(Math.round(v)) : String(Number(v.toPrecision(3)))) + ' ' + units[i];
+    return String(Number(v.toPrecision(3))) + ' ' + units[i];
   }
-  var FIGURES = [
-    { id: 'misses', title: 'Deadline misses vs particles', caption: 'missCount per run (skipped + terminated jobs; late jobs under queue), mean over repetitions with 95% CI error bars, per runtime. The thesis\u2019s histogram with errors.', particles: false },
-    { id: 'deviation', title: 'Mean localisation deviation vs particles', caption: 'Mean Euclidean xy deviation of the estimate from the ground truth (m), mean over repetitions with 95% CI error bars.', particles: false },
-    { id: 'latency-jitter', title: 'Average task latency and release jitter vs particles', caption: 'Mean over all jobs, then over repetitions (ms). Solid: task latency (end \u2212 start); dashed: release jitter (start \u2212 release).', particles: false },
-    { id: 'memory', title: 'Memory areas: peak bytes per engine and memory style', caption: 'The memory-model experiment at a glance: for each runtime, engine and memory style, the peak use of each memory area (bytes, log axis; the largest over the repetitions); the table gives the peaks and the mean bytes one release allocated in the area (heap: per job of the measured run). Java SE: the heap. SCJ: immortal and mission memory, and each handler\u2019s private memory, whose peak is that of one release (0 under the axis: the release allocated nothing, as the preallocated style promises). Hover a bar for the area\u2019s size and the bytes allocated per release. The native baseline reports no areas.', particles: true },
-    { id: 'causes', title: 'Why deadlines were missed', caption: 'Jobs missed or late per run (mean over the attributed repetitions), split by each job\u2019s largest cause (the primary cause of ./jmclbench explain): gc, safepoint, jit, os, preemption, compute, queued, overlap, unknown. Runs without attribution evidence are left out.', particles: true },
-    { id: 'latency-index', title: 'Task latency vs event index', caption: 'Every job of the first repetition (down-sampled): predict (odometry, every 50 ms) as dots, update (laser) as triangles. The thesis\u2019s XY points graph. Shaded bands: the GC (red) and safepoint (violet) pauses of that repetition, placed on the event index through the jobs\u2019 release times (shown when one runtime is selected or the runtimes\u2019 pauses are those of the first listed).', particles: true },
-    { id: 'deviation-time', title: 'Deviation over time, repeated runs', caption: 'Euclidean xy deviation (m) over the run, one line per repetition (up to five) per runtime. The thesis\u2019s XY lines graph.', particles: true },
-    { id: 'trajectory', title: 'Estimated vs real trajectory', caption: 'On the playground (dashed frame, metres); black: ground truth; triangles: the beacons; one estimate per runtime (first repetition).', particles: true },
-    { id: 'spectrum', title: 'Task latency percentile spectrum', caption: 'HdrHistogram style: every job of every repetition merged; x = 1/(1\u2212p) on a log axis (10 = 90%, 100 = 99%, 1000 = 99.9%), latency (ms) on a log axis.', particles: true },
-    { id: 'jitter-cdf', title: 'CDF of release jitter', caption: 'Fraction of jobs released with at most the given jitter (ms, log axis), every job of every repetition merged.', particles: true }
-  ];
   function buildFigures() {
     var box = document.getElementById('charts');
-    FIGURES.forEach(function (f) {
+    DATA.figures.forEach(function (f) {
       var fig = el('figure', { 'class': 'figure', id: 'figure-' + f.id });
-      fig.appendChild(el('h3', null, f.title));
+      fig.appendChild(el('h3', null, f.heading));
       var cb = el('div', { 'class': 'canvas-box' });
-      var canvas = el('canvas', { id: 'chart-' + f.id, role: 'img', 'aria-label': f.title, 'data-series': '0', 'data-points': '0' });
-      cb.appendChild(canvas);
+      cb.appendChild(el('canvas', { id: 'chart-' + f.id, role: 'img', 'aria-label': f.heading, 'data-series': '0', 'data-points': '0' }));
       fig.appendChild(cb);
       fig.appendChild(el('p', { 'class': 'caption' }, f.caption));
       var ex = el('p', { 'class': 'exports' });
@@ -455,203 +418,100 @@
       box.appendChild(fig);
     });
   }
-  function axisTitle(text) { return { display: true, text: text }; }
-  function xyOptions(title, xTitle, yTitle, extra) {
-    var o = {
-      responsive: true, maintainAspectRatio: false, parsing: false, normalized: true,
-      plugins: { title: { display: true, text: title }, legend: { position: 'bottom', labels: { boxWidth: 12 } } },
-      scales: { x: { type: 'linear', title: axisTitle(xTitle) }, y: { type: 'linear', title: axisTitle(yTitle) } }
+
+  var SPECS = {};
+  function specKey(dataset, policy, particles, id) { return [dataset, policy, particles === null || particles === undefined ? '' : particles, id].join('\u0000'); }
+  DATA.charts.forEach(function (s) { SPECS[specKey(s.setting.dataset, s.setting.policy, s.setting.particles, s.id)] = s; });
+  function chosenConfig(config, engine) { return state.configs.has(config) && state.engines.has(engine); }
+  /** What of a specification the chosen runtimes and engines keep: a filter, nothing computed. */
+  function shown(spec) {
+    var keep = (spec.categories || []).map(function (c) { return !c.config || chosenConfig(c.config, c.engine); });
+    function pick(list) { return list ? list.filter(function (v, i) { return keep[i]; }) : list; }
+    var series = spec.series.filter(function (s) { return !s.config || chosenConfig(s.config, s.engine); }).map(function (s) {
+      return Object.assign({}, s, { values: pick(s.values), errors: pick(s.errors), colors: pick(s.colors), notes: pick(s.notes) });
+    }).filter(function (s) {
+      return s.points ? s.points.length > 0 : s.values.some(function (v) { return v !== null && v !== undefined; });
+    });
+    var owners = series.map(function (s) { return s.config; });
+    var first = (spec.bands || []).filter(function (b) { return owners.indexOf(b.config) >= 0; })[0];
+    return { categories: (spec.categories || []).filter(function (c, i) { return keep[i]; }), series: series,
+      bands: first ? spec.bands.filter(function (b) { return b.config === first.config; }) : [] };
+  }
+  function tickLabel(axis) {
+    return function (v) {
+      var exp = Math.log10(v), whole = Math.abs(exp - Math.round(exp)) < 1e-9;
+      if (axis.format === 'PERCENTILE') { return !whole ? null : v === 1 ? '0%' : (100 - 100 / v).toFixed(Math.max(0, Math.round(exp) - 2)) + '%'; }
+      if (axis.format === 'BYTES') { return whole ? bytes(v) : null; }
+      var m = v / Math.pow(10, Math.floor(exp + 1e-9));
+      return [1, 2, 5].some(function (k) { return Math.abs(m - k) < 1e-6; }) ? String(Number(v.toPrecision(3))) : null;
     };
-    if (extra) { extra(o); }
-    return o;
   }
-  function points(list) { return list.map(function (p) { return { x: p[0], y: p[1] }; }); }
-  function draw(id, config) {
-    if (charts[id]) { charts[id].destroy(); }
-    var canvas = document.getElementById('chart-' + id);
-    charts[id] = new Chart(canvas, config);
-    var series = config.data.datasets.length;
+  function scale(axis, stacked) {
+    var s = { type: axis.scale === 'LOG' ? 'logarithmic' : 'linear', stacked: stacked, title: { display: true, text: axis.label } };
+    if (axis.scale === 'LOG') { s.ticks = { autoSkip: axis.format === 'NUMBER', maxRotation: 0, callback: tickLabel(axis) }; }
+    if (axis.min !== undefined) { s.min = axis.min; }
+    if (axis.max !== undefined) { s.max = axis.max; }
+    return s;
+  }
+  function dataset(spec, s) {
+    var st = s.style;
+    if (spec.kind === 'LINES') {
+      return { label: s.name, data: s.points.map(function (p) { return { x: p[0], y: p[1] }; }), showLine: st.line,
+        borderWidth: st.line ? st.width : 1, borderDash: st.dash || [], stepped: st.stepped,
+        pointRadius: st.marker ? st.size : 0, pointStyle: st.marker === 'square' ? 'rect' : (st.marker || 'circle'),
+        borderColor: s.color, backgroundColor: st.fill === 'none' ? 'transparent' : (st.fill || s.color) };
+    }
+    var log = spec.y.scale === 'LOG', stacked = spec.kind === 'STACKED_BARS';
+    return { label: s.name, borderColor: s.color, backgroundColor: s.colors || s.color, errorBars: s.errors, notes: s.notes,
+      zeros: log ? s.values.map(function (v) { return v === 0; }) : null,
+      data: s.values.map(function (v) { return v === null || v === undefined ? (stacked ? 0 : null) : (log && v <= 0 ? null : v); }) };
+  }
+  function chartConfig(spec, view) {
+    var bars = spec.kind !== 'LINES', stacked = spec.kind === 'STACKED_BARS';
+    var category = { title: { display: true, text: spec.x.label }, stacked: stacked };
+    var value = scale(spec.y, stacked);
+    var single = view.series.length === 1 && !!view.series[0].colors;
+    var notes = view.series.some(function (s) { return s.notes; });
+    var o = {
+      responsive: true, maintainAspectRatio: false, normalized: true, indexAxis: spec.horizontal ? 'y' : 'x',
+      plugins: { title: { display: true, text: spec.title }, legend: { display: !single, position: 'bottom', labels: { boxWidth: 12 } },
+        jmclbenchPauses: view.bands, jmclbenchFrame: spec.frame || null },
+      scales: !bars ? { x: scale(spec.x, false), y: value } : spec.horizontal ? { y: category, x: value } : { x: category, y: value }
+    };
+    if (!bars) { o.parsing = false; }
+    if (notes) {
+      o.plugins.tooltip = { callbacks: { label: function (ctx) { return (ctx.dataset.notes || [])[ctx.dataIndex] || ctx.dataset.label; } } };
+    }
+    return { type: bars ? 'bar' : 'scatter', options: o,
+      data: { labels: bars ? view.categories.map(function (c) { return c.label; }) : undefined,
+        datasets: view.series.map(function (s) { return dataset(spec, s); }) } };
+  }
+  function draw(f, spec, view) {
+    if (charts[f.id]) { charts[f.id].destroy(); }
+    var canvas = document.getElementById('chart-' + f.id);
+    var config = spec ? chartConfig(spec, view) : { type: 'scatter', data: { datasets: [] },
+      options: { responsive: true, maintainAspectRatio: false, plugins: { title: { display: true, text: f.heading + ': no run at this setting' } } } };
+    charts[f.id] = new Chart(canvas, config);
     var pts = config.data.datasets.reduce(function (n, d) { return n + d.data.filter(function (v) { return v !== null; }).length; }, 0);
-    canvas.setAttribute('data-series', String(series));
+    canvas.setAttribute('data-series', String(config.data.datasets.length));
     canvas.setAttribute('data-points', String(pts));
-    var fig = document.getElementById('figure-' + id);
-    var f = FIGURES.filter(function (x) { return x.id === id; })[0];
-    fig.querySelectorAll('a[data-ext]').forEach(function (a) {
-      a.setAttribute('href', 'charts/' + stem(id, f.particles) + '.' + a.getAttribute('data-ext'));
+    canvas.setAttribute('data-pauses', String(view.bands.length));
+    document.getElementById('figure-' + f.id).querySelectorAll('a[data-ext]').forEach(function (a) {
+      if (spec) { a.setAttribute('href', 'charts/' + spec.stem + '.' + a.getAttribute('data-ext')); } else { a.removeAttribute('href'); }
     });
   }
-  function where(withParticles) {
-    return state.dataset + ', ' + state.policy + (withParticles ? ', ' + state.particles + ' particles' : '');
-  }
-
-  function renderCharts(cells, allParticles) {
-    var configs = [];
-    configOrder(allParticles).forEach(function (c) { if (configs.indexOf(c.config) < 0) { configs.push(c.config); } });
-    var particles = [];
-    allParticles.forEach(function (c) { if (particles.indexOf(c.particles) < 0) { particles.push(c.particles); } });
-    particles.sort(function (a, b) { return a - b; });
-
-    ['misses', 'deviation'].forEach(function (id) {
-      var metric = id === 'misses' ? 'MISS_COUNT' : 'DEVIATION';
-      var datasets = configs.map(function (cfg) {
-        var byP = {};
-        allParticles.forEach(function (c) { if (c.config === cfg) { byP[c.particles] = c.metrics[metric]; } });
-        return {
-          label: cfg, backgroundColor: colorOf[cfg], borderColor: colorOf[cfg],
-          data: particles.map(function (p) { return byP[p] && byP[p].mean !== null ? byP[p].mean : null; }),
-          errorBars: particles.map(function (p) {
-            var a = byP[p];
-            return a && a.mean !== null && a.half !== null ? [Math.max(0, a.mean - a.half), a.mean + a.half] : null; // counts and distances are never negative
-          })
-        };
-      });
-      datasets = datasets.filter(function (d) { return d.data.some(function (v) { return v !== null; }); });
-      draw(id, {
-        type: 'bar', data: { labels: particles.map(String), datasets: datasets },
-        options: {
-          responsive: true, maintainAspectRatio: false,
-          plugins: { title: { display: true, text: (id === 'misses' ? 'Deadline misses vs particles' : 'Mean deviation vs particles') + ' (' + where(false) + ')' },
-            legend: { position: 'bottom', labels: { boxWidth: 12 } } },
-          scales: { x: { title: axisTitle('particles') },
-            y: { beginAtZero: true, title: axisTitle(id === 'misses' ? 'missCount per run (mean, 95% CI)' : 'deviation xy (m, mean, 95% CI)') } }
-        }
-      });
-    });
-
-    var lj = [];
-    configs.forEach(function (cfg) {
-      var mine = allParticles.filter(function (c) { return c.config === cfg; }).sort(function (a, b) { return a.particles - b.particles; });
-      [['LATENCY_MEAN', 'task latency', []], ['JITTER_MEAN', 'release jitter', [6, 4]]].forEach(function (m) {
-        var data = mine.filter(function (c) { return c.metrics[m[0]].mean !== null; }).map(function (c) { return { x: c.particles, y: c.metrics[m[0]].mean }; });
-        if (data.length) {
-          lj.push({ label: cfg + ' ' + m[1], data: data, showLine: true, borderColor: colorOf[cfg], backgroundColor: colorOf[cfg], borderDash: m[2] });
-        }
-      });
-    });
-    draw('latency-jitter', { type: 'scatter', data: { datasets: lj },
-      options: xyOptions('Average task latency and release jitter vs particles (' + where(false) + ')', 'particles', 'time (ms, mean over repetitions)') });
-
-    var li = [];
-    cells.forEach(function (c) {
-      if (c.latencyPredict.length) { li.push({ label: c.config + ' predict', data: points(c.latencyPredict), pointRadius: 2, pointStyle: 'circle', borderColor: colorOf[c.config], backgroundColor: colorOf[c.config] }); }
-      if (c.latencyUpdate.length) { li.push({ label: c.config + ' update', data: points(c.latencyUpdate), pointRadius: 3, pointStyle: 'triangle', borderColor: colorOf[c.config], backgroundColor: 'transparent' }); }
-    });
-    var withPauses = cells.filter(function (c) { return c.pauses && c.pauses.length; });
-    var bands = [];
-    withPauses.slice(0, 1).forEach(function (c) {
-      c.pauses.forEach(function (p, i) { bands.push({ from: p[0], to: p[1], kind: c.pauseKinds[i] }); });
-    });
-    draw('latency-index', { type: 'scatter', data: { datasets: li },
-      options: xyOptions('Task latency vs event index (' + where(true) + ')' + (bands.length ? ', pauses of ' + withPauses[0].config : ''),
-        'event index', 'task latency (ms)', function (o) { o.plugins.jmclbenchPauses = bands; }) });
-    document.getElementById('chart-latency-index').setAttribute('data-pauses', String(bands.length));
-
-    var kinds = [];
-    var attributed = configOrder(cells).filter(function (c) { return c.causes && Object.keys(c.causes).length; });
-    attributed.forEach(function (c) { Object.keys(c.causes).forEach(function (k) { if (kinds.indexOf(k) < 0) { kinds.push(k); } }); });
-    kinds.sort(function (a, b) { return CAUSE_ORDER.indexOf(a) - CAUSE_ORDER.indexOf(b) || (a < b ? -1 : a > b ? 1 : 0); });
-    draw('causes', {
-      type: 'bar',
-      data: { labels: attributed.map(function (c) { return c.config; }),
-        datasets: kinds.map(function (k, i) {
-          return { label: k, backgroundColor: CAUSE_COLORS[k] || PALETTE[i % PALETTE.length],
-            data: attributed.map(function (c) { return c.causes[k] === undefined ? 0 : c.causes[k]; }) };
-        }) },
-      options: {
-        responsive: true, maintainAspectRatio: false,
-        plugins: { title: { display: true, text: 'Why deadlines were missed (' + where(true) + ')' },
-          legend: { position: 'bottom', labels: { boxWidth: 12 } } },
-        scales: { x: { stacked: true, title: axisTitle('runtime/profile') },
-          y: { stacked: true, beginAtZero: true, title: axisTitle('jobs missed or late per run, by primary cause (mean)') } }
+  function renderCharts(cells) {
+    DATA.figures.forEach(function (f) {
+      var spec = SPECS[specKey(state.dataset, state.policy, f.perSetting ? state.particles : null, f.id)];
+      var view = spec ? shown(spec) : { categories: [], series: [], bands: [] };
+      draw(f, spec, view);
+      if (f.id === 'memory') {
+        renderMemoryTable(configOrder(cells).filter(function (c) { return c.memoryAreas && c.memoryAreas.length; }),
+          view.series.map(function (s) { return s.name; }));
       }
     });
-
-    var dt = [];
-    cells.forEach(function (c) {
-      c.deviation.forEach(function (s, i) {
-        dt.push({ label: c.config + ' #' + c.deviationRepetitions[i], data: points(s), showLine: true, pointRadius: 0, borderWidth: 1.2,
-          borderColor: colorOf[c.config], backgroundColor: colorOf[c.config], borderDash: i === 0 ? [] : [2 + i, 2] });
-      });
-    });
-    draw('deviation-time', { type: 'scatter', data: { datasets: dt },
-      options: xyOptions('Deviation over time, repeated runs (' + where(true) + ')', 'time (s)', 'deviation xy (m)') });
-
-    var pg = DATA.playgrounds[state.dataset] || { width: 3, height: 2, beacons: [[0, 1], [3, 0], [3, 2]] };
-    var tr = [];
-    var withReal = cells.filter(function (c) { return c.real.length; })[0];
-    if (withReal) { tr.push({ label: 'real', data: points(withReal.real), showLine: true, pointRadius: 0, borderWidth: 2.5, borderColor: '#000', backgroundColor: '#000' }); }
-    cells.forEach(function (c) {
-      if (c.trajectory.length) { tr.push({ label: c.config + ' estimate', data: points(c.trajectory), showLine: true, pointRadius: 0, borderWidth: 1.2, borderColor: colorOf[c.config], backgroundColor: colorOf[c.config] }); }
-    });
-    tr.push({ label: 'beacons', data: points(pg.beacons), pointStyle: 'triangle', pointRadius: 9, borderColor: '#000', backgroundColor: '#ffd400' });
-    draw('trajectory', { type: 'scatter', data: { datasets: tr },
-      options: xyOptions('Estimated vs real trajectory (' + where(true) + ')', 'x (m)', 'y (m)', function (o) {
-        o.scales.x.min = -0.15; o.scales.x.max = pg.width + 0.15; o.scales.y.min = -0.15; o.scales.y.max = pg.height + 0.15;
-        o.plugins.jmclbenchPlayground = { width: pg.width, height: pg.height };
-      }) });
-
-    var sp = cells.filter(function (c) { return c.latencySpectrum.length; }).map(function (c) {
-      return { label: c.config, data: c.latencySpectrum.map(function (p) { return { x: p[0], y: Math.max(p[1], 1e-4) }; }), showLine: true, pointRadius: 0, borderColor: colorOf[c.config], backgroundColor: colorOf[c.config] };
-    });
-    draw('spectrum', { type: 'scatter', data: { datasets: sp },
-      options: xyOptions('Task latency by percentile (' + where(true) + ')', 'percentile (log scale of 1/(1\u2212p))', 'task latency (ms, log)', function (o) {
-        o.scales.x.type = 'logarithmic'; o.scales.y.type = 'logarithmic'; o.scales.x.min = 1;
-        o.scales.x.ticks = { callback: function (v) {
-          var exp = Math.log10(v);
-          if (Math.abs(exp - Math.round(exp)) > 1e-9) { return null; }
-          return v === 1 ? '0%' : (100 - 100 / v).toFixed(Math.max(0, Math.round(exp) - 2)) + '%';
-        } };
-      }) });
-
-    var cdf = cells.filter(function (c) { return c.jitterCdf.length; }).map(function (c) {
-      return { label: c.config, data: points(c.jitterCdf), showLine: true, stepped: true, pointRadius: 0, borderColor: colorOf[c.config], backgroundColor: colorOf[c.config] };
-    });
-    draw('jitter-cdf', { type: 'scatter', data: { datasets: cdf },
-      options: xyOptions('CDF of release jitter (' + where(true) + ')', 'release jitter (ms, log)', 'fraction of jobs', function (o) {
-        o.scales.x.type = 'logarithmic'; o.scales.y.min = 0; o.scales.y.max = 1;
-        o.scales.x.ticks = { autoSkip: true, maxRotation: 0, callback: function (v) {
-          var m = v / Math.pow(10, Math.floor(Math.log10(v) + 1e-9));
-          return [1, 2, 5].some(function (k) { return Math.abs(m - k) < 1e-6; }) ? String(Number(v.toPrecision(3))) : null;
-        } };
-      }) });
   }
 
-  function renderMemory(cells) {
-    var withAreas = configOrder(cells).filter(function (c) { return c.memoryAreas && c.memoryAreas.length; });
-    var names = [];
-    withAreas.forEach(function (c) { c.memoryAreas.forEach(function (a) { if (names.indexOf(a.name) < 0) { names.push(a.name); } }); });
-    var rank = function (n) { var i = AREA_ORDER.indexOf(n); return i < 0 ? AREA_ORDER.length : i; };
-    names = names.map(function (n, i) { return [n, i]; })
-      .sort(function (a, b) { return rank(a[0]) - rank(b[0]) || a[1] - b[1]; }).map(function (x) { return x[0]; });
-    var privateIndex = 0;
-    var datasets = names.map(function (n) {
-      var color = AREA_COLORS[n] || PRIVATE_COLORS[privateIndex++ % PRIVATE_COLORS.length];
-      var areas = withAreas.map(function (c) { return c.memoryAreas.filter(function (a) { return a.name === n; })[0] || null; });
-      return { label: n, backgroundColor: color, borderColor: color, areas: areas,
-        data: areas.map(function (a) { return a && a.peakBytes > 0 ? a.peakBytes : null; }) };
-    });
-    draw('memory', {
-      type: 'bar', data: { labels: withAreas.map(function (c) { return c.config; }), datasets: datasets },
-      options: {
-        responsive: true, maintainAspectRatio: false,
-        plugins: { title: { display: true, text: 'Peak bytes per memory area (' + where(true) + ')' },
-          legend: { position: 'bottom', labels: { boxWidth: 12 } }, jmclbenchZeroMarks: true,
-          tooltip: { callbacks: { label: function (ctx) {
-            var a = ctx.dataset.areas[ctx.dataIndex];
-            if (!a) { return ctx.dataset.label; }
-            return a.name + ': peak ' + bytes(a.peakBytes) + (a.size !== null ? ' of ' + bytes(a.size) : '') +
-              (a.bytesPerRelease !== null ? ', ' + bytes(a.bytesPerRelease) + ' per release' : '');
-          } } } },
-        scales: { x: { title: axisTitle('runtime / engine memory style') },
-          y: { type: 'logarithmic', min: 1, title: axisTitle('peak bytes (log)'),
-            ticks: { callback: function (v) {
-              var exp = Math.log10(v);
-              return Math.abs(exp - Math.round(exp)) < 1e-9 ? bytes(v) : null;
-            } } } }
-      }
-    });
-    renderMemoryTable(withAreas, names);
-  }
   /** Beside the chart, the numbers: per row and area, the peak and the bytes one release allocated there. */
   function renderMemoryTable(withAreas, names) {
     var fig = document.getElementById('figure-memory');
@@ -679,13 +539,11 @@
   var renderCount = 0;
   function render() {
     var cells = settingCells();
-    var all = policyCells();
     renderHeadline(cells);
     renderTable(cells);
     renderFailures(cells);
     renderEnvironment(cells);
-    renderCharts(cells, all);
-    renderMemory(cells);
+    renderCharts(cells);
     renderCount++;
     document.body.setAttribute('data-render-count', String(renderCount));
   }

@@ -88,8 +88,9 @@ class ReportCommandTest {
         }
         assertNotNull(xss, "the hostile name survives as data");
         assertEquals(3, xss.at("/metrics/MISS_COUNT/n").asInt());
-        assertFalse(xss.get("latencySpectrum").isEmpty());
-        assertEquals(3, xss.get("deviation").size());
+        // the cell's series reach the page through its charts
+        assertFalse(seriesOf(chart(data, "skip", 400, "spectrum"), xss.get("config").asText()).get(0).get("points").isEmpty());
+        assertEquals(3, seriesOf(chart(data, "skip", 400, "deviation-time"), xss.get("config").asText()).size());
         assertNotNull(unsupported);
         assertEquals(3, unsupported.get("unsupported").asInt());
         assertTrue(unsupported.at("/metrics/MISS_COUNT/mean").isNull());
@@ -111,6 +112,27 @@ class ReportCommandTest {
                 }
             }
         }
+    }
+
+    /** The page's chart of one figure at one setting. */
+    static JsonNode chart(JsonNode data, String policy, Integer particles, String id) {
+        for (JsonNode c : data.get("charts")) {
+            if (c.get("id").asText().equals(id) && c.at("/setting/policy").asText().equals(policy)
+                    && (particles == null ? c.at("/setting/particles").isMissingNode() : c.at("/setting/particles").asInt() == particles)) {
+                return c;
+            }
+        }
+        throw new AssertionError("no chart " + id + " at " + policy + " " + particles);
+    }
+
+    static List<JsonNode> seriesOf(JsonNode chart, String config) {
+        List<JsonNode> out = new java.util.ArrayList<>();
+        chart.get("series").forEach(s -> {
+            if (config.equals(s.path("config").asText(null))) {
+                out.add(s);
+            }
+        });
+        return out;
     }
 
     @Test

@@ -60,14 +60,25 @@ class ReportOnRunnerStoreTest {
             assertEquals(1.0, c.at("/metrics/MISS_COUNT/mean").asDouble(), 1e-9, where);
             assertEquals(0.003, c.at("/metrics/DEVIATION/mean").asDouble(), 1e-9, where);
             assertTrue(c.at("/metrics/LATENCY_MEAN/mean").asDouble() > 0, where);
-            // Series and histograms as the runner's ingest stores them.
-            assertEquals(9, c.get("latencyPredict").size(), where + ": 10 jobs, 1 skipped");
-            assertEquals(4, c.get("latencyUpdate").size(), where);
-            assertEquals(3, c.get("deviation").size(), where + ": one line per repetition");
-            assertFalse(c.get("trajectory").isEmpty(), where);
-            assertFalse(c.get("real").isEmpty(), where + ": the dataset's ground truth");
-            assertFalse(c.get("latencySpectrum").isEmpty(), where);
-            assertFalse(c.get("jitterCdf").isEmpty(), where);
+            // Series and histograms as the runner's ingest stores them, reaching the page through the cell's charts.
+            String config = c.get("config").asText();
+            int particles = c.get("particles").asInt();
+            List<JsonNode> latency = ReportCommandTest.seriesOf(ReportCommandTest.chart(model, "skip", particles, "latency-index"), config);
+            assertEquals(9, latency.get(0).get("points").size(), where + ": 10 predict jobs, 1 skipped");
+            assertEquals(4, latency.get(1).get("points").size(), where + ": update");
+            assertEquals(3, ReportCommandTest.seriesOf(ReportCommandTest.chart(model, "skip", particles, "deviation-time"), config).size(),
+                    where + ": one line per repetition");
+            JsonNode trajectory = ReportCommandTest.chart(model, "skip", particles, "trajectory");
+            assertFalse(ReportCommandTest.seriesOf(trajectory, config).get(0).get("points").isEmpty(), where);
+            boolean real = false;
+            for (JsonNode series : trajectory.get("series")) {
+                real |= series.get("name").asText().equals("real") && !series.get("points").isEmpty();
+            }
+            assertTrue(real, where + ": the dataset's ground truth");
+            assertFalse(ReportCommandTest.seriesOf(ReportCommandTest.chart(model, "skip", particles, "spectrum"), config)
+                    .get(0).get("points").isEmpty(), where);
+            assertFalse(ReportCommandTest.seriesOf(ReportCommandTest.chart(model, "skip", particles, "jitter-cdf"), config)
+                    .get(0).get("points").isEmpty(), where);
             if (!okConfigs.contains(c.get("config").asText())) {
                 okConfigs.add(c.get("config").asText());
             }

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Path;
 import java.util.List;
 
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.load.LoadScenario;
 import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.Profile;
@@ -19,13 +20,13 @@ import org.junit.jupiter.api.Test;
  */
 class WorkloadCommandTest {
     private static final Path BIN = Path.of("/opt/jmclbench-native");
-    private static final RuntimeInfo NATIVE = new RuntimeInfo("native", RuntimeInfo.Kind.NATIVE, "jmclbench", "1",
+    private static final RuntimeInfo NATIVE = new RuntimeInfo("native", RuntimeKind.NATIVE, "jmclbench", "1",
             0, BIN, BIN);
 
     private static final Path JAVA = Path.of("/opt/jdk/bin/java");
-    private static final RuntimeInfo JVM = new RuntimeInfo("temurin-25", RuntimeInfo.Kind.JVM, "Eclipse Adoptium", "25+36",
+    private static final RuntimeInfo JVM = new RuntimeInfo("temurin-25", RuntimeKind.JVM, "Eclipse Adoptium", "25+36",
             25, JAVA, JAVA);
-    private static final RuntimeInfo HVM = new RuntimeInfo("hvm", RuntimeInfo.Kind.HVM, "icecap", "1", 0, JAVA, JAVA);
+    private static final RuntimeInfo HVM = new RuntimeInfo("hvm", RuntimeKind.HVM, "icecap", "1", 0, JAVA, JAVA);
 
     private static List<String> command(String profile) {
         return command(NATIVE, profile, Engines.NATIVE, Engines.PREALLOCATED);

@@ -69,14 +69,14 @@ class ProfileProbeTest {
     @Test
     void profilesParseAndBuildTheirFlags() {
         Profile p = Profile.parse("epsilon+pretouch+fifo+pinned", "--profiles");
-        RuntimeInfo jvm = new RuntimeInfo("x-21", RuntimeInfo.Kind.JVM, "x", "21", 21, Path.of("/j"), Path.of("/j"));
+        RuntimeInfo jvm = new RuntimeInfo("x-21", RuntimeKind.JVM, "x", "21", 21, Path.of("/j"), Path.of("/j"));
         LaunchPlan plan = LaunchPlan.of(jvm, p, "1");
         assertEquals(List.of("chrt", "-f", "80", "taskset", "-c", "1"), plan.prefix());
         assertEquals(List.of("-XX:+UnlockExperimentalVMOptions", "-XX:+UseEpsilonGC", "-XX:+AlwaysPreTouch",
                 "-Xms2048m", "-Xmx2048m"), plan.jvmFlags());
         assertEquals(List.of("-XX:TieredStopAtLevel=1", "-XX:+AlwaysPreTouch", "-Xms512m", "-Xmx512m"),
                 LaunchPlan.of(jvm, Profile.parse("c1+pretouch", "t"), "0").jvmFlags());
-        RuntimeInfo jdk11 = new RuntimeInfo("x-11", RuntimeInfo.Kind.JVM, "x", "11", 11, Path.of("/j"), Path.of("/j"));
+        RuntimeInfo jdk11 = new RuntimeInfo("x-11", RuntimeKind.JVM, "x", "11", 11, Path.of("/j"), Path.of("/j"));
         assertEquals(List.of("-XX:+UnlockExperimentalVMOptions", "-XX:+UseZGC"),
                 LaunchPlan.of(jdk11, Profile.parse("zgc", "t"), "0").jvmFlags());
         assertEquals("fifo+pinned", p.forNative().name());

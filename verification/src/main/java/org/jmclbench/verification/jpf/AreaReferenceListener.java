@@ -17,6 +17,11 @@ import gov.nasa.jpf.vm.StackFrame;
 import gov.nasa.jpf.vm.ThreadInfo;
 import gov.nasa.jpf.vm.VM;
 import gov.nasa.jpf.vm.bytecode.FieldInstruction;
+import org.jmclbench.rtsjcompat.Area;
+import org.jmclbench.rtsjcompat.ScjThread;
+import org.jmclbench.verification.Property;
+
+import java.util.List;
 
 /**
  * P6, the SCJ reference rule: no object stores a reference to an object of a shorter-lived
@@ -34,26 +39,30 @@ import gov.nasa.jpf.vm.bytecode.FieldInstruction;
  * violations are known findings, reported elsewhere and not flagged again. The tag is a JPF
  * object attribute, so it backtracks with the heap.
  */
-public final class AreaReferenceListener extends PropertyListenerAdapter {
-    private static final String SCJ_THREAD = "org.jmclbench.rtsjcompat.ScjThread";
+public final class AreaReferenceListener extends PropertyListenerAdapter implements LocatedProperty {
 
-    /** The area an object was allocated in: the heap reference of its {@code Area}. */
+    /** The area an object was allocated in (the heap reference of its {@code Area}), and by which method. */
     static final class AreaTag {
         final int area;
+        final MethodInfo allocator;
 
-        AreaTag(int area) {
+        AreaTag(int area, MethodInfo allocator) {
             this.area = area;
+            this.allocator = allocator;
         }
     }
 
     private final String[] exempt;
     private final String[] known;
+    private final boolean emptied;
     private String violation;
+    private String location;
 
     public AreaReferenceListener(Config config, JPF jpf) {
         this.exempt = config.getStringArray("jmclbench.areas.exempt",
                 new String[] {"java.", "javax.", "jdk.", "sun.", "gov.nasa.", "org.jmclbench.rtsjcompat."});
         this.known = config.getStringArray("jmclbench.areas.known", new String[0]);
+        this.emptied = config.getBoolean("jmclbench.areas.emptied", true);
     }
 
     @Override
@@ -62,20 +71,69 @@ public final class AreaReferenceListener extends PropertyListenerAdapter {
             return;
         }
         ElementInfo thread = ti.getThreadObject();
-        if (thread == null || !thread.getClassInfo().isInstanceOf(SCJ_THREAD)) {
+        if (thread == null || !thread.getClassInfo().isInstanceOf(ScjThread.class.getName())) {
             return;
         }
-        int area = thread.getReferenceField("current");
+        int area = thread.getReferenceField(ScjThread.CURRENT_FIELD);
         if (area == MJIEnv.NULL) {
             return;
         }
+        MethodInfo allocator = null;
         for (StackFrame f = ti.getTopFrame(); f != null; f = f.getPrevious()) {
             MethodInfo mi = f.getMethodInfo();
             if (mi != null && mi.isClinit()) {
                 return;
             }
+            if (allocator == null && mi != null && !exempt(mi)) {
+                allocator = mi;
+            }
         }
-        ei.addObjectAttr(new AreaTag(area));
+        ei.addObjectAttr(new AreaTag(area, allocator));
+    }
+
+    /**
+     * The private memory is empty after each release: when rtsj-compat empties a private area
+     * ({@code Area.empty()}), no object allocated in it may still be reachable. A store the
+     * reference rule cannot see (one made by exempt code: the JDK's, a native array copy) shows
+     * here. The collector runs first, so only reachable objects remain. A release that failed
+     * is left alone: its exception, made in the area, is rightly on its way out.
+     */
+    @Override
+    public void methodEntered(VM vm, ThreadInfo ti, MethodInfo mi) {
+        if (violation != null || !emptied || !mi.getName().equals("empty")
+                || !mi.getClassName().equals(Area.class.getName())) {
+            return;
+        }
+        ElementInfo area = vm.getHeap().get(ti.getTopFrame().getThis());
+        if (area.getIntField(Area.KIND_FIELD) < Area.PRIVATE || failing(vm, ti)) {
+            return;
+        }
+        vm.getKernelState().gc();
+        for (ElementInfo ei : vm.getHeap().liveObjects()) {
+            AreaTag t = ei.getObjectAttr(AreaTag.class);
+            if (t != null && t.area == area.getObjectRef()) {
+                location = LocatedProperty.of(t.allocator);
+                violation = "an object of " + ei.getClassInfo().getName() + " allocated by " + location + " in "
+                        + name(vm, t.area) + " is still reachable when the release ends";
+                ti.breakTransition("areaNotEmpty");
+                return;
+            }
+        }
+    }
+
+    /** Whether a frame of the thread holds a Throwable (the release is failing). */
+    private static boolean failing(VM vm, ThreadInfo ti) {
+        for (StackFrame f = ti.getTopFrame(); f != null; f = f.getPrevious()) {
+            for (int i = 0; i < f.getLocalVariableCount(); i++) {
+                if (f.isLocalVariableRef(i)) {
+                    ElementInfo v = vm.getHeap().get(f.getLocalVariable(i));
+                    if (v != null && v.getClassInfo().isInstanceOf("java.lang.Throwable")) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
     }
 
     @Override
@@ -129,8 +187,8 @@ public final class AreaReferenceListener extends PropertyListenerAdapter {
         }
         String target = isStatic ? "static field " + field
                 : (field == null ? "an array " : "field " + field + " of an object ") + "in " + name(vm, holderArea);
-        violation = insn.getMethodInfo().getClassName() + "." + insn.getMethodInfo().getName() + ":"
-                + insn.getLineNumber() + " stores a reference to an object of "
+        location = LocatedProperty.of(insn.getMethodInfo());
+        violation = location + ":" + insn.getLineNumber() + " stores a reference to an object of "
                 + vm.getHeap().get(value).getClassInfo().getName() + " in " + name(vm, valueArea)
                 + " (shorter-lived) into " + target;
         ti.breakTransition("areaReference");
@@ -153,6 +211,9 @@ public final class AreaReferenceListener extends PropertyListenerAdapter {
     }
 
     private boolean exempt(MethodInfo mi) {
+        if (mi == null) {
+            return true;
+        }
         String cls = mi == null ? "" : mi.getClassName();
         for (String p : exempt) {
             if (cls.startsWith(p)) {
@@ -170,7 +231,7 @@ public final class AreaReferenceListener extends PropertyListenerAdapter {
 
     /** Whether {@code holder} is {@code value} or lives inside it (value is an ancestor). */
     private static boolean mayHold(VM vm, int holder, int value) {
-        for (int a = holder; a != MJIEnv.NULL; a = vm.getHeap().get(a).getReferenceField("parent")) {
+        for (int a = holder; a != MJIEnv.NULL; a = vm.getHeap().get(a).getReferenceField(Area.PARENT_FIELD)) {
             if (a == value) {
                 return true;
             }
@@ -179,25 +240,12 @@ public final class AreaReferenceListener extends PropertyListenerAdapter {
     }
 
     private static int depth(VM vm, int area) {
-        return vm.getHeap().get(area).getIntField("depth");
+        return vm.getHeap().get(area).getIntField(Area.DEPTH_FIELD);
     }
 
     private static String name(VM vm, int area) {
         ElementInfo a = vm.getHeap().get(area);
-        return a.getStringField("name") + " (" + kind(a.getIntField("kind")) + ")";
-    }
-
-    private static String kind(int k) {
-        switch (k) {
-            case 0:
-                return "immortal";
-            case 1:
-                return "mission";
-            case 2:
-                return "private";
-            default:
-                return "nested";
-        }
+        return a.getStringField(Area.NAME_FIELD) + " (" + Area.kindName(a.getIntField(Area.KIND_FIELD)) + ")";
     }
 
     @Override
@@ -208,6 +256,16 @@ public final class AreaReferenceListener extends PropertyListenerAdapter {
     @Override
     public String getErrorMessage() {
         return violation;
+    }
+
+    @Override
+    public Property property() {
+        return Property.P6;
+    }
+
+    @Override
+    public List<String> locations() {
+        return violation == null ? List.of() : List.of(location);
     }
 
     @Override

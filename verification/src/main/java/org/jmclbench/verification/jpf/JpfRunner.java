@@ -11,6 +11,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Properties;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -146,16 +148,20 @@ public final class JpfRunner {
         } else if (v.getProperty("constraint") != null) {
             verdict = "FAILED: search limit hit (" + v.getProperty("constraint") + "), the state space was not covered";
         } else if (check.expect().mustHold()) {
-            passed = n == 0;
-            verdict = passed ? "holds" : "VIOLATED: " + shorten(errors.get(0));
+            Set<String> missing = new TreeSet<>(check.expect().coverage());
+            missing.removeAll(List.of(v.getProperty("reached", "").split(",")));
+            passed = n == 0 && missing.isEmpty();
+            verdict = n > 0 ? "VIOLATED: " + shorten(errors.get(0))
+                    : passed ? "holds" : "FAILED: vacuous, no path reached " + String.join(", ", missing);
         } else {
             JpfCheck.Expectation x = check.expect();
-            boolean exact = n == 1 && x.propertyClass().equals(v.getProperty("error.0.property"))
-                    && v.getProperty("error.0.message", "").contains(x.messageFragment());
-            passed = exact;
-            verdict = exact ? "caught: " + x.propertyClass() + " \"" + x.messageFragment() + "\""
+            String violates = v.getProperty("error.0.violates", "");
+            List<String> at = List.of(v.getProperty("error.0.locations", "").split(","));
+            passed = n == 1 && x.violated().name().equals(violates) && at.contains(x.location());
+            verdict = passed ? "caught: " + violates + " at " + x.location()
                     : n == 0 ? "MISSED: the seeded bug went unreported"
-                    : "MISSED: expected " + x.describe() + ", got " + shorten(errors.get(0));
+                    : "MISSED: expected " + x.describe() + ", got " + (violates.isEmpty() ? "" : violates + " at ")
+                            + String.join(" and ", at) + ": " + shorten(errors.get(0));
         }
         return new JpfResult(check, passed, verdict, errors, newStates, endStates, maxDepth, insns, seconds,
                 log.toString());

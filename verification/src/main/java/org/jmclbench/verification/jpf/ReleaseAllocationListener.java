@@ -10,6 +10,9 @@ import gov.nasa.jpf.vm.MethodInfo;
 import gov.nasa.jpf.vm.StackFrame;
 import gov.nasa.jpf.vm.ThreadInfo;
 import gov.nasa.jpf.vm.VM;
+import org.jmclbench.verification.Property;
+
+import java.util.List;
 
 /**
  * P6, preallocated style: no object is created while a release runs, i.e. while a
@@ -23,10 +26,11 @@ import gov.nasa.jpf.vm.VM;
  * {@code jmclbench.release.classes}, class-name prefixes of the handlers whose releases must not
  * allocate (default: every class).
  */
-public final class ReleaseAllocationListener extends PropertyListenerAdapter {
+public final class ReleaseAllocationListener extends PropertyListenerAdapter implements LocatedProperty {
     private final String method;
     private final String[] classes;
     private String violation;
+    private String location;
 
     public ReleaseAllocationListener(Config config, JPF jpf) {
         this.method = config.getString("jmclbench.release.method", "handleAsyncEvent");
@@ -59,8 +63,8 @@ public final class ReleaseAllocationListener extends PropertyListenerAdapter {
             return;
         }
         StackFrame top = ti.getTopFrame();
-        String where = top == null ? "?" : top.getClassName() + "." + top.getMethodInfo().getName()
-                + ":" + top.getLine();
+        location = top == null ? "?" : LocatedProperty.of(top.getMethodInfo());
+        String where = top == null ? "?" : location + ":" + top.getLine();
         violation = "release of " + release + " allocated a " + ei.getClassInfo().getName() + " at " + where;
         ti.breakTransition("releaseAllocation");
     }
@@ -82,6 +86,16 @@ public final class ReleaseAllocationListener extends PropertyListenerAdapter {
     @Override
     public String getErrorMessage() {
         return violation;
+    }
+
+    @Override
+    public Property property() {
+        return Property.P6;
+    }
+
+    @Override
+    public List<String> locations() {
+        return violation == null ? List.of() : List.of(location);
     }
 
     @Override

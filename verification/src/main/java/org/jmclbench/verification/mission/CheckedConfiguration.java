@@ -3,27 +3,75 @@ package org.jmclbench.verification.mission;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;
-import org.jmclbench.core.policy.OverrunPolicy;
+import org.jmclbench.scj.ImmortalEntry;
+import org.jmclbench.scj.JobGate;
 import org.jmclbench.scj.MissionConfiguration;
+import org.jmclbench.core.policy.OverrunPolicy;
+import org.jmclbench.scj.Robot;
 
 /**
- * The mission's configuration with the P3 check around its localizer, through the seam the
- * mission offers ({@link MissionConfiguration#newLocalizer}). Seeded bugs subclass it and
- * replace {@link #localizer} (test sources only).
+ * The mission's configuration with the checks around its robot ({@link CheckedRobot}, P3 and P4),
+ * through the factories the mission offers, and a seeded fault's parts in place of the shipped
+ * ones. A fault is either a {@link DelegatingLocalizer} subclass with a public constructor taking
+ * the shipped localizer (a faulty job: made in mission memory around the shipped localizer, where
+ * the mission makes its localizer) or a {@link MissionFault} with a public no-argument
+ * constructor. Keeps the robot and the gate it made, for the driver's checks after the mission.
  */
-public class CheckedConfiguration extends MissionConfiguration {
+public final class CheckedConfiguration extends MissionConfiguration {
+    private final Class<?> faultClass;
+    private final MissionFault fault;
+    private CheckedRobot robot;
+    private JobGate gate;
 
-    public CheckedConfiguration(MclConfig mcl, OverrunPolicy policy, double timeScale) {
-        super(mcl, policy, timeScale);
+    /** {@code fault}: a seeded fault's class, or null for the shipped mission. */
+    public CheckedConfiguration(MclConfig mcl, OverrunPolicy policy, Class<?> fault)
+            throws ReflectiveOperationException {
+        super(mcl, policy, 1.0);
+        this.faultClass = fault;
+        this.fault = fault != null && MissionFault.class.isAssignableFrom(fault)
+                ? (MissionFault) fault.getDeclaredConstructor().newInstance() : new MissionFault.None();
     }
 
     @Override
-    public final Localizer newLocalizer(Playground playground, double startX, double startY, double startTheta) {
-        return new CheckedLocalizer(localizer(playground, startX, startY, startTheta));
+    public Localizer newLocalizer(Playground playground, double startX, double startY, double startTheta) {
+        Localizer shipped = shipped(playground, startX, startY, startTheta);
+        if (faultClass == null || !DelegatingLocalizer.class.isAssignableFrom(faultClass)) {
+            return fault.localizer(shipped);
+        }
+        try {
+            return (Localizer) faultClass.getConstructor(Localizer.class).newInstance(shipped);
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalArgumentException(faultClass + " needs a public constructor taking a Localizer", e);
+        }
     }
 
-    /** The localizer under check: the mission's own. */
-    protected Localizer localizer(Playground playground, double startX, double startY, double startTheta) {
+    /** The shipped localizer of the configured memory style (the oracle's, too). */
+    Localizer shipped(Playground playground, double startX, double startY, double startTheta) {
         return super.newLocalizer(playground, startX, startY, startTheta);
+    }
+
+    @Override
+    public Robot newRobot(Localizer localizer, ImmortalEntry entry) {
+        CheckedRobot r = fault.robot(localizer, entry);
+        robot = r != null ? r : new CheckedRobot(localizer, entry);
+        robot.expectPolls(mcl.pollInterval);
+        return robot;
+    }
+
+    @Override
+    public JobGate newGate(int events) {
+        JobGate g = fault.gate(this, events);
+        gate = g != null ? g : super.newGate(events);
+        return gate;
+    }
+
+    /** The robot the mission got. */
+    CheckedRobot robot() {
+        return robot;
+    }
+
+    /** The gate the mission got. */
+    JobGate gate() {
+        return gate;
     }
 }

@@ -4,8 +4,8 @@ import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 
 /**
- * A localizer that forwards everything to the mission's: the P3/P4 check overrides the jobs it
- * watches, and seeded bugs the job they break.
+ * A localizer that forwards everything to the mission's: a seeded bug in a job overrides the job
+ * it breaks, and is plugged in by its class ({@link CheckedConfiguration}).
  */
 public abstract class DelegatingLocalizer implements Localizer {
     protected final Localizer inner;

@@ -33,7 +33,7 @@ final class ToyHandler implements Runnable {
                 r.overwriteLive(i, r.particle(i) + 1);
             }
             if (i % poll == 0 && m.abortRequested(i)) {
-                ToyMission.check(r.fingerprint() == before, "P3 an aborted job changed the robot");
+                m.robotChanged.unless(r.fingerprint() == before, this, "handleAsyncEvent");
                 m.end(event, ToyMission.TERMINATED);
                 return;
             }
@@ -44,6 +44,6 @@ final class ToyHandler implements Runnable {
             out[i] = r.particle(i) + 1;
             sum += out[i];
         }
-        r.commit(sum / n, m.outcome, event);
+        r.commit(sum / n, m, event);
     }
 }

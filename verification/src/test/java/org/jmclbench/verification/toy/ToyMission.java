@@ -1,5 +1,8 @@
 package org.jmclbench.verification.toy;
 
+import org.jmclbench.verification.Property;
+import org.jmclbench.verification.mission.PropertyFailure;
+
 /**
  * A small SCJ-like mission that proves the JPF machinery before the real mission exists: a
  * dispatcher releases events to one handler thread that runs terminable particle jobs on a
@@ -32,6 +35,11 @@ public final class ToyMission {
     /** The job's step at its last poll, and that step when an abort was requested. */
     private int lastPollStep;
     private int requestedAtStep;
+    /** The violations the program reports, made before the run: reporting one allocates nothing. */
+    final PropertyFailure robotChanged = new PropertyFailure(Property.P3, "an aborted job changed the robot");
+    private final PropertyFailure lateAbort = new PropertyFailure(Property.P4,
+            "abort honoured later than the poll interval");
+    private final PropertyFailure endedTwice = new PropertyFailure(Property.P5, "an event ended twice");
 
     ToyMission(String policy, int events, int particles, int poll, ToyFault fault) {
         this.policy = policy;
@@ -111,7 +119,7 @@ public final class ToyMission {
     /** The job's poll of the abort request at particle step {@code step}; checks P4's bound. */
     synchronized boolean abortRequested(int step) {
         if (abortRequested) {
-            check(step - requestedAtStep <= poll, "P4 abort honoured later than the poll interval");
+            lateAbort.unless(step - requestedAtStep <= poll, handler, "handleAsyncEvent");
             return true;
         }
         lastPollStep = step;
@@ -120,22 +128,17 @@ public final class ToyMission {
 
     void end(int e, int how) {
         synchronized (outcome) {
-            check(outcome[e] == NONE, "P5 an event ended twice");
+            endedTwice.unless(outcome[e] == NONE, this, "end");
             outcome[e] = how;
         }
     }
 
     void checkEveryEventEndedOnce() {
+        PropertyFailure never = new PropertyFailure(Property.P5, "an event never ended");
         synchronized (outcome) {
             for (int e = 0; e < outcome.length; e++) {
-                check(outcome[e] != NONE, "P5 an event never ended");
+                never.unless(outcome[e] != NONE, this, "release");
             }
-        }
-    }
-
-    static void check(boolean ok, String what) {
-        if (!ok) {
-            throw new AssertionError(what);
         }
     }
 }

@@ -1,16 +1,35 @@
 package org.jmclbench.workload.engine;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.ServiceLoader;
+
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.IdealEngine;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.release.JavaSeEngine;
-import org.jmclbench.workload.scj.HvmEngine;
 import org.jmclbench.workload.scj.ScjEngine;
 
-/** The engines of {@code --engine}, in the order the usage lists them: the one place an engine is registered. */
+/**
+ * The engines of {@code --engine}: the one place an engine of this jar is registered. An engine
+ * that lives outside the workload jar, because it is a host of a runtime of its own (the HVM's
+ * launcher starts the HVM executable), registers through {@link ServiceLoader}
+ * ({@code META-INF/services/org.jmclbench.workload.engine.Engine}) and is found when its jar is
+ * on the class path.
+ */
 public final class Engines {
-    private static final Engine[] ALL = {new JavaSeEngine(), new ScjEngine(), new HvmEngine()};
+    private static final List<Engine> ALL = all();
     private static final Engine IDEAL = new IdealEngine();
+
+    private static List<Engine> all() {
+        List<Engine> engines = new ArrayList<>();
+        engines.add(new JavaSeEngine());
+        engines.add(new ScjEngine());
+        for (Engine e : ServiceLoader.load(Engine.class)) {
+            engines.add(e);
+        }
+        return engines;
+    }
 
     private Engines() {
     }
@@ -22,7 +41,8 @@ public final class Engines {
                 return e;
             }
         }
-        throw BadInputException.ofOption(option, "'" + name + "' is not one of " + names());
+        throw BadInputException.ofOption(option, "'" + name + "' is not one of " + names()
+                + ("hvm".equals(name) ? " (the hvm engine is ./jmclbench run-hvm)" : ""));
     }
 
     /** The engine that runs the options' test: the ideal run for {@code --ideal}, whatever the engine asked. */
@@ -30,7 +50,7 @@ public final class Engines {
         return options.ideal ? IDEAL : named("--engine", options.engine);
     }
 
-    /** The engines' names as the usage and messages write them: {@code javase|scj|hvm}. */
+    /** The engines' names as messages write them: {@code javase|scj}, and {@code |hvm} with the HVM launcher. */
     public static String names() {
         StringBuilder b = new StringBuilder();
         for (Engine e : ALL) {

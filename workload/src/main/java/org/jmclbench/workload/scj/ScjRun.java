@@ -97,7 +97,7 @@ public final class ScjRun {
     }
 
     /** The mission's configuration for the options, with a filter (the run's, or a smaller one) and a time scale. */
-    static MissionConfiguration configuration(RunOptions o, MclConfig mcl, double timeScale, boolean areaSizes) {
+    public static MissionConfiguration configuration(RunOptions o, MclConfig mcl, double timeScale, boolean areaSizes) {
         MissionConfiguration c = new MissionConfiguration(mcl, o.policy, timeScale);
         if (areaSizes) {
             for (Map.Entry<String, Long> e : o.areaSizes.entrySet()) {

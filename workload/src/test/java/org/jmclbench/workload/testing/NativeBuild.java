@@ -10,8 +10,17 @@ import java.util.Set;
 
 /** Programs of the C baseline that Java tests run, built by its Makefile (once per JVM and target). */
 public final class NativeBuild {
-    /** The project's root, the workload module's parent. */
-    public static final File HOME = new File(System.getProperty("user.dir")).getAbsoluteFile().getParentFile();
+    /** The project's root: the nearest folder above the running module's that holds native/Makefile. */
+    public static final File HOME = projectRoot(new File(System.getProperty("user.dir")).getAbsoluteFile());
+
+    private static File projectRoot(File module) {
+        for (File d = module; d != null; d = d.getParentFile()) {
+            if (new File(d, "native/Makefile").isFile()) {
+                return d;
+            }
+        }
+        return module.getParentFile();
+    }
 
     private static final Set<String> BUILT = new HashSet<>();
 

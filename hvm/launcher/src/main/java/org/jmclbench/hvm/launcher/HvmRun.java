@@ -1,4 +1,4 @@
-package org.jmclbench.workload.scj;
+package org.jmclbench.hvm.launcher;
 
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
@@ -23,7 +23,9 @@ import java.util.regex.Pattern;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.scj.MissionConfiguration;
+import org.jmclbench.scj.MissionRunFile;
 import org.jmclbench.scj.MissionSizes;
+import org.jmclbench.workload.scj.ScjRun;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
@@ -39,13 +41,6 @@ import org.jmclbench.workload.output.MemoryArea;
  * memory area or missing records is that run's {@link RunFailure}. Layouts: docs/HVM.md.
  */
 public final class HvmRun {
-    /** "JMCLHVI1" and "JMCLHVO1" read as little-endian longs. */
-    static final long INPUT_MAGIC = 0x314956484C434D4AL;
-    static final long OUTPUT_MAGIC = 0x314F56484C434D4AL;
-    static final long VERSION = 1;
-    /** The icecap executable's additions, as HvmMain makes them (kept equal by HvmRunTest). */
-    static final long IMMORTAL_INFRASTRUCTURE = 1024 * 1024;
-    static final long HANDLER_STACKS = 3 * (4 * MissionSizes.STACK_WORDS + 64);
     /**
      * The hang timeout is this many times the replay's length plus {@link #TIMEOUT_MARGIN_S}: an
      * overloaded queue run ends after its backlog, and the VM's single thread shares the CPU
@@ -125,9 +120,9 @@ public final class HvmRun {
         for (int a = 0; a < sizes.length; a++) {
             sizes[a] = s.size(a);
         }
-        sizes[MissionSizes.IMMORTAL] += IMMORTAL_INFRASTRUCTURE;
+        sizes[MissionSizes.IMMORTAL] += MissionRunFile.IMMORTAL_INFRASTRUCTURE;
         if (config.areaSize(MissionSizes.MISSION) == 0) {
-            sizes[MissionSizes.MISSION] += HANDLER_STACKS;
+            sizes[MissionSizes.MISSION] += MissionRunFile.HANDLER_STACKS;
         }
         return sizes;
     }
@@ -182,13 +177,14 @@ public final class HvmRun {
         MclConfig mcl = config.mcl;
         try (OutputStream os = new BufferedOutputStream(new FileOutputStream(f))) {
             LittleEndian w = new LittleEndian(os);
-            w.word(INPUT_MAGIC);
-            w.word(VERSION);
+            // In the word order of MissionRunFile's positions, MAGIC_WORD to TIME_SCALE.
+            w.word(MissionRunFile.INPUT_MAGIC);
+            w.word(MissionRunFile.VERSION);
             w.word(mcl.particles);
-            w.word(mcl.estimate.ordinal());
-            w.word(mcl.resample.ordinal());
-            w.word(mcl.init.ordinal());
-            w.word(mcl.memory.ordinal());
+            w.word(MissionRunFile.code(mcl.estimate));
+            w.word(MissionRunFile.code(mcl.resample));
+            w.word(MissionRunFile.code(mcl.init));
+            w.word(MissionRunFile.code(mcl.memory));
             w.word(mcl.seed);
             w.word(mcl.covariance ? 1 : 0);
             w.word(mcl.pollInterval);
@@ -227,7 +223,7 @@ public final class HvmRun {
         JobRecords r = new JobRecords(d.timeline(), covariance);
         try (InputStream is = new BufferedInputStream(new FileInputStream(f))) {
             LittleEndianIn in = new LittleEndianIn(is);
-            if (in.word() != OUTPUT_MAGIC || in.word() != VERSION) {
+            if (in.word() != MissionRunFile.OUTPUT_MAGIC || in.word() != MissionRunFile.VERSION) {
                 throw new RunFailure("the HVM's result file is not a jmclbench result: " + f);
             }
             int n = (int) in.word();

@@ -2,40 +2,37 @@ package org.jmclbench.verification.seeded.mission;
 
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
-import org.jmclbench.core.mcl.MclConfig;
-import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.scj.ImmortalEntry;
 import org.jmclbench.scj.JobGate;
+import org.jmclbench.scj.MissionConfiguration;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.scj.Robot;
-import org.jmclbench.verification.mission.CheckedConfiguration;
+import org.jmclbench.verification.mission.CheckedRobot;
+import org.jmclbench.verification.mission.MissionFault;
 
 /**
- * Seeded P1 bug in the real mission: a lock-order inversion. The predict job, holding the
- * robot, takes the gate's lock; the laser sensor's admission, holding the gate, takes the
- * robot's. A laser event released while a predict job runs deadlocks the two.
+ * Seeded P1 bug: a lock-order inversion. The predict job, holding the robot, takes the gate's
+ * lock; the laser sensor's admission, holding the gate, takes the robot's. A laser event
+ * released while a predict job runs deadlocks the two.
  */
-public final class LockInversionConfiguration extends CheckedConfiguration {
-    private Robot robot;
-
-    public LockInversionConfiguration(MclConfig mcl, OverrunPolicy policy, double timeScale) {
-        super(mcl, policy, timeScale);
-    }
+public final class LockInversion implements MissionFault {
+    private InvertingRobot robot;
 
     @Override
-    public Robot newRobot(Localizer localizer, ImmortalEntry entry) {
+    public CheckedRobot robot(Localizer localizer, ImmortalEntry entry) {
         robot = new InvertingRobot(localizer, entry);
         return robot;
     }
 
     @Override
-    public JobGate newGate(int events) {
-        InvertingGate g = new InvertingGate(policy, events, robot);
-        ((InvertingRobot) robot).gate = g;
+    public JobGate gate(MissionConfiguration configuration, int events) {
+        InvertingGate g = new InvertingGate(configuration.policy, events, robot);
+        robot.gate = g;
         return g;
     }
 
     /** Takes the gate inside the robot's monitor. */
-    static final class InvertingRobot extends Robot {
+    public static final class InvertingRobot extends CheckedRobot {
         JobGate gate;
 
         InvertingRobot(Localizer localizer, ImmortalEntry entry) {
@@ -51,7 +48,7 @@ public final class LockInversionConfiguration extends CheckedConfiguration {
     }
 
     /** Takes the robot inside the gate's monitor. */
-    static final class InvertingGate extends JobGate {
+    public static final class InvertingGate extends JobGate {
         private final Robot robot;
 
         InvertingGate(OverrunPolicy policy, int events, Robot robot) {

@@ -1,4 +1,4 @@
-package org.jmclbench.workload.scj;
+package org.jmclbench.hvm.launcher;
 
 import java.io.File;
 

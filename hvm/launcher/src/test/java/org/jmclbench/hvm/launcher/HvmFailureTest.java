@@ -1,4 +1,4 @@
-package org.jmclbench.workload.scj;
+package org.jmclbench.hvm.launcher;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

@@ -1,16 +1,21 @@
-package org.jmclbench.workload.scj;
+package org.jmclbench.hvm.launcher;
 
 import java.io.IOException;
 
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
+import org.jmclbench.workload.scj.ScjEngine;
 
 /**
  * {@code --engine hvm}: the same SCJ mission as {@link ScjEngine}, with its options and checks,
  * compiled to a native executable by the icecap HVM ({@link HvmRun}, docs/HVM.md).
  */
 public final class HvmEngine extends ScjEngine {
+    /** The registration through java.util.ServiceLoader (META-INF/services) needs a public constructor. */
+    public HvmEngine() {
+    }
+
 
     @Override
     public String name() {

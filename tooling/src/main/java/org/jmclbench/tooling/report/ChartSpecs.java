@@ -1,0 +1,344 @@
+package org.jmclbench.tooling.report;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
+
+import org.jmclbench.tooling.report.ChartSpec.Axis;
+import org.jmclbench.tooling.report.ChartSpec.Band;
+import org.jmclbench.tooling.report.ChartSpec.Category;
+import org.jmclbench.tooling.report.ChartSpec.Format;
+import org.jmclbench.tooling.report.ChartSpec.Kind;
+import org.jmclbench.tooling.report.ChartSpec.Scale;
+import org.jmclbench.tooling.report.ChartSpec.Series;
+import org.jmclbench.tooling.report.ChartSpec.Setting;
+import org.jmclbench.tooling.report.ChartSpec.Style;
+
+import com.fasterxml.jackson.annotation.JsonIgnore;
+
+/**
+ * The report's charts, each built once from the aggregated cells by one method here: the page
+ * draws these specifications and the export writes the same ones to SVG and PNG. A new chart is
+ * one builder method and one {@link Figure} line (its heading and caption).
+ */
+final class ChartSpecs {
+
+    /**
+     * A figure of the page: its heading, caption, whether it is drawn per particle count (else
+     * over the sweep of one policy) and the method that builds its chart.
+     */
+    record Figure(String id, String heading, String caption, boolean perSetting,
+                  @JsonIgnore Function<Scope, ChartSpec> builder) {
+    }
+
+    /** The page's figures, in page order. */
+    static final List<Figure> FIGURES = List.of(
+            new Figure("misses", "Deadline misses vs particles", "missCount per run (skipped + terminated jobs; late jobs "
+                    + "under queue), mean over repetitions with 95% CI error bars, per runtime. The thesis\u2019s histogram with errors.",
+                    false, ChartSpecs::misses),
+            new Figure("deviation", "Mean localisation deviation vs particles", "Mean Euclidean xy deviation of the estimate "
+                    + "from the ground truth (m), mean over repetitions with 95% CI error bars.", false, ChartSpecs::deviation),
+            new Figure("latency-jitter", "Average task latency and release jitter vs particles", "Mean over all jobs, then over "
+                    + "repetitions (ms), on a log particle axis. Solid: task latency (end \u2212 start); dashed: release jitter "
+                    + "(start \u2212 release).", false, ChartSpecs::latencyJitter),
+            new Figure("memory", "Memory areas: peak bytes per engine and memory style", "The memory-model experiment at a "
+                    + "glance: for each runtime, engine and memory style, the peak use of each memory area (bytes, log axis; the "
+                    + "largest over the repetitions); the table gives the peaks and the mean bytes one release allocated in the area "
+                    + "(heap: per job of the measured run). Java SE: the heap, a GC heap. SCJ: immortal and mission memory, and "
+                    + "each handler\u2019s private memory, whose peak is that of one release (0 under the axis: the release "
+                    + "allocated nothing, as the preallocated style promises); on a JVM these areas are budgets kept on its heap, "
+                    + "on the HVM real areas. Hover a bar for the area\u2019s size and the bytes allocated per release. The native "
+                    + "baseline reports no areas.", true, ChartSpecs::memory),
+            new Figure("causes", "Why deadlines were missed", "Jobs missed or late per run (mean over the attributed "
+                    + "repetitions), split by each job\u2019s largest cause (the primary cause of ./jmclbench explain): gc, "
+                    + "safepoint, jit, os, preemption, compute, queued, overlap, unknown. Runs without attribution evidence are "
+                    + "left out.", true, ChartSpecs::causes),
+            new Figure("latency-index", "Task latency vs event index", "Every job of the first repetition (down-sampled): "
+                    + "predict (odometry, every 50 ms) as dots, update (laser) as triangles. The thesis\u2019s XY points graph. "
+                    + "Shaded bands: the GC (red) and safepoint (violet) pauses of that repetition of the first runtime shown "
+                    + "that has some, placed on the event index through the jobs\u2019 release times.", true, ChartSpecs::latencyIndex),
+            new Figure("deviation-time", "Deviation over time, repeated runs", "Euclidean xy deviation (m) over the run, one "
+                    + "line per repetition (up to five) per runtime. The thesis\u2019s XY lines graph.", true, ChartSpecs::deviationTime),
+            new Figure("trajectory", "Estimated vs real trajectory", "On the playground (dashed frame, metres); black: ground "
+                    + "truth; triangles: the beacons; one estimate per runtime (first repetition).", true, ChartSpecs::trajectory),
+            new Figure("spectrum", "Task latency percentile spectrum", "HdrHistogram style: every job of every repetition "
+                    + "merged; x = 1/(1\u2212p) on a log axis (10 = 90%, 100 = 99%, 1000 = 99.9%), latency (ms) on a log axis.",
+                    true, ChartSpecs::spectrum),
+            new Figure("jitter-cdf", "CDF of release jitter", "Fraction of jobs released with at most the given jitter (ms, log "
+                    + "axis), every job of every repetition merged.", true, ChartSpecs::jitterCdf));
+
+    /**
+     * What one chart is built from: the model (runtime colours and order, playgrounds), where in
+     * the store the chart is, and the cells it shows.
+     */
+    record Scope(ReportModel model, Setting setting, List<ReportModel.Cell> cells) {
+
+        /** "dataset, policy[, N particles]", the end of every title. */
+        String where() {
+            return setting.dataset() + ", " + setting.policy() + (setting.particles() == null ? "" : ", " + setting.particles() + " particles");
+        }
+
+        /** The file name stem: names from the store reduced to safe file-name characters. */
+        String stem(String id) {
+            return safe(setting.dataset()) + "-" + safe(setting.policy())
+                    + (setting.particles() == null ? "" : "-" + setting.particles()) + "-" + id;
+        }
+
+        String color(String config) {
+            return model.configs.stream().filter(c -> c.id().equals(config)).map(ReportModel.ConfigInfo::color).findFirst()
+                    .orElse("#7f7f7f");
+        }
+
+        /** The cells in the order of the legend (the model's runtime order). */
+        List<ReportModel.Cell> ordered() {
+            List<String> ids = model.configs.stream().map(ReportModel.ConfigInfo::id).toList();
+            return cells.stream().sorted(Comparator.comparingInt((ReportModel.Cell c) -> ids.indexOf(c.config))
+                    .thenComparingInt(c -> c.particles)).toList();
+        }
+
+        /** The configurations of the cells, in legend order, each with the engine of its first cell. */
+        Map<String, String> configs() {
+            Map<String, String> out = new LinkedHashMap<>();
+            ordered().forEach(c -> out.putIfAbsent(c.config, c.engine));
+            return out;
+        }
+
+        ChartSpec spec(String id, String title, Kind kind, boolean horizontal, Axis x, Axis y, List<Category> categories,
+                       List<Series> series) {
+            return new ChartSpec(id, stem(id), setting, title + " (" + where() + ")", kind, horizontal, x, y, categories, series,
+                    List.of(), null, false);
+        }
+    }
+
+    private ChartSpecs() {
+    }
+
+    /** Every figure at every setting of the store that has runs: the page's charts and the exported files. */
+    static List<ChartSpec> all(ReportModel model) {
+        List<ChartSpec> out = new ArrayList<>();
+        for (String dataset : model.datasets) {
+            for (String policy : model.policies) {
+                List<ReportModel.Cell> cells = model.cells.stream()
+                        .filter(c -> c.dataset.equals(dataset) && c.policy.equals(policy)).toList();
+                if (cells.isEmpty()) {
+                    continue;
+                }
+                Scope sweep = new Scope(model, new Setting(dataset, policy, null), cells);
+                FIGURES.stream().filter(f -> !f.perSetting()).forEach(f -> out.add(f.builder().apply(sweep)));
+                for (Integer particles : model.particles) {
+                    List<ReportModel.Cell> at = cells.stream().filter(c -> c.particles == particles).toList();
+                    if (!at.isEmpty()) {
+                        Scope s = new Scope(model, new Setting(dataset, policy, particles), at);
+                        FIGURES.stream().filter(Figure::perSetting).forEach(f -> out.add(f.builder().apply(s)));
+                    }
+                }
+            }
+        }
+        return out;
+    }
+
+    static String safe(String s) {
+        String t = s.replaceAll("[^A-Za-z0-9._-]", "_");
+        return t.isEmpty() || t.startsWith(".") ? "_" + t : t;
+    }
+
+    // ---------------------------------------------------------------- over the particle sweep
+
+    static ChartSpec misses(Scope s) {
+        return vsParticles(s, "misses", "Deadline misses vs particles", "deadline misses per run (missCount, mean, 95% CI)",
+                Metric.MISS_COUNT);
+    }
+
+    static ChartSpec deviation(Scope s) {
+        return vsParticles(s, "deviation", "Mean deviation vs particles", "deviation xy (m, mean, 95% CI)", Metric.DEVIATION);
+    }
+
+    /** Bars per particle count, one per runtime, with the 95% interval cut at zero (a count or a distance is never negative). */
+    private static ChartSpec vsParticles(Scope s, String id, String title, String yLabel, Metric metric) {
+        List<Integer> counts = s.cells().stream().map(c -> c.particles).distinct().sorted().toList();
+        List<Series> series = new ArrayList<>();
+        s.configs().forEach((config, engine) -> {
+            List<Double> values = new ArrayList<>();
+            List<double[]> errors = new ArrayList<>();
+            for (int n : counts) {
+                ReportModel.Agg a = s.cells().stream().filter(c -> c.config.equals(config) && c.particles == n)
+                        .map(c -> c.metrics.get(metric.name())).findFirst().orElse(null);
+                boolean has = a != null && a.mean() != null;
+                values.add(has ? a.mean() : null);
+                errors.add(has && a.half() != null ? new double[] {Math.max(0, a.mean() - a.half()), a.mean() + a.half()} : null);
+            }
+            if (values.stream().anyMatch(v -> v != null)) {
+                series.add(new Series(config, config, engine, s.color(config), Style.BAR, null, values, errors, null, null));
+            }
+        });
+        return s.spec(id, title, Kind.BARS, false, Axis.linear("particles"), Axis.linear(yLabel).range(0.0, null),
+                counts.stream().map(n -> new Category(String.valueOf(n), null, null)).toList(), series);
+    }
+
+    static ChartSpec latencyJitter(Scope s) {
+        List<Series> series = new ArrayList<>();
+        Style solid = new Style(true, 1.5, null, false, "circle", 3, null);
+        s.configs().forEach((config, engine) -> {
+            List<ReportModel.Cell> mine = s.ordered().stream().filter(c -> c.config.equals(config)).toList();
+            addIfAny(series, new Series(config + " task latency", config, engine, s.color(config), solid,
+                    metricPoints(mine, Metric.LATENCY_MEAN), null, null, null, null));
+            addIfAny(series, new Series(config + " release jitter", config, engine, s.color(config), solid.dashed(6, 4),
+                    metricPoints(mine, Metric.JITTER_MEAN), null, null, null, null));
+        });
+        return s.spec("latency-jitter", "Average task latency and release jitter vs particles", Kind.LINES, false,
+                new Axis("particles (log)", Scale.LOG, Format.NUMBER, null, null),
+                Axis.linear("time (ms, mean over repetitions; dashed: release jitter)"), null, series);
+    }
+
+    private static List<double[]> metricPoints(List<ReportModel.Cell> cells, Metric m) {
+        return cells.stream().filter(c -> c.metrics.get(m.name()).mean() != null)
+                .map(c -> new double[] {c.particles, c.metrics.get(m.name()).mean()}).toList();
+    }
+
+    // ---------------------------------------------------------------- at one particle count
+
+    /**
+     * Grouped bars on a log axis: per row (runtime, engine, memory style), the peak bytes of each
+     * memory area; a peak of 0 is a value of 0 (no bar on a log axis, a mark under it).
+     */
+    static ChartSpec memory(Scope s) {
+        List<ReportModel.Cell> rows = s.ordered().stream().filter(c -> !c.memoryAreas.isEmpty()).toList();
+        List<String> names = new ArrayList<>();
+        rows.forEach(c -> c.memoryAreas.stream().map(ReportModel.MemoryArea::name).filter(n -> !names.contains(n)).forEach(names::add));
+        names.sort(Comparator.comparingInt(ReportModel::areaRank));
+        List<Series> series = new ArrayList<>();
+        int privateIndex = 0;
+        for (String n : names) {
+            List<Double> values = new ArrayList<>();
+            List<String> notes = new ArrayList<>();
+            for (ReportModel.Cell c : rows) {
+                ReportModel.MemoryArea a = c.memoryAreas.stream().filter(x -> x.name().equals(n)).findFirst().orElse(null);
+                values.add(a == null || a.peakBytes() == null ? null : a.peakBytes().doubleValue());
+                notes.add(a == null ? null : n + ": peak " + ChartFormats.bytes(a.peakBytes())
+                        + (a.size() == null ? "" : " of " + ChartFormats.bytes(a.size()))
+                        + (a.bytesPerRelease() == null ? "" : ", " + ChartFormats.bytes(a.bytesPerRelease()) + " per release"));
+            }
+            String color = Palette.area(n, Palette.AREA_COLORS.containsKey(n) ? 0 : privateIndex++);
+            series.add(new Series(n, null, null, color, Style.BAR, null, values, null, null, notes));
+        }
+        Axis y = rows.isEmpty() ? Axis.linear("peak bytes (no memory areas reported)")
+                : new Axis("peak bytes (log)", Scale.LOG, Format.BYTES, 1.0, null);
+        return s.spec("memory", "Peak bytes per memory area", Kind.BARS, false, Axis.linear("runtime / engine memory style"), y,
+                categories(rows), series);
+    }
+
+    /** Stacked bars across: per runtime, the jobs missed or late per run by primary cause, in the causes' fixed colours. */
+    static ChartSpec causes(Scope s) {
+        List<ReportModel.Cell> rows = s.ordered().stream().filter(c -> !c.causes.isEmpty()).toList();
+        List<String> kinds = new ArrayList<>(Palette.CAUSE_COLORS.keySet());
+        rows.stream().flatMap(c -> c.causes.keySet().stream()).filter(k -> !kinds.contains(k)).distinct().sorted().forEach(kinds::add);
+        List<Series> series = new ArrayList<>();
+        for (String k : kinds) {
+            if (rows.stream().anyMatch(c -> c.causes.containsKey(k))) {
+                List<Double> values = rows.stream().map(c -> c.causes.get(k)).toList();
+                series.add(new Series(k, null, null, Palette.CAUSE_COLORS.getOrDefault(k, Palette.color(series.size())),
+                        Style.BAR, null, values, null, null, null));
+            }
+        }
+        return s.spec("causes", "Why deadlines were missed", Kind.STACKED_BARS, true, Axis.linear("runtime/profile"),
+                Axis.linear("jobs missed or late per run, by primary cause (mean)").range(0.0, null), categories(rows), series);
+    }
+
+    /** Every job of the first repetition, predict as dots and update as hollow triangles, with the runs' pauses as bands. */
+    static ChartSpec latencyIndex(Scope s) {
+        List<Series> series = new ArrayList<>();
+        List<Band> bands = new ArrayList<>();
+        for (ReportModel.Cell c : s.ordered()) {
+            addIfAny(series, new Series(c.config + " predict", c.config, c.engine, s.color(c.config), Style.marks("circle", 2, null),
+                    c.latencyPredict, null, null, null, null));
+            addIfAny(series, new Series(c.config + " update", c.config, c.engine, s.color(c.config), Style.marks("triangle", 3, "none"),
+                    c.latencyUpdate, null, null, null, null));
+            for (int i = 0; i < c.pauses.size(); i++) {
+                String kind = c.pauseKinds.get(i);
+                bands.add(new Band(c.pauses.get(i)[0], c.pauses.get(i)[1], kind, Palette.bandColor(kind), c.config));
+            }
+        }
+        return s.spec("latency-index", "Task latency vs event index", Kind.LINES, false, Axis.linear("event index"),
+                Axis.linear("task latency (ms); dots: predict, triangles: update"), null, series).behind(bands, null);
+    }
+
+    static ChartSpec deviationTime(Scope s) {
+        List<Series> series = new ArrayList<>();
+        for (ReportModel.Cell c : s.ordered()) {
+            for (int i = 0; i < c.deviation.size(); i++) {
+                Style st = i == 0 ? Style.line(1.2) : Style.line(1.2).dashed(2 + i, 2); // the first repetition solid
+                addIfAny(series, new Series(c.config + " #" + c.deviationRepetitions.get(i), c.config, c.engine, s.color(c.config),
+                        st, c.deviation.get(i), null, null, null, null));
+            }
+        }
+        return s.spec("deviation-time", "Deviation over time, repeated runs", Kind.LINES, false, Axis.linear("time (s)"),
+                Axis.linear("deviation xy (m)"), null, series);
+    }
+
+    /** The ground truth, one estimate per runtime and the beacons, on the dataset's playground. */
+    static ChartSpec trajectory(Scope s) {
+        List<Series> series = new ArrayList<>();
+        s.ordered().stream().filter(c -> !c.real.isEmpty()).findFirst().ifPresent(c ->
+                series.add(new Series("real", null, null, "#000000", Style.line(2.5), c.real, null, null, null, null)));
+        for (ReportModel.Cell c : s.ordered()) {
+            addIfAny(series, new Series(c.config + " estimate", c.config, c.engine, s.color(c.config), Style.line(1.2), c.trajectory,
+                    null, null, null, null));
+        }
+        ReportModel.Playground pg = s.model().playgrounds.getOrDefault(s.setting().dataset(), ReportModel.Playground.thesis());
+        series.add(new Series("beacons", null, null, "#000000", Style.marks("triangle", 9, "#ffd400"), pg.beacons(), null, null,
+                null, null));
+        double m = 0.15;
+        return s.spec("trajectory", "Estimated vs real trajectory", Kind.LINES, false,
+                Axis.linear("x (m)").range(-m, pg.width() + m), Axis.linear("y (m)").range(-m, pg.height() + m), null, series)
+                .behind(List.of(), new ChartSpec.Frame(pg.width(), pg.height()));
+    }
+
+    static ChartSpec spectrum(Scope s) {
+        List<Series> series = new ArrayList<>();
+        for (ReportModel.Cell c : s.ordered()) {
+            List<double[]> pts = c.latencySpectrum.stream().map(p -> new double[] {p[0], Math.max(p[1], 1e-4)}).toList();
+            addIfAny(series, new Series(c.config, c.config, c.engine, s.color(c.config), Style.line(1.5), pts, null, null, null, null));
+        }
+        return s.spec("spectrum", "Task latency by percentile, all jobs of all repetitions", Kind.LINES, false,
+                new Axis("percentile (log scale of 1/(1\u2212p))", Scale.LOG, Format.PERCENTILE, 1.0, null),
+                new Axis("task latency (ms, log)", Scale.LOG, Format.NUMBER, null, null), null, series);
+    }
+
+    static ChartSpec jitterCdf(Scope s) {
+        List<Series> series = new ArrayList<>();
+        for (ReportModel.Cell c : s.ordered()) {
+            addIfAny(series, new Series(c.config, c.config, c.engine, s.color(c.config), Style.line(1.5).steps(), c.jitterCdf, null,
+                    null, null, null));
+        }
+        return s.spec("jitter-cdf", "CDF of release jitter", Kind.LINES, false,
+                new Axis("release jitter (ms, log)", Scale.LOG, Format.NUMBER, null, null),
+                Axis.linear("fraction of jobs").range(0.0, 1.0), null, series);
+    }
+
+    /**
+     * Bars across, one per runtime in its colour: the largest particle count it sustained with no
+     * miss, written at the bar's end (0 where even the smallest count missed). The evaluation's.
+     */
+    static ChartSpec sustained(Scope s, String id, String title, Map<String, Integer> loads) {
+        List<String> configs = new ArrayList<>(loads.keySet());
+        Series bars = new Series("particles", null, null, "#7f7f7f", Style.BAR, null,
+                configs.stream().map(c -> (Double) loads.get(c).doubleValue()).toList(), null,
+                configs.stream().map(s::color).toList(), null);
+        List<Category> categories = configs.stream().map(c -> new Category(c, c, s.configs().get(c))).toList();
+        return new ChartSpec(id, id, s.setting(), title, Kind.BARS, true, Axis.linear("runtime / engine memory style"),
+                Axis.linear("largest particle count with no miss"), categories, List.of(bars), List.of(), null, true);
+    }
+
+    private static List<Category> categories(List<ReportModel.Cell> rows) {
+        return rows.stream().map(c -> new Category(c.config, c.config, c.engine)).toList();
+    }
+
+    private static void addIfAny(List<Series> series, Series s) {
+        if (s.points() != null && !s.points().isEmpty()) {
+            series.add(s);
+        }
+    }
+}

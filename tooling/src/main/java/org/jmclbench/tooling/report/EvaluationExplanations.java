@@ -1,0 +1,265 @@
+package org.jmclbench.tooling.report;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Objects;
+import java.util.TreeSet;
+import java.util.stream.Collectors;
+
+import com.fasterxml.jackson.databind.JsonNode;
+
+import static org.jmclbench.tooling.report.EvaluationData.*;
+
+/**
+ * The evaluation's sections that explain the results (2.6-2.10): the memory model, the overrun
+ * policies, the collectors, the causes of the misses and what the verification proves. Part of
+ * {@link EvaluationDocument}, writing into the same text.
+ */
+final class EvaluationExplanations extends EvaluationSections {
+
+    EvaluationExplanations(EvaluationSections document) {
+        super(document);
+    }
+
+    void memoryModel() throws IOException {
+        line("### 2.6 The memory-model experiment (Table 6, Figure 4)");
+        line("");
+        // runtimes that ran more than one engine/memory style combination at the same count
+        Map<String, List<ReportModel.Cell>> byRuntime = new LinkedHashMap<>();
+        for (ReportModel.Cell c : data.sweep()) {
+            if (c.ok > 0) {
+                byRuntime.computeIfAbsent(data.info(c).runtime() + "/" + data.info(c).profile() + "@" + c.particles, k -> new ArrayList<>()).add(c);
+            }
+        }
+        List<ReportModel.Cell> exp = new ArrayList<>();
+        for (List<ReportModel.Cell> group : byRuntime.values()) {
+            long styles = group.stream().map(c -> c.engine + " " + c.memory).distinct().count();
+            boolean hasOther = group.stream().anyMatch(c -> "allocating".equals(c.memory) || "scoped".equals(c.memory));
+            if (styles > 1 && hasOther) {
+                exp.addAll(group);
+            }
+        }
+        if (exp.isEmpty()) {
+            line("The store has no runtime that ran the allocating or scoped style beside another style at the same particle count, "
+                    + "so the memory-model experiment is not in it.");
+            line("");
+            return;
+        }
+        exp = data.order(exp);
+        List<List<String>> rows = new ArrayList<>();
+        for (ReportModel.Cell c : exp) {
+            String areas = c.memoryAreas.stream().map(a -> a.name() + " " + bytes(a.peakBytes())
+                    + (a.bytesPerRelease() == null ? "" : " (" + bytes(a.bytesPerRelease() == null ? null : Math.round(a.bytesPerRelease()))
+                    + "/release)")).collect(Collectors.joining("; "));
+            rows.add(List.of(c.config, String.valueOf(c.particles), agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATENCY_MEAN, 3),
+                    agg(c, Metric.LATENCY_P99, 3), areas.isEmpty() ? "not reported" : areas));
+        }
+        line("Table 6: heap with GC (javase allocating) against everything preallocated (javase preallocated: heap, no allocation "
+                + "per job; scj preallocated: immortal and mission memory) against per-release scoped memory (scj scoped), same "
+                + "runtime and particle count, policy skip: misses per run, task latency (ms), and per memory area its peak use "
+                + "and bytes allocated per release.");
+        line("");
+        table(List.of("configuration", "particles", "misses", "latency mean", "latency p99", "memory areas: peak (allocated per release)"), rows);
+        // The figure's count: the one with the most configurations reporting their areas (so HotSpot
+        // and the HVM side by side where both ran), the heavier on a tie.
+        List<ReportModel.Cell> finalExp = exp;
+        int shown = exp.stream().map(c -> c.particles).distinct()
+                .max(Comparator.comparingLong((Integer n) -> finalExp.stream()
+                        .filter(c -> c.particles == n && !c.memoryAreas.isEmpty()).count()).thenComparing(n -> n))
+                .orElseThrow();
+        List<ReportModel.Cell> fig = exp.stream().filter(c -> c.particles == shown).toList();
+        figure("memory-" + shown, "Figure 4: peak bytes per memory area, " + shown + " particles (log scale).",
+                () -> charts.write(ChartSpecs.memory(scope(shown, fig)).withStem("memory-" + shown)));
+        ReportModel.Cell best = fig.stream().filter(c -> mean(c, Metric.LATENCY_P99) != null)
+                .min(Comparator.comparingDouble(c -> mean(c, Metric.LATENCY_P99))).orElse(null);
+        if (best != null) {
+            ReportModel.Cell worst = fig.stream().filter(c -> mean(c, Metric.LATENCY_P99) != null)
+                    .max(Comparator.comparingDouble(c -> mean(c, Metric.LATENCY_P99))).orElseThrow();
+            line(String.format(Locale.ROOT, "At %d particles the lowest p99 task latency of the memory styles is **%s**'s, %s ms, "
+                    + "with %s misses per run; the highest is **%s**'s, %s ms (Table 6). %s", shown, best.config,
+                    agg(best, Metric.LATENCY_P99, 3), agg(best, Metric.MISS_COUNT, 1), worst.config, agg(worst, Metric.LATENCY_P99, 3),
+                    separation(best, worst, Metric.LATENCY_P99)));
+            line("");
+            findings.add(String.format(Locale.ROOT, "Memory model at %d particles: lowest p99 latency with %s (%s ms) (2.6).", shown,
+                    best.config, num(mean(best, Metric.LATENCY_P99), 3)));
+        }
+    }
+
+    void policies() throws IOException {
+        line("### 2.7 Overrun policies: skip, terminate, queue (Table 7)");
+        line("");
+        List<ReportModel.Cell> cs = data.cells(c -> c.ok > 0);
+        Map<String, List<ReportModel.Cell>> byConfigCount = new LinkedHashMap<>();
+        cs.forEach(c -> byConfigCount.computeIfAbsent(c.config + "@" + c.particles, k -> new ArrayList<>()).add(c));
+        List<ReportModel.Cell> rowsCells = byConfigCount.values().stream().filter(g -> g.stream().map(c -> c.policy).distinct().count() > 1)
+                .flatMap(List::stream).toList();
+        if (rowsCells.isEmpty()) {
+            line("The store has no configuration that ran more than one policy at the same particle count.");
+            line("");
+            return;
+        }
+        List<List<String>> rows = new ArrayList<>();
+        for (ReportModel.Cell c : data.order(rowsCells)) {
+            rows.add(List.of(c.config, String.valueOf(c.particles), c.policy, agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATE, 1),
+                    agg(c, Metric.LATENCY_MEAN, 3), agg(c, Metric.DEVIATION, 3)));
+        }
+        line("Table 7: per configuration and particle count, each policy: misses and late jobs per run, task latency (ms) and "
+                + "mean localization deviation (m): what a policy saves in time it may cost in accuracy.");
+        line("");
+        table(List.of("configuration", "particles", "policy", "misses", "late", "latency mean", "deviation"), rows);
+    }
+
+    void collectors() throws IOException {
+        line("### 2.8 Garbage collectors on one JVM (Table 8)");
+        line("");
+        Map<String, List<ReportModel.Cell>> byRuntime = new LinkedHashMap<>();
+        data.sweep().stream().filter(c -> c.ok > 0 && !data.isNative(c))
+                .forEach(c -> byRuntime.computeIfAbsent(data.info(c).runtime() + " " + c.engine + " " + c.memory + "@" + c.particles,
+                        k -> new ArrayList<>()).add(c));
+        List<ReportModel.Cell> gc = byRuntime.values().stream().filter(g -> g.stream().map(c -> data.info(c).profile()).distinct().count() > 2)
+                .flatMap(List::stream).toList();
+        if (gc.isEmpty()) {
+            line("The store has no JVM that ran several collectors (profiles) at the same particle count.");
+            line("");
+            return;
+        }
+        List<List<String>> rows = new ArrayList<>();
+        for (ReportModel.Cell c : data.order(gc)) {
+            rows.add(List.of(c.config, String.valueOf(c.particles), agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATENCY_P99, 3),
+                    agg(c, Metric.LATENCY_MAX, 3), agg(c, Metric.JITTER_P99, 3)));
+        }
+        line("Table 8: one JVM with each collector (profile), policy skip: misses per run, task latency p99 and max, release "
+                + "jitter p99 (ms).");
+        line("");
+        table(List.of("configuration", "particles", "misses", "latency p99", "latency max", "jitter p99"), rows);
+    }
+
+    void attribution() throws IOException {
+        line("### 2.9 Why deadlines were missed (Table 9, Figure 5)");
+        line("");
+        List<ReportModel.Cell> missed = data.sweep().stream().filter(c -> c.ok > 0 && !c.causes.isEmpty()
+                && c.causes.values().stream().anyMatch(v -> v > 0)).toList();
+        if (missed.isEmpty()) {
+            line("No run in the store has attributed misses or late jobs (either nothing was missed, or the runs carry no "
+                    + "attribution rows).");
+            line("");
+            return;
+        }
+        int count = missed.stream().mapToInt(c -> c.particles).max().orElseThrow();
+        List<ReportModel.Cell> at = data.order(missed.stream().filter(c -> c.particles == count).toList());
+        List<String> kinds = at.stream().flatMap(c -> c.causes.keySet().stream()).distinct().sorted().toList();
+        List<String> header = new ArrayList<>(List.of("configuration"));
+        header.addAll(kinds);
+        List<List<String>> rows = new ArrayList<>();
+        for (ReportModel.Cell c : at) {
+            List<String> row = new ArrayList<>(List.of(c.config));
+            kinds.forEach(k -> row.add(c.causes.containsKey(k) ? num(c.causes.get(k), 1) : ""));
+            rows.add(row);
+        }
+        line(String.format(Locale.ROOT, "Table 9: at %d particles (policy skip), the missed or late jobs per run by primary cause, "
+                + "from the runtime's own events (JFR, GC log) aligned with the job records (docs/RUNNER.md, \"Why a deadline was "
+                + "missed\"); mean over the attributed repetitions.", count));
+        line("");
+        table(header, rows);
+        figure("causes-skip-" + count, "Figure 5: missed or late jobs per run by primary cause, " + count + " particles.",
+                () -> charts.write(ChartSpecs.causes(scope(count, at)).withStem("causes-skip-" + count)));
+        line("The largest primary cause per configuration (Table 9):");
+        line("");
+        Map<String, Integer> dominant = new LinkedHashMap<>();
+        for (ReportModel.Cell c : at) {
+            Map.Entry<String, Double> top = c.causes.entrySet().stream().max(Map.Entry.comparingByValue()).orElseThrow();
+            double total = c.causes.values().stream().mapToDouble(Double::doubleValue).sum();
+            line(String.format(Locale.ROOT, "- %s: %s of %s attributed jobs per run were %s.", c.config, num(top.getValue(), 1),
+                    num(total, 1), top.getKey()));
+            dominant.merge(top.getKey(), 1, Integer::sum);
+        }
+        line("");
+        if (at.stream().anyMatch(c -> "scj".equals(c.engine))) {
+            line("The scj engine's jobs carry no CPU time (SCJ has no per-thread CPU clock; the job records say -1), so "
+                    + "the attribution cannot name *compute* for them: a job of theirs that ran long shows as the *overlap* "
+                    + "of the release it delayed. Compare the scj and javase rows by their totals, not by cause.");
+            line("");
+        }
+        lightestCauses(missed, count);
+        findings.add(String.format(Locale.ROOT, "Why deadlines were missed at %d particles, the largest cause per configuration: %s (2.9).",
+                count, dominant.entrySet().stream().map(e -> e.getKey() + " for " + e.getValue() + " of " + at.size())
+                        .collect(Collectors.joining(", "))));
+    }
+
+    /**
+     * The misses at the lightest attributed count, where no job computes for anything near its
+     * deadline: under skip they are events dropped because the other task's job held the robot.
+     */
+    void lightestCauses(List<ReportModel.Cell> missed, int heaviest) {
+        int lightest = missed.stream().mapToInt(c -> c.particles).min().orElseThrow();
+        if (lightest == heaviest) {
+            return;
+        }
+        Map<String, Double> sum = new java.util.TreeMap<>();
+        missed.stream().filter(c -> c.particles == lightest)
+                .forEach(c -> c.causes.forEach((k, v) -> sum.merge(k, v, Double::sum)));
+        double total = sum.values().stream().mapToDouble(Double::doubleValue).sum();
+        line(String.format(Locale.ROOT, "At %d particles, the lightest load with a miss, the attributed jobs per run summed over "
+                + "the configurations were %s (%s in all). Under skip a miss is also an event dropped because the other task's "
+                + "job held the robot at its release (*overlap*: released while that job, running normally, had not yet ended), "
+                + "so a light load is not free of misses, on C either.", lightest,
+                sum.entrySet().stream().map(e -> e.getKey() + " " + num(e.getValue(), 1)).collect(Collectors.joining(", ")),
+                num(total, 1)));
+        line("");
+    }
+
+    void verification() throws IOException {
+        line("### 2.10 What the verification proves (Table 10)");
+        line("");
+        if (verification == null) {
+            line("**No data.** `" + verificationFile + "` does not exist: the model checking (`verification/`, Java PathFinder) "
+                    + "was not run before this document was written, so no property is claimed here.");
+            line("");
+            findings.add("Verification: no results file (2.10).");
+            return;
+        }
+        // The format ./jmclbench verify writes (verification/VerifyMain): schema 1, one row per check.
+        List<List<String>> rows = new ArrayList<>();
+        long missionStates = 0;
+        int properties = 0;
+        int held = 0;
+        int seeded = 0;
+        int caught = 0;
+        for (JsonNode c : verification.path("checks")) {
+            boolean isSeeded = c.path("seeded").asBoolean();
+            boolean passed = c.path("passed").asBoolean();
+            boolean mission = c.path("catalog").asText().equals("mission");
+            String role = isSeeded ? "seeded bug" : mission ? "mission" : "toy program";
+            if (isSeeded) {
+                seeded++;
+                caught += passed ? 1 : 0;
+            } else if (mission) {
+                properties++;
+                held += passed ? 1 : 0;
+                missionStates += c.path("states").asLong(0);
+            }
+            String scope = c.path("kind").asText().equals("static") ? "all bytecode of the release classes"
+                    : first(c, "scope");
+            rows.add(List.of(c.path("id").asText(), role, first(c, "property"), first(c, "policy"), scope,
+                    first(c, "verdict"), first(c, "states").isEmpty() ? "-" : first(c, "states"), first(c, "seconds")));
+        }
+        line("Table 10: the checks of `./jmclbench verify` (from `" + verificationFile + "`, finished "
+                + first(verification, "finished") + "). *mission*: a property of the real scj-mission on rtsj-compat "
+                + "(Java PathFinder on the inputs in *scope*, or ASM on the bytecode); *seeded bug*: a mutant the "
+                + "same check must report (a check that passes is one that caught it); *toy program*: the properties "
+                + "on a small SCJ-like program, where every property has its seeded bug.");
+        line("");
+        table(List.of("check", "role", "property", "policy", "scope", "verdict", "states", "s"), rows);
+        line(String.format(Locale.ROOT, "On the real mission %d of %d checks hold, over %d states; %d of %d seeded bugs "
+                + "were caught (Table 10). Model checking covers the tiny inputs in its scope column, not the "
+                + "benchmark's datasets.", held, properties, missionStates, caught, seeded));
+        line("");
+        findings.add(String.format(Locale.ROOT, "Verification: %d of %d mission checks hold over %d states, %d of %d seeded "
+                + "bugs caught (2.10).", held, properties, missionStates, caught, seeded));
+    }
+}

@@ -1,0 +1,93 @@
+package org.jmclbench.tooling.report;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Collectors;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+/**
+ * What the evaluation's section writers share: the numbers ({@link EvaluationData}), the
+ * Markdown text being written, its figures and the findings the conclusions repeat. The text
+ * lives here, the numbers in {@link EvaluationData}.
+ */
+abstract class EvaluationSections {
+    final EvaluationData data;
+    final ReportModel model;
+    final JsonNode verification;
+    final Path verificationFile;
+    private final String figureLink;
+    final ChartExporter charts;
+    private final StringBuilder md;
+    /** One line per claim, with its section, repeated by the conclusions. */
+    final List<String> findings;
+
+    EvaluationSections(EvaluationData data, Path document, Path figures, Path verificationFile) throws IOException {
+        this.data = data;
+        this.model = data.model;
+        Path base = document.toAbsolutePath().getParent();
+        this.figureLink = base.relativize(figures.toAbsolutePath()).toString().replace('\\', '/');
+        this.charts = new ChartExporter(figures);
+        this.verificationFile = verificationFile;
+        this.verification = verificationFile != null && Files.isRegularFile(verificationFile)
+                ? new ObjectMapper().readTree(verificationFile.toFile()) : null;
+        this.md = new StringBuilder();
+        this.findings = new ArrayList<>();
+    }
+
+    /** Another writer of the same document: the same text, figures and findings. */
+    EvaluationSections(EvaluationSections document) {
+        this.data = document.data;
+        this.model = document.model;
+        this.verification = document.verification;
+        this.verificationFile = document.verificationFile;
+        this.figureLink = document.figureLink;
+        this.charts = document.charts;
+        this.md = document.md;
+        this.findings = document.findings;
+    }
+
+    /** The Markdown written so far. */
+    String text() {
+        return md.toString();
+    }
+
+    interface ChartJob {
+        void run() throws IOException;
+    }
+
+    void figure(String stem, String caption, ChartJob job) throws IOException {
+        job.run();
+        line("![" + caption + "](" + (figureLink.isEmpty() ? "" : figureLink + "/") + stem + ".svg)");
+        line("");
+        line("*" + caption + "*");
+        line("");
+    }
+
+    /** What a figure is drawn from: cells of the dataset under skip, at one particle count or (null) over the sweep. */
+    ChartSpecs.Scope scope(Integer particles, List<ReportModel.Cell> cells) {
+        return new ChartSpecs.Scope(model, new ChartSpec.Setting(data.dataset, "skip", particles), cells);
+    }
+
+    void table(List<String> header, List<List<String>> rows) {
+        line("| " + header.stream().map(EvaluationSections::escape).collect(Collectors.joining(" | ")) + " |");
+        line("|" + " --- |".repeat(header.size()));
+        for (List<String> r : rows) {
+            line("| " + r.stream().map(EvaluationSections::escape).collect(Collectors.joining(" | ")) + " |");
+        }
+        line("");
+    }
+
+    /** Table cells come from the store (runtime names, versions): a pipe or markup must not break the table. */
+    static String escape(String v) {
+        return v.replace("\\", "\\\\").replace("|", "\\|").replace("<", "&lt;").replace(">", "&gt;").replace("\n", " ");
+    }
+
+    void line(String s) {
+        md.append(s).append('\n');
+    }
+}

@@ -1,0 +1,89 @@
+package org.jmclbench.tooling.report;
+
+import org.jmclbench.tooling.runtime.RuntimeKind;
+
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * The report's colours, one place for the page, the exported charts and the evaluation's figures:
+ * one colour per runtime row (runtime, profile, engine, memory style, machine), fixed colours for
+ * the causes of a miss and for the memory areas.
+ */
+final class Palette {
+
+    /**
+     * Twenty colours that stay apart on white (Tableau 10, then ten darker or more saturated ones);
+     * past twenty, hues at the golden angle, so that no two rows of a store share a colour.
+     */
+    static final List<String> RUNTIME_COLORS = List.of("#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b",
+            "#e377c2", "#17becf", "#bcbd22", "#7f7f7f", "#393b79", "#637939", "#f0027f", "#00a087", "#843c39", "#a6761d",
+            "#5e3c99", "#1b9e77", "#7b4173", "#e6ab02");
+
+    /** Cause kinds of docs/FORMATS.md 5, VM causes first, in a stable order and colour across settings. */
+    static final Map<String, String> CAUSE_COLORS = orderedMap("gc", "#d62728", "safepoint", "#9467bd", "jit", "#ff7f0e",
+            "deopt", "#ffbb78", "classload", "#e7ba52", "lock", "#393b79", "os", "#8c564b", "preemption", "#e377c2",
+            "compute", "#1f77b4", "queued", "#17becf", "overlap", "#bcbd22", "unknown", "#7f7f7f");
+
+    /** Memory areas: the heap, then SCJ's from the longest-lived; the handlers' private memories take {@link #PRIVATE_COLORS}. */
+    static final Map<String, String> AREA_COLORS = orderedMap("heap", "#7f7f7f", "immortal", "#393b79", "mission", "#2ca02c");
+    static final List<String> PRIVATE_COLORS = List.of("#ff7f0e", "#e377c2", "#17becf", "#bcbd22", "#8c564b", "#9467bd");
+
+    /** A pause band: its kind's cause colour, see-through. */
+    static String bandColor(String kind) {
+        String c = CAUSE_COLORS.getOrDefault(kind, "#7f7f7f");
+        return String.format(Locale.ROOT, "rgba(%d, %d, %d, 0.16)", Integer.parseInt(c.substring(1, 3), 16),
+                Integer.parseInt(c.substring(3, 5), 16), Integer.parseInt(c.substring(5, 7), 16));
+    }
+
+    private Palette() {
+    }
+
+    /**
+     * A colour per configuration, in a fixed order (the C baseline, the JVMs, the HVM; then by name),
+     * so that a row keeps its colour in every chart of a store, on the page and in the files.
+     */
+    static Map<String, String> runtimes(Map<String, RuntimeKind> configs) {
+        Map<String, String> out = new LinkedHashMap<>();
+        List<String> ordered = configs.keySet().stream().sorted(Comparator.comparing((String id) -> rank(configs.get(id)))
+                .thenComparing(Comparator.naturalOrder())).toList();
+        for (int i = 0; i < ordered.size(); i++) {
+            out.put(ordered.get(i), color(i));
+        }
+        return out;
+    }
+
+    private static int rank(RuntimeKind kind) {
+        return switch (kind) {
+            case NATIVE -> 0;
+            case JVM -> 1;
+            case HVM -> 2;
+        };
+    }
+
+    /** The i-th colour of a store's rows. */
+    static String color(int i) {
+        if (i < RUNTIME_COLORS.size()) {
+            return RUNTIME_COLORS.get(i);
+        }
+        float hue = (float) (((i - RUNTIME_COLORS.size()) * 0.381966) % 1.0); // golden angle: each new hue far from the last
+        return String.format(Locale.ROOT, "#%06x", java.awt.Color.HSBtoRGB(hue, 0.75f, 0.7f) & 0xffffff);
+    }
+
+    /** The colour of the i-th private memory area of a chart. */
+    static String area(String name, int privateIndex) {
+        String c = AREA_COLORS.get(name);
+        return c != null ? c : PRIVATE_COLORS.get(privateIndex % PRIVATE_COLORS.size());
+    }
+
+    private static Map<String, String> orderedMap(String... kv) {
+        Map<String, String> m = new LinkedHashMap<>();
+        for (int i = 0; i < kv.length; i += 2) {
+            m.put(kv[i], kv[i + 1]);
+        }
+        return java.util.Collections.unmodifiableMap(m);
+    }
+}

@@ -1,0 +1,187 @@
+package org.jmclbench.tooling.report;
+
+import org.jmclbench.tooling.runtime.RuntimeKind;
+import org.jmclbench.tooling.store.StoredRuns;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.stream.Collectors;
+import java.util.stream.IntStream;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.MissingNode;
+
+/**
+ * The chart specifications built from a fixture store: what each chart holds, one colour per
+ * runtime in every chart, file names, and the runtime kinds; then both renderers' inputs.
+ */
+class ChartSpecsTest {
+
+    @TempDir
+    static Path dir;
+    static ReportModel model;
+
+    @BeforeAll
+    static void build() throws Exception {
+        Path db = ReportFixtures.write(ReportFixtures.mixed(), dir, "results.db");
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
+            model = ReportModel.build(store, line -> { });
+        }
+    }
+
+    static ChartSpec chart(String id, String policy, Integer particles) {
+        return model.charts.stream().filter(c -> c.id().equals(id) && c.setting().policy().equals(policy)
+                && java.util.Objects.equals(c.setting().particles(), particles)).findFirst().orElseThrow();
+    }
+
+    static ReportModel.Cell cell(String config, String policy, int particles) {
+        return model.cells.stream().filter(c -> c.config.equals(config) && c.policy.equals(policy) && c.particles == particles)
+                .findFirst().orElseThrow();
+    }
+
+    @Test
+    void everyFigureIsBuiltAtEverySettingWithItsFileName() {
+        // 2 policies x (3 sweep charts + 3 counts x 7 charts at one count)
+        assertEquals(2 * (3 + 3 * 7), model.charts.size());
+        assertEquals(model.charts.size(), model.charts.stream().map(ChartSpec::stem).distinct().count(), "one file per chart");
+        assertEquals("match-short-skip-misses", chart("misses", "skip", null).stem());
+        assertEquals("match-short-terminate-1600-spectrum", chart("spectrum", "terminate", 1600).stem());
+        assertEquals("a_b_c", ChartSpecs.safe("a/b c"));
+        assertEquals("_.x", ChartSpecs.safe(".x"), "never a hidden file");
+        assertTrue(chart("latency-index", "skip", 400).title().endsWith("(match-short, skip, 400 particles)"));
+    }
+
+    @Test
+    void missesAreTheCellsMeansWithTheirIntervalCutAtZero() {
+        ChartSpec misses = chart("misses", "skip", null);
+        assertEquals(List.of("100", "400", "1600"), misses.categories().stream().map(ChartSpec.Category::label).toList());
+        assertEquals(4, misses.series().size(), "the runtimes with completed runs");
+        for (ChartSpec.Series s : misses.series()) {
+            for (int i = 0; i < 3; i++) {
+                ReportModel.Agg a = cell(s.config(), "skip", List.of(100, 400, 1600).get(i)).metrics.get("MISS_COUNT");
+                assertEquals(a.mean(), s.values().get(i));
+                double[] e = s.errors().get(i);
+                assertEquals(Math.max(0, a.mean() - a.half()), e[0], 1e-12);
+                assertEquals(a.mean() + a.half(), e[1], 1e-12);
+            }
+        }
+        assertEquals(0.0, misses.y().min());
+    }
+
+    @Test
+    void aRuntimeKeepsItsColourInEveryChartAndNoTwoShareOne() {
+        Map<String, String> colours = new LinkedHashMap<>();
+        model.configs.forEach(c -> colours.put(c.id(), c.color()));
+        assertEquals(colours.size(), new HashSet<>(colours.values()).size(), "distinct colours: " + colours);
+        int checked = 0;
+        for (ChartSpec c : model.charts) {
+            for (ChartSpec.Series s : c.series()) {
+                if (s.config() != null) {
+                    assertEquals(colours.get(s.config()), s.color(), s.name() + " in " + c.stem());
+                    checked++;
+                }
+            }
+        }
+        assertTrue(checked > 100, "series checked: " + checked);
+        assertEquals(Palette.RUNTIME_COLORS.get(0), colours.get("native"), "the C baseline first");
+    }
+
+    @Test
+    void paletteIsDeterministicAndDistinctPastTwenty() {
+        Map<String, RuntimeKind> kinds = new LinkedHashMap<>();
+        IntStream.range(0, 30).forEach(i -> kinds.put("jvm-" + i, RuntimeKind.JVM));
+        kinds.put("native", RuntimeKind.NATIVE);
+        kinds.put("hvm / scj scoped", RuntimeKind.HVM);
+        Map<String, String> a = Palette.runtimes(kinds);
+        Map<String, RuntimeKind> reversed = new LinkedHashMap<>();
+        List<String> keys = new java.util.ArrayList<>(kinds.keySet());
+        java.util.Collections.reverse(keys);
+        keys.forEach(k -> reversed.put(k, kinds.get(k)));
+        assertEquals(a, Palette.runtimes(reversed), "the store's order does not matter");
+        assertEquals(a.size(), new HashSet<>(a.values()).size());
+        assertNotEquals(a.get("native"), a.get("hvm / scj scoped"));
+    }
+
+    @Test
+    void causesAndMemoryHaveOneCategoryPerRuntimeAndFixedColours() {
+        ChartSpec causes = chart("causes", "skip", 400);
+        assertEquals(ChartSpec.Kind.STACKED_BARS, causes.kind());
+        assertEquals(Set.copyOf(FixtureDb.CAUSES_JAVA), causes.series().stream().map(ChartSpec.Series::name).collect(Collectors.toSet()));
+        causes.series().forEach(s -> assertEquals(Palette.CAUSE_COLORS.get(s.name()), s.color()));
+        int gc = causes.series().stream().map(ChartSpec.Series::name).toList().indexOf("gc");
+        int nat = causes.categories().stream().map(ChartSpec.Category::label).toList().indexOf("native");
+        assertNull(causes.series().get(gc).values().get(nat), "native has no GC: no segment, not a zero cause");
+
+        ChartSpec memory = chart("memory", "skip", 400);
+        assertEquals(List.of("heap"), memory.series().stream().map(ChartSpec.Series::name).toList());
+        assertEquals(ChartSpec.Scale.LOG, memory.y().scale());
+        assertTrue(memory.series().get(0).notes().get(0).startsWith("heap: peak "), memory.series().get(0).notes().toString());
+    }
+
+    @Test
+    void latencyIndexCarriesThePausesOfEachRuntime() {
+        ChartSpec li = chart("latency-index", "skip", 400);
+        assertEquals(2 * 4, li.series().size(), "predict and update per runtime");
+        assertTrue(li.series().stream().filter(s -> s.name().endsWith(" update")).allMatch(s -> "none".equals(s.style().fill())));
+        assertFalse(li.bands().isEmpty());
+        assertTrue(li.bands().stream().allMatch(b -> b.config() != null && b.from() <= b.to() && b.color().startsWith("rgba(")));
+        ChartSpec trajectory = chart("trajectory", "skip", 400);
+        assertEquals("real", trajectory.series().get(0).name());
+        assertEquals("beacons", trajectory.series().get(trajectory.series().size() - 1).name());
+        assertEquals(3.0, trajectory.frame().width());
+    }
+
+    @Test
+    void theExporterDrawsEachKindOfSpecification() throws Exception {
+        ChartExporter exporter = new ChartExporter(dir.resolve("charts"));
+        for (String id : List.of("misses", "causes", "spectrum", "jitter-cdf", "memory", "trajectory")) {
+            boolean sweep = List.of("misses").contains(id);
+            ChartSpec spec = chart(id, "skip", sweep ? null : 400);
+            exporter.write(spec);
+            String svg = Files.readString(dir.resolve("charts/" + spec.stem() + ".svg"));
+            assertTrue(svg.contains(spec.title().replace("<", "&lt;").replace(">", "&gt;")), spec.stem());
+            for (ChartSpec.Series s : spec.series()) {
+                if (!(spec.series().size() == 1 && s.colors() != null)) {
+                    assertTrue(svg.contains(">" + s.name().replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;") + "<"),
+                            "legend entry " + s.name() + " in " + spec.stem());
+                }
+            }
+            assertTrue(Files.size(dir.resolve("charts/" + spec.stem() + ".png")) > 1000);
+        }
+        ChartSpec sustained = ChartSpecs.sustained(new ChartSpecs.Scope(model, new ChartSpec.Setting("match-short", "skip", null),
+                model.cells), "sustained", "Largest load", Map.of("native", 400));
+        exporter.write(sustained);
+        assertTrue(Files.readString(dir.resolve("charts/sustained.svg")).contains(">400<"), "the value at the bar's end");
+    }
+
+    @Test
+    void theRuntimeKindIsDecidedFromTheStoredFacts() throws Exception {
+        ObjectMapper json = new ObjectMapper();
+        var none = MissingNode.getInstance();
+        assertEquals(RuntimeKind.NATIVE, RuntimeKind.of("native", "native", none));
+        assertEquals(RuntimeKind.NATIVE, RuntimeKind.of("gcc-build", "javase",
+                json.readTree("{\"environment\": {\"runtime\": {\"language\": \"c\"}}}")));
+        assertEquals(RuntimeKind.HVM, RuntimeKind.of("hvm", "scj", none));
+        assertEquals(RuntimeKind.HVM, RuntimeKind.of("hvm-aot", "scj", none));
+        assertEquals(RuntimeKind.HVM, RuntimeKind.of("icecap", "hvm", none));
+        assertEquals(RuntimeKind.HVM, RuntimeKind.of("icecap", "scj", json.readTree("{\"engine\": {\"kind\": \"hvm\"},"
+                + " \"environment\": {\"runtime\": {\"language\": \"c\"}}}")), "compiled C, but not the baseline");
+        assertEquals(RuntimeKind.JVM, RuntimeKind.of("temurin-25", "scj", none));
+        assertEquals(RuntimeKind.JVM, RuntimeKind.of("hvmish", "javase", none));
+        assertEquals(RuntimeKind.NATIVE, model.configs.stream().filter(c -> c.id().equals("native")).findFirst().orElseThrow().kind());
+    }
+}

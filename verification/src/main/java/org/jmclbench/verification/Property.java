@@ -1,0 +1,28 @@
+package org.jmclbench.verification;
+
+/**
+ * The properties verify proves of the SCJ mission (the product specification's verification
+ * section), each with its one wording. Checks, seeded bugs, the table and the JSON name a
+ * property by its constant; the program under check reports a violated one by its constant too
+ * ({@link org.jmclbench.verification.mission.PropertyFailure}).
+ */
+public enum Property {
+    P1("no deadlock"),
+    P2("no data race"),
+    P3("an aborted job leaves the robot bit-identical"),
+    P4("an abort request is honoured within the poll interval"),
+    P5("every event ends exactly once"),
+    P6("the SCJ memory rules hold");
+
+    /** The property in words. */
+    public final String wording;
+
+    Property(String wording) {
+        this.wording = wording;
+    }
+
+    /** "P3 an aborted job leaves the robot bit-identical". */
+    public String label() {
+        return name() + " " + wording;
+    }
+}

@@ -1,0 +1,67 @@
+package org.jmclbench.verification.mission;
+
+import org.jmclbench.rtsjcompat.ScjThread;
+import org.jmclbench.rtsjcompat.TimeSource;
+import org.jmclbench.rtsjcompat.VirtualTimeSource;
+import org.jmclbench.verification.Property;
+
+/**
+ * rtsj-compat's virtual time with a horizon: a thread that would sleep past it fails with P5
+ * (the mission is still running when every event should long have ended). A mission that
+ * never ends then is a short counterexample on one search path, not a search that runs until
+ * the check's wall-clock budget is gone. The failure names the gate, which ends the mission.
+ */
+public final class HorizonTimeSource extends TimeSource {
+    private final VirtualTimeSource time = new VirtualTimeSource(0L);
+    private final long horizonNs;
+    private final PropertyFailure hang = new PropertyFailure(Property.P5,
+            "the mission still runs at the virtual-time horizon: an event never ended");
+    private final CheckedConfiguration mission;
+
+    /** {@code mission}: the configuration whose gate (made when the mission starts) is blamed. */
+    public HorizonTimeSource(long horizonNs, CheckedConfiguration mission) {
+        this.horizonNs = horizonNs;
+        this.mission = mission;
+    }
+
+    @Override
+    public String name() {
+        return "virtual, horizon " + horizonNs + " ns";
+    }
+
+    @Override
+    public long nanoTime() {
+        return time.nanoTime();
+    }
+
+    @Override
+    public boolean sleepUntil(ScjThread self, long deadline) {
+        hang.unless(deadline <= horizonNs, mission.gate(), "ended");
+        return time.sleepUntil(self, deadline);
+    }
+
+    @Override
+    public void wake(ScjThread thread) {
+        time.wake(thread);
+    }
+
+    @Override
+    public void threadStarted() {
+        time.threadStarted();
+    }
+
+    @Override
+    public void threadEnded() {
+        time.threadEnded();
+    }
+
+    @Override
+    public void enterIdle() {
+        time.enterIdle();
+    }
+
+    @Override
+    public void leaveIdle() {
+        time.leaveIdle();
+    }
+}

@@ -112,12 +112,8 @@ public final class EvaluateCommand implements Callable<Integer> {
                 }
             }
         }
-        Path store = Path.of(db);
-        if (!java.nio.file.Files.isRegularFile(store)) {
-            System.err.println("jmclbench: --db: " + store + ": no such results store");
-            return 2;
-        }
-        EvaluationDocument.write(store, document, out, m.cuts, verification);
+        // a missing or damaged store is refused where it is opened (exit 2, the file named)
+        EvaluationDocument.write(Path.of(db), document, out, m.cuts, verification);
         o.println("wrote " + document + " and its figures in " + out);
         return 0;
     }

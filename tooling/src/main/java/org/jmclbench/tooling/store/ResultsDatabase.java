@@ -231,8 +231,20 @@ public final class ResultsDatabase implements AutoCloseable {
             s.execute("PRAGMA user_version = " + Schema.VERSION);
             c.commit();
         } catch (SQLException e) {
-            c.rollback();
+            rollBack(c, e);
             throw e;
+        }
+    }
+
+    /**
+     * Rolls back the transaction that {@code cause} ended. On a full disk SQLite has already rolled it back
+     * itself, and rolling back again fails ("no transaction is active"): that failure must not hide the cause.
+     */
+    static void rollBack(Connection c, Exception cause) {
+        try {
+            c.rollback();
+        } catch (SQLException e) {
+            cause.addSuppressed(e);
         }
     }
 

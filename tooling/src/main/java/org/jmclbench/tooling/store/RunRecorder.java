@@ -123,7 +123,7 @@ public final class RunRecorder implements AutoCloseable {
             work.run();
             conn.commit();
         } catch (SQLException | RuntimeException e) {
-            conn.rollback();
+            ResultsDatabase.rollBack(conn, e);
             throw e;
         }
     }

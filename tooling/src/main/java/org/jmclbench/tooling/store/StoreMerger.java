@@ -99,7 +99,7 @@ public final class StoreMerger {
                 conn.commit();
                 return new Outcome(take.size(), total - take.size());
             } catch (SQLException | IOException e) {
-                conn.rollback();
+                ResultsDatabase.rollBack(conn, e);
                 throw e;
             } finally {
                 conn.setAutoCommit(true);

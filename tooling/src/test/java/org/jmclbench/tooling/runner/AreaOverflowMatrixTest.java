@@ -20,7 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * An SCJ memory area that overflows, through the matrix on a real JVM (the scj engine of the test's
  * class path): the run is recorded failed with the area named, no summary kept, and the matrix goes on.
- * The HVM's overflow is named the same way (HvmFailureTest, HvmRunTest in the workload).
+ * The HVM's overflow is named the same way (HvmFailureTest, HvmRunTest in hvm/launcher).
  */
 class AreaOverflowMatrixTest {
 

@@ -18,9 +18,11 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
 
 import org.jmclbench.tooling.Fixtures;
 import org.sqlite.util.OSInfo;
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -104,6 +106,39 @@ class DiskFullTest {
         assertEquals(6, after.size());
         assertEquals("6", single(db, "SELECT count(DISTINCT policy || particles) FROM runs"), "no run twice");
         before.forEach((k, v) -> assertEquals(v, after.get(k), k + ": a run recorded before the disk filled was redone"));
+    }
+
+    @Test
+    void aStoreOnAFilesystemThatFillsStopsTheMatrixWithTheCause() throws Exception {
+        // a real full disk (ENOSPC): a small tmpfs in a mount namespace of its own, where root may make one
+        Assumptions.assumeTrue(execute(List.of("unshare", "-m", "bash", "-c", "mount -t tmpfs -o size=64k tmpfs "
+                + dir), "can-mount").exitCode() == 0, "no mount namespace here (needs root): the file-size limit stands in");
+        Fixtures.home(dir);
+        String[] matrix = {"matrix", "--java", Fixtures.fakeJava(dir, "a", "ok", 0, null, 21).toString(),
+                "--policies", "skip,terminate", "--particles", "100,200,300", "--datasets", "tiny", "--order-seed", "3",
+                "--db", "DB"};
+        matrix[matrix.length - 1] = dir.resolve("full/results.db").toString();
+        assertEquals(0, execute(Fixtures.childCli(dir, matrix), "unlimited").exitCode());
+        long used;
+        try (Stream<Path> s = Files.walk(dir.resolve("full"))) {
+            used = s.filter(Files::isRegularFile).mapToLong(p -> p.toFile().length()).sum();
+        }
+        Path mnt = Files.createDirectories(dir.resolve("mnt"));
+        Path copy = Files.createDirectories(dir.resolve("copy"));
+        matrix[matrix.length - 1] = mnt.resolve("results.db").toString();
+        // the store and its run folders on a disk of half what they need; what the disk held is copied out at the end
+        List<String> cmd = new ArrayList<>(List.of("unshare", "-m", "bash", "-c", "mount -t tmpfs -o size=" + used / 2 / 1024
+                + "k tmpfs '" + mnt + "' || exit 9; \"$@\"; rc=$?; cp -a '" + mnt + "/.' '" + copy + "/'; exit $rc", "full-disk"));
+        cmd.addAll(Fixtures.childCli(dir, matrix));
+        Ended e = execute(cmd, "full-disk");
+        assertEquals(1, e.exitCode(), e.out() + e.err());
+        String last = e.err().strip().lines().reduce((a, b) -> b).orElse("");
+        assertTrue(last.startsWith("jmclbench: matrix: --db: " + mnt.resolve("results.db") + ": cannot record "), e.err());
+        assertTrue(last.contains("full"), "the cause, SQLite's 'database or disk is full', not a failed rollback: " + last);
+        Path db = copy.resolve("results.db");
+        assertEquals("ok", single(db, "PRAGMA integrity_check"));
+        int recorded = startedAt(db).size();
+        assertTrue(recorded < 6, recorded + " runs recorded on half the room they need");
     }
 
     @Test

@@ -19,8 +19,9 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * A results database that was truncated (a copy cut short, a full disk) or corrupted (a page overwritten)
- * is refused by every command that opens one, to read, to write or to merge: one line naming the file,
- * exit code 2, and the file's bytes as they were (no repair, no migration, no new rows).
+ * is refused by every command that opens one, to read (report, compare, evaluate's document), to write
+ * or to merge: one line naming the file, exit code 2, and the file's bytes as they were (no repair, no
+ * migration, no new rows).
  */
 class DamagedDatabaseTest {
 
@@ -96,6 +97,10 @@ class DamagedDatabaseTest {
             assertRefused(db, "merge", good.toString(), db.toString(), "--into", into.toString());
             assertFalse(Files.exists(into), d.name() + ": the target is not created when a source is refused");
             assertRefused(db, "merge", good.toString(), "--into", db.toString());
+            Path evaluation = Files.writeString(folder.resolve("evaluation.txt"), "datasets = tiny\n[a]\nruntimes = native\n");
+            assertRefused(db, "evaluate", "--no-run", "--matrix", evaluation.toString(), "--db", db.toString(),
+                    "--out", folder.resolve("doc/evaluation").toString());
+            assertFalse(Files.exists(folder.resolve("doc")), d.name() + ": no document from a damaged store");
         }
     }
 

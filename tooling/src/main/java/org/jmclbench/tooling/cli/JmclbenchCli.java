@@ -7,6 +7,7 @@ import org.jmclbench.tooling.doctor.DoctorCommand;
 import org.jmclbench.tooling.generator.GenerateCommand;
 import org.jmclbench.tooling.report.CompareCommand;
 import org.jmclbench.tooling.report.ReportCommand;
+import org.jmclbench.tooling.runner.CapacityCommand;
 import org.jmclbench.tooling.runner.EvaluateCommand;
 import org.jmclbench.tooling.runner.MatrixCommand;
 import org.jmclbench.tooling.runner.QuickCommand;
@@ -25,7 +26,7 @@ import picocli.CommandLine.Command;
         description = "Real-time Java benchmark: Monte-Carlo Localization replayed on its real timeline.",
         footer = {"", "One test on the current JVM: ./jmclbench run --help",
                 "Exit codes: 0 success, 2 bad usage or bad input, 1 a failure of the benchmark."},
-        subcommands = {GenerateCommand.class, QuickCommand.class, MatrixCommand.class,
+        subcommands = {GenerateCommand.class, QuickCommand.class, MatrixCommand.class, CapacityCommand.class,
                 JvmsCommand.class, JvmCommand.class, DoctorCommand.class, ReportCommand.class, EvaluateCommand.class,
                 CompareCommand.class, MergeCommand.class, ExplainCommand.class})
 public final class JmclbenchCli implements Callable<Integer> {

@@ -113,14 +113,14 @@ public final class MatrixCommand implements Callable<Integer> {
         return spec;
     }
 
-    private static void list(MatrixSpec spec, String key, List<String> values) {
+    static void list(MatrixSpec spec, String key, List<String> values) {
         if (!values.isEmpty()) {
             MatrixOptions.clear(spec, key);
             values.forEach(v -> MatrixOptions.apply(spec, key, v, "--" + key));
         }
     }
 
-    private static void one(MatrixSpec spec, String key, String value) {
+    static void one(MatrixSpec spec, String key, String value) {
         if (value != null) {
             MatrixOptions.apply(spec, key, value, "--" + key);
         }

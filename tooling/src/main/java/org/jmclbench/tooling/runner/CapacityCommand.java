@@ -1,0 +1,179 @@
+package org.jmclbench.tooling.runner;
+
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.UUID;
+import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
+
+import org.jmclbench.tooling.doctor.Doctor;
+import org.jmclbench.tooling.runtime.JmclbenchPaths;
+import org.jmclbench.tooling.runtime.ProfileProbe;
+import org.jmclbench.tooling.runtime.RuntimeDiscovery;
+import org.jmclbench.tooling.store.MachineInfo;
+import org.jmclbench.tooling.store.RunRecorder;
+import org.jmclbench.tooling.store.StoredRun;
+import org.jmclbench.tooling.store.StoredRuns;
+
+import com.fasterxml.jackson.databind.JsonNode;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * The breakdown load of each configuration (issue: metrics that answer the real-time question):
+ * the largest particle count at which every job of both tasks completes by its deadline under
+ * {@code queue} in every repetition, and the smallest at which one does not, found by
+ * {@link CapacitySearch}. Every probe is a matrix cell run into the store like any other (so the
+ * search resumes, and the report reads the same runs); the bracket is printed with its ratio to
+ * the C baseline's when {@code native} is searched too.
+ */
+@Command(name = "capacity", mixinStandardHelpOptions = true, sortOptions = false,
+        description = {"Finds each configuration's breakdown load: the largest particle count at which every job of both",
+                "tasks completes by its deadline under the queue policy in every repetition, and the smallest at which",
+                "one does not, by a geometric then bisecting search to within 10%. Every probe is a run in the store;",
+                "rerunning the same command resumes. Exit 0 when every search ended, 2 for bad input."},
+        footer = {"", "Example: capacity --runtimes native,temurin-25 --engines javase,scj --repeat 3 --from 100 --max 102400"})
+public final class CapacityCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec commandSpec;
+
+    @Option(names = "--runtimes", paramLabel = "LIST", description = "runtime names as for matrix (default: all found)")
+    List<String> runtimes = new ArrayList<>();
+    @Option(names = "--java", paramLabel = "PATH", description = "a JVM by path, repeatable")
+    List<String> javas = new ArrayList<>();
+    @Option(names = "--profiles", paramLabel = "LIST", description = "profiles as for matrix (default: default)")
+    List<String> profiles = new ArrayList<>();
+    @Option(names = "--engines", paramLabel = "LIST", description = "javase, scj (default: javase)")
+    List<String> engines = new ArrayList<>();
+    @Option(names = "--memory", paramLabel = "LIST", description = "memory styles (default: preallocated)")
+    List<String> memory = new ArrayList<>();
+    @Option(names = "--datasets", paramLabel = "NAME", description = "one dataset (default: match-short)")
+    String dataset;
+    @Option(names = "--repeat", paramLabel = "N", description = "repetitions of each probe; one late job in any fails the count (default: 3)")
+    String repeat = "3";
+    @Option(names = "--from", paramLabel = "N", description = "the first particle count probed (default: 100)")
+    int from = 100;
+    @Option(names = "--max", paramLabel = "N", description = "the largest particle count probed (default: 102400)")
+    int max = 102_400;
+    @Option(names = "--time-scale", paramLabel = "F", description = "the workload's --time-scale (default: 1.0)")
+    String timeScale;
+    @Option(names = "--timeout", paramLabel = "S", description = "timeout of one run in seconds (default as for matrix)")
+    String timeout;
+    @Option(names = "--db", paramLabel = "FILE", description = "results database (default: results/results.db)")
+    String db;
+    @Option(names = "--native", paramLabel = "PATH", description = "the native baseline binary (default: native/build/jmclbench-native)")
+    String nativeBinary;
+
+    /** One configuration under search: runtime, profile, engine and memory style. */
+    record Configuration(String runtime, String profile, String engine, String memory) {
+        static Configuration of(PlannedRun r) {
+            return new Configuration(r.runtime().name(), r.profile().name(), r.engine(), r.memory());
+        }
+
+        String label() {
+            return runtime + ("default".equals(profile) ? "" : "/" + profile) + " " + engine + " " + memory;
+        }
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        if (from < 1 || max < from) {
+            throw new org.jmclbench.tooling.cli.BadUsageException("--from/--max: need 1 <= from <= max, got " + from + " and " + max);
+        }
+        PrintStream out = System.out;
+        Path home = JmclbenchPaths.home();
+        MachineInfo machine = MachineInfo.current();
+        ResolvedMatrix all = MatrixPlanner.resolve(spec(from), RuntimeDiscovery::discover, home, machine);
+        List<Configuration> configurations = all.plan().stream().map(Configuration::of).distinct().toList();
+        Map<Configuration, CapacitySearch> searches = new LinkedHashMap<>();
+        configurations.forEach(c -> searches.put(c, new CapacitySearch(from, max)));
+        String command = "jmclbench capacity " + String.join(" ", commandSpec.commandLine().getParseResult().originalArgs());
+        try (RunRecorder store = RunRecorder.open(all.db(), "--db")) {
+            store.saveMachine(machine, Doctor.toJson(Doctor.system().run()));
+            for (Map.Entry<Configuration, CapacitySearch> e : searches.entrySet()) {
+                Configuration c = e.getKey();
+                CapacitySearch search = e.getValue();
+                for (int n = search.next(); n > 0; n = search.next()) {
+                    ResolvedMatrix m = MatrixPlanner.resolve(spec(n), RuntimeDiscovery::discover, home, machine);
+                    String matrixId = UUID.randomUUID().toString();
+                    store.saveMatrix(matrixId, machine.machineId(), command, m.orderSeed(), Instant.now().toString(),
+                            MatrixSession.specJson(m));
+                    MatrixRunner runner = new MatrixRunner(m, store, machine, matrixId, home, JmclbenchPaths.workloadJar(),
+                            ProfileProbe.withUserCache());
+                    List<PlannedRun> mine = m.plan().stream().filter(r -> Configuration.of(r).equals(c)).toList();
+                    Set<String> keys = mine.stream().map(PlannedRun::runKey).collect(Collectors.toSet());
+                    runner.run(runner.remaining(false).stream().filter(r -> keys.contains(r.runKey())).toList(),
+                            Progress.forConsole(out));
+                    boolean held = held(all.db(), keys);
+                    search.record(n, held);
+                    out.printf(Locale.ROOT, "capacity: %s at %d particles: %s%n", c.label(), n,
+                            held ? "every job by its deadline" : "a job late, dropped or failed");
+                }
+            }
+        }
+        print(out, searches);
+        return 0;
+    }
+
+    /** Whether every run of these keys completed and no job of it missed its deadline. */
+    static boolean held(Path db, Set<String> runKeys) {
+        try (StoredRuns stored = StoredRuns.open(db, "--db")) {
+            List<StoredRun> runs = stored.runs().stream().filter(r -> runKeys.contains(r.runKey)).toList();
+            return runs.size() == runKeys.size() && runs.stream().allMatch(r -> r.ok() && deadlineMisses(r.summary()) == 0);
+        }
+    }
+
+    /** tasks.all.deadlineMisses, or late + skipped + terminated from a summary written before that field. */
+    static long deadlineMisses(JsonNode summary) {
+        JsonNode all = summary.path("tasks").path("all");
+        if (all.has("deadlineMisses")) {
+            return all.get("deadlineMisses").asLong();
+        }
+        return all.path("late").asLong(1) + all.path("skipped").asLong() + all.path("terminated").asLong();
+    }
+
+    private static void print(PrintStream out, Map<Configuration, CapacitySearch> searches) {
+        Integer nativeLow = searches.entrySet().stream().filter(e -> e.getKey().runtime().equals("native"))
+                .map(e -> e.getValue().low()).filter(v -> v != null).findFirst().orElse(null);
+        out.println("breakdown load (queue; every job of both tasks by its deadline in every repetition):");
+        out.printf(Locale.ROOT, "  %-40s %10s %10s %-14s %s%n", "configuration", "holds at", "fails at", "search", "vs C");
+        for (Map.Entry<Configuration, CapacitySearch> e : searches.entrySet()) {
+            CapacitySearch s = e.getValue();
+            String ratio = nativeLow == null || s.low() == null ? "" : String.format(Locale.ROOT, "%.2fx", (double) s.low() / nativeLow);
+            out.printf(Locale.ROOT, "  %-40s %10s %10s %-14s %s%n", e.getKey().label(), s.low() == null ? "none" : s.low(),
+                    s.high() == null ? "none" : s.high(), s.status().label, ratio);
+        }
+    }
+
+    /** The matrix of one probe: every configuration at {@code particles}, under queue. */
+    private MatrixSpec spec(int particles) {
+        MatrixSpec spec = new MatrixSpec();
+        MatrixCommand.list(spec, "runtimes", runtimes);
+        MatrixCommand.list(spec, "java", javas);
+        MatrixCommand.list(spec, "profiles", profiles);
+        MatrixCommand.list(spec, "engines", engines);
+        MatrixCommand.list(spec, "memory", memory);
+        MatrixCommand.list(spec, "policies", List.of("queue"));
+        MatrixCommand.list(spec, "particles", List.of(String.valueOf(particles)));
+        if (dataset != null) {
+            MatrixCommand.list(spec, "datasets", List.of(dataset));
+        }
+        MatrixCommand.one(spec, "repeat", repeat);
+        MatrixCommand.one(spec, "time-scale", timeScale);
+        MatrixCommand.one(spec, "timeout", timeout);
+        MatrixCommand.one(spec, "db", db);
+        MatrixCommand.one(spec, "native", nativeBinary);
+        return spec;
+    }
+}

@@ -1,0 +1,71 @@
+package org.jmclbench.tooling.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.jmclbench.tooling.Fixtures;
+import org.jmclbench.tooling.store.StoredRuns;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The capacity command end to end on fake runtimes whose jobs start missing deadlines at a known
+ * particle count: the search brackets that count to within 10%, records every probe as queue runs
+ * in the store, and gives the ratio to the C baseline.
+ */
+class CapacityCommandTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void bracketsEachBreakdownLoadAndRecordsEveryProbe() throws Exception {
+        Fixtures.home(dir);
+        String jvm = Fixtures.fakeJava(dir, "a", "breaks-at-1000", 0, null, 17).toString();
+        String nativeBaseline = Fixtures.fakeJava(dir, "c", "breaks-at-2000", 0, null, 17).toString();
+        Path db = dir.resolve("results/results.db");
+        Fixtures.CliResult r = Fixtures.cli("capacity", "--java", jvm, "--runtimes", "native", "--native", nativeBaseline,
+                "--datasets", "tiny", "--repeat", "2", "--from", "100", "--max", "12800", "--db", db.toString());
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+
+        // native: 100..1600 hold, 3200 fails, then 2263 fails, 1903 holds, 2075 fails: [1903, 2075]
+        Matcher c = row("native").matcher(r.out());
+        assertTrue(c.find(), r.out());
+        assertEquals("1903", c.group(1));
+        assertEquals("2075", c.group(2));
+        assertEquals("bracketed", c.group(3));
+        // the JVM breaks at 1000: [951, 1037], half of C's load
+        Matcher a = row("fake-17").matcher(r.out());
+        assertTrue(a.find(), r.out());
+        int low = Integer.parseInt(a.group(1));
+        int high = Integer.parseInt(a.group(2));
+        assertTrue(low < 1000 && high >= 1000 && high <= low * 1.1, low + " " + high);
+        assertEquals(String.format(java.util.Locale.ROOT, "%.2fx", low / 1903.0), a.group(4));
+
+        try (StoredRuns stored = StoredRuns.open(db, "--db")) {
+            assertTrue(stored.runs().stream().allMatch(x -> x.policy.equals("queue")));
+            // each probe's two repetitions, once: a rerun finds them all done
+            long nativeRuns = stored.runs().stream().filter(x -> x.runtime.equals("native")).count();
+            assertEquals(2 * 9, nativeRuns, "9 probes of native, 2 repetitions each");
+        }
+        Fixtures.CliResult again = Fixtures.cli("capacity", "--java", jvm, "--runtimes", "native", "--native", nativeBaseline,
+                "--datasets", "tiny", "--repeat", "2", "--from", "100", "--max", "12800", "--db", db.toString());
+        assertEquals(0, again.exitCode(), again.err());
+        assertTrue(again.out().contains("1903"), again.out());
+    }
+
+    @Test
+    void aBadRangeIsOneLineAndExitTwo() {
+        Fixtures.CliResult r = Fixtures.cli("capacity", "--from", "500", "--max", "100");
+        assertEquals(2, r.exitCode());
+        assertEquals("jmclbench: --from/--max: need 1 <= from <= max, got 500 and 100", r.err().strip());
+    }
+
+    private static Pattern row(String runtime) {
+        return Pattern.compile("(?m)^  " + Pattern.quote(runtime) + "\\S* [^\\n]*?\\s(\\d+|none)\\s+(\\d+|none)\\s+(\\S+)\\s*(\\S*)$");
+    }
+}

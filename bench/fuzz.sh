@@ -7,7 +7,7 @@
 # exits 1: keep it as a regression input (the target's kept-inputs folder, printed) and fix.
 #
 # usage: bench/fuzz.sh [--runs N | --seconds S] [--work DIR] [--no-build] [TARGET...]
-#   TARGET: c-dataset c-options java-events java-properties java-options java-matrix (all)
+#   TARGET: c-dataset c-options java-events java-properties java-options java-matrix java-hvm-result (all)
 #   bench/fuzz.sh --seconds 5          the short run of CI (scripts/test-all.sh)
 #   bench/fuzz.sh --runs 1000000       the long run whose counts docs/RELIABILITY.md gives
 set -euo pipefail
@@ -27,11 +27,11 @@ while [ $# -gt 0 ]; do
         --work) work=$(readlink -f "$2"); shift 2 ;;
         --no-build) build=0; shift ;;
         -h|--help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        c-dataset|c-options|java-events|java-properties|java-options|java-matrix) targets+=("$1"); shift ;;
+        c-dataset|c-options|java-events|java-properties|java-options|java-matrix|java-hvm-result) targets+=("$1"); shift ;;
         *) echo "fuzz: $1: unknown target or option (see --help)" >&2; exit 2 ;;
     esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(c-dataset c-options java-events java-properties java-options java-matrix)
+[ ${#targets[@]} -gt 0 ] || targets=(c-dataset c-options java-events java-properties java-options java-matrix java-hvm-result)
 
 java17=/usr/lib/jvm/java-17-openjdk-amd64
 if [ -z "${JAVA_HOME:-}" ] && [ -d "$java17" ]; then export JAVA_HOME=$java17; fi
@@ -42,7 +42,7 @@ if [ "$build" = 1 ]; then
     command -v clang >/dev/null || { echo "fuzz: clang is needed (apt-get install clang; scripts/install-deps.sh)" >&2; exit 1; }
     make -s -C "$home/native" fuzz build/dataset_dump >&2
     # the test classes and their class path, for Jazzer's own driver (one JVM per target)
-    (cd "$home" && mvn -q -B -ntp -pl workload,tooling -am test-compile dependency:build-classpath \
+    (cd "$home" && mvn -q -B -ntp -pl workload,hvm/launcher,tooling -am test-compile dependency:build-classpath \
         -Dmdep.outputFile=target/fuzz-classpath.txt -Dmdep.includeScope=test >&2)
 fi
 
@@ -74,6 +74,7 @@ kept_of() {
         java-properties) echo "$wres/data/DatasetFuzzTestInputs/properties" ;;
         java-options) echo "$wres/RunOptionsFuzzTestInputs/commandLine" ;;
         java-matrix) echo "$tres/MatrixFileFuzzTestInputs/matrixFile" ;;
+        java-hvm-result) echo "$home/hvm/launcher/src/test/resources/org/jmclbench/hvm/launcher/HvmResultFileFuzzTestInputs/resultFile" ;;
     esac
 }
 
@@ -107,6 +108,7 @@ for t in "${targets[@]}"; do
         java-properties) jazzer workload org.jmclbench.workload.data.DatasetFuzzTest properties "${flags[@]}" "$corpus" "$kept" "${extra[@]}" >"$log" 2>&1 ;;
         java-options) jazzer workload org.jmclbench.workload.RunOptionsFuzzTest commandLine "${flags[@]}" "$corpus" "$kept" >"$log" 2>&1 ;;
         java-matrix) jazzer tooling org.jmclbench.tooling.runner.MatrixFileFuzzTest matrixFile "${flags[@]}" "$corpus" "$kept" >"$log" 2>&1 ;;
+        java-hvm-result) jazzer hvm/launcher org.jmclbench.hvm.launcher.HvmResultFileFuzzTest resultFile "${flags[@]}" "$corpus" "$kept" >"$log" 2>&1 ;;
     esac
     code=$?
     set -e

@@ -2,9 +2,7 @@ package org.jmclbench.hvm.launcher;
 
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
-import java.io.DataInputStream;
 import java.io.DataOutputStream;
-import java.io.EOFException;
 import java.io.File;
 import java.io.FileInputStream;
 import java.io.FileOutputStream;
@@ -49,6 +47,8 @@ public final class HvmRun {
     static final long TIMEOUT_FACTOR = 4;
     /** Beyond the replay itself: start-up and write-out (the executable is built before). */
     static final long TIMEOUT_MARGIN_S = 120;
+    /** Sets another margin (seconds): a slower machine may need more, a test of a hang less. */
+    static final String TIMEOUT_MARGIN_PROPERTY = "jmclbench.hvm.marginS";
     // icecap's message when an area cannot hold an allocation: "out of memory: 0x<area size>, 0x<bytes>"
     private static final Pattern OUT_OF_MEMORY = Pattern.compile("out of memory: 0x([0-9A-Fa-f]+), 0x([0-9A-Fa-f]+)");
 
@@ -68,7 +68,8 @@ public final class HvmRun {
             File out = new File(work, "result.bin");
             File log = new File(runFolder, "hvm.log");
             writeInput(in, options, config, dataset);
-            long timeoutS = (long) Math.ceil(TIMEOUT_FACTOR * dataset.duration() * options.timeScale) + TIMEOUT_MARGIN_S;
+            long timeoutS = (long) Math.ceil(TIMEOUT_FACTOR * dataset.duration() * options.timeScale)
+                    + Long.getLong(TIMEOUT_MARGIN_PROPERTY, TIMEOUT_MARGIN_S);
             ProcessBuilder pb = new ProcessBuilder(exe.getPath());
             pb.environment().put("JMCLBENCH_HVM_INPUT", in.getPath());
             pb.environment().put("JMCLBENCH_HVM_OUTPUT", out.getPath());
@@ -215,58 +216,11 @@ public final class HvmRun {
         }
     }
 
-    /**
-     * The result file: the job records, as HvmOutput writes them (docs/HVM.md), and into peaks
-     * each area's use as the executable measured it (-1: not measurable on icecap).
-     */
+    /** The result file's records (docs/HVM.md), checked by {@link HvmResultFile}; each area's use into peaks. */
     static JobRecords readRecords(File f, Dataset d, boolean covariance, long[] peaks) throws RunFailure, IOException {
-        JobRecords r = new JobRecords(d.timeline(), covariance);
         try (InputStream is = new BufferedInputStream(new FileInputStream(f))) {
-            LittleEndianIn in = new LittleEndianIn(is);
-            if (in.word() != MissionRunFile.OUTPUT_MAGIC || in.word() != MissionRunFile.VERSION) {
-                throw new RunFailure("the HVM's result file is not a jmclbench result: " + f);
-            }
-            int n = (int) in.word();
-            boolean cov = in.word() != 0;
-            if (n != r.size() || cov != covariance) {
-                throw new RunFailure("the HVM returned " + n + " events, expected " + r.size());
-            }
-            for (long[] a : new long[][] {r.releaseNs, r.startNs, r.endNs, r.deadlineNs, r.wakeNs}) {
-                for (int k = 0; k < n; k++) {
-                    a[k] = in.word();
-                }
-            }
-            for (int k = 0; k < n; k++) {
-                r.outcome[k] = (byte) in.word();
-                r.cpuNs[k] = -1; // SCJ has no per-thread CPU clock
-            }
-            for (double[] a : new double[][] {r.estX, r.estY, r.estTheta}) {
-                for (int k = 0; k < n; k++) {
-                    a[k] = in.real();
-                }
-            }
-            if (cov) {
-                for (int i = 0; i < r.cov.length; i++) {
-                    r.cov[i] = in.real();
-                }
-            }
-            double x = in.real();
-            double y = in.real();
-            double theta = in.real();
-            r.setInitialEstimate(x, y, theta);
-            r.durationNs = in.word();
-            for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
-                peaks[a] = in.word();
-            }
-        } catch (EOFException e) {
-            throw new RunFailure("the HVM's result file is truncated: " + f);
+            return HvmResultFile.read(is, f.getPath(), d.timeline(), covariance, peaks);
         }
-        for (int k = 0; k < r.size(); k++) {
-            if (r.outcome[k] == JobRecords.PENDING) {
-                throw new RunFailure("event " + k + " never ended on the HVM (the mission terminated early)");
-            }
-        }
-        return r;
     }
 
     private static String lastLines(String s, int n) {
@@ -311,23 +265,6 @@ public final class HvmRun {
 
         void real(double v) throws IOException {
             word(Double.doubleToRawLongBits(v));
-        }
-    }
-
-    /** Reads what {@link LittleEndian} writes. */
-    static final class LittleEndianIn {
-        private final DataInputStream in;
-
-        LittleEndianIn(InputStream is) {
-            in = new DataInputStream(is);
-        }
-
-        long word() throws IOException {
-            return Long.reverseBytes(in.readLong());
-        }
-
-        double real() throws IOException {
-            return Double.longBitsToDouble(word());
         }
     }
 }

@@ -21,7 +21,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * An HVM executable that crashes, or reports an SCJ memory area full, is that run's failure: exit 1,
+ * An HVM executable that crashes, hangs, or reports an SCJ memory area full, is that run's failure: exit 1,
  * one line (the area named), no summary.json. A stand-in for hvm/build-mission.sh hands the run an
  * executable that does so, so these need no HVM tool chain (HvmRunTest overflows a real one).
  */
@@ -83,6 +83,23 @@ class HvmFailureTest {
         homeWithExecutable("kill -SEGV $$");
         assertEquals(1, run(), err());
         assertTrue(err().startsWith("jmclbench: failure: the HVM executable failed (exit status 139)"), err());
+        assertEquals(1, err().trim().split("\n").length, err());
+        assertNothingRecorded();
+    }
+
+    @Test
+    void aHangingExecutableIsKilledAndTheRunsFailure() throws Exception {
+        homeWithExecutable("exec sleep 60");
+        System.setProperty(HvmRun.TIMEOUT_MARGIN_PROPERTY, "1");
+        try {
+            long started = System.nanoTime();
+            assertEquals(1, run("--time-scale", "0.01"), err());
+            assertTrue(System.nanoTime() - started < 50e9, "killed at its timeout, not waited for");
+        } finally {
+            System.clearProperty(HvmRun.TIMEOUT_MARGIN_PROPERTY);
+        }
+        // 4 x the replay (2 s x 0.01) rounded up, plus the 1 s margin
+        assertTrue(err().startsWith("jmclbench: failure: the HVM executable did not end within 2 s (hung); log: "), err());
         assertEquals(1, err().trim().split("\n").length, err());
         assertNothingRecorded();
     }

@@ -1,0 +1,133 @@
+package org.jmclbench.hvm.launcher;
+
+import java.io.DataInputStream;
+import java.io.EOFException;
+import java.io.IOException;
+import java.io.InputStream;
+
+import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.scj.MissionRunFile;
+import org.jmclbench.scj.MissionSizes;
+import org.jmclbench.workload.RunFailure;
+
+/**
+ * The reader of the HVM's result file (docs/HVM.md, "Result file"): the job records the
+ * mission wrote, checked word by word, so that nothing a crashed or wrong executable leaves
+ * behind is recorded as a valid run. Anything but exactly the layout of
+ * {@link MissionRunFile} for the run's events is a {@link RunFailure} with one line naming the
+ * file: a wrong magic or version, another event count or covariance flag, an outcome that is not
+ * a code of an ended job, a time below -1, a completed job without a start or ending before it, a
+ * negative duration, an area use below -1, a file cut short or one with bytes after its end.
+ */
+final class HvmResultFile {
+    private final DataInputStream in;
+    private final String name;
+
+    private HvmResultFile(InputStream in, String name) {
+        this.in = new DataInputStream(in);
+        this.name = name;
+    }
+
+    /**
+     * The records of the events of {@code timeline}, read from {@code in}; each area's use as the
+     * executable measured it goes into {@code peaks} (-1: not measurable on icecap).
+     *
+     * @param name what messages call the file
+     */
+    static JobRecords read(InputStream in, String name, Timeline timeline, boolean covariance, long[] peaks)
+            throws RunFailure, IOException {
+        return new HvmResultFile(in, name).records(timeline, covariance, peaks);
+    }
+
+    private JobRecords records(Timeline timeline, boolean covariance, long[] peaks) throws RunFailure, IOException {
+        JobRecords r = new JobRecords(timeline, covariance);
+        try {
+            if (word() != MissionRunFile.OUTPUT_MAGIC || word() != MissionRunFile.VERSION) {
+                throw fail("not a jmclbench result (magic or version)");
+            }
+            long n = word();
+            long cov = word();
+            if (n != r.size()) {
+                throw fail("the HVM returned " + n + " events, expected " + r.size());
+            }
+            if (cov != (covariance ? 1 : 0)) {
+                throw fail("covariance flag " + cov + ", expected " + (covariance ? 1 : 0));
+            }
+            for (long[] a : new long[][] {r.releaseNs, r.startNs, r.endNs, r.deadlineNs, r.wakeNs}) {
+                for (int k = 0; k < n; k++) {
+                    a[k] = time(k);
+                }
+            }
+            for (int k = 0; k < n; k++) {
+                r.outcome[k] = outcome(k, r);
+                r.cpuNs[k] = -1; // SCJ has no per-thread CPU clock
+            }
+            for (double[] a : new double[][] {r.estX, r.estY, r.estTheta}) {
+                for (int k = 0; k < n; k++) {
+                    a[k] = real();
+                }
+            }
+            if (covariance) {
+                for (int i = 0; i < r.cov.length; i++) {
+                    r.cov[i] = real();
+                }
+            }
+            double x = real();
+            double y = real();
+            double theta = real();
+            r.setInitialEstimate(x, y, theta);
+            r.durationNs = word();
+            if (r.durationNs < 0) {
+                throw fail("negative duration " + r.durationNs);
+            }
+            for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
+                peaks[a] = word();
+                if (peaks[a] < -1) {
+                    throw fail("area " + MissionSizes.AREA_NAMES[a] + " used " + peaks[a] + " bytes");
+                }
+            }
+        } catch (EOFException e) {
+            throw fail("truncated");
+        }
+        if (in.read() >= 0) {
+            throw fail("bytes after the end of the records");
+        }
+        return r;
+    }
+
+    private long time(int k) throws IOException, RunFailure {
+        long t = word();
+        if (t < -1) {
+            throw fail("event " + k + ": time " + t + " (ns are >= 0, -1 for none)");
+        }
+        return t;
+    }
+
+    /** The outcome of event k: a code of an ended job; a completed job has a start and ends after it. */
+    private byte outcome(int k, JobRecords r) throws IOException, RunFailure {
+        long o = word();
+        if (o == JobRecords.PENDING) {
+            throw fail("event " + k + " never ended on the HVM (the mission terminated early)");
+        }
+        if (o != JobRecords.DONE && o != JobRecords.LATE && o != JobRecords.SKIPPED && o != JobRecords.TERMINATED) {
+            throw fail("event " + k + ": outcome " + o + " is not a code of an ended job");
+        }
+        if ((o == JobRecords.DONE || o == JobRecords.LATE) && (r.startNs[k] < 0 || r.endNs[k] < r.startNs[k])) {
+            throw fail("event " + k + ": completed, but its start " + r.startNs[k] + " and end " + r.endNs[k] + " disagree");
+        }
+        return (byte) o;
+    }
+
+    private long word() throws IOException {
+        return Long.reverseBytes(in.readLong());
+    }
+
+    private double real() throws IOException {
+        return Double.longBitsToDouble(word());
+    }
+
+    private RunFailure fail(String problem) {
+        return new RunFailure("the HVM's result file " + name + ": " + problem);
+    }
+}

@@ -5,6 +5,7 @@ import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.function.Function;
 
 import org.jmclbench.tooling.report.ChartSpec.Axis;
@@ -67,6 +68,10 @@ final class ChartSpecs {
             new Figure("spectrum", "Task latency percentile spectrum", "HdrHistogram style: every job of every repetition "
                     + "merged; x = 1/(1\u2212p) on a log axis (10 = 90%, 100 = 99%, 1000 = 99.9%), latency (ms) on a log axis.",
                     true, ChartSpecs::spectrum),
+            new Figure("breakdown", "Breakdown load (queue)", "Per runtime, the largest particle count at which every job of "
+                    + "both tasks completed by its deadline in every repetition under queue, every smaller count of the store "
+                    + "holding too (hover: the smallest count that did not). Only under the queue policy, where no job is dropped: "
+                    + "the capacity command searches it (docs/RUNNER.md).", false, ChartSpecs::breakdown),
             new Figure("jitter-cdf", "CDF of release jitter", "Fraction of jobs released with at most the given jitter (ms, log "
                     + "axis), every job of every repetition merged.", true, ChartSpecs::jitterCdf));
 
@@ -127,7 +132,8 @@ final class ChartSpecs {
                     continue;
                 }
                 Scope sweep = new Scope(model, new Setting(dataset, policy, null), cells);
-                FIGURES.stream().filter(f -> !f.perSetting()).forEach(f -> out.add(f.builder().apply(sweep)));
+                FIGURES.stream().filter(f -> !f.perSetting()).map(f -> f.builder().apply(sweep)).filter(Objects::nonNull)
+                        .forEach(out::add);
                 for (Integer particles : model.particles) {
                     List<ReportModel.Cell> at = cells.stream().filter(c -> c.particles == particles).toList();
                     if (!at.isEmpty()) {
@@ -323,13 +329,35 @@ final class ChartSpecs {
      * miss, written at the bar's end (0 where even the smallest count missed). The evaluation's.
      */
     static ChartSpec sustained(Scope s, String id, String title, Map<String, Integer> loads) {
+        return loadBars(s, id, title, "largest particle count with no miss", loads, null);
+    }
+
+    /** The breakdown load of each runtime under queue ({@link BreakdownLoad}); null at any other policy. */
+    static ChartSpec breakdown(Scope s) {
+        if (!s.setting().policy().equals("queue")) {
+            return null;
+        }
+        Map<String, BreakdownLoad> loads = BreakdownLoad.of(s.cells(), new ArrayList<>(s.configs().keySet()));
+        Map<String, Integer> holds = new LinkedHashMap<>();
+        List<String> notes = new ArrayList<>();
+        loads.forEach((config, b) -> {
+            holds.put(config, b.holds() == null ? 0 : b.holds());
+            notes.add(config + ": holds at " + (b.holds() == null ? "no count" : b.holds())
+                    + ", fails at " + (b.fails() == null ? "no count of the store" : b.fails()));
+        });
+        return loadBars(s, "breakdown", "Breakdown load: every job by its deadline (" + s.where() + ")",
+                "largest particle count with no late job", holds, notes).withStem(s.stem("breakdown"));
+    }
+
+    private static ChartSpec loadBars(Scope s, String id, String title, String axis, Map<String, Integer> loads, List<String> notes) {
         List<String> configs = new ArrayList<>(loads.keySet());
         Series bars = new Series("particles", null, null, "#7f7f7f", Style.BAR, null,
                 configs.stream().map(c -> (Double) loads.get(c).doubleValue()).toList(), null,
-                configs.stream().map(s::color).toList(), null);
+                configs.stream().map(s::color).toList(), notes);
         List<Category> categories = configs.stream().map(c -> new Category(c, c, s.configs().get(c))).toList();
-        return new ChartSpec(id, id, s.setting(), title, Kind.BARS, true, Axis.linear("runtime / engine memory style"),
-                Axis.linear("largest particle count with no miss"), categories, List.of(bars), List.of(), null, true);
+        return new ChartSpec(id, id, s.setting(), title,
+                Kind.BARS, true, Axis.linear("runtime / engine memory style"), Axis.linear(axis), categories, List.of(bars),
+                List.of(), null, true);
     }
 
     private static List<Category> categories(List<ReportModel.Cell> rows) {

@@ -92,7 +92,9 @@ public final class EvaluationDocument extends EvaluationSections {
         line("");
         misses();
         latency();
-        sustainable();
+        if (!breakdown()) {
+            sustainable();
+        }
         scjCost();
         hvm();
         EvaluationExplanations explanations = new EvaluationExplanations(this);
@@ -256,6 +258,44 @@ public final class EvaluationDocument extends EvaluationSections {
             findings.add(String.format(Locale.ROOT, "Lowest p99 latency of a JVM at %d particles: %s, %s ms (2.2).", ref, best.config,
                     num(mean(best, Metric.LATENCY_P99), 3)));
         }
+    }
+
+    /**
+     * 2.3 as the breakdown load under queue, when the store has queue runs of the dataset (the
+     * capacity command's); false, writing nothing, when it has none.
+     */
+    private boolean breakdown() throws IOException {
+        List<ReportModel.Cell> queue = data.cells(c -> c.policy.equals("queue") && c.ok > 0);
+        if (queue.isEmpty()) {
+            return false;
+        }
+        line("### 2.3 Breakdown load: the largest load with every job by its deadline (Table 3, Figure 3)");
+        line("");
+        List<String> configs = data.order(queue.stream().map(c -> c.config).distinct().toList());
+        Map<String, BreakdownLoad> loads = BreakdownLoad.of(data.cells(c -> c.policy.equals("queue")), configs);
+        BreakdownLoad c0 = configs.stream().filter(c -> queue.stream().anyMatch(x -> x.config.equals(c) && data.isNative(x)))
+                .map(loads::get).findFirst().orElse(null);
+        List<List<String>> rows = new ArrayList<>();
+        Map<String, Integer> holds = new LinkedHashMap<>();
+        loads.forEach((config, b) -> {
+            holds.put(config, b.holds() == null ? 0 : b.holds());
+            rows.add(List.of(config, b.holds() == null ? "none" : String.valueOf(b.holds()),
+                    b.fails() == null ? "none in the store" : String.valueOf(b.fails()),
+                    c0 == null || c0.holds() == null || b.holds() == null ? "" : num((double) b.holds() / c0.holds(), 2) + "x"));
+        });
+        line("Table 3: per configuration, under queue (no job is dropped or aborted), the largest particle count at which every "
+                + "job of both tasks completed by its deadline in every repetition, every smaller count in the store holding too, "
+                + "and the smallest count above it at which one did not; the last column divides the held count by the C "
+                + "baseline's. The bracket is as fine as the counts in the store (`./jmclbench capacity` narrows it to 10%).");
+        line("");
+        table(List.of("configuration", "holds at", "fails at", "vs C"), rows);
+        figure("breakdown-load", "Figure 3: the breakdown load per configuration (queue).",
+                () -> charts.write(ChartSpecs.sustained(scope(null, queue), "breakdown-load",
+                        "Breakdown load: every job by its deadline (" + data.dataset + ", queue)", holds)));
+        findings.add("Breakdown load under queue: " + loads.entrySet().stream()
+                .map(e -> e.getKey() + " " + (e.getValue().holds() == null ? "none" : e.getValue().holds()))
+                .collect(Collectors.joining(", ")) + " particles (2.3).");
+        return true;
     }
 
     private void sustainable() throws IOException {

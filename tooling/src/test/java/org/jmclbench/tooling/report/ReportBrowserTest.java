@@ -141,6 +141,7 @@ class ReportBrowserTest {
         m.put("spectrum", configs);
         m.put("jitter-cdf", configs);
         m.put("memory", 1);                         // the Java SE engine's one area, the heap (native reports none)
+        m.put("breakdown", 0);                      // a queue figure: the fixture's skip and terminate runs draw none
         return m;
     }
 
@@ -180,7 +181,7 @@ class ReportBrowserTest {
         Number requests = (Number) js().executeScript("return performance.getEntriesByType('resource').length");
         assertEquals(0, requests.intValue(), "the page fetched something");
         Number chartJs = (Number) js().executeScript("return Object.keys(window.jmclbenchCharts).length");
-        assertEquals(10, chartJs.intValue());
+        assertEquals(11, chartJs.intValue());
         // Four runtimes completed runs (the unsupported and the crashed one draw nothing), three repetitions each.
         assertEquals(expected(4, 3), seriesPerChart());
         Number datasets = (Number) js().executeScript("return window.jmclbenchCharts['spectrum'].data.datasets.length");

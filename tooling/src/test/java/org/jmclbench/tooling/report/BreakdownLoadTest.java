@@ -1,0 +1,45 @@
+package org.jmclbench.tooling.report;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+
+import java.util.List;
+import java.util.Map;
+
+import org.junit.jupiter.api.Test;
+
+/** The breakdown load read from a store's queue cells: the last count that held before the first that did not. */
+class BreakdownLoadTest {
+
+    static ReportModel.Cell cell(String config, int particles, int ok, int failed, double maxLate) {
+        ReportModel.Cell c = new ReportModel.Cell();
+        c.config = config;
+        c.policy = "queue";
+        c.particles = particles;
+        c.runs = ok + failed;
+        c.ok = ok;
+        c.failed = failed;
+        c.metrics.put(Metric.MISS_COUNT.name(), new ReportModel.Agg(ok, maxLate / 2, null, 0.0, maxLate));
+        return c;
+    }
+
+    @Test
+    void theBracketIsTheLastHeldCountAndTheFirstLateOne() {
+        Map<String, BreakdownLoad> b = BreakdownLoad.of(List.of(
+                cell("c", 100, 3, 0, 0), cell("c", 800, 3, 0, 0), cell("c", 400, 3, 0, 0),
+                cell("c", 1600, 3, 0, 1), cell("c", 3200, 3, 0, 0), // held again above a failure: noise, not capacity
+                cell("jvm", 100, 3, 0, 2),
+                cell("all", 100, 3, 0, 0), cell("all", 200, 3, 0, 0)), List.of("c", "jvm", "all", "absent"));
+        assertEquals(new BreakdownLoad(800, 1600), b.get("c"));
+        assertEquals(new BreakdownLoad(null, 100), b.get("jvm"), "late already at the smallest count");
+        assertEquals(new BreakdownLoad(200, null), b.get("all"), "every count held");
+        assertFalse(b.containsKey("absent"));
+    }
+
+    @Test
+    void aFailedRepetitionFailsItsCount() {
+        assertFalse(BreakdownLoad.held(cell("c", 100, 2, 1, 0)));
+        assertNull(BreakdownLoad.of(List.of(cell("c", 100, 2, 1, 0)), List.of("c")).get("c").holds());
+    }
+}

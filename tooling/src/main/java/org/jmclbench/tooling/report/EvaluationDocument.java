@@ -281,12 +281,15 @@ public final class EvaluationDocument extends EvaluationSections {
             holds.put(config, b.holds() == null ? 0 : b.holds());
             rows.add(List.of(config, b.holds() == null ? "none" : String.valueOf(b.holds()),
                     b.fails() == null ? "none in the store" : String.valueOf(b.fails()),
-                    c0 == null || c0.holds() == null || b.holds() == null ? "" : num((double) b.holds() / c0.holds(), 2) + "x"));
+                    c0 == null || c0.holds() == null || b.holds() == null ? ""
+                            : (b == c0 ? "" : c0.fails() == null && b.fails() != null ? "<= " : b.fails() == null && c0.fails() != null ? ">= " : "")
+                            + num((double) b.holds() / c0.holds(), 2) + "x"));
         });
         line("Table 3: per configuration, under queue (no job is dropped or aborted), the largest particle count at which every "
                 + "job of both tasks completed by its deadline in every repetition, every smaller count in the store holding too, "
                 + "and the smallest count above it at which one did not; the last column divides the held count by the C "
-                + "baseline's. The bracket is as fine as the counts in the store (`./jmclbench capacity` narrows it to 10%).");
+                + "baseline's (a bound, `<=` or `>=`, where one of the two held at every count in the store). The bracket is as fine "
+                + "as the counts in the store (`./jmclbench capacity` narrows it to 10%).");
         line("");
         table(List.of("configuration", "holds at", "fails at", "vs C"), rows);
         figure("breakdown-load", "Figure 3: the breakdown load per configuration (queue).",

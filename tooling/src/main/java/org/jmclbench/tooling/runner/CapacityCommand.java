@@ -144,16 +144,33 @@ public final class CapacityCommand implements Callable<Integer> {
     }
 
     private static void print(PrintStream out, Map<Configuration, CapacitySearch> searches) {
-        Integer nativeLow = searches.entrySet().stream().filter(e -> e.getKey().runtime().equals("native"))
-                .map(e -> e.getValue().low()).filter(v -> v != null).findFirst().orElse(null);
+        CapacitySearch c = searches.entrySet().stream().filter(e -> e.getKey().runtime().equals("native"))
+                .map(Map.Entry::getValue).findFirst().orElse(null);
         out.println("breakdown load (queue; every job of both tasks by its deadline in every repetition):");
         out.printf(Locale.ROOT, "  %-40s %10s %10s %-14s %s%n", "configuration", "holds at", "fails at", "search", "vs C");
         for (Map.Entry<Configuration, CapacitySearch> e : searches.entrySet()) {
             CapacitySearch s = e.getValue();
-            String ratio = nativeLow == null || s.low() == null ? "" : String.format(Locale.ROOT, "%.2fx", (double) s.low() / nativeLow);
             out.printf(Locale.ROOT, "  %-40s %10s %10s %-14s %s%n", e.getKey().label(), s.low() == null ? "none" : s.low(),
-                    s.high() == null ? "none" : s.high(), s.status().label, ratio);
+                    s.high() == null ? "none" : s.high(), s.status().label, ratio(s, c));
         }
+    }
+
+    /**
+     * The held count divided by C's, as far as the searches know it: a load that held up to the
+     * search's max is only a lower bound, so the ratio is then a bound too ({@code <=}, {@code >=}),
+     * or unknown when both are.
+     */
+    static String ratio(CapacitySearch s, CapacitySearch c) {
+        if (c == null || s.low() == null || c.low() == null) {
+            return "";
+        }
+        boolean sOpen = s.status() == CapacitySearch.Status.HOLDS_TO_MAX;
+        boolean cOpen = c.status() == CapacitySearch.Status.HOLDS_TO_MAX;
+        if (sOpen && cOpen && s != c) {
+            return "? (both held to --max)";
+        }
+        String x = String.format(Locale.ROOT, "%.2fx", (double) s.low() / c.low());
+        return s == c ? x : cOpen ? "<= " + x : sOpen ? ">= " + x : x;
     }
 
     /** The matrix of one probe: every configuration at {@code particles}, under queue. */

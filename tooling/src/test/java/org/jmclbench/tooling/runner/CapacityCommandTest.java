@@ -59,6 +59,19 @@ class CapacityCommandTest {
     }
 
     @Test
+    void aRatioToALoadThatHeldToTheMaxIsABound() {
+        CapacitySearch c = new CapacitySearch(100, 200);
+        c.record(100, true);
+        c.record(200, true);
+        CapacitySearch jvm = new CapacitySearch(100, 200);
+        jvm.record(100, true);
+        jvm.record(200, false);
+        assertEquals("<= 0.50x", CapacityCommand.ratio(jvm, c), "C's breakdown is above the max: Java's ratio is at most this");
+        assertEquals("1.00x", CapacityCommand.ratio(c, c));
+        assertEquals(">= 2.00x", CapacityCommand.ratio(c, jvm));
+    }
+
+    @Test
     void aBadRangeIsOneLineAndExitTwo() {
         Fixtures.CliResult r = Fixtures.cli("capacity", "--from", "500", "--max", "100");
         assertEquals(2, r.exitCode());

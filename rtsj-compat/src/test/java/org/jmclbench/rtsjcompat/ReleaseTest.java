@@ -107,6 +107,32 @@ class ReleaseTest {
         assertEquals(1, s.lateReleases(), "the release at 20 ms started at 35 ms, after 30 ms");
     }
 
+    /**
+     * A periodic release whose time passed while the previous one ran is run late, not dropped:
+     * with 10 ms periods and the release at 10 ms working 25 ms, the releases at 20 and 30 ms
+     * both still run (at 35 ms), and the sixth run is the release at 50 ms.
+     */
+    @Test
+    void lateReleasesAreRunNotDropped() {
+        TimeSource.install(new VirtualTimeSource(0));
+        java.util.List<Long> starts = new java.util.ArrayList<>();
+        Mission m = Apps.mission("M", 1 << 20, mission -> Apps.periodic("Slow", 10, 1 << 16, () -> {
+            starts.add(now());
+            if (starts.size() == 2) {
+                TimeSource.current().sleepUntil(ScjThread.self(), now() + 25 * MS);
+            }
+            if (starts.size() == 6) {
+                Mission.getMission().requestTermination();
+            }
+        }));
+        RunReport r = launch(m);
+        long t0 = starts.get(0);
+        java.util.List<Long> ms = new java.util.ArrayList<>();
+        starts.forEach(t -> ms.add((t - t0) / MS));
+        assertEquals(java.util.Arrays.asList(0L, 10L, 35L, 35L, 40L, 50L), ms, "start of each release, ms after the first");
+        assertEquals(6, r.handler("Slow").completed());
+    }
+
     @Test
     void aperiodicReleasesWhileRunningAreCountedNotLost() throws Exception {
         CountDownLatch firstRunning = new CountDownLatch(1);

@@ -11,15 +11,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
-import java.util.TreeSet;
-import java.util.function.Predicate;
 import java.util.stream.Collectors;
 
-import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.store.StoredRuns;
-
-import com.fasterxml.jackson.databind.JsonNode;
 
 import static org.jmclbench.tooling.report.EvaluationData.*;
 

@@ -8,7 +8,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.Callable;
-import java.util.function.Predicate;
 
 import org.jmclbench.tooling.report.EvaluationDocument;
 import org.jmclbench.tooling.runtime.HvmRuntime;

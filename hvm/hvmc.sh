@@ -1,20 +1,24 @@
 #!/usr/bin/env bash
-# Compiles a Java program into an icecap HVM executable (interpreter mode) with a tool chain
-# built by build-hvm.sh.
+# Compiles a Java program into an icecap HVM executable with a tool chain built by build-hvm.sh.
 #
 #   hvm/hvmc.sh --toolchain DIR --classes CP --main pkg.Class [--natives FILE.c]...
-#               [--heap BYTES] [--log FILE] -o EXECUTABLE
+#               [--mode interpreted|compiled] [--heap BYTES] [--log FILE] [--keep-c DIR]
+#               -o EXECUTABLE
 #
+# --mode: interpreted (the default) translates no method (the VM interprets the bytecode);
+# compiled translates every method to C except those named main (icecap's -aot). Compiled code
+# does not yet follow Java semantics for long/double arithmetic (issue 18): experiments only.
 # CP: the program's class folders (':'-separated), compiled for Java 8 against DIR/rt.jar
 # (-bootclasspath) and DIR/sdk. FILE.c: C natives of the program (functions named
 # n_<package>_<Class>_<method>(int32 *sp)); they are compiled with the generated VM, with its
 # headers on the include path. BYTES: the VM's Java heap (default 16000000); the SCJ memory
 # areas are carved out of it.
+# --keep-c DIR keeps the generated C (for reading or profiling).
 # Steps (about 10 s): main.CompilationManager writes the program and the VM as C into a
 # temporary folder; gcc links it with the flags below.
 set -euo pipefail
 
-tc= classes= main= heap=16000000 out= log=
+tc= classes= main= heap=16000000 out= log= mode=interpreted keep=
 natives=()
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -24,15 +28,25 @@ while [ $# -gt 0 ]; do
         --natives) natives+=("$(readlink -f "$2")"); shift 2 ;;
         --heap) heap=$2; shift 2 ;;
         --log) log=$2; shift 2 ;;
+        --mode) mode=$2; shift 2 ;;
+        --keep-c) keep=$2; shift 2 ;;
         -o) out=$2; shift 2 ;;
-        -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "hvmc: unknown option: $1" >&2; exit 2 ;;
     esac
 done
 [ -n "$tc" ] && [ -n "$classes" ] && [ -n "$main" ] && [ -n "$out" ] \
     || { echo "hvmc: --toolchain, --classes, --main and -o are required" >&2; exit 2; }
+# Paths the script uses after it changes folder.
+out=$(readlink -f "$out")
+[ -z "$log" ] || log=$(readlink -f "$log")
+[ -z "$keep" ] || keep=$(readlink -f "$keep")
 [ -f "$tc/KEY" ] || { echo "hvmc: $tc is not a tool chain built by build-hvm.sh" >&2; exit 2; }
 case "$heap" in ''|*[!0-9]*) echo "hvmc: --heap must be a number of bytes: $heap" >&2; exit 2 ;; esac
+case "$mode" in
+    compiled|interpreted) ;;
+    *) echo "hvmc: --mode must be interpreted or compiled: $mode" >&2; exit 2 ;;
+esac
 
 pkg=${main%.*}
 cls=${main##*.}
@@ -48,19 +62,25 @@ trap 'rm -rf "$work"' EXIT
 
 # The compiler reads hvm.properties from its working folder for the VM sources to copy.
 echo "vmSourceFolder=$tc/src/icecapvm/src" > "$work/hvm.properties"
+aot=()
+[ "$mode" = interpreted ] || aot=(-aot)
 mkdir "$work/c"
 if ! (cd "$work" && java -cp "$tc/tools:$tc/lib/bcel-6.0.jar" main.CompilationManager \
-        "$abs_cp$tc/sdk:$tc/rt.jar" "$pkg" "$cls" "$work/c/") >> "$log" 2>&1 \
+        "$abs_cp$tc/sdk:$tc/rt.jar" "$pkg" "$cls" "$work/c/" "${aot[@]}") >> "$log" 2>&1 \
         || grep -q "Couldn't find" "$log" || [ ! -f "$work/c/classes.c" ]; then
     echo "hvmc: the icecap compiler failed for $main (log: $log):" >&2
-    grep -m5 "Couldn't find\|Exception\|rror" "$log" >&2 || tail -5 "$log" >&2
+    grep -m1 -A4 "Couldn't find\|Exception in thread" "$log" >&2 || tail -5 "$log" >&2
     exit 1
 fi
 
 # -mincoming-stack-boundary=3 -mstackrealign: the VM's threads start on stacks it allocates
 # itself, 8-byte aligned; without realignment SSE code in pthread_create can crash.
+# -fno-strict-aliasing: the VM and the generated C write int32 stack words and read them as
+# doubles (without it gcc reorders the two at -O2 and the mission hangs); -fwrapv: Java's int and
+# long arithmetic wraps, C's signed overflow is undefined; -ffp-contract=off: no fused multiply-add
+# (Java rounds each operation).
 cd "$work/c"
-if ! gcc -O2 -w -DPC64 -DPRINTFSUPPORT -DREF_OFFSET -DSUPPORTGC -DJAVA_HEAP_SIZE="$heap" \
+if ! gcc -O2 -w -fno-strict-aliasing -fwrapv -ffp-contract=off -DPC64 -DPRINTFSUPPORT -DREF_OFFSET -DSUPPORTGC -DJAVA_HEAP_SIZE="$heap" \
         -mincoming-stack-boundary=3 -mstackrealign -I. -o "$work/a.out" \
         classes.c icecapvm.c methodinterpreter.c methods.c gc.c natives_allOS.c natives_i86.c \
         rom_heap.c allocation_point.c rom_access.c print.c x86_64_interrupt.s "${natives[@]}" \
@@ -68,6 +88,9 @@ if ! gcc -O2 -w -DPC64 -DPRINTFSUPPORT -DREF_OFFSET -DSUPPORTGC -DJAVA_HEAP_SIZE
     echo "hvmc: gcc failed for $main (log: $log):" >&2
     grep -m10 "error" "$log" >&2 || tail -10 "$log" >&2
     exit 1
+fi
+if [ -n "$keep" ]; then
+    rm -rf "$keep" && mkdir -p "$keep" && cp -r "$work/c/." "$keep/"
 fi
 mkdir -p "$(dirname "$out")"
 mv "$work/a.out" "$out"

@@ -27,13 +27,18 @@ public final class MissionCatalog implements CheckCatalog {
                 new StaticCheck("P6-static-preallocated", Property.P6,
                         StaticCheck.Kind.ALLOCATION,
                         n -> isMission(n) && !n.startsWith("org/jmclbench/core/mcl/ScopedLocalizer"),
-                        RELEASES::contains, Set.of()),
+                        RELEASES::contains, MissionCatalog::isScjLayer, Set.of()),
                 new StaticCheck("P4-static-abort-poll", Property.P4,
-                        StaticCheck.Kind.ABORT_POLL, MissionCatalog::isMission, n -> false, Set.of()));
+                        StaticCheck.Kind.ABORT_POLL, MissionCatalog::isMission, n -> false, n -> false, Set.of()));
     }
 
     static boolean isMission(String internalName) {
         return internalName.startsWith("org/jmclbench/scj/") || internalName.startsWith("org/jmclbench/core/");
+    }
+
+    /** rtsj-compat: the SCJ API and its implementation, what an SCJ VM provides. */
+    static boolean isScjLayer(String internalName) {
+        return internalName.startsWith("javax/") || internalName.startsWith("org/jmclbench/rtsjcompat/");
     }
 
     @Override

@@ -1,5 +1,6 @@
 package org.jmclbench.verification;
 
+import org.jmclbench.core.mcl.MotionModel;
 import org.jmclbench.verification.bytecode.AbortPollCheck;
 import org.jmclbench.verification.bytecode.AllocationCheck;
 import org.jmclbench.verification.bytecode.ClassPool;
@@ -19,10 +20,11 @@ import java.util.function.Predicate;
  * @param kind      the rule: ALLOCATION (from releases of classes {@code releases} accepts) or ABORT_POLL
  * @param classes   which classes of the pool the check looks at (internal names)
  * @param releases  release classes (ALLOCATION only)
+ * @param layer     classes of the SCJ layer the job calls into (ALLOCATION only; looked at from the calls)
  * @param expected  empty: must hold; else the {@code class:method} of every expected violation
  */
 public record StaticCheck(String id, Property property, Kind kind, Predicate<String> classes,
-                          Predicate<String> releases, Set<String> expected) {
+                          Predicate<String> releases, Predicate<String> layer, Set<String> expected) {
 
     /** The two static rules. */
     public enum Kind {
@@ -45,9 +47,8 @@ public record StaticCheck(String id, Property property, Kind kind, Predicate<Str
     /** The violations the rule finds in the pool. */
     public List<Violation> run(ClassPool pool) {
         return switch (kind) {
-            case ALLOCATION -> new AllocationCheck(pool, classes).check(n -> classes.test(n) && releases.test(n));
-            case ABORT_POLL -> new AbortPollCheck(pool).check().stream()
-                    .filter(v -> classes.test(v.className().replace('.', '/'))).toList();
+            case ALLOCATION -> new AllocationCheck(pool, classes, layer).check(n -> classes.test(n) && releases.test(n));
+            case ABORT_POLL -> new AbortPollCheck(pool, classes, MotionModel.ABORT_BLOCK).check();
         };
     }
 

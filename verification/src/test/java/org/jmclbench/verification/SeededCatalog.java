@@ -85,11 +85,16 @@ public final class SeededCatalog implements CheckCatalog {
         String alloc = AllocatingRelease.class.getName();
         String poll = PollingJob.class.getName();
         return List.of(
+                // SeededLayer stands for the SCJ layer: looked at from the calls into it.
                 new StaticCheck("static-seeded-allocation", Property.P6, StaticCheck.Kind.ALLOCATION,
-                        n -> n.startsWith("org/jmclbench/verification/seeded/"), n -> n.equals(internal(alloc)),
-                        Set.of(alloc + ":handleAsyncEvent", alloc + ":helper", alloc + "$AllocatingStep:apply")),
+                        n -> n.startsWith("org/jmclbench/verification/seeded/") && !n.endsWith("/SeededLayer"),
+                        n -> n.equals(internal(alloc)), n -> n.endsWith("/SeededLayer"),
+                        Set.of(alloc + ":handleAsyncEvent", alloc + ":helper", alloc + "$AllocatingStep:apply",
+                                alloc + ":lambda$helper$1", alloc + "$Mode:<clinit>", alloc + "$Mode:$values",
+                                alloc + "$Mode:values", alloc + "$Table:<clinit>")),
                 new StaticCheck("static-seeded-abort-poll", Property.P4, StaticCheck.Kind.ABORT_POLL,
-                        n -> n.equals(internal(poll)), n -> false, Set.of(poll + ":update", poll + ":siblings")));
+                        n -> n.equals(internal(poll)), n -> false, n -> false, Set.of(poll + ":update", poll + ":siblings", poll + ":wide",
+                                poll + ":sparse", poll + ":normalise")));
     }
 
     private static String internal(String className) {

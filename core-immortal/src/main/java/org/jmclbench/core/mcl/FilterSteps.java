@@ -74,15 +74,28 @@ final class FilterSteps {
         return true;
     }
 
-    /** The estimate of the weighted particles (ALGORITHM 7.3) into est[0..2]. */
-    static void estimate(double[] px, double[] py, double[] pt, double[] w, int n, MclConfig.Estimate mode,
-            double[] est) {
+    /**
+     * The estimate of the weighted particles (ALGORITHM 7.3) into est[0..2] and, when the
+     * configuration asks, their covariance into cov[0..5]; false when aborted.
+     */
+    static boolean summarise(double[] px, double[] py, double[] pt, double[] w, int n, MclConfig config,
+            double[] est, double[] cov, AbortSignal abort, int pollMask) {
+        return estimate(px, py, pt, w, n, config.estimate, est, abort, pollMask)
+                && (!config.covariance || covariance(px, py, pt, w, n, est, cov, abort, pollMask));
+    }
+
+    /** The estimate of the weighted particles (ALGORITHM 7.3) into est[0..2]; false when aborted. */
+    private static boolean estimate(double[] px, double[] py, double[] pt, double[] w, int n,
+            MclConfig.Estimate mode, double[] est, AbortSignal abort, int pollMask) {
         if (mode == MclConfig.Estimate.MEAN) {
             double sx = 0.0;
             double sy = 0.0;
             double ss = 0.0;
             double sc = 0.0;
             for (int i = 0; i < n; i++) {
+                if ((i & pollMask) == 0 && abort.abortRequested()) {
+                    return false;
+                }
                 sx += w[i] * px[i];
                 sy += w[i] * py[i];
                 ss += w[i] * Math.sin(pt[i]);
@@ -94,6 +107,9 @@ final class FilterSteps {
         } else {
             int best = 0;
             for (int i = 1; i < n; i++) {
+                if ((i & pollMask) == 0 && abort.abortRequested()) {
+                    return false;
+                }
                 if (w[i] > w[best]) {
                     best = i;
                 }
@@ -102,10 +118,12 @@ final class FilterSteps {
             est[1] = py[best];
             est[2] = pt[best];
         }
+        return true;
     }
 
-    /** The weighted covariance around est (ALGORITHM 7.4) into cov[0..5]: cxx cxy cxt cyy cyt ctt. */
-    static void covariance(double[] px, double[] py, double[] pt, double[] w, int n, double[] est, double[] cov) {
+    /** The weighted covariance around est (ALGORITHM 7.4) into cov[0..5]: cxx cxy cxt cyy cyt ctt; false when aborted. */
+    private static boolean covariance(double[] px, double[] py, double[] pt, double[] w, int n, double[] est,
+            double[] cov, AbortSignal abort, int pollMask) {
         double ex = est[0];
         double ey = est[1];
         double et = est[2];
@@ -116,6 +134,9 @@ final class FilterSteps {
         double cyt = 0.0;
         double ctt = 0.0;
         for (int i = 0; i < n; i++) {
+            if ((i & pollMask) == 0 && abort.abortRequested()) {
+                return false;
+            }
             double ux = px[i] - ex;
             double uy = py[i] - ey;
             double ut = Angles.wrapPi(pt[i] - et);
@@ -132,6 +153,7 @@ final class FilterSteps {
         cov[3] = cyy;
         cov[4] = cyt;
         cov[5] = ctt;
+        return true;
     }
 
     /**

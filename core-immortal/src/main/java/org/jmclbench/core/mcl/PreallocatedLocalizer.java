@@ -57,9 +57,8 @@ public final class PreallocatedLocalizer extends CommittedParticles {
         if (!FilterSteps.weigh(x, y, theta, w, n, angle, playground, abort, pollMask)) {
             return false;
         }
-        FilterSteps.estimate(x, y, theta, w, n, config.estimate, newEst);
-        if (config.covariance) {
-            FilterSteps.covariance(x, y, theta, w, n, newEst, newCov);
+        if (!FilterSteps.summarise(x, y, theta, w, n, config, newEst, newCov, abort, pollMask)) {
+            return false;
         }
         Rng r = work;
         r.copyFrom(rng);

@@ -70,9 +70,8 @@ public final class ScopedLocalizer extends CommittedParticles {
         }
         double[] newEst = new double[3];
         double[] newCov = new double[6];
-        FilterSteps.estimate(x, y, theta, w, n, config.estimate, newEst);
-        if (config.covariance) {
-            FilterSteps.covariance(x, y, theta, w, n, newEst, newCov);
+        if (!FilterSteps.summarise(x, y, theta, w, n, config, newEst, newCov, abort, pollMask)) {
+            return false;
         }
         Rng r = rng.copy();
         int[] index = new int[n];

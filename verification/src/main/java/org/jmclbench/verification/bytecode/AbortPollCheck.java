@@ -4,48 +4,95 @@ import org.objectweb.asm.Opcodes;
 import org.objectweb.asm.Type;
 import org.objectweb.asm.tree.AbstractInsnNode;
 import org.objectweb.asm.tree.ClassNode;
+import org.objectweb.asm.tree.FieldInsnNode;
+import org.objectweb.asm.tree.IincInsnNode;
+import org.objectweb.asm.tree.IntInsnNode;
 import org.objectweb.asm.tree.JumpInsnNode;
+import org.objectweb.asm.tree.LdcInsnNode;
+import org.objectweb.asm.tree.LocalVariableNode;
 import org.objectweb.asm.tree.MethodInsnNode;
 import org.objectweb.asm.tree.MethodNode;
+import org.objectweb.asm.tree.VarInsnNode;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
+import java.util.function.Predicate;
 
 /**
- * Static P4: every particle loop of terminable job code polls the abort request.
+ * Static P4: after an abort request, terminable job code runs at most one poll interval of
+ * particle steps before it polls.
  *
- * <p>Precisely: terminable job code is every method of the project that takes an abort signal
- * (a parameter whose type's simple name is {@code AbortSignal}). A loop is a backward jump in
- * its bytecode; its body is the instructions from the jump's target to the jump. A loop polls
- * when its body calls {@code abortRequested()Z}. A loop that does not poll is still fine inside
- * an enclosing loop that polls directly, outside any other loop nested in it (the block loop
- * that polls once per block of particles). A loop whose head compares its counter with a
- * constant ({@code for (i = 0; i < 6; i++)}, over a covariance's six terms) is not a particle
- * loop and is left alone. Every other loop is reported, at the line of its head: after an abort
- * request it may run all its particles before the job notices.
+ * <p>Terminable job code is every method of the project that takes an abort signal (a parameter
+ * whose type's simple name is {@code AbortSignal}) and every method they call, followed into the
+ * classes {@code follow} accepts (static and special calls to the method the JVM resolves,
+ * virtual and interface calls to every override in the pool). A loop is a backward jump; its
+ * body runs from the jump's target to the jump. A particle loop is a loop whose head does not
+ * compare its counter with a constant ({@code i < 6}, a covariance's six terms, is not).
+ *
+ * <p>Each poll ({@code abortRequested()Z}) has a stride, the most iterations of its loop from
+ * one poll to the next, read from the guard that skips it: none, 1; {@code (i & M) == 0}, M + 1;
+ * {@code i % K == 0}, K. M and K are evaluated from constants and the configured mask (a
+ * variable or field named {@code pollMask}, worth interval - 1), so {@code (i & pollMask)} has
+ * the interval as its stride and {@code (i & ((pollMask << 2) | 3))} four intervals. A guard it
+ * cannot evaluate is reported. A particle loop is fine when a poll in its body has a stride of
+ * at most the interval, or when it sits in a block loop that polls once per iteration, outside
+ * its other inner loops, and steps its counter by at most the interval. Code that runs inside a
+ * particle loop (an inner loop, or a method called from that loop's body) is part of one particle
+ * step and is not held to the rule. Every other particle loop is reported at the line of its
+ * head: after an abort request it may run more than an interval of particles.
+ *
+ * <p>What this bounds: every particle loop of a job polls at its first iteration (its counter
+ * starts at a multiple of the stride) and at least every interval after, so the particle steps
+ * between two polls are at most the interval within a loop, and at most the tail of one loop
+ * plus the head of the next across two (code between loops is a constant number of steps).
  */
 public final class AbortPollCheck {
+    /** The stride of a poll whose guard the rule cannot evaluate. */
+    static final long UNKNOWN = Long.MAX_VALUE;
+
     private final ClassPool pool;
+    private final Predicate<String> follow;
+    private final int interval;
     private final String signalSimpleName;
 
+    /** Every class of the pool, interval 64, signal type {@code AbortSignal}. */
     public AbortPollCheck(ClassPool pool) {
-        this(pool, "AbortSignal");
+        this(pool, c -> true, 64);
     }
 
-    public AbortPollCheck(ClassPool pool, String signalSimpleName) {
+    /**
+     * @param follow   which classes (internal names) hold job code: entries and followed callees
+     * @param interval the configured poll interval, in particle steps (a power of two)
+     */
+    public AbortPollCheck(ClassPool pool, Predicate<String> follow, int interval) {
         this.pool = pool;
-        this.signalSimpleName = signalSimpleName;
+        this.follow = follow;
+        this.interval = interval;
+        this.signalSimpleName = "AbortSignal";
     }
 
-    /** Every loop of terminable job code that does not poll. */
+    /** Every particle loop of terminable job code that does not poll within the interval. */
     public List<Violation> check() {
         List<Violation> out = new ArrayList<>();
+        Set<String> seen = new HashSet<>();
+        Deque<Reached> work = new ArrayDeque<>();
         for (ClassNode c : pool.all()) {
+            if (!follow.test(c.name)) {
+                continue;
+            }
             for (MethodNode m : c.methods) {
-                if (terminable(m)) {
-                    checkMethod(c, m, out);
+                if (terminable(m) && m.instructions.size() > 0 && seen.add(key(c, m, false))) {
+                    work.add(new Reached(new ClassPool.Owned(c, m), false));
                 }
             }
+        }
+        while (!work.isEmpty()) {
+            Reached r = work.poll();
+            checkMethod(r, out, seen, work);
         }
         return out;
     }
@@ -63,10 +110,16 @@ public final class AbortPollCheck {
         return false;
     }
 
-    private void checkMethod(ClassNode c, MethodNode m, List<Violation> out) {
+    private static String key(ClassNode c, MethodNode m, boolean inStep) {
+        return c.name + "." + m.name + m.desc + (inStep ? "#step" : "");
+    }
+
+    private void checkMethod(Reached r, List<Violation> out, Set<String> seen, Deque<Reached> work) {
+        ClassNode c = r.m().owner();
+        MethodNode m = r.m().method();
         AbstractInsnNode[] insns = m.instructions.toArray();
         List<int[]> loops = new ArrayList<>();
-        List<Integer> polls = new ArrayList<>();
+        List<Poll> polls = new ArrayList<>();
         for (int i = 0; i < insns.length; i++) {
             if (insns[i] instanceof JumpInsnNode j) {
                 int target = m.instructions.indexOf(j.label);
@@ -75,15 +128,266 @@ public final class AbortPollCheck {
                 }
             } else if (insns[i] instanceof MethodInsnNode call && call.name.equals("abortRequested")
                     && call.desc.equals("()Z")) {
-                polls.add(i);
+                polls.add(new Poll(i, stride(m, insns, i)));
             }
         }
+        List<int[]> particleLoops = new ArrayList<>();
         for (int[] loop : loops) {
-            if (!constantBound(insns, loop) && !polled(loop, loops, polls)) {
-                out.add(new Violation(c.name.replace('/', '.'), m.name, Lines.of(insns[loop[0]]),
-                        "loop does not poll abortRequested() (terminable: takes an " + signalSimpleName + ")"));
+            if (!constantBound(insns, loop)) {
+                particleLoops.add(loop);
             }
         }
+        if (!r.inStep()) {
+            for (int[] loop : particleLoops) {
+                String problem = problem(m, insns, loop, loops, polls);
+                if (problem != null) {
+                    out.add(new Violation(c.name.replace('/', '.'), m.name, Lines.of(insns[loop[0]]), problem));
+                }
+            }
+        }
+        for (int i = 0; i < insns.length; i++) {
+            if (!(insns[i] instanceof MethodInsnNode call) || call.name.equals("abortRequested")) {
+                continue;
+            }
+            boolean inStep = r.inStep();
+            for (int[] loop : particleLoops) {
+                inStep |= inside(i, loop);
+            }
+            List<ClassPool.Owned> targets = call.getOpcode() == Opcodes.INVOKEVIRTUAL
+                    || call.getOpcode() == Opcodes.INVOKEINTERFACE
+                    ? pool.implementations(call.owner, call.name, call.desc)
+                    : single(pool.resolve(call.owner, call.name, call.desc));
+            for (ClassPool.Owned t : targets) {
+                if (follow.test(t.owner().name) && t.method().instructions.size() > 0
+                        && seen.add(key(t.owner(), t.method(), inStep))) {
+                    work.add(new Reached(t, inStep));
+                }
+            }
+        }
+    }
+
+    /** Why the particle loop may run past the interval without a poll, or null when it cannot. */
+    private String problem(MethodNode m, AbstractInsnNode[] insns, int[] loop, List<int[]> loops, List<Poll> polls) {
+        long best = UNKNOWN;
+        boolean any = false;
+        for (Poll p : polls) {
+            if (inside(p.at(), loop)) {
+                any = true;
+                // A poll in a nested loop runs each time that loop runs: it bounds this loop only
+                // as an inner poll does (once per iteration at most), so count it as stride 1
+                // only when it is directly in this loop's body.
+                best = Math.min(best, directlyIn(p.at(), loop, loops) ? p.stride() : 1);
+            }
+        }
+        if (any) {
+            if (best == UNKNOWN) {
+                return "loop polls abortRequested() behind a guard whose stride cannot be read";
+            }
+            return best <= interval ? null
+                    : "loop polls abortRequested() every " + best + " particle steps, more than the poll interval "
+                            + interval;
+        }
+        // A block loop around it that polls outside its other nested loops, one block per iteration.
+        for (int[] outer : loops) {
+            if (outer == loop || !contains(outer, loop)) {
+                continue;
+            }
+            for (Poll p : polls) {
+                if (inside(p.at(), outer) && directlyIn(p.at(), outer, loops)) {
+                    long block = counterStep(insns, outer);
+                    return block <= interval ? null
+                            : "loop runs a block of " + (block == UNKNOWN ? "an unknown number of" : block)
+                                    + " particle steps between its block loop's polls, more than the poll interval "
+                                    + interval;
+                }
+            }
+        }
+        return "loop does not poll abortRequested() (terminable job code)";
+    }
+
+    /** True when the instruction is in the loop's body and in no loop nested in it. */
+    private static boolean directlyIn(int at, int[] loop, List<int[]> loops) {
+        if (!inside(at, loop)) {
+            return false;
+        }
+        for (int[] other : loops) {
+            if (other != loop && contains(loop, other) && inside(at, other)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The constant a loop adds to its counter ({@code iinc v k} at its end, k > 0), else UNKNOWN. */
+    private static long counterStep(AbstractInsnNode[] insns, int[] loop) {
+        for (int i = loop[1]; i >= loop[0]; i--) {
+            if (insns[i] instanceof IincInsnNode inc) {
+                return inc.incr > 0 ? inc.incr : UNKNOWN;
+            }
+            if (insns[i].getOpcode() >= 0 && !(insns[i] instanceof JumpInsnNode)) {
+                break;
+            }
+        }
+        return UNKNOWN;
+    }
+
+    /**
+     * The poll's stride, from the conditional jump just before it that skips it: none, 1;
+     * {@code x & M} tested against zero, M + 1; {@code x % K}, K; otherwise UNKNOWN.
+     */
+    private long stride(MethodNode m, AbstractInsnNode[] insns, int poll) {
+        int guard = -1;
+        for (int i = poll - 1; i >= 0; i--) {
+            if (insns[i] instanceof JumpInsnNode) {
+                guard = i;
+                break;
+            }
+            if (insns[i].getOpcode() >= 0 && !loadsSignal(insns[i])) {
+                return 1; // something else is computed between: no guard of this poll
+            }
+        }
+        if (guard < 0) {
+            return 1;
+        }
+        JumpInsnNode j = (JumpInsnNode) insns[guard];
+        int target = m.instructions.indexOf(j.label);
+        if (target <= poll || (j.getOpcode() != Opcodes.IFNE && j.getOpcode() != Opcodes.IFEQ)) {
+            return 1; // not a jump over the poll (a loop head, an earlier condition)
+        }
+        int op = previous(insns, guard);
+        if (op < 0 || (insns[op].getOpcode() != Opcodes.IAND && insns[op].getOpcode() != Opcodes.IREM)) {
+            return UNKNOWN;
+        }
+        Long operand = rightOperand(m, insns, op);
+        if (operand == null || operand <= 0 && insns[op].getOpcode() == Opcodes.IREM || operand < 0) {
+            return UNKNOWN;
+        }
+        return insns[op].getOpcode() == Opcodes.IAND ? operand + 1 : operand;
+    }
+
+    /** The instructions that load the signal before the call: {@code aload}, {@code getfield}. */
+    private static boolean loadsSignal(AbstractInsnNode insn) {
+        return insn.getOpcode() == Opcodes.ALOAD || insn.getOpcode() == Opcodes.GETFIELD
+                || insn.getOpcode() == Opcodes.GETSTATIC;
+    }
+
+    private static int previous(AbstractInsnNode[] insns, int i) {
+        for (int k = i - 1; k >= 0; k--) {
+            if (insns[k].getOpcode() >= 0) {
+                return k;
+            }
+        }
+        return -1;
+    }
+
+    /**
+     * The value of the second operand of the binary instruction at {@code op}, evaluated over
+     * constants, the configured mask and {@code + - * << >> | ^}; null when it is anything else.
+     */
+    private Long rightOperand(MethodNode m, AbstractInsnNode[] insns, int op) {
+        // Walk back to where the second operand's expression starts (one value on the stack).
+        int need = 1;
+        int start = op;
+        while (need > 0) {
+            start = previous(insns, start);
+            if (start < 0) {
+                return null;
+            }
+            int code = insns[start].getOpcode();
+            if (isBinary(code)) {
+                need += 1;
+            } else if (pushesOne(insns[start])) {
+                need -= 1;
+            } else if (code == Opcodes.GETFIELD) {
+                // consumes the object, pushes the field: no change
+            } else {
+                return null;
+            }
+        }
+        Deque<Long> stack = new ArrayDeque<>();
+        for (int i = start; i < op; i++) {
+            AbstractInsnNode insn = insns[i];
+            int code = insn.getOpcode();
+            if (code < 0) {
+                continue;
+            }
+            if (isBinary(code)) {
+                long b = stack.pop();
+                long a = stack.pop();
+                stack.push(apply(code, a, b));
+            } else if (code == Opcodes.GETFIELD) {
+                stack.pop();
+                stack.push(((FieldInsnNode) insn).name.equals("pollMask") ? (long) interval - 1 : Long.MIN_VALUE);
+            } else {
+                stack.push(value(m, insn, i, insns));
+            }
+        }
+        long v = stack.pop();
+        return v == Long.MIN_VALUE ? null : v;
+    }
+
+    private static boolean isBinary(int code) {
+        return code == Opcodes.IADD || code == Opcodes.ISUB || code == Opcodes.IMUL || code == Opcodes.ISHL
+                || code == Opcodes.ISHR || code == Opcodes.IUSHR || code == Opcodes.IOR || code == Opcodes.IXOR
+                || code == Opcodes.IAND;
+    }
+
+    private static boolean pushesOne(AbstractInsnNode insn) {
+        int code = insn.getOpcode();
+        return (code >= Opcodes.ICONST_M1 && code <= Opcodes.ICONST_5) || code == Opcodes.BIPUSH
+                || code == Opcodes.SIPUSH || code == Opcodes.ILOAD || code == Opcodes.ALOAD
+                || (code == Opcodes.LDC && ((LdcInsnNode) insn).cst instanceof Integer);
+    }
+
+    private static long apply(int code, long a, long b) {
+        if (a == Long.MIN_VALUE || b == Long.MIN_VALUE) {
+            return Long.MIN_VALUE;
+        }
+        int x = (int) a;
+        int y = (int) b;
+        return switch (code) {
+            case Opcodes.IADD -> x + y;
+            case Opcodes.ISUB -> x - y;
+            case Opcodes.IMUL -> x * y;
+            case Opcodes.ISHL -> x << y;
+            case Opcodes.ISHR -> x >> y;
+            case Opcodes.IUSHR -> x >>> y;
+            case Opcodes.IOR -> x | y;
+            case Opcodes.IXOR -> x ^ y;
+            default -> x & y;
+        };
+    }
+
+    /** A pushed value: a constant, the configured mask, or Long.MIN_VALUE (unknown). */
+    private long value(MethodNode m, AbstractInsnNode insn, int at, AbstractInsnNode[] insns) {
+        int code = insn.getOpcode();
+        if (code >= Opcodes.ICONST_M1 && code <= Opcodes.ICONST_5) {
+            return code - Opcodes.ICONST_0;
+        }
+        if (code == Opcodes.BIPUSH || code == Opcodes.SIPUSH) {
+            return ((IntInsnNode) insn).operand;
+        }
+        if (code == Opcodes.LDC) {
+            return (Integer) ((LdcInsnNode) insn).cst;
+        }
+        if (code == Opcodes.ILOAD && "pollMask".equals(localName(m, ((VarInsnNode) insn).var, insn))) {
+            return interval - 1;
+        }
+        return Long.MIN_VALUE;
+    }
+
+    /** The name of local variable {@code var} where {@code insn} reads it (needs javac's -g). */
+    private static String localName(MethodNode m, int var, AbstractInsnNode insn) {
+        if (m.localVariables == null) {
+            return null;
+        }
+        int at = m.instructions.indexOf(insn);
+        for (LocalVariableNode v : m.localVariables) {
+            if (v.index == var && m.instructions.indexOf(v.start) <= at && at <= m.instructions.indexOf(v.end)) {
+                return v.name;
+            }
+        }
+        return null;
     }
 
     /** True when the loop's head is {@code iload; <int constant>; if_icmpXX} (javac's bounded for). */
@@ -104,34 +408,8 @@ public final class AbortPollCheck {
         return constant && j >= Opcodes.IF_ICMPEQ && j <= Opcodes.IF_ICMPLE;
     }
 
-    private static boolean polled(int[] loop, List<int[]> loops, List<Integer> polls) {
-        for (int p : polls) {
-            if (inside(p, loop)) {
-                return true;
-            }
-        }
-        // A block loop around it that polls outside its other nested loops.
-        for (int[] outer : loops) {
-            if (outer == loop || !contains(outer, loop)) {
-                continue;
-            }
-            for (int p : polls) {
-                if (!inside(p, outer)) {
-                    continue;
-                }
-                boolean direct = true;
-                for (int[] other : loops) {
-                    if (other != outer && contains(outer, other) && inside(p, other) && !contains(other, loop)) {
-                        direct = false;
-                        break;
-                    }
-                }
-                if (direct) {
-                    return true;
-                }
-            }
-        }
-        return false;
+    private static List<ClassPool.Owned> single(ClassPool.Owned o) {
+        return o == null ? List.of() : List.of(o);
     }
 
     private static boolean inside(int i, int[] loop) {
@@ -140,5 +418,11 @@ public final class AbortPollCheck {
 
     private static boolean contains(int[] outer, int[] inner) {
         return outer[0] <= inner[0] && inner[1] <= outer[1] && (outer[0] != inner[0] || outer[1] != inner[1]);
+    }
+
+    private record Poll(int at, long stride) {
+    }
+
+    private record Reached(ClassPool.Owned m, boolean inStep) {
     }
 }

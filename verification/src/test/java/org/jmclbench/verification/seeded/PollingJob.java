@@ -67,7 +67,64 @@ public final class PollingJob {
         return true;
     }
 
-    /** Not terminable (no AbortSignal): its loops are not looked at. */
+    /** Polls every fourth interval, as a mask of {@code (pollMask << 2) | 3} does (seeded). */
+    public boolean wide(AbortSignal abort, int pollMask) {
+        for (int i = 0; i < x.length; i++) { // VIOLATION
+            if ((i & ((pollMask << 2) | 3)) == 0 && abort.abortRequested()) {
+                return false;
+            }
+            x[i] += 1;
+        }
+        return true;
+    }
+
+    /** Polls every 128 particles, a constant stride over the interval of 64 (seeded). */
+    public boolean sparse(AbortSignal abort) {
+        for (int i = 0; i < x.length; i++) { // VIOLATION
+            if (i % 128 == 0 && abort.abortRequested()) {
+                return false;
+            }
+            x[i] -= 1;
+        }
+        return true;
+    }
+
+    /** Between two polling steps calls a helper whose particle loop does not poll (seeded, in the helper). */
+    public boolean callsUnpolledHelper(AbortSignal abort) {
+        if (!predict(1.0, abort)) {
+            return false;
+        }
+        normalise();
+        return predict(-1.0, abort);
+    }
+
+    /** Takes no signal, but runs in a terminable job, outside any particle loop. */
+    private void normalise() {
+        for (int i = 0; i < w.length; i++) { // VIOLATION
+            w[i] /= 2;
+        }
+    }
+
+    /** A helper called from inside a polling particle loop is part of one particle step: fine. */
+    public boolean perParticle(AbortSignal abort, int pollMask) {
+        for (int i = 0; i < x.length; i++) {
+            if ((i & pollMask) == 0 && abort.abortRequested()) {
+                return false;
+            }
+            x[i] = beacons(x[i]);
+        }
+        return true;
+    }
+
+    private double beacons(double v) {
+        double s = 0;
+        for (int b = 0; b < w.length; b++) {
+            s += w[b] * v;
+        }
+        return s;
+    }
+
+    /** Not terminable (no AbortSignal, called by no terminable code): its loops are not looked at. */
     public double sum() {
         double s = 0;
         for (int i = 0; i < x.length; i++) {

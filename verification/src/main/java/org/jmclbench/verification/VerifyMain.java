@@ -27,9 +27,10 @@ import java.util.ServiceLoader;
  * (property, policy, verdict, states, seconds), writes {@code results/verification.json}, and
  * exits 0 only when every property holds and every seeded bug is caught.
  *
- * <p>Usage: {@code VerifyMain [--out FILE] [--logs DIR] [--timeout SECONDS] [--heap MB] [--only PREFIX,...]}.
- * {@code --only} runs the checks whose id starts with one of the prefixes (a partial run: it
- * writes no results file unless {@code --out} is given).
+ * <p>Usage: {@code VerifyMain [--out FILE] [--logs DIR] [--timeout SECONDS] [--heap MB] [--only PREFIX,...]
+ * [--fail-fast]}. {@code --only} runs the checks whose id starts with one of the prefixes (a
+ * partial run: it writes no results file unless {@code --out} is given). {@code --fail-fast} stops
+ * at the first check that fails (the mutation score's runs: one failure is a caught mutant).
  * The class path holds the project's classes; the seeded bugs' catalogue is in verification's
  * test classes, and verify fails when it is missing (no check may pass unseeded).
  */
@@ -46,11 +47,16 @@ public final class VerifyMain {
         Path logs = Paths.get("results", "verification");
         int timeout = TIMEOUT_SECONDS;
         int heap = HEAP_MB;
+        boolean failFast = false;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
+            if (a.equals("--fail-fast")) {
+                failFast = true;
+                continue;
+            }
             if (a.equals("--help") || a.equals("-h")) {
                 System.out.println("usage: jmclbench verify [--out FILE] [--logs DIR] [--timeout SECONDS] [--heap MB]"
-                        + " [--only PREFIX,...]");
+                        + " [--only PREFIX,...] [--fail-fast]");
                 return;
             }
             if (i + 1 >= args.length) {
@@ -69,7 +75,7 @@ public final class VerifyMain {
         if (out == null && only == null) {
             out = Paths.get("results", "verification.json");
         }
-        System.exit(run(out, logs, timeout, heap, only));
+        System.exit(run(out, logs, timeout, heap, only, failFast));
     }
 
     private static int positive(String option, String v) {
@@ -90,7 +96,7 @@ public final class VerifyMain {
         System.exit(2);
     }
 
-    static int run(Path out, Path logs, int timeout, int heap, List<String> only)
+    static int run(Path out, Path logs, int timeout, int heap, List<String> only, boolean failFast)
             throws IOException, InterruptedException {
         long start = System.nanoTime();
         List<CheckCatalog> catalogs = new ArrayList<>();
@@ -104,8 +110,12 @@ public final class VerifyMain {
         JpfRunner runner = null;
         System.out.printf("%-34s %-48s %-9s %-8s %9s %8s%n", "check", "property", "policy", "verdict", "states",
                 "seconds");
+        checks:
         for (CheckCatalog catalog : catalogs) {
             for (StaticCheck s : catalog.staticChecks()) {
+                if (failFast && !ok) {
+                    break checks;
+                }
                 if (!selected(s.id(), only)) {
                     continue;
                 }
@@ -128,6 +138,9 @@ public final class VerifyMain {
                 rows.add(row);
             }
             for (JpfCheck c : catalog.jpfChecks()) {
+                if (failFast && !ok) {
+                    break checks;
+                }
                 if (!selected(c.id(), only)) {
                     continue;
                 }

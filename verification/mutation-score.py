@@ -1,0 +1,243 @@
+#!/usr/bin/env python3
+"""The mutation score of the SCJ mission's checks: how many realistic bugs they catch.
+
+    verification/mutation-score.py [--only ID,...] [--work DIR] [--list]
+
+Copies the tree (the files git knows, as they are now) to a work folder, never touching the
+tree itself, and for each mutant of the catalogue below: writes the bug into the copy, runs the
+unit tests of the modules the mission is made of (core-immortal, rtsj-compat, scj-mission) and,
+when they pass, `./jmclbench verify` on the checks of the real mission (the toy program's checks
+never run shipped code), stopping at the first failing check; then puts the file back. A mutant
+is caught when the unit tests or a check fail, missed when everything passes. Prints a row per
+mutant and the score, and writes them to verification/target/mutation-score.md in the copy's
+source tree (the table for a closing note). Needs what verify needs (JPF_CORE_SRC, Maven's
+cache warm: it runs Maven offline). About an hour on a 2-core VM: a benchmark script, not CI.
+
+Each mutant is a bug a developer could write in the shipped code: one exact text (it must
+occur exactly once in its file, else the catalogue is stale and the script stops with exit 2)
+and its replacement.
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+SCJ = "scj-mission/src/main/java/org/jmclbench/scj/"
+MCL = "core-immortal/src/main/java/org/jmclbench/core/mcl/"
+RT = "rtsj-compat/src/main/java/org/jmclbench/rtsjcompat/"
+
+# id, file, text, replacement, the bug in words
+MUTANTS = [
+    ("gate-skip-no-reservation", SCJ + "JobGate.java",
+     "            owner = k;\n", "",
+     "skip: an admitted event does not reserve the robot, so a second one is admitted too"),
+    ("gate-terminate-latest-unset", SCJ + "JobGate.java",
+     "            latest = k; // the job in progress sees this at its next poll and aborts\n", "",
+     "terminate: a release does not announce itself, so the job in progress is never asked to abort"),
+    ("gate-abort-any-policy", SCJ + "JobGate.java",
+     "return policy == OverrunPolicy.TERMINATE && latest != k;", "return latest != k;",
+     "the abort request is not limited to terminate"),
+    ("gate-never-freed", SCJ + "JobGate.java",
+     "        if (owner == k) {\n            owner = FREE;\n        }\n", "",
+     "skip: the robot is never freed after a job, so every later event is dropped"),
+    ("gate-ended-early", SCJ + "JobGate.java",
+     "return ended == events;", "return ended == events - 1;",
+     "the mission ends one event early"),
+    ("gate-ended-unsynchronised", SCJ + "JobGate.java",
+     "public synchronized boolean ended()", "public boolean ended()",
+     "the count of ended events is updated by two handlers without the lock"),
+    ("gate-overrun-inverted", SCJ + "JobGate.java",
+     "periodicEndNs > releaseNs", "periodicEndNs < releaseNs",
+     "skip: the periodic task's overrun test is inverted"),
+    ("runner-robot-not-released", SCJ + "JobRunner.java",
+     "        gate.release(k);\n", "",
+     "a job ends without handing the robot back to the gate"),
+    ("runner-deadline-from-start", SCJ + "JobRunner.java",
+     "end <= r.deadlineNs[k]", "start <= r.deadlineNs[k]",
+     "a job is judged on time when it started before its deadline"),
+    ("runner-event-not-ended", SCJ + "JobRunner.java",
+     "            r.outcome[k] = JobRecords.TERMINATED;\n", "            r.outcome[k] = JobRecords.TERMINATED;\n            return end;\n",
+     "a terminated job's event is never counted as ended"),
+    ("runner-periodic-stop-inverted", SCJ + "JobRunner.java",
+     "return abortAtNs != Long.MAX_VALUE && clock.nowNs(pollTime) >= abortAtNs;",
+     "return abortAtNs == Long.MAX_VALUE && clock.nowNs(pollTime) >= abortAtNs;",
+     "terminate: the periodic job's stop at its next release is never seen"),
+    ("queue-take-stuck", SCJ + "ReleaseQueue.java",
+     "        head++;\n", "",
+     "the release queue hands out the same event again"),
+    ("queue-offer-unsynchronised", SCJ + "ReleaseQueue.java",
+     "synchronized void offer(int k)", "void offer(int k)",
+     "the sensor offers to the release queue without its lock"),
+    ("robot-predict-unsynchronised", SCJ + "Robot.java",
+     "public synchronized boolean predict(int k, AbortSignal abort)", "public boolean predict(int k, AbortSignal abort)",
+     "predict does not take the robot's monitor"),
+    ("robot-covariance-short", SCJ + "Robot.java",
+     "for (int c = 0; c < 6; c++)", "for (int c = 0; c < 5; c++)",
+     "the record of an update's covariance misses its last term"),
+    ("sensor-not-rearmed", SCJ + "LaserSensor.java",
+     "            scheduleNextReleaseTime(nextRelease);\n", "",
+     "the laser sensor is not rearmed for its next event"),
+    ("sensor-release-before-offer", SCJ + "LaserSensor.java",
+     "            queue.offer(k);\n            update.release();\n",
+     "            update.release();\n            queue.offer(k);\n",
+     "the update handler is released before its event is in the queue"),
+    ("predict-stop-at-own-release", SCJ + "PredictHandler.java",
+     "entry.releaseNs[entry.odoEvent[i + 1]]", "entry.releaseNs[entry.odoEvent[i]]",
+     "terminate: a periodic job is stopped at its own release instead of the next"),
+    ("prealloc-generator-not-committed", MCL + "PreallocatedLocalizer.java",
+     "        swapBuffers();\n        work = rng;\n        rng = r;\n        FilterSteps.moveEstimate",
+     "        swapBuffers();\n        FilterSteps.moveEstimate",
+     "preallocated: a completed predict does not commit the generator it drew from"),
+    ("prealloc-update-draws-committed", MCL + "PreallocatedLocalizer.java",
+     "        Rng r = work;\n        r.copyFrom(rng);\n        if (!FilterSteps.resample",
+     "        Rng r = rng;\n        if (!FilterSteps.resample",
+     "preallocated: an update draws from the committed generator, which an abort then leaves advanced"),
+    ("scoped-generator-not-copied", MCL + "ScopedLocalizer.java",
+     "        rng.copyFrom(r);\n", "",
+     "scoped: a completed job does not copy its generator back"),
+    ("scoped-keeps-private-array", MCL + "ScopedLocalizer.java",
+     "        System.arraycopy(qx, 0, x, 0, n);\n", "        x = qx;\n",
+     "scoped: the committed x keeps the job's private-memory array instead of a copy"),
+    ("scoped-commit-before-poll", MCL + "ScopedLocalizer.java",
+     "        if (!FilterSteps.predict(x, y, theta, qx, qy, qt, n, dx, dy, dtheta, r, abort, pollMask)) {\n            return false;\n        }\n        commit(qx, qy, qt, r);\n",
+     "        boolean completed = FilterSteps.predict(x, y, theta, qx, qy, qt, n, dx, dy, dtheta, r, abort, pollMask);\n        commit(qx, qy, qt, r);\n        if (!completed) {\n            return false;\n        }\n",
+     "scoped: predict commits its particles before it looks at whether it was aborted"),
+    ("predict-polls-every-fourth", MCL + "FilterSteps.java",
+     "            if ((i & pollMask) == 0 && abort.abortRequested()) {\n                return false;\n            }\n            double ndx",
+     "            if ((i & ((pollMask << 2) | 3)) == 0 && abort.abortRequested()) {\n                return false;\n            }\n            double ndx",
+     "predict polls every fourth interval"),
+    ("covariance-no-poll", MCL + "FilterSteps.java",
+     "            if ((i & pollMask) == 0 && abort.abortRequested()) {\n                return false;\n            }\n            double ux",
+     "            double ux",
+     "the covariance loop does not poll"),
+    ("resample-copy-no-poll", MCL + "FilterSteps.java",
+     "            if ((m & pollMask) == 0 && abort.abortRequested()) {\n                return false;\n            }\n            int k = index[m];",
+     "            int k = index[m];",
+     "the resampled particles' copy does not poll"),
+    ("weights-not-normalised", MCL + "FilterSteps.java",
+     "w[i] = w[i] / total;", "w[i] = w[i] * total;",
+     "the weights are multiplied by their total instead of divided"),
+    ("periodic-late-dropped", RT + "PeriodicRuntime.java",
+     "                    countLateRelease();\n", "                    countLateRelease();\n                    k++;\n                    continue;\n",
+     "rtsj-compat: a periodic release that starts late is dropped instead of run"),
+    ("private-memory-not-emptied", RT + "Area.java",
+     "        used = 0;\n        cycles++;", "        cycles++;",
+     "rtsj-compat: a private memory is not emptied after a release"),
+    ("aperiodic-releases-coalesced", RT + "AperiodicRuntime.java",
+     "            pending++;\n", "            pending = 1;\n",
+     "rtsj-compat: releases that arrive while the handler runs are merged into one"),
+]
+
+# The checks of the real mission (the toy program's never run shipped code).
+VERIFY_ONLY = "P6-static,P4-static,mission-"
+UNIT_MODULES = "core-immortal,rtsj-compat,scj-mission"
+
+
+def run(cmd, cwd, log):
+    with open(log, "w") as f:
+        return subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT).returncode
+
+
+def copy_tree(src, dst):
+    files = subprocess.run(["git", "ls-files", "-co", "--exclude-standard", "-z"], cwd=src, check=True,
+                           capture_output=True).stdout.decode().split("\0")
+    for f in files:
+        if not f or not os.path.isfile(os.path.join(src, f)):
+            continue
+        target = os.path.join(dst, f)
+        os.makedirs(os.path.dirname(target), exist_ok=True)
+        if not os.path.exists(target) or open(os.path.join(src, f), "rb").read() != open(target, "rb").read():
+            shutil.copy2(os.path.join(src, f), target)
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    repo = os.path.dirname(here)
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--only", help="comma-separated mutant ids")
+    p.add_argument("--work", default=os.path.join(os.environ.get("TMPDIR", "/tmp"), "jmclbench-mutants"),
+                   help="the folder of the tree's copy (kept, so later runs build incrementally)")
+    p.add_argument("--list", action="store_true", help="list the catalogue and exit")
+    a = p.parse_args()
+    ids = [m[0] for m in MUTANTS]
+    if a.list:
+        for m in MUTANTS:
+            print(f"{m[0]:34} {m[1].split('/')[0]:14} {m[4]}")
+        return 0
+    chosen = MUTANTS
+    if a.only:
+        wanted = a.only.split(",")
+        unknown = [w for w in wanted if w not in ids]
+        if unknown:
+            print(f"mutation-score: --only: no mutant {', '.join(unknown)} (see --list)", file=sys.stderr)
+            return 2
+        chosen = [m for m in MUTANTS if m[0] in wanted]
+    for mid, path, text, _, _ in chosen:
+        n = open(os.path.join(repo, path)).read().count(text)
+        if n != 1:
+            print(f"mutation-score: mutant {mid}: its text occurs {n} times in {path} (catalogue stale)",
+                  file=sys.stderr)
+            return 2
+
+    work = os.path.abspath(a.work)
+    tree = os.path.join(work, "tree")
+    logs = os.path.join(work, "logs")
+    os.makedirs(tree, exist_ok=True)
+    os.makedirs(logs, exist_ok=True)
+    copy_tree(repo, tree)
+    print(f"mutation-score: {len(chosen)} mutants on a copy in {tree}", flush=True)
+    # The unmutated copy must pass, or every mutant would look caught.
+    if run(["mvn", "-o", "-q", "-B", "-pl", UNIT_MODULES, "test"], tree, os.path.join(logs, "baseline-unit.log")) != 0:
+        print(f"mutation-score: the unit tests fail without a mutant (log {logs}/baseline-unit.log)", file=sys.stderr)
+        return 1
+    rows = []
+    for mid, path, text, replacement, why in chosen:
+        t0 = time.time()
+        f = os.path.join(tree, path)
+        original = open(f).read()
+        open(f, "w").write(original.replace(text, replacement, 1))
+        try:
+            unit_log = os.path.join(logs, mid + "-unit.log")
+            rc = run(["mvn", "-o", "-q", "-B", "-pl", UNIT_MODULES, "test"], tree, unit_log)
+            if rc != 0 and "COMPILATION ERROR" in open(unit_log).read():
+                verdict, by = "INVALID", "does not compile"
+            elif rc != 0:
+                failed = sorted(set(re.findall(r"\[ERROR\]\s+(?:\x1b\[[0-9;]*m)*(\w+Test)\.", open(unit_log).read())))
+                verdict, by = "caught", "unit tests: " + (", ".join(failed[:3]) or "failed")
+            else:
+                verify_log = os.path.join(logs, mid + "-verify.log")
+                rc = run(["./jmclbench", "verify", "--only", VERIFY_ONLY, "--fail-fast",
+                          "--logs", os.path.join(logs, mid + "-jpf")], tree, verify_log)
+                failing = [l.split()[0] for l in open(verify_log) if re.search(r"\b(FAILS|MISSED)\b", l)]
+                if rc == 0:
+                    verdict, by = "MISSED", "-"
+                elif failing:
+                    verdict, by = "caught", "verify: " + failing[0]
+                else:
+                    verdict, by = "ERROR", f"verify exit {rc} (log {verify_log})"
+        finally:
+            open(f, "w").write(original)
+        secs = time.time() - t0
+        rows.append((mid, verdict, by, secs, why))
+        print(f"{mid:34} {verdict:8} {by:48} {secs:6.0f} s", flush=True)
+
+    scored = [r for r in rows if r[1] in ("caught", "MISSED")]
+    caught = sum(1 for r in scored if r[1] == "caught")
+    score = f"{caught} of {len(scored)} caught ({100.0 * caught / max(1, len(scored)):.0f}%)"
+    print("mutation score: " + score)
+    out = os.path.join(tree, "verification", "target", "mutation-score.md")
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    with open(out, "w") as md:
+        md.write("| mutant | bug | verdict | caught by | s |\n| --- | --- | --- | --- | ---: |\n")
+        for mid, verdict, by, secs, why in rows:
+            md.write(f"| {mid} | {why} | {verdict} | {by} | {secs:.0f} |\n")
+        md.write(f"\nScore: {score}.\n")
+    print(f"table: {out}")
+    return 0 if all(r[1] in ("caught", "MISSED") for r in rows) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -12,6 +12,8 @@ import org.jmclbench.core.policy.OverrunPolicy;
 public final class RunOptions {
     /** The {@code --engine} that runs the jobs (SPEC sections 4 and 12): a name of {@code engine.Engines}. */
     public String engine = "javase";
+    /** The rtsj engine's design (issue 19). */
+    public org.jmclbench.workload.rtsj.RtsjDesign rtsjDesign = org.jmclbench.workload.rtsj.RtsjDesign.THESIS;
     /**
      * The runtime name of the run path when {@code -j} is not given: the engine's, set by the
      * parser ({@code engine.Engine#runtimeName}); null = the running JVM's.

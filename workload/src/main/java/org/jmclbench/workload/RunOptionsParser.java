@@ -5,6 +5,7 @@ import java.util.Locale;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.workload.engine.Engine;
 import org.jmclbench.workload.engine.Engines;
+import org.jmclbench.workload.rtsj.RtsjDesign;
 import org.jmclbench.core.policy.OverrunPolicy;
 
 /**
@@ -27,8 +28,11 @@ public final class RunOptionsParser {
             "  --policy skip|terminate|queue   event released while a job runs (default skip)",
             "  --ideal                  one thread, no timing: the infinitely fast computer",
             "  -c, --covariance         compute and write the covariance after each update",
-            "  --engine javase|scj|hvm  the Java SE release engine, the SCJ mission, or the SCJ mission on",
-            "                           the icecap HVM (docs/HVM.md; same as jmclbench run-hvm) (default javase)",
+            "  --engine javase|scj|rtsj|hvm  the Java SE release engine, the SCJ mission, the thesis's RTSJ",
+            "                           program, or the SCJ mission on the icecap HVM (docs/HVM.md; same as",
+            "                           jmclbench run-hvm) (default javase)",
+            "  --rtsj-design thesis|atomic  rtsj: terminate's ATC deferred by the robot's monitor (thesis), or",
+            "                           delivered at the job's polls before its commit (atomic) (default thesis)",
             "  --memory STYLE           memory style: preallocated|allocating (javase), preallocated|scoped (scj);",
             "                           default preallocated",
             "  --area-size AREA=BYTES   scj: size of a memory area (immortal, mission, predict, update, sensor);",
@@ -58,6 +62,7 @@ public final class RunOptionsParser {
         }
         boolean terminateFlag = false;
         boolean policyGiven = false;
+        boolean designGiven = false;
         while (i < args.length) {
             String arg = args[i++];
             String name = arg;
@@ -139,6 +144,16 @@ public final class RunOptionsParser {
                     o.engine = Engines.named(name, value(name, inline, args, i)).name();
                     i += inline == null ? 1 : 0;
                     break;
+                case "--rtsj-design": {
+                    String v = value(name, inline, args, i);
+                    i += inline == null ? 1 : 0;
+                    o.rtsjDesign = RtsjDesign.of(v);
+                    if (o.rtsjDesign == null) {
+                        throw BadInputException.ofOption(name, "'" + v + "' is not one of thesis|atomic");
+                    }
+                    designGiven = true;
+                    break;
+                }
                 case "--area-size": {
                     String v = value(name, inline, args, i);
                     i += inline == null ? 1 : 0;
@@ -229,9 +244,12 @@ public final class RunOptionsParser {
         if (files == 3 && o.dataset != null) {
             throw BadInputException.ofOption("--dataset", "cannot be combined with -odo/-laser/-real");
         }
+        if (designGiven && !"rtsj".equals(o.engine)) {
+            throw BadInputException.ofOption("--rtsj-design", "chooses the rtsj engine's design: needs --engine rtsj");
+        }
         Engine engine = Engines.named("--engine", o.engine);
         engine.checkOptions(o);
-        o.engineRuntimeName = engine.runtimeName(RunOptions.defaultRuntimeName());
+        o.engineRuntimeName = engine.runtimeName(RunOptions.defaultRuntimeName(), o);
         return o;
     }
 

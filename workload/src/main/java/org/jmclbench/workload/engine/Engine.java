@@ -43,6 +43,14 @@ public interface Engine {
     }
 
     /**
+     * The runtime name for these options: {@link #runtimeName(String)} unless an option of the
+     * engine changes what runs (the rtsj engine's design).
+     */
+    default String runtimeName(String jvmName, RunOptions options) {
+        return runtimeName(jvmName);
+    }
+
+    /**
      * Runs the test; on return every event of the result's records is done, late, skipped or
      * terminated. A failure of the runtime under test or of the benchmark is a {@link RunFailure}.
      */

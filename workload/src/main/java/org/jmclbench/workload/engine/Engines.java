@@ -8,6 +8,7 @@ import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.IdealEngine;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.release.JavaSeEngine;
+import org.jmclbench.workload.rtsj.RtsjEngine;
 import org.jmclbench.workload.scj.ScjEngine;
 
 /**
@@ -25,6 +26,7 @@ public final class Engines {
         List<Engine> engines = new ArrayList<>();
         engines.add(new JavaSeEngine());
         engines.add(new ScjEngine());
+        engines.add(new RtsjEngine());
         for (Engine e : ServiceLoader.load(Engine.class)) {
             engines.add(e);
         }

@@ -85,8 +85,8 @@ class ScjEngineTest {
 
     @Test
     void anUnknownEngineOrAMemoryStyleTheEngineLacksIsBadUsage() {
-        assertEquals(2, main("run", "--engine", "rtsj"));
-        assertTrue(err().startsWith("jmclbench: --engine: 'rtsj'"), err());
+        assertEquals(2, main("run", "--engine", "jamaica"));
+        assertTrue(err().startsWith("jmclbench: --engine: 'jamaica'"), err());
         assertEquals(1, err().trim().split("\n").length, err());
         assertEquals(2, main("run", "--engine", "scj", "--memory", "allocating"));
         assertTrue(err().startsWith("jmclbench: --memory:"), err());

@@ -1,0 +1,39 @@
+package org.jmclbench.workload.rtsj;
+
+import javax.realtime.AsynchronouslyInterruptedException;
+
+import org.jmclbench.core.mcl.AbortSignal;
+
+/**
+ * The atomic design's abort signal: the MCL loops poll it every poll interval, and each poll
+ * calls {@link #deliveryPoint()}, an AI-enabled method (it declares the AIE, so the build weaves a
+ * delivery point at its entry). An AIE fired at the job is thrown there and unwinds the localizer,
+ * which is not AI-enabled and commits only after its loops: the job leaves the robot unchanged.
+ * Between two polls the localizer runs non-AI code, where RTSJ defers the AIE.
+ */
+final class DeliveryPoints implements AbortSignal {
+    static final DeliveryPoints INSTANCE = new DeliveryPoints();
+
+    private DeliveryPoints() {
+    }
+
+    @Override
+    public boolean abortRequested() {
+        try {
+            deliveryPoint();
+        } catch (AsynchronouslyInterruptedException e) {
+            // Passed on unchanged: AbortSignal cannot declare the AIE, the JVM does not care.
+            throw DeliveryPoints.<RuntimeException>passOn(e);
+        }
+        return false;
+    }
+
+    /** A delivery point of its own: woven with a poll at its entry. */
+    static void deliveryPoint() throws AsynchronouslyInterruptedException {
+    }
+
+    @SuppressWarnings("unchecked")
+    private static <T extends Throwable> T passOn(Throwable e) throws T {
+        throw (T) e;
+    }
+}

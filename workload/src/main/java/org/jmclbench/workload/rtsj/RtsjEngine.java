@@ -1,0 +1,132 @@
+package org.jmclbench.workload.rtsj;
+
+import java.io.IOException;
+import java.util.Collections;
+
+import javax.realtime.PriorityScheduler;
+
+import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.policy.OverrunPolicy;
+import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.rtsjcompat.ScjLauncher;
+import org.jmclbench.workload.BadInputException;
+import org.jmclbench.workload.RunFailure;
+import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.engine.Engine;
+import org.jmclbench.workload.engine.EngineInput;
+import org.jmclbench.workload.engine.EngineResult;
+import org.jmclbench.workload.mcl.Localizers;
+import org.jmclbench.workload.output.HeapUse;
+import org.jmclbench.workload.record.Stats;
+import org.jmclbench.workload.release.LocalizerJob;
+import org.jmclbench.workload.release.ReleaseSchedule;
+
+/**
+ * {@code --engine rtsj}: the thesis's RTSJ program on rtsj-compat's RTSJ layer ({@link RtsjReplay}),
+ * with terminate by asynchronous transfer of control in the design {@code --rtsj-design} names
+ * ({@link RtsjDesign}); the job code's delivery points are woven at build time (rtsj-weaver).
+ * Its one memory area is the heap.
+ */
+public final class RtsjEngine implements Engine {
+    /** Events of the class-loading replay that runs before the measured one when there is no warm-up. */
+    private static final int PRELOAD_EVENTS = 4;
+    /** Beyond the replay's last release, how long the engine waits for the jobs before it calls the run hung. */
+    private static final long HANG_MARGIN_NS = 120_000_000_000L;
+
+    @Override
+    public String name() {
+        return "rtsj";
+    }
+
+    /** The design is part of the runtime name: the two designs' runs never share a folder. */
+    @Override
+    public String runtimeName(String jvmName, RunOptions options) {
+        return jvmName + "-rtsj-" + options.rtsjDesign.label;
+    }
+
+    @Override
+    public void checkOptions(RunOptions o) throws BadInputException {
+        if (o.memory == MclConfig.Memory.SCOPED) {
+            throw BadInputException.ofOption("--memory", "'scoped' is not a memory style of the rtsj engine"
+                    + " (preallocated|allocating; scoped is --engine scj)");
+        }
+        if (!o.areaSizes.isEmpty()) {
+            throw BadInputException.ofOption("--area-size", "sets SCJ memory areas: needs --engine scj");
+        }
+    }
+
+    @Override
+    public EngineResult run(EngineInput in) throws IOException, RunFailure {
+        RunOptions o = in.options;
+        Dataset d = in.dataset;
+        Timeline timeline = d.timeline();
+        ReleaseSchedule schedule = ReleaseSchedule.of(timeline, o.timeScale);
+        RtsjFacts facts = new RtsjFacts();
+        facts.design = o.rtsjDesign;
+        facts.dispatcherPriority = PriorityScheduler.instance().getMaxPriority();
+        facts.handlerPriority = facts.dispatcherPriority - 1;
+        facts.prioritiesApplied = ScjLauncher.prioritiesApplied();
+        int warmup = o.warmupS > 0 ? schedule.countBefore(o.warmupS, o.timeScale) : 0;
+        facts.warmupEvents = warmup;
+        try {
+            if (warmup > 0) {
+                replay(o, d, schedule.prefix(warmup), o.policy);
+            } else {
+                // Class loading out of the measured window: queue runs every job of the first
+                // events, then the run's own policy loads what only its path touches.
+                ReleaseSchedule first = schedule.prefix(Math.min(PRELOAD_EVENTS, schedule.size()));
+                replay(o, d, first, OverrunPolicy.QUEUE);
+                if (o.policy != OverrunPolicy.QUEUE) {
+                    replay(o, d, first, o.policy);
+                }
+            }
+            JobRecords records = new JobRecords(timeline, o.covariance);
+            Localizer localizer = Localizers.create(o.mclConfig(), d.playground, d.startX, d.startY, d.startTheta);
+            records.setInitialEstimate(localizer.estimateX(), localizer.estimateY(), localizer.estimateTheta());
+            HeapUse heap = HeapUse.begin();
+            RtsjReplay replay = new RtsjReplay(schedule, o.policy, o.rtsjDesign,
+                    new LocalizerJob(d, timeline, localizer, records), records);
+            replay.run(hangNs(schedule));
+            records.durationNs = System.nanoTime() - replay.runStartNanoTime();
+            abortLatency(replay, records, facts);
+            return new EngineResult(records, Collections.singletonList(heap.end(null, records)), facts);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new RunFailure("the rtsj run was interrupted");
+        }
+    }
+
+    /** A replay on a throwaway localizer and records (class loading, warm-up). */
+    private static void replay(RunOptions o, Dataset d, ReleaseSchedule schedule, OverrunPolicy policy)
+            throws RunFailure, InterruptedException {
+        Timeline timeline = d.timeline();
+        JobRecords scratch = new JobRecords(timeline, o.covariance);
+        Localizer throwaway = Localizers.create(o.mclConfig(), d.playground, d.startX, d.startY, d.startTheta);
+        new RtsjReplay(schedule, policy, o.rtsjDesign, new LocalizerJob(d, timeline, throwaway, scratch), scratch)
+                .run(hangNs(schedule));
+    }
+
+    private static long hangNs(ReleaseSchedule schedule) {
+        return (schedule.size() == 0 ? 0 : schedule.releaseNs(schedule.size() - 1)) + HANG_MARGIN_NS;
+    }
+
+    /** Abort latency of every job an AIE was fired at: from the fire to the job's end (its remaining time, when deferred). */
+    private static void abortLatency(RtsjReplay replay, JobRecords records, RtsjFacts facts) {
+        int n = records.outcome.length;
+        long[] latency = new long[n];
+        int count = 0;
+        for (int k = 0; k < n; k++) {
+            if (replay.abortRequestNs[k] >= 0 && replay.abortEndNs[k] >= 0) {
+                latency[count++] = Math.max(0, replay.abortEndNs[k] - replay.abortRequestNs[k]);
+                if (records.outcome[k] != JobRecords.TERMINATED) {
+                    facts.abortsDeferredToCompletion++;
+                }
+            }
+        }
+        facts.abortsRequested = count;
+        facts.abortLatency = Stats.of(latency, count);
+    }
+}

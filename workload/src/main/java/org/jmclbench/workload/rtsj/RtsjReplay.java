@@ -1,0 +1,320 @@
+package org.jmclbench.workload.rtsj;
+
+import java.util.List;
+import java.util.concurrent.locks.ReentrantLock;
+
+import javax.realtime.AbsoluteTime;
+import javax.realtime.AsyncEvent;
+import javax.realtime.AsynchronouslyInterruptedException;
+import javax.realtime.BoundAsyncEventHandler;
+import javax.realtime.Interruptible;
+import javax.realtime.PriorityParameters;
+import javax.realtime.PriorityScheduler;
+import javax.realtime.RealtimeThread;
+
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.policy.OverrunPolicy;
+import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.rtsjcompat.MissionFailure;
+import org.jmclbench.rtsjcompat.RtsjRuntime;
+import org.jmclbench.workload.RunFailure;
+import org.jmclbench.workload.release.EventJob;
+import org.jmclbench.workload.release.ReleaseSchedule;
+
+/**
+ * One replay of the timeline in the thesis's RTSJ structure (section 4.2.5). A dispatcher
+ * {@link RealtimeThread}, above the tasks' priority, sleeps to each event's absolute release time
+ * and fires its task's {@link AsyncEvent}; each task (predict, update) is a
+ * {@link BoundAsyncEventHandler} whose logic takes the events released to it in order (RTSJ keeps
+ * one pending fire per release). Whether a job is running is the robot's {@link ReentrantLock}
+ * ({@code isLocked()}, as in the thesis). The policy is applied by the dispatcher at each release:
+ * skip drops the event while a job runs; queue releases it to wait; terminate fires the
+ * {@link AsynchronouslyInterruptedException} of the job in progress, and a job superseded before
+ * it started never starts. Every event ends once: done, late, skipped or terminated.
+ *
+ * <p>Times in the records are ns from the release of time 0. Per event it also keeps when an
+ * abort was requested (the AIE fired), so that abort latency (request to the job's end) is
+ * measured, for the thesis design the job's remaining time.
+ */
+final class RtsjReplay {
+    /** The handlers are started this long before the release of time 0. */
+    private static final long LEAD_NS = 20_000_000L;
+    private static final String[] TASK_NAMES = {"predict", "update"};
+
+    private final ReleaseSchedule schedule;
+    private final OverrunPolicy policy;
+    private final RtsjDesign design;
+    private final EventJob job;
+    private final JobRecords records;
+    /** The thesis's {@code synchronized (robot)}: the robot's monitor. */
+    private final Object robot = new Object();
+    /** Held by the job in progress: the thesis's test of whether a task is running. */
+    private final ReentrantLock busy = new ReentrantLock();
+    private final Task[] tasks = new Task[TASK_NAMES.length];
+    /** Per event: when its abort was requested (its AIE fired at it), System.nanoTime; -1 never. */
+    final long[] abortRequestNs;
+    /** Per event: when the job it was asked to abort ended; -1 never asked. */
+    final long[] abortEndNs;
+    /** terminate: the latest released event, the only one that may run. */
+    private volatile int latest = -1;
+    /** The event whose job is in its doInterruptible (terminate), or -1. */
+    private volatile int running = -1;
+    private volatile int ended;
+    private long t0;
+
+    RtsjReplay(ReleaseSchedule schedule, OverrunPolicy policy, RtsjDesign design, EventJob job, JobRecords records) {
+        this.schedule = schedule;
+        this.policy = policy;
+        this.design = design;
+        this.job = job;
+        this.records = records;
+        this.abortRequestNs = new long[schedule.size()];
+        this.abortEndNs = new long[schedule.size()];
+    }
+
+    /** The System.nanoTime of the release of time 0. */
+    long runStartNanoTime() {
+        return t0;
+    }
+
+    /**
+     * Runs the replay to its end, then stops the handlers. A job that throws, a handler that does
+     * not end, an event never accounted for or the robot's lock left held is the run's failure.
+     */
+    void run(long hangNs) throws RunFailure, InterruptedException {
+        int n = schedule.size();
+        for (int k = 0; k < n; k++) {
+            records.releaseNs[k] = schedule.releaseNs(k);
+            records.deadlineNs[k] = schedule.deadlineNs(k);
+            abortRequestNs[k] = -1;
+            abortEndNs[k] = -1;
+        }
+        RtsjRuntime.reset();
+        int max = PriorityScheduler.instance().getMaxPriority();
+        int[] count = new int[tasks.length];
+        for (int k = 0; k < n; k++) {
+            count[schedule.task(k)]++;
+        }
+        for (int t = 0; t < tasks.length; t++) {
+            tasks[t] = new Task(count[t], max - 1);
+        }
+        Dispatcher dispatcher = new Dispatcher(max);
+        t0 = System.nanoTime() + LEAD_NS;
+        dispatcher.start();
+        dispatcher.join(Math.max(1, (hangNs + LEAD_NS) / 1_000_000L));
+        List<String> alive = RtsjRuntime.stopHandlers(10_000);
+        if (dispatcher.isAlive()) {
+            dispatcher.interrupt();
+            throw new RunFailure("the rtsj replay did not end within " + hangNs / 1_000_000_000L + " s: " + ended
+                    + " of " + n + " events ended" + (alive.isEmpty() ? "" : "; handlers still running: " + alive));
+        }
+        MissionFailure failure = RtsjRuntime.failure();
+        if (failure != null) {
+            throw new RunFailure("a job failed in the rtsj engine: " + failure.getMessage());
+        }
+        if (dispatcher.failure != null) {
+            throw new RunFailure("the rtsj dispatcher failed: " + dispatcher.failure);
+        }
+        if (!alive.isEmpty()) {
+            throw new RunFailure("rtsj handlers did not end: " + alive);
+        }
+        if (busy.isLocked()) {
+            throw new RunFailure("a job of the rtsj engine left the robot's lock held");
+        }
+        for (int k = 0; k < n; k++) {
+            if (records.outcome[k] == JobRecords.PENDING) {
+                throw new RunFailure("event " + k + " was never accounted for by the rtsj engine");
+            }
+        }
+    }
+
+    private synchronized void ended() {
+        ended++;
+        if (ended == schedule.size()) {
+            notifyAll();
+        }
+    }
+
+    private synchronized void awaitEveryEvent() throws InterruptedException {
+        while (ended < schedule.size()) {
+            wait();
+        }
+    }
+
+    /** The thesis's control thread: sleeps to each release and fires the event. */
+    private final class Dispatcher extends RealtimeThread {
+        private final AbsoluteTime next = new AbsoluteTime();
+        volatile Throwable failure;
+
+        Dispatcher(int priority) {
+            super(new PriorityParameters(priority));
+            setDaemon(true);
+        }
+
+        @Override
+        public void run() {
+            try {
+                dispatch();
+                awaitEveryEvent();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            } catch (Throwable e) {
+                failure = e;
+            }
+        }
+
+        private void dispatch() throws InterruptedException {
+            int n = schedule.size();
+            for (int k = 0; k < n; k++) {
+                long at = t0 + schedule.releaseNs(k);
+                next.set(at / 1_000_000L, (int) (at % 1_000_000L));
+                RealtimeThread.sleep(next);
+                Task task = tasks[schedule.task(k)];
+                if (policy == OverrunPolicy.SKIP && busy.isLocked()) {
+                    records.wakeNs[k] = -1;
+                    records.outcome[k] = JobRecords.SKIPPED; // the robot is busy: dropped
+                    ended();
+                    continue;
+                }
+                if (policy == OverrunPolicy.TERMINATE) {
+                    latest = k; // a job not started yet sees this and never starts
+                    int r = running;
+                    if (r >= 0) {
+                        abortRequestNs[r] = System.nanoTime();
+                        if (!tasks[schedule.task(r)].aie.fire()) {
+                            abortRequestNs[r] = -1; // it ended meanwhile: nothing was asked of it
+                        }
+                    }
+                }
+                task.offer(k);
+                task.event.fire();
+            }
+        }
+    }
+
+    /**
+     * One task: its event, its bound handler, its AIE and the events released to it. The
+     * handler's logic runs one job per release; under terminate inside the AIE's
+     * {@code doInterruptible}, where {@link #run(AsynchronouslyInterruptedException)} is the
+     * AI-enabled part (woven with delivery points) and the robot work happens in non-AI methods.
+     */
+    private final class Task implements Runnable, Interruptible {
+        final AsyncEvent event = new AsyncEvent();
+        final AsynchronouslyInterruptedException aie = new AsynchronouslyInterruptedException();
+        private final int[] fifo;
+        private volatile int head;
+        private volatile int tail;
+        // The job in progress, written by the handler's thread only.
+        private int k;
+        private long start;
+        private long end;
+        private boolean committed;
+
+        Task(int capacity, int priority) {
+            fifo = new int[Math.max(1, capacity)];
+            event.addHandler(new BoundAsyncEventHandler(new PriorityParameters(priority), null, null, null, null,
+                    false, this));
+        }
+
+        /** Dispatcher side, before the fire: the next event of this task. */
+        void offer(int event) {
+            fifo[tail % fifo.length] = event;
+            tail = tail + 1; // volatile write publishes the slot before the fire
+        }
+
+        /** One release: the oldest event released to this task. */
+        @Override
+        public void run() {
+            int h = head;
+            k = fifo[h % fifo.length];
+            head = h + 1;
+            records.wakeNs[k] = System.nanoTime() - t0;
+            start = -1;
+            end = -1;
+            committed = false;
+            if (policy == OverrunPolicy.TERMINATE) {
+                aie.doInterruptible(this);
+            } else {
+                lockAndRun(AbortSignal.NEVER); // no ATC outside terminate: no delivery point runs
+            }
+            finish();
+        }
+
+        /**
+         * The AI-enabled part of a terminable job. The AIE may be thrown at any delivery point
+         * here (after each call, at the entry): before the job starts, at a poll of the localizer
+         * (atomic), or after the robot's monitor is left (thesis: the whole job has run).
+         */
+        @Override
+        public void run(AsynchronouslyInterruptedException interrupt) throws AsynchronouslyInterruptedException {
+            running = k; // published before latest is read: a later release sees it and fires
+            if (latest != k) {
+                running = -1;
+                return; // superseded before it started: never starts
+            }
+            lockAndRun(design == RtsjDesign.ATOMIC ? DeliveryPoints.INSTANCE : AbortSignal.NEVER);
+        }
+
+        @Override
+        public void interruptAction(AsynchronouslyInterruptedException interrupt) {
+            // finish() records the outcome from what the job had done when the AIE arrived.
+        }
+
+        /**
+         * Takes the robot and runs the job (non-AI: no delivery point in here but those of the
+         * atomic design's signal); the lock is released whatever ends the job. The thesis design
+         * holds the robot's monitor for the whole job.
+         */
+        private void lockAndRun(AbortSignal signal) {
+            try {
+                busy.lock();
+                start = System.nanoTime();
+                if (design == RtsjDesign.THESIS) {
+                    synchronized (robot) {
+                        runJob(signal);
+                    }
+                } else {
+                    runJob(signal);
+                }
+            } finally {
+                running = -1;
+                if (busy.isHeldByCurrentThread()) {
+                    busy.unlock();
+                }
+            }
+        }
+
+        /** The job on the robot; a completed job's end is taken before anything else can happen. */
+        private void runJob(AbortSignal signal) {
+            if (job.run(k, signal)) {
+                end = System.nanoTime();
+                committed = true;
+            }
+        }
+
+        /** The event's record, from what the job did (an AIE may have cut it short anywhere). */
+        private void finish() {
+            long now = System.nanoTime();
+            JobRecords r = records;
+            r.cpuNs[k] = -1;
+            if (start < 0) {
+                r.startNs[k] = -1;
+                r.endNs[k] = -1;
+                r.outcome[k] = JobRecords.TERMINATED; // superseded before it started
+            } else {
+                long jobEnd = committed ? end : now;
+                r.startNs[k] = start - t0;
+                r.endNs[k] = jobEnd - t0;
+                if (!committed) {
+                    r.outcome[k] = JobRecords.TERMINATED;
+                } else {
+                    r.outcome[k] = jobEnd - t0 <= r.deadlineNs[k] ? JobRecords.DONE : JobRecords.LATE;
+                }
+                if (abortRequestNs[k] >= 0) {
+                    abortEndNs[k] = jobEnd;
+                }
+            }
+            ended();
+        }
+    }
+}

@@ -1,0 +1,104 @@
+package org.jmclbench.workload.rtsj;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.concurrent.atomic.AtomicInteger;
+
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.policy.OverrunPolicy;
+import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.workload.release.EventJob;
+import org.jmclbench.workload.release.ReleaseSchedule;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The rtsj engine's asynchronous transfer of control on the woven classes: a long predict job
+ * (polling its abort signal as the MCL loops do) is overtaken by an update release 50 ms later.
+ * Under terminate, design atomic throws the AIE at the job's next poll, before its commit; design
+ * thesis defers it until the job has run to its end. Times are generous: this is a 2-core VM.
+ */
+class RtsjReplayTest {
+    private static final long JOB_NS = 400_000_000L;
+    private static final long SECOND_RELEASE_NS = 50_000_000L;
+
+    /** Job 0 runs 400 ms polling every 0.1 ms; job 1 returns at once. Counts commits. */
+    private static final class LongFirstJob implements EventJob {
+        final AtomicInteger commits = new AtomicInteger();
+
+        @Override
+        public boolean run(int k, AbortSignal abort) {
+            if (k == 0) {
+                long end = System.nanoTime() + JOB_NS;
+                long nextPoll = 0;
+                while (System.nanoTime() < end) {
+                    if (System.nanoTime() >= nextPoll) {
+                        if (abort.abortRequested()) {
+                            return false;
+                        }
+                        nextPoll = System.nanoTime() + 100_000L;
+                    }
+                }
+            }
+            commits.incrementAndGet();
+            return true;
+        }
+    }
+
+    private static RtsjReplay replay(RtsjDesign design, OverrunPolicy policy, EventJob job, JobRecords records) {
+        ReleaseSchedule schedule = ReleaseSchedule.of(new long[] {0, SECOND_RELEASE_NS},
+                new long[] {10_000_000_000L, 10_000_000_000L}, new int[] {Timeline.PREDICT, Timeline.UPDATE});
+        return new RtsjReplay(schedule, policy, design, job, records);
+    }
+
+    private static JobRecords records() {
+        return new JobRecords(Timeline.merge(new double[] {0.0}, new double[] {0.05}), false);
+    }
+
+    @Test
+    void atomicDeliversTheAieAtTheNextPollBeforeTheCommit() throws Exception {
+        LongFirstJob job = new LongFirstJob();
+        JobRecords r = records();
+        RtsjReplay replay = replay(RtsjDesign.ATOMIC, OverrunPolicy.TERMINATE, job, r);
+        replay.run(60_000_000_000L);
+        assertEquals(JobRecords.TERMINATED, r.outcome[0]);
+        assertEquals(JobRecords.DONE, r.outcome[1]);
+        assertEquals(1, job.commits.get(), "only the second job committed");
+        assertTrue(replay.abortRequestNs[0] >= 0, "an AIE was fired at the first job");
+        long latency = replay.abortEndNs[0] - replay.abortRequestNs[0];
+        assertTrue(latency < JOB_NS / 2, "aborted at a poll, not at the job's end: " + latency + " ns");
+    }
+
+    @Test
+    void thesisDefersTheAieUntilTheJobHasRunToItsEnd() throws Exception {
+        LongFirstJob job = new LongFirstJob();
+        JobRecords r = records();
+        RtsjReplay replay = replay(RtsjDesign.THESIS, OverrunPolicy.TERMINATE, job, r);
+        replay.run(60_000_000_000L);
+        assertNotEquals(JobRecords.TERMINATED, r.outcome[0], "the robot's monitor defers the AIE");
+        assertEquals(2, job.commits.get());
+        assertTrue(replay.abortRequestNs[0] >= 0, "an AIE was fired at the first job");
+        long latency = replay.abortEndNs[0] - replay.abortRequestNs[0];
+        assertTrue(latency >= JOB_NS - SECOND_RELEASE_NS - 20_000_000L,
+                "the abort took the job's remaining time: " + latency + " ns");
+    }
+
+    @Test
+    void skipDropsTheReleaseWhileTheRobotIsBusyAndQueueRunsIt() throws Exception {
+        for (RtsjDesign design : RtsjDesign.values()) {
+            LongFirstJob job = new LongFirstJob();
+            JobRecords r = records();
+            replay(design, OverrunPolicy.SKIP, job, r).run(60_000_000_000L);
+            assertEquals(JobRecords.DONE, r.outcome[0], design.label);
+            assertEquals(JobRecords.SKIPPED, r.outcome[1], design.label);
+            job = new LongFirstJob();
+            r = records();
+            replay(design, OverrunPolicy.QUEUE, job, r).run(60_000_000_000L);
+            assertEquals(JobRecords.DONE, r.outcome[0], design.label);
+            assertEquals(JobRecords.DONE, r.outcome[1], design.label);
+            assertTrue(r.startNs[1] >= r.endNs[0], "queue: the update waited for the robot");
+        }
+    }
+}

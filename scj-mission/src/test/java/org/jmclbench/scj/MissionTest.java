@@ -113,6 +113,9 @@ class MissionTest {
                 assertNotEquals(JobRecords.PENDING, r.outcome[k], policy + ": event " + k + " never ended");
                 if (r.completed(k)) {
                     order[completed++] = k;
+                    // Done means ended by the deadline, late after it (whatever the start).
+                    assertEquals(r.endNs[k] <= r.deadlineNs[k] ? JobRecords.DONE : JobRecords.LATE, r.outcome[k],
+                            policy + " " + memory + ": outcome of event " + k + " against its deadline");
                 }
                 if (policy == OverrunPolicy.QUEUE) {
                     assertTrue(r.completed(k), "queue processes every event");

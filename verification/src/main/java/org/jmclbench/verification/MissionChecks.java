@@ -44,7 +44,7 @@ import java.util.Set;
 public final class MissionChecks {
     /** What one mission search checks. */
     public static final Set<Property> SEARCH = EnumSet.of(Property.P1, Property.P3, Property.P4, Property.P5,
-            Property.P6);
+            Property.P6, Property.P7);
     static final List<String> POLICIES = List.of("skip", "terminate", "queue");
     static final List<String> STYLES = List.of("preallocated", "scoped");
 

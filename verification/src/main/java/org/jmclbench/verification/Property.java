@@ -12,7 +12,8 @@ public enum Property {
     P3("an aborted job leaves the robot bit-identical"),
     P4("an abort request is honoured within the poll interval"),
     P5("every event ends exactly once"),
-    P6("the SCJ memory rules hold");
+    P6("the SCJ memory rules hold"),
+    P7("an event is dropped or aborted only as its policy says");
 
     /** The property in words. */
     public final String wording;

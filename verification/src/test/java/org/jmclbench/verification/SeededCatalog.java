@@ -13,6 +13,7 @@ import org.jmclbench.verification.seeded.mission.NeverEnds;
 import org.jmclbench.verification.seeded.mission.PollIgnored;
 import org.jmclbench.verification.seeded.mission.PrivateIntoMission;
 import org.jmclbench.verification.seeded.mission.RecordsAborted;
+import org.jmclbench.verification.seeded.mission.RobotKept;
 import org.jmclbench.verification.seeded.mission.StrayAllocation;
 import org.jmclbench.verification.seeded.mission.UnguardedRead;
 import org.jmclbench.verification.seeded.mission.WidePoll;
@@ -61,6 +62,8 @@ public final class SeededCatalog implements CheckCatalog {
                         "predict", "robot/gate lock-order inversion"),
                 mission("lost-release", Property.P5, queue, LostRelease.class, LostRelease.EarlyEnd.class, "ended",
                         "gate ending the mission after the first event"),
+                mission("robot-kept", Property.P7, MissionRun.of("skip", "preallocated"), RobotKept.class,
+                        RobotKept.KeepingGate.class, "admit", "gate that never frees the robot under skip"),
                 mission("never-ends", Property.P5, queue, NeverEnds.class, NeverEnds.OffByOne.class, "ended",
                         "gate that never ends the mission"),
                 mission("unguarded-read", Property.P2, MissionChecks.raceRun("terminate"), UnguardedRead.class,

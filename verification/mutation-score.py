@@ -136,9 +136,22 @@ VERIFY_ONLY = "P6-static,P4-static,mission-"
 UNIT_MODULES = "core-immortal,rtsj-compat,scj-mission"
 
 
-def run(cmd, cwd, log):
+# A mutant that makes a test or a check hang is caught (the suite does not pass), after this long.
+UNIT_TIMEOUT_S = 600
+VERIFY_TIMEOUT_S = 1200
+HUNG = -9
+
+
+def run(cmd, cwd, log, timeout):
+    """The command's exit status, or HUNG when it ran past timeout (its whole process group killed)."""
     with open(log, "w") as f:
-        return subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT).returncode
+        p = subprocess.Popen(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, start_new_session=True)
+        try:
+            return p.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, 9)
+            p.wait()
+            return HUNG
 
 
 def copy_tree(src, dst):
@@ -190,7 +203,8 @@ def main():
     copy_tree(repo, tree)
     print(f"mutation-score: {len(chosen)} mutants on a copy in {tree}", flush=True)
     # The unmutated copy must pass, or every mutant would look caught.
-    if run(["mvn", "-o", "-q", "-B", "-pl", UNIT_MODULES, "test"], tree, os.path.join(logs, "baseline-unit.log")) != 0:
+    if run(["mvn", "-o", "-q", "-B", "-pl", UNIT_MODULES, "test"], tree, os.path.join(logs, "baseline-unit.log"),
+           UNIT_TIMEOUT_S) != 0:
         print(f"mutation-score: the unit tests fail without a mutant (log {logs}/baseline-unit.log)", file=sys.stderr)
         return 1
     rows = []
@@ -201,8 +215,10 @@ def main():
         open(f, "w").write(original.replace(text, replacement, 1))
         try:
             unit_log = os.path.join(logs, mid + "-unit.log")
-            rc = run(["mvn", "-o", "-q", "-B", "-pl", UNIT_MODULES, "test"], tree, unit_log)
-            if rc != 0 and "COMPILATION ERROR" in open(unit_log).read():
+            rc = run(["mvn", "-o", "-q", "-B", "-pl", UNIT_MODULES, "test"], tree, unit_log, UNIT_TIMEOUT_S)
+            if rc == HUNG:
+                verdict, by = "caught", f"unit tests: hung (killed after {UNIT_TIMEOUT_S} s)"
+            elif rc != 0 and "COMPILATION ERROR" in open(unit_log).read():
                 verdict, by = "INVALID", "does not compile"
             elif rc != 0:
                 failed = sorted(set(re.findall(r"\[ERROR\]\s+(?:\x1b\[[0-9;]*m)*(\w+Test)\.", open(unit_log).read())))
@@ -210,9 +226,11 @@ def main():
             else:
                 verify_log = os.path.join(logs, mid + "-verify.log")
                 rc = run(["./jmclbench", "verify", "--only", VERIFY_ONLY, "--fail-fast",
-                          "--logs", os.path.join(logs, mid + "-jpf")], tree, verify_log)
+                          "--logs", os.path.join(logs, mid + "-jpf")], tree, verify_log, VERIFY_TIMEOUT_S)
                 failing = [l.split()[0] for l in open(verify_log) if re.search(r"\b(FAILS|MISSED)\b", l)]
-                if rc == 0:
+                if rc == HUNG:
+                    verdict, by = "caught", f"verify: hung (killed after {VERIFY_TIMEOUT_S} s)"
+                elif rc == 0:
                     verdict, by = "MISSED", "-"
                 elif failing:
                     verdict, by = "caught", "verify: " + failing[0]

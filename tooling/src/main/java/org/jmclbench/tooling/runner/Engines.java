@@ -6,16 +6,21 @@ import org.jmclbench.tooling.runtime.RuntimeInfo;
 
 /**
  * The workload's engines and the memory styles each one has (docs/FORMATS.md section 2): on a
- * JVM, {@code javase} (the Java SE release engine: heap, GC) or {@code scj} (the SCJ mission:
- * immortal, mission and private memory); the native baseline is its own engine, {@code native}.
+ * JVM, {@code javase} (the Java SE release engine: heap, GC), {@code scj} (the SCJ mission:
+ * immortal, mission and private memory), {@code rtsj} and {@code rtsj-atomic} (the thesis's RTSJ
+ * program in its two designs, the workload's {@code --engine rtsj --rtsj-design thesis|atomic});
+ * the native baseline is its own engine, {@code native}.
  */
 public final class Engines {
 
     public static final String JAVASE = "javase";
     public static final String SCJ = "scj";
     public static final String NATIVE = "native";
+    /** The RTSJ program, design thesis (the AIE deferred by the robot's monitor) and design atomic. */
+    public static final String RTSJ = "rtsj";
+    public static final String RTSJ_ATOMIC = "rtsj-atomic";
     /** The engines a JVM runtime can run, for {@code --engines}. */
-    public static final List<String> JVM_ENGINES = List.of(JAVASE, SCJ);
+    public static final List<String> JVM_ENGINES = List.of(JAVASE, SCJ, RTSJ, RTSJ_ATOMIC);
 
     public static final String PREALLOCATED = "preallocated";
     /** Every memory style some engine has, for {@code --memory}. */
@@ -30,6 +35,26 @@ public final class Engines {
      */
     public static String of(RuntimeInfo runtime, String asked) {
         return runtime.isJvm() ? asked : runtime.kind().name().toLowerCase(java.util.Locale.ROOT);
+    }
+
+    /** The workload's options that choose an engine of a JVM runtime (none for javase, the default). */
+    public static List<String> workloadArgs(String engine) {
+        return switch (engine) {
+            case JAVASE -> List.of();
+            case RTSJ -> List.of("--engine", RTSJ, "--rtsj-design", "thesis");
+            case RTSJ_ATOMIC -> List.of("--engine", RTSJ, "--rtsj-design", "atomic");
+            default -> List.of("--engine", engine);
+        };
+    }
+
+    /** What an engine's runs add to the runtime's name in the run path, as the workload's default does. */
+    public static String runtimeSuffix(String engine) {
+        return switch (engine) {
+            case JAVASE, NATIVE -> "";
+            case RTSJ -> "-rtsj-thesis";
+            case RTSJ_ATOMIC -> "-rtsj-atomic";
+            default -> "-" + engine;
+        };
     }
 
     /** The memory styles of an engine; {@code preallocated} (the default) is every engine's. */

@@ -1,5 +1,7 @@
 package org.jmclbench.tooling.runner;
 
+import org.jmclbench.tooling.store.StoredRuns;
+
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -210,7 +212,7 @@ public final class MatrixRunner {
             return "seed " + p.path("seed").asText() + ", asked " + run.seed();
         }
         // A summary without an engine is from a workload older than the engines: javase or native.
-        String engine = p.path("engine").asText(summary.path("engine").path("kind").asText(""));
+        String engine = StoredRuns.engineOf(p, summary.path("engine").path("kind").asText(""));
         if (engine.isEmpty() ? run.engine().equals(Engines.SCJ) : !engine.equals(run.engine())) {
             return "engine " + (engine.isEmpty() ? "missing" : engine) + ", asked " + run.engine();
         }

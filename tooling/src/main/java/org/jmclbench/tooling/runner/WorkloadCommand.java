@@ -25,8 +25,9 @@ public final class WorkloadCommand {
      * {@code [prefix] <native> run <args>} for the native baseline, and for the HVM
      * {@code [prefix] <tool java> -Djmclbench.home=H -cp JAR WorkloadMain run --engine hvm <args>}.
      * The engine and memory style are passed only when they are not the defaults (javase,
-     * preallocated), so that a workload older than them still runs the default configuration; an
-     * scj run's runtime name gets the suffix {@code -scj}, as the workload's own default name does.
+     * preallocated), so that a workload older than them still runs the default configuration; the
+     * runtime name gets the engine's suffix ({@code -scj}, {@code -rtsj-atomic}: {@link Engines#runtimeSuffix}),
+     * as the workload's own default name does.
      */
     public static List<String> build(PlannedRun run, LaunchPlan plan, List<String> extraJvmFlags, Path home, Path jar,
                                      Path out, double timeScale, List<String> workloadArgs) {
@@ -52,15 +53,15 @@ public final class WorkloadCommand {
             cmd.addAll(List.of("--engine", "hvm"));
         }
         cmd.addAll(List.of("-p", String.valueOf(run.particles()), "-n", String.valueOf(run.repetition()),
-                "-j", rt.name() + (run.engine().equals(Engines.SCJ) ? "-scj" : ""), "-O", out.toString(), "--dataset", run.dataset().dir().toString()));
+                "-j", rt.name() + (rt.isJvm() ? Engines.runtimeSuffix(run.engine()) : ""), "-O", out.toString(), "--dataset", run.dataset().dir().toString()));
         if (run.policy().equals("ideal")) {
             cmd.add("--ideal");
         } else {
             cmd.addAll(List.of("--policy", run.policy()));
         }
         cmd.addAll(List.of("--seed", String.valueOf(run.seed())));
-        if (rt.isJvm() && !run.engine().equals(Engines.JAVASE)) {
-            cmd.addAll(List.of("--engine", run.engine()));
+        if (rt.isJvm()) {
+            cmd.addAll(Engines.workloadArgs(run.engine()));
         }
         if (!run.memory().equals(Engines.PREALLOCATED)) {
             cmd.addAll(List.of("--memory", run.memory()));

@@ -1,5 +1,6 @@
 package org.jmclbench.tooling.store;
 
+
 import java.nio.ByteBuffer;
 import java.nio.file.Path;
 import java.sql.Connection;
@@ -89,7 +90,7 @@ public final class StoredRuns implements AutoCloseable {
                     // a store before engines: what the summary says, else the Java SE engine (native for C)
                     com.fasterxml.jackson.databind.JsonNode p = r.summary().path("parameters");
                     if (r.engine == null) {
-                        r.engine = p.path("engine").asText("native".equals(r.runtime) ? "native" : "javase");
+                        r.engine = engineOf(p, "native".equals(r.runtime) ? "native" : "javase");
                     }
                     if (r.memory == null) {
                         r.memory = p.path("memory").asText("preallocated");
@@ -246,5 +247,14 @@ public final class StoredRuns implements AutoCloseable {
         } catch (SQLException e) {
             // read-only: nothing to lose
         }
+    }
+
+    /**
+     * The engine of a run from its summary's parameters ({@code fallback} when they name none): an
+     * rtsj run's design is part of its engine, {@code rtsj} (thesis) or {@code rtsj-atomic}.
+     */
+    public static String engineOf(com.fasterxml.jackson.databind.JsonNode parameters, String fallback) {
+        String engine = parameters.path("engine").asText(fallback);
+        return "rtsj".equals(engine) && "atomic".equals(parameters.path("rtsjDesign").asText()) ? "rtsj-atomic" : engine;
     }
 }

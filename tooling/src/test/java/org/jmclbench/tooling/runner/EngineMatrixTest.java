@@ -90,10 +90,10 @@ class EngineMatrixTest {
 
     @Test
     void anUnknownEngineOrMemoryStyleIsBadUsage() throws Exception {
-        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--engines", "javase,rtsj",
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--engines", "javase,jamaica",
                 "--datasets", "tiny", "--db", db.toString());
         assertEquals(2, r.exitCode(), r.out() + r.err());
-        assertEquals("jmclbench: --engines: unknown engine 'rtsj' (known: javase, scj)", r.err().strip());
+        assertEquals("jmclbench: --engines: unknown engine 'jamaica' (known: javase, scj, rtsj, rtsj-atomic)", r.err().strip());
         assertFalse(Files.exists(db));
 
         r = Fixtures.cli("matrix", "--java", fake.toString(), "--memory", "immortal", "--datasets", "tiny", "--db", db.toString());

@@ -129,6 +129,9 @@ public final class RunWriter {
         j.name("parameters").beginObject();
         j.name("runtimeName").value(options.effectiveRuntimeName());
         j.name("engine").value(options.engine);
+        if ("rtsj".equals(options.engine)) {
+            j.name("rtsjDesign").value(options.rtsjDesign.label);
+        }
         j.name("particles").value(options.particles);
         j.name("number").value(options.number);
         j.name("policy").value(options.policy.label);

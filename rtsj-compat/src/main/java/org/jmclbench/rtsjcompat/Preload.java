@@ -75,6 +75,7 @@ final class Preload {
             "org.jmclbench.rtsjcompat.HandlerStats",
             "org.jmclbench.rtsjcompat.MissionControl",
             "org.jmclbench.rtsjcompat.MissionFailure",
+            "org.jmclbench.rtsjcompat.Named",
             "org.jmclbench.rtsjcompat.ObjectAreaResolver",
             "org.jmclbench.rtsjcompat.OneShotRuntime",
             "org.jmclbench.rtsjcompat.PeriodicRuntime",

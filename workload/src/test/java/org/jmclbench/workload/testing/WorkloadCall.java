@@ -1,6 +1,11 @@
 package org.jmclbench.workload.testing;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
 import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 
@@ -16,6 +21,21 @@ public final class WorkloadCall {
         out.reset();
         err.reset();
         return WorkloadMain.run(args, new PrintStream(out), new PrintStream(err));
+    }
+
+    /**
+     * Runs {@code engine} on a dataset written under {@code tmp} whose 11th odometry event comes 10 ms
+     * late (its interval 60 ms, the next 40 ms) and checks that this is bad input naming the file
+     * and line; returns the dataset's folder. The run was given {@code tmp/out} as its output.
+     */
+    public File assertRejectsAperiodicOdometry(File tmp, String engine) throws IOException {
+        File ds = SyntheticDataset.write(new File(tmp, "ds"), 2.0, 3, true, false);
+        int line = SyntheticDataset.delayOdometryEvent(ds, 10, 0.010);
+        assertEquals(2, run("run", "--engine", engine, "--dataset", ds.getPath(), "-O", new File(tmp, "out").getPath()),
+                err());
+        String odo = new File(ds, "odometry.txt").getPath();
+        assertTrue(err().startsWith("jmclbench: " + odo + ":" + line + ": odometry is not periodic"), err());
+        return ds;
     }
 
     /** What the last call printed on stdout. */

@@ -85,13 +85,8 @@ class HvmRunTest {
     void badInputIsRejectedBeforeAnythingIsBuilt() throws Exception {
         // No build script under this home: reaching the build would be a failure (1), not bad input (2).
         System.setProperty("jmclbench.home", tmp.getPath());
-        File ds = SyntheticDataset.write(new File(tmp, "ds"), 2.0, 3, true, false);
-        File odo = new File(ds, "odometry.txt");
-        int line = SyntheticDataset.delayOdometryEvent(ds, 10, 0.010);
+        File ds = call.assertRejectsAperiodicOdometry(tmp, "hvm");
         File o = new File(tmp, "out");
-        assertEquals(2, call.run("run", "--engine", "hvm", "--dataset", ds.getPath(), "-O", o.getPath()), call.err());
-        assertTrue(call.err().startsWith("jmclbench: " + odo.getPath() + ":" + line + ": odometry is not periodic"),
-                call.err());
         assertEquals(2, call.run("run", "--engine", "hvm", "--memory", "allocating", "--dataset", ds.getPath()),
                 call.err());
         assertEquals(2, call.run("run", "--engine", "hvm", "--area-size", "nursery=100", "--dataset", ds.getPath()),

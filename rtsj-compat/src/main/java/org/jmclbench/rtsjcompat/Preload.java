@@ -73,6 +73,7 @@ final class Preload {
             "org.jmclbench.rtsjcompat.HandlerRuntime",
             "org.jmclbench.rtsjcompat.HandlerServer",
             "org.jmclbench.rtsjcompat.HandlerStats",
+            "org.jmclbench.rtsjcompat.Installed",
             "org.jmclbench.rtsjcompat.MissionControl",
             "org.jmclbench.rtsjcompat.MissionFailure",
             "org.jmclbench.rtsjcompat.Named",

@@ -56,6 +56,18 @@ static void usage(FILE *out)
 		"  -h, --help               this help\n");
 }
 
+/* The bit mask that value names: bit 0 for "first", bit 1 for "second", both for "both"; 0 for anything else. */
+static int mask_of(const char *value, const char *first, const char *second)
+{
+	if (!strcmp(value, first))
+		return 1;
+	if (!strcmp(value, second))
+		return 2;
+	if (!strcmp(value, "both"))
+		return 3;
+	return 0;
+}
+
 static int parse_counts(struct bench_opts *o, char *s)
 {
 	char *save = NULL;
@@ -176,23 +188,11 @@ int main(int argc, char **argv)
 				goto bad;
 			break;
 		case 'm':
-			if (!strcmp(optarg, "preallocated"))
-				o.memory_mask = 1;
-			else if (!strcmp(optarg, "allocating"))
-				o.memory_mask = 2;
-			else if (!strcmp(optarg, "both"))
-				o.memory_mask = 3;
-			else
+			if (!(o.memory_mask = mask_of(optarg, "preallocated", "allocating")))
 				goto bad;
 			break;
 		case 'j':
-			if (!strcmp(optarg, "predict"))
-				o.job_mask = 1;
-			else if (!strcmp(optarg, "update"))
-				o.job_mask = 2;
-			else if (!strcmp(optarg, "both"))
-				o.job_mask = 3;
-			else
+			if (!(o.job_mask = mask_of(optarg, "predict", "update")))
 				goto bad;
 			break;
 		case 'w':

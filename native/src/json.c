@@ -12,39 +12,25 @@ void jm_json_init(jm_json *j, FILE *f)
 	j->empty[0] = 1;
 }
 
+/* RFC 8259's two-character escapes: ESCAPED[i] is written as a backslash and ESCAPE_LETTER[i]. */
+static const char ESCAPED[] = "\"\\\n\r\t\b\f";
+static const char ESCAPE_LETTER[] = "\"\\nrtbf";
+
 void jm_json_escape(FILE *f, const char *s)
 {
 	const unsigned char *p;
+	const char *e;
 
 	fputc('"', f);
 	for (p = (const unsigned char *)s; *p; p++) {
-		switch (*p) {
-		case '"':
-			fputs("\\\"", f);
-			break;
-		case '\\':
-			fputs("\\\\", f);
-			break;
-		case '\n':
-			fputs("\\n", f);
-			break;
-		case '\r':
-			fputs("\\r", f);
-			break;
-		case '\t':
-			fputs("\\t", f);
-			break;
-		case '\b':
-			fputs("\\b", f);
-			break;
-		case '\f':
-			fputs("\\f", f);
-			break;
-		default:
-			if (*p < 0x20 || *p == 0x7f)
-				fprintf(f, "\\u%04x", *p);
-			else
-				fputc(*p, f);
+		e = strchr(ESCAPED, *p); /* *p is never NUL here, so e is never the terminator */
+		if (e) {
+			fputc('\\', f);
+			fputc(ESCAPE_LETTER[e - ESCAPED], f);
+		} else if (*p < 0x20 || *p == 0x7f) {
+			fprintf(f, "\\u%04x", *p);
+		} else {
+			fputc(*p, f);
 		}
 	}
 	fputc('"', f);

@@ -5,9 +5,21 @@
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int jt_passed, jt_failed;
+
+/* Makes a fresh folder /tmp/jmcl-<name>-XXXXXX for a test program's files, into dir: 0, or -1 after perror. */
+static inline int jt_tempdir(char *dir, size_t size, const char *name)
+{
+	snprintf(dir, size, "/tmp/jmcl-%s-XXXXXX", name);
+	if (!mkdtemp(dir)) {
+		perror("mkdtemp");
+		return -1;
+	}
+	return 0;
+}
 
 #define JT_FAIL(...)                                                    \
 	do {                                                            \

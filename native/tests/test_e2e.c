@@ -553,11 +553,8 @@ int main(int argc, char **argv)
 		return 2;
 	}
 	prog = argv[1];
-	snprintf(tmp, sizeof(tmp), "/tmp/jmcl-e2e-XXXXXX");
-	if (!mkdtemp(tmp)) {
-		perror("mkdtemp");
+	if (jt_tempdir(tmp, sizeof(tmp), "e2e"))
 		return 1;
-	}
 	test_bad_options();
 	test_bad_data();
 	snprintf(ds, sizeof(ds), "%s/tiny", tmp);

@@ -661,11 +661,8 @@ static void test_json(void)
 
 int main(void)
 {
-	snprintf(tmpdir, sizeof(tmpdir), "/tmp/jmcl-unit-XXXXXX");
-	if (!mkdtemp(tmpdir)) {
-		perror("mkdtemp");
+	if (jt_tempdir(tmpdir, sizeof(tmpdir), "unit"))
 		return 1;
-	}
 	test_rng_reference();
 	test_gaussian();
 	test_angles();

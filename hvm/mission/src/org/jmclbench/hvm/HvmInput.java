@@ -1,12 +1,10 @@
 package org.jmclbench.hvm;
 
 import org.jmclbench.core.mcl.Playground;
-import org.jmclbench.scj.MissionInput;
+import org.jmclbench.scj.SizedMissionInput;
 
 /** The mission's input on the HVM: the sensor log, field and start pose from the run file. */
-final class HvmInput implements MissionInput {
-    private final int odometry;
-    private final int laser;
+final class HvmInput extends SizedMissionInput {
     private final int odoBase;
     private final int laserBase;
     private final Playground playground;
@@ -16,8 +14,7 @@ final class HvmInput implements MissionInput {
 
     /** Reads the data part of the run file, which starts at word {@code at}. */
     HvmInput(int at) {
-        odometry = (int) HvmData.word(at);
-        laser = (int) HvmData.word(at + 1);
+        super((int) HvmData.word(at), (int) HvmData.word(at + 1));
         double width = HvmData.real(at + 2);
         double height = HvmData.real(at + 3);
         int beacons = (int) HvmData.word(at + 4);
@@ -35,31 +32,23 @@ final class HvmInput implements MissionInput {
         startY = HvmData.real(w++);
         startTheta = HvmData.real(w++);
         odoBase = w;
-        laserBase = w + 4 * odometry;
-    }
-
-    @Override
-    public int odometryCount() {
-        return odometry;
-    }
-
-    @Override
-    public int laserCount() {
-        return laser;
+        laserBase = w + 4 * odometryCount();
     }
 
     @Override
     public void readOdometry(double[] time, double[] dx, double[] dy, double[] dtheta) {
-        fill(time, odoBase, odometry);
-        fill(dx, odoBase + odometry, odometry);
-        fill(dy, odoBase + 2 * odometry, odometry);
-        fill(dtheta, odoBase + 3 * odometry, odometry);
+        int n = odometryCount();
+        fill(time, odoBase, n);
+        fill(dx, odoBase + n, n);
+        fill(dy, odoBase + 2 * n, n);
+        fill(dtheta, odoBase + 3 * n, n);
     }
 
     @Override
     public void readLaser(double[] time, double[] angle) {
-        fill(time, laserBase, laser);
-        fill(angle, laserBase + laser, laser);
+        int n = laserCount();
+        fill(time, laserBase, n);
+        fill(angle, laserBase + n, n);
     }
 
     private static void fill(double[] dest, int from, int n) {

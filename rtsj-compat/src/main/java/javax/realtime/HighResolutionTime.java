@@ -7,7 +7,8 @@ import javax.safetycritical.annotate.SCJAllowed;
  * |nanos| below one million), measured against a clock.
  */
 @SCJAllowed
-public abstract class HighResolutionTime<T extends HighResolutionTime<T>> implements Comparable<T>, Cloneable {
+public abstract class HighResolutionTime<T extends HighResolutionTime<T>> extends ShallowCloneable
+        implements Comparable<T>, Cloneable {
     static final int NANOS_PER_MILLI = 1000000;
 
     Chronograph clock;
@@ -127,15 +128,6 @@ public abstract class HighResolutionTime<T extends HighResolutionTime<T>> implem
             return millis < t.millis ? -1 : 1;
         }
         return nanos < t.nanos ? -1 : (nanos == t.nanos ? 0 : 1);
-    }
-
-    @Override
-    public Object clone() {
-        try {
-            return super.clone();
-        } catch (CloneNotSupportedException e) {
-            throw new InternalError("HighResolutionTime is Cloneable");
-        }
     }
 
     @Override

@@ -1,11 +1,12 @@
 package javax.realtime;
 
 import java.io.Serializable;
+import org.jmclbench.rtsjcompat.Arguments;
 import javax.safetycritical.annotate.SCJAllowed;
 
 /** Memory budgets of a schedulable: its initial area, and what it may allocate in immortal memory. */
 @SCJAllowed
-public class MemoryParameters implements Cloneable, Serializable {
+public class MemoryParameters extends ShallowCloneable implements Cloneable, Serializable {
     private static final long serialVersionUID = 1L;
 
     /** No limit. */
@@ -16,14 +17,8 @@ public class MemoryParameters implements Cloneable, Serializable {
 
     /** The given budgets in bytes. */
     public MemoryParameters(long maxInitialArea, long maxImmortal) {
-        if (maxInitialArea < 0) {
-            throw new IllegalArgumentException("maxInitialArea is negative: " + maxInitialArea);
-        }
-        if (maxImmortal < 0) {
-            throw new IllegalArgumentException("maxImmortal is negative: " + maxImmortal);
-        }
-        this.maxInitialArea = maxInitialArea;
-        this.maxImmortal = maxImmortal;
+        this.maxInitialArea = Arguments.nonNegative(maxInitialArea, "maxInitialArea");
+        this.maxImmortal = Arguments.nonNegative(maxImmortal, "maxImmortal");
     }
 
     /** The size of the schedulable's own (private) memory in bytes. */
@@ -34,14 +29,5 @@ public class MemoryParameters implements Cloneable, Serializable {
     /** What the schedulable may allocate in immortal memory (not enforced by this layer). */
     public long getMaxImmortal() {
         return maxImmortal;
-    }
-
-    @Override
-    public Object clone() {
-        try {
-            return super.clone();
-        } catch (CloneNotSupportedException e) {
-            throw new InternalError("MemoryParameters is Cloneable");
-        }
     }
 }

@@ -4,7 +4,7 @@ package javax.realtime;
  * A processing group's budget (RTSJ 1.0.2): accepted and kept for source compatibility; this
  * layer enforces no cost budget, so the values have no effect.
  */
-public class ProcessingGroupParameters implements Cloneable {
+public class ProcessingGroupParameters extends ShallowCloneable implements Cloneable {
     private final HighResolutionTime<?> start;
     private final RelativeTime period;
     private final RelativeTime cost;
@@ -45,14 +45,5 @@ public class ProcessingGroupParameters implements Cloneable {
 
     public AsyncEventHandler getDeadlineMissHandler() {
         return missHandler;
-    }
-
-    @Override
-    public Object clone() {
-        try {
-            return super.clone();
-        } catch (CloneNotSupportedException e) {
-            throw new InternalError("ProcessingGroupParameters is Cloneable");
-        }
     }
 }

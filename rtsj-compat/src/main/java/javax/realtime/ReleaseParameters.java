@@ -4,7 +4,7 @@ import javax.safetycritical.annotate.SCJAllowed;
 
 /** When a schedulable is released and its relative deadline (null: none). */
 @SCJAllowed
-public abstract class ReleaseParameters implements Cloneable {
+public abstract class ReleaseParameters extends ShallowCloneable implements Cloneable {
     RelativeTime deadline;
     AsyncEventHandler missHandler;
 
@@ -29,14 +29,5 @@ public abstract class ReleaseParameters implements Cloneable {
     /** The deadline-miss handler given at construction (not released by this layer). */
     public AsyncEventHandler getDeadlineMissHandler() {
         return missHandler;
-    }
-
-    @Override
-    public Object clone() {
-        try {
-            return super.clone();
-        } catch (CloneNotSupportedException e) {
-            throw new InternalError("ReleaseParameters is Cloneable");
-        }
     }
 }

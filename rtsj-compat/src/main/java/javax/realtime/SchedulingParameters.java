@@ -4,17 +4,8 @@ import javax.safetycritical.annotate.SCJAllowed;
 
 /** How a schedulable is chosen to run (the priority, for SCJ). */
 @SCJAllowed
-public abstract class SchedulingParameters implements Cloneable {
+public abstract class SchedulingParameters extends ShallowCloneable implements Cloneable {
     /** For subclasses. */
     protected SchedulingParameters() {
-    }
-
-    @Override
-    public Object clone() {
-        try {
-            return super.clone();
-        } catch (CloneNotSupportedException e) {
-            throw new InternalError("SchedulingParameters is Cloneable");
-        }
     }
 }

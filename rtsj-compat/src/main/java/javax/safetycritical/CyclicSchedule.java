@@ -1,6 +1,7 @@
 package javax.safetycritical;
 
 import javax.safetycritical.annotate.SCJAllowed;
+import org.jmclbench.rtsjcompat.Arguments;
 
 /** The frames of a Level 0 schedule, repeated in order. */
 @SCJAllowed
@@ -12,12 +13,7 @@ public final class CyclicSchedule {
         if (frames == null || frames.length == 0) {
             throw new IllegalArgumentException("a cyclic schedule needs at least one frame");
         }
-        for (Frame f : frames) {
-            if (f == null) {
-                throw new IllegalArgumentException("a frame is null");
-            }
-        }
-        this.frames = frames.clone();
+        this.frames = Arguments.copyWithoutNulls(frames, "a frame is null");
     }
 
     Frame[] frames() {

@@ -2,6 +2,7 @@ package javax.safetycritical;
 
 import javax.realtime.RelativeTime;
 import javax.safetycritical.annotate.SCJAllowed;
+import org.jmclbench.rtsjcompat.Arguments;
 
 /** One minor cycle of a Level 0 schedule: these handlers, one release each, then wait out the duration. */
 @SCJAllowed
@@ -18,12 +19,7 @@ public final class Frame {
         if (handlers == null) {
             throw new IllegalArgumentException("handlers is null");
         }
-        for (PeriodicEventHandler h : handlers) {
-            if (h == null) {
-                throw new IllegalArgumentException("a handler is null");
-            }
-        }
         this.duration = new RelativeTime(duration);
-        this.handlers = handlers.clone();
+        this.handlers = Arguments.copyWithoutNulls(handlers, "a handler is null");
     }
 }

@@ -2,6 +2,7 @@ package javax.safetycritical;
 
 import javax.realtime.ImmortalMemory;
 import org.jmclbench.rtsjcompat.Area;
+import org.jmclbench.rtsjcompat.Arguments;
 import org.jmclbench.rtsjcompat.Priorities;
 import org.jmclbench.rtsjcompat.RunReport;
 import org.jmclbench.rtsjcompat.RunState;
@@ -34,15 +35,7 @@ final class Launch implements Runnable {
                 Priorities.toJava(javax.safetycritical.PriorityScheduler.instance().getNormPriority()));
         run.time().threadStarted();
         launcher.start();
-        boolean interrupted = false;
-        while (launcher.isAlive()) {
-            try {
-                launcher.join();
-            } catch (InterruptedException e) {
-                interrupted = true;
-            }
-        }
-        if (interrupted) {
+        if (ScjThread.joinThroughInterrupts(launcher)) {
             Thread.currentThread().interrupt();
         }
         RunReport report = run.end();
@@ -59,10 +52,7 @@ final class Launch implements Runnable {
             MissionSequencer seq;
             String[] args = new String[0];
             try {
-                long size = app.immortalMemorySize();
-                if (size < 0) {
-                    throw new IllegalArgumentException("immortalMemorySize() is negative: " + size);
-                }
+                long size = Arguments.nonNegative(app.immortalMemorySize(), "immortalMemorySize()");
                 immortal = run.newArea("ImmortalMemory", Area.IMMORTAL, size, null);
                 ImmortalMemory.instance();
                 t.enter(immortal);

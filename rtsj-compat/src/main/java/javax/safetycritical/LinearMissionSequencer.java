@@ -5,6 +5,7 @@ import javax.realtime.PriorityParameters;
 import javax.realtime.memory.ScopeParameters;
 import javax.safetycritical.annotate.Level;
 import javax.safetycritical.annotate.SCJAllowed;
+import org.jmclbench.rtsjcompat.Arguments;
 
 /** Runs the given missions in order, then stops; with {@code repeat}, starts over forever. */
 @SCJAllowed
@@ -40,12 +41,7 @@ public class LinearMissionSequencer extends MissionSequencer {
         if (missions == null || missions.length == 0) {
             throw new IllegalArgumentException("no missions");
         }
-        for (Mission m : missions) {
-            if (m == null) {
-                throw new IllegalArgumentException("a mission is null");
-            }
-        }
-        this.missions = missions.clone();
+        this.missions = Arguments.copyWithoutNulls(missions, "a mission is null");
         this.repeat = repeat;
     }
 

@@ -3,6 +3,7 @@ package javax.safetycritical;
 import javax.realtime.MemoryArea;
 import javax.safetycritical.annotate.SCJAllowed;
 import org.jmclbench.rtsjcompat.Area;
+import org.jmclbench.rtsjcompat.Arguments;
 import org.jmclbench.rtsjcompat.RunState;
 import org.jmclbench.rtsjcompat.ScjThread;
 
@@ -34,9 +35,7 @@ public abstract class ManagedMemory extends MemoryArea {
         if (logic == null) {
             throw new IllegalArgumentException("logic is null");
         }
-        if (size < 0) {
-            throw new IllegalArgumentException("size is negative: " + size);
-        }
+        Arguments.nonNegative(size, "size");
         ScjThread t = ScjThread.self();
         Area parent = t.current;
         if (parent == null || parent.kind() == Area.IMMORTAL) {

@@ -2,6 +2,7 @@ package javax.realtime.memory;
 
 import javax.realtime.MemoryParameters;
 import javax.safetycritical.annotate.SCJAllowed;
+import org.jmclbench.rtsjcompat.Arguments;
 
 /**
  * Memory budgets of an SCJ schedulable: its private memory ({@code maxInitialArea}), and
@@ -17,14 +18,8 @@ public final class ScopeParameters extends MemoryParameters {
     /** The given budgets in bytes. */
     public ScopeParameters(long maxInitialArea, long maxImmortal, long maxContainingArea, long maxInitialBackingStore) {
         super(maxInitialArea, maxImmortal);
-        if (maxContainingArea < 0) {
-            throw new IllegalArgumentException("maxContainingArea is negative: " + maxContainingArea);
-        }
-        if (maxInitialBackingStore < 0) {
-            throw new IllegalArgumentException("maxInitialBackingStore is negative: " + maxInitialBackingStore);
-        }
-        this.maxContainingArea = maxContainingArea;
-        this.maxBackingStore = maxInitialBackingStore;
+        this.maxContainingArea = Arguments.nonNegative(maxContainingArea, "maxContainingArea");
+        this.maxBackingStore = Arguments.nonNegative(maxInitialBackingStore, "maxInitialBackingStore");
     }
 
     /** The given budgets, with no limit on the containing area. */

@@ -31,30 +31,21 @@ public abstract class AllocationMeter {
         }
     };
 
-    private static volatile AllocationMeter current;
+    private static final Installed<AllocationMeter> CURRENT = new Installed<AllocationMeter>() {
+        @Override
+        AllocationMeter choose() {
+            return fromProperty(System.getProperty(PROPERTY, "auto"));
+        }
+    };
 
     /** The installed meter (chosen from {@link #PROPERTY} at first use). */
     public static AllocationMeter current() {
-        AllocationMeter m = current;
-        if (m == null) {
-            synchronized (AllocationMeter.class) {
-                if (current == null) {
-                    current = fromProperty(System.getProperty(PROPERTY, "auto"));
-                }
-                m = current;
-            }
-        }
-        return m;
+        return CURRENT.get();
     }
 
     /** Installs a meter (tests, verification); call it before a launch, not during one. */
     public static void install(AllocationMeter meter) {
-        if (meter == null) {
-            throw new IllegalArgumentException("meter is null");
-        }
-        synchronized (AllocationMeter.class) {
-            current = meter;
-        }
+        CURRENT.install(meter, "meter");
     }
 
     static AllocationMeter fromProperty(String value) {

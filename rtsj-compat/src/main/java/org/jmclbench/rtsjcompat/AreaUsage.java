@@ -4,7 +4,7 @@ package org.jmclbench.rtsjcompat;
  * What one memory area received in a run: the figures of summary.json's
  * {@code memory.areas} ({@code name}, {@code size}, {@code peakBytes}) and a few more.
  */
-public final class AreaUsage {
+public final class AreaUsage implements Named {
     private final String name;
     private final String kind;
     private final int depth;

@@ -1,7 +1,7 @@
 package org.jmclbench.rtsjcompat;
 
 /** A snapshot of one handler's release counts. */
-public final class HandlerStats {
+public final class HandlerStats implements Named {
     private final String name;
     private final String kind;
     private final int priority;

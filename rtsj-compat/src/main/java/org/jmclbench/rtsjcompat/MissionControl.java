@@ -63,14 +63,7 @@ public final class MissionControl {
         awaitHandlersEnded();
         boolean interrupted = false;
         for (HandlerRuntime h : handlers) {
-            Thread t = h.thread;
-            while (t != null && t.isAlive()) {
-                try {
-                    t.join();
-                } catch (InterruptedException e) {
-                    interrupted = true;
-                }
-            }
+            interrupted |= ScjThread.joinThroughInterrupts(h.thread);
         }
         if (interrupted) {
             Thread.currentThread().interrupt();

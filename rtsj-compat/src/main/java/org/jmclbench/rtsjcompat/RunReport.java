@@ -55,9 +55,14 @@ public final class RunReport {
 
     /** The area named {@code name}, or null. */
     public AreaUsage area(String name) {
-        for (AreaUsage a : areas) {
-            if (a.name().equals(name)) {
-                return a;
+        return named(areas, name);
+    }
+
+    /** The first of {@code items} named {@code name}, or null. */
+    private static <T extends Named> T named(List<T> items, String name) {
+        for (T t : items) {
+            if (t.name().equals(name)) {
+                return t;
             }
         }
         return null;
@@ -70,12 +75,7 @@ public final class RunReport {
 
     /** The handler named {@code name}, or null. */
     public HandlerStats handler(String name) {
-        for (HandlerStats h : handlers) {
-            if (h.name().equals(name)) {
-                return h;
-            }
-        }
-        return null;
+        return named(handlers, name);
     }
 
     /** What measured allocations ({@code none} when nothing was). */

@@ -55,6 +55,22 @@ public class ScjThread extends Thread {
     volatile boolean wakeRequested;
     long sleepDeadline;
 
+    /**
+     * Waits until {@code t} (null: none) has terminated, through interrupts; returns whether the
+     * caller was interrupted meanwhile, for it to re-assert once it has awaited all it waits for.
+     */
+    public static boolean joinThroughInterrupts(Thread t) {
+        boolean interrupted = false;
+        while (t != null && t.isAlive()) {
+            try {
+                t.join();
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        return interrupted;
+    }
+
     /** A thread running {@code body}, named {@code name}, at Java priority {@code javaPriority}. */
     public ScjThread(Runnable body, String name, int javaPriority) {
         this(body, name, javaPriority, 0);

@@ -25,30 +25,21 @@ public abstract class TimeSource {
     /** The system property that selects the time source: {@code system} or {@code virtual}. */
     public static final String PROPERTY = "jmclbench.scj.time";
 
-    private static volatile TimeSource current;
+    private static final Installed<TimeSource> CURRENT = new Installed<TimeSource>() {
+        @Override
+        TimeSource choose() {
+            return fromProperty(System.getProperty(PROPERTY, "system"));
+        }
+    };
 
     /** The installed time source (chosen from {@link #PROPERTY} at first use). */
     public static TimeSource current() {
-        TimeSource t = current;
-        if (t == null) {
-            synchronized (TimeSource.class) {
-                if (current == null) {
-                    current = fromProperty(System.getProperty(PROPERTY, "system"));
-                }
-                t = current;
-            }
-        }
-        return t;
+        return CURRENT.get();
     }
 
     /** Installs a time source (tests, verification); call it before a launch, not during one. */
     public static void install(TimeSource source) {
-        if (source == null) {
-            throw new IllegalArgumentException("source is null");
-        }
-        synchronized (TimeSource.class) {
-            current = source;
-        }
+        CURRENT.install(source, "source");
     }
 
     static TimeSource fromProperty(String value) {

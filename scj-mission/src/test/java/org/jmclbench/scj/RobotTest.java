@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.jmclbench.core.mcl.AbortAt;
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.policy.OverrunPolicy;
@@ -21,20 +22,6 @@ class RobotTest {
     private static final int POLL = 8; // five polls per loop over the particles
 
     /** Aborts at the n-th poll (1-based). */
-    static final class AbortAt implements AbortSignal {
-        final int at;
-        int polls;
-
-        AbortAt(int at) {
-            this.at = at;
-        }
-
-        @Override
-        public boolean abortRequested() {
-            return ++polls >= at;
-        }
-    }
-
     @Test
     void anAbortedJobLeavesTheRobotBitIdentical() {
         for (MclConfig.Memory memory : new MclConfig.Memory[] {MclConfig.Memory.PREALLOCATED, MclConfig.Memory.SCOPED}) {
@@ -73,7 +60,7 @@ class RobotTest {
             if (k == victim) {
                 AbortAt signal = new AbortAt(at);
                 boolean completed = run(robot, t, k, signal);
-                if (signal.polls < at) {
+                if (signal.polls() < at) {
                     return null;
                 }
                 assertFalse(completed, "a job asked to abort at poll " + at + " completed");

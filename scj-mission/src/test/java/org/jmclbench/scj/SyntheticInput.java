@@ -8,7 +8,7 @@ import org.jmclbench.core.mcl.Playground;
  * odometry every 50 ms, and the laser sees the beacons in turn every 110 ms, offset by 25 ms so
  * that no laser event ties with an odometry event.
  */
-final class SyntheticInput implements MissionInput {
+final class SyntheticInput extends SizedMissionInput {
     static final double PERIOD = 0.050;
     private final double[] odoTime;
     private final double[] odoDx;
@@ -19,7 +19,8 @@ final class SyntheticInput implements MissionInput {
     private final Playground field = Playground.thesis();
 
     SyntheticInput(double seconds) {
-        int odo = (int) Math.round(seconds / PERIOD);
+        super((int) Math.round(seconds / PERIOD), (int) ((seconds - 0.025) / 0.110));
+        int odo = odometryCount();
         odoTime = new double[odo];
         odoDx = new double[odo];
         odoDy = new double[odo];
@@ -31,7 +32,7 @@ final class SyntheticInput implements MissionInput {
             odoDx[i] = speed * PERIOD;
             odoDtheta[i] = turn * PERIOD;
         }
-        int laser = (int) ((seconds - 0.025) / 0.110);
+        int laser = laserCount();
         laserTime = new double[laser];
         laserAngle = new double[laser];
         for (int j = 0; j < laser; j++) {
@@ -49,16 +50,6 @@ final class SyntheticInput implements MissionInput {
             int b = j % 3;
             laserAngle[j] = Angles.bearing(x, y, th, field.beaconX[b], field.beaconY[b]);
         }
-    }
-
-    @Override
-    public int odometryCount() {
-        return odoTime.length;
-    }
-
-    @Override
-    public int laserCount() {
-        return laserTime.length;
     }
 
     @Override

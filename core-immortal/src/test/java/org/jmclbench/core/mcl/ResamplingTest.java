@@ -110,11 +110,8 @@ class ResamplingTest {
     void anAbortedResamplingSaysSo() {
         int n = 200;
         double[] w = weights(n);
-        int[] calls = {0};
-        AbortSignal second = () -> ++calls[0] >= 2;
-        assertFalse(Resampling.systematic(w, n, 0.001, new int[n], second));
-        calls[0] = 0;
-        assertFalse(Resampling.multinomial(w, n, new Rng(1), new int[n], new double[n], second));
+        assertFalse(Resampling.systematic(w, n, 0.001, new int[n], new AbortAt(2)));
+        assertFalse(Resampling.multinomial(w, n, new Rng(1), new int[n], new double[n], new AbortAt(2)));
         assertTrue(Resampling.systematic(w, n, 0.001, new int[n], AbortSignal.NEVER));
     }
 

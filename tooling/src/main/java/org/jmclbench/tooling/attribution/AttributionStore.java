@@ -25,14 +25,27 @@ public final class AttributionStore {
 
     /** Inserts {@code attributions} rows (the table must exist: {@link #SCHEMA}). */
     public static void insertRows(Connection conn, String runKey, java.util.List<AttributionData.Row> rows) throws SQLException {
-        try (PreparedStatement ps = conn.prepareStatement(
-                "INSERT INTO attributions (run_key, task, job_index, outcome, causes_json) VALUES (?,?,?,?,?)")) {
-            for (AttributionData.Row r : rows) {
-                ps.setString(1, runKey);
-                ps.setString(2, r.task());
-                ps.setInt(3, r.jobIndex());
-                ps.setString(4, r.outcome());
-                ps.setString(5, r.causesJson());
+        insertBatch(conn, "INSERT INTO attributions (run_key, task, job_index, outcome, causes_json) VALUES (?,?,?,?,?)",
+                rows, (ps, r) -> {
+                    ps.setString(1, runKey);
+                    ps.setString(2, r.task());
+                    ps.setInt(3, r.jobIndex());
+                    ps.setString(4, r.outcome());
+                    ps.setString(5, r.causesJson());
+                });
+    }
+
+    /** How one item fills the parameters of an INSERT. */
+    private interface RowBinder<T> {
+        void bind(PreparedStatement ps, T item) throws SQLException;
+    }
+
+    /** Inserts one row per item of {@code items} with {@code sql}, as one batch. */
+    private static <T> void insertBatch(Connection conn, String sql, Iterable<T> items, RowBinder<T> binder)
+            throws SQLException {
+        try (PreparedStatement ps = conn.prepareStatement(sql)) {
+            for (T item : items) {
+                binder.bind(ps, item);
                 ps.addBatch();
             }
             ps.executeBatch();
@@ -50,21 +63,14 @@ public final class AttributionStore {
     public static void write(Connection conn, String runKey, AttributionData data) throws SQLException {
         createSchema(conn);
         insertRows(conn, runKey, data.rows());
-        try (PreparedStatement ps = conn.prepareStatement(
-                "INSERT INTO metrics (run_key, task, metric, stat, value) VALUES (?,?,?,?,?)")) {
-            for (MetricRow m : data.metrics()) {
-                if (!Double.isFinite(m.value())) {
-                    continue;
-                }
-                ps.setString(1, runKey);
-                ps.setString(2, m.task());
-                ps.setString(3, m.metric());
-                ps.setString(4, m.stat());
-                ps.setDouble(5, m.value());
-                ps.addBatch();
-            }
-            ps.executeBatch();
-        }
+        insertBatch(conn, "INSERT INTO metrics (run_key, task, metric, stat, value) VALUES (?,?,?,?,?)",
+                data.metrics().stream().filter(m -> Double.isFinite(m.value())).toList(), (ps, m) -> {
+                    ps.setString(1, runKey);
+                    ps.setString(2, m.task());
+                    ps.setString(3, m.metric());
+                    ps.setString(4, m.stat());
+                    ps.setDouble(5, m.value());
+                });
         try (PreparedStatement ps = conn.prepareStatement("INSERT INTO series (run_key, name, json) VALUES (?,?,?)")) {
             ps.setString(1, runKey);
             ps.setString(2, "pauses");

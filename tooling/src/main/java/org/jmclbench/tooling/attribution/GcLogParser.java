@@ -76,26 +76,15 @@ public final class GcLogParser {
                 if ((m = USING.matcher(d.message)).find() && d.tags.startsWith("gc")) {
                     collector = m.group(1);
                 } else if (d.tags.startsWith("gc") && (m = UNIFIED_PAUSE.matcher(d.message)).find()) {
-                    Long end = d.runTime(clock);
-                    if (end != null) {
-                        long dur = Math.round(Double.parseDouble(m.group(3)) * 1e6);
-                        out.add(new VmEvent(VmEventKind.GC_PAUSE, end - dur, end, null,
-                                collector + " " + m.group(2).trim() + " #" + m.group(1)));
-                    }
+                    addEnded(out, VmEventKind.GC_PAUSE, d.runTime(clock), m.group(3), 1e6,
+                            collector + " " + m.group(2).trim() + " #" + m.group(1));
                 } else if (d.tags.startsWith("safepoint") && (m = SAFEPOINT_13.matcher(d.message)).find()) {
-                    Long end = d.runTime(clock);
-                    if (end != null) {
-                        out.add(new VmEvent(VmEventKind.SAFEPOINT, end - Long.parseLong(m.group(2)), end, null, m.group(1)));
-                    }
+                    addEnded(out, VmEventKind.SAFEPOINT, d.runTime(clock), m.group(2), 1, m.group(1));
                 } else if (d.tags.startsWith("safepoint") && (m = SAFEPOINT_ENTER.matcher(d.message)).find()) {
                     pendingSafepoint = m.group(1);
                 } else if (d.tags.startsWith("safepoint") && (m = STOPPED.matcher(d.message)).find()) {
-                    Long end = d.runTime(clock);
-                    if (end != null) {
-                        long dur = Math.round(Double.parseDouble(m.group(1)) * 1e9);
-                        out.add(new VmEvent(VmEventKind.SAFEPOINT, end - dur, end, null,
-                                pendingSafepoint == null ? "safepoint" : pendingSafepoint));
-                    }
+                    addEnded(out, VmEventKind.SAFEPOINT, d.runTime(clock), m.group(1), 1e9,
+                            pendingSafepoint == null ? "safepoint" : pendingSafepoint);
                     pendingSafepoint = null;
                 }
             } else {
@@ -128,8 +117,19 @@ public final class GcLogParser {
             String cause = m.group(2) == null || m.group(2).isBlank() ? "" : " " + m.group(2).trim();
             out.add(new VmEvent(VmEventKind.GC_PAUSE, at, at + dur, null, name + cause));
         } else if ((m = STOPPED.matcher(rest)).find()) {
-            long dur = Math.round(Double.parseDouble(m.group(1)) * 1e9);
-            out.add(new VmEvent(VmEventKind.SAFEPOINT, at - dur, at, null, "safepoint"));
+            addEnded(out, VmEventKind.SAFEPOINT, at, m.group(1), 1e9, "safepoint");
+        }
+    }
+
+    /**
+     * A pause that ended at {@code end} (run time in ns; none when the line's time is not on the run's
+     * clock) and lasted {@code duration}, a logged decimal of units of {@code nsPerUnit} nanoseconds.
+     */
+    private static void addEnded(List<VmEvent> out, VmEventKind kind, Long end, String duration, double nsPerUnit,
+            String label) {
+        if (end != null) {
+            long dur = Math.round(Double.parseDouble(duration) * nsPerUnit);
+            out.add(new VmEvent(kind, end - dur, end, null, label));
         }
     }
 

@@ -7,6 +7,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.Function;
 import java.util.stream.Collectors;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -22,6 +23,28 @@ final class EvaluationExplanations extends EvaluationSections {
 
     EvaluationExplanations(EvaluationSections document) {
         super(document);
+    }
+
+    /** True, having written {@code why} as the section's whole text, when the store has none of the {@code cells} it needs. */
+    private boolean absent(List<ReportModel.Cell> cells, String why) {
+        if (!cells.isEmpty()) {
+            return false;
+        }
+        line(why);
+        line("");
+        return true;
+    }
+
+    /**
+     * The cells of every group (cells of one {@code group} key, in first-seen order) in which
+     * {@code varied} takes more than {@code moreThan} values: the groups that compare something.
+     */
+    private static List<ReportModel.Cell> groupsVarying(List<ReportModel.Cell> cells, Function<ReportModel.Cell, String> group,
+            Function<ReportModel.Cell, ?> varied, int moreThan) {
+        Map<String, List<ReportModel.Cell>> groups = new LinkedHashMap<>();
+        cells.forEach(c -> groups.computeIfAbsent(group.apply(c), k -> new ArrayList<>()).add(c));
+        return groups.values().stream().filter(g -> g.stream().map(varied).distinct().count() > moreThan)
+                .flatMap(List::stream).toList();
     }
 
     void memoryModel() throws IOException {
@@ -42,10 +65,8 @@ final class EvaluationExplanations extends EvaluationSections {
                 exp.addAll(group);
             }
         }
-        if (exp.isEmpty()) {
-            line("The store has no runtime that ran the allocating or scoped style beside another style at the same particle count, "
-                    + "so the memory-model experiment is not in it.");
-            line("");
+        if (absent(exp, "The store has no runtime that ran the allocating or scoped style beside another style at the same "
+                + "particle count, so the memory-model experiment is not in it.")) {
             return;
         }
         exp = data.order(exp);
@@ -91,14 +112,9 @@ final class EvaluationExplanations extends EvaluationSections {
     void policies() throws IOException {
         line("### 2.7 Overrun policies: skip, terminate, queue (Table 7)");
         line("");
-        List<ReportModel.Cell> cs = data.cells(c -> c.ok > 0);
-        Map<String, List<ReportModel.Cell>> byConfigCount = new LinkedHashMap<>();
-        cs.forEach(c -> byConfigCount.computeIfAbsent(c.config + "@" + c.particles, k -> new ArrayList<>()).add(c));
-        List<ReportModel.Cell> rowsCells = byConfigCount.values().stream().filter(g -> g.stream().map(c -> c.policy).distinct().count() > 1)
-                .flatMap(List::stream).toList();
-        if (rowsCells.isEmpty()) {
-            line("The store has no configuration that ran more than one policy at the same particle count.");
-            line("");
+        List<ReportModel.Cell> rowsCells = groupsVarying(data.cells(c -> c.ok > 0), c -> c.config + "@" + c.particles,
+                c -> c.policy, 1);
+        if (absent(rowsCells, "The store has no configuration that ran more than one policy at the same particle count.")) {
             return;
         }
         List<List<String>> rows = new ArrayList<>();
@@ -115,15 +131,9 @@ final class EvaluationExplanations extends EvaluationSections {
     void collectors() throws IOException {
         line("### 2.8 Garbage collectors on one JVM (Table 8)");
         line("");
-        Map<String, List<ReportModel.Cell>> byRuntime = new LinkedHashMap<>();
-        data.sweep().stream().filter(c -> c.ok > 0 && !data.isNative(c))
-                .forEach(c -> byRuntime.computeIfAbsent(data.info(c).runtime() + " " + c.engine + " " + c.memory + "@" + c.particles,
-                        k -> new ArrayList<>()).add(c));
-        List<ReportModel.Cell> gc = byRuntime.values().stream().filter(g -> g.stream().map(c -> data.info(c).profile()).distinct().count() > 2)
-                .flatMap(List::stream).toList();
-        if (gc.isEmpty()) {
-            line("The store has no JVM that ran several collectors (profiles) at the same particle count.");
-            line("");
+        List<ReportModel.Cell> gc = groupsVarying(data.sweep().stream().filter(c -> c.ok > 0 && !data.isNative(c)).toList(),
+                c -> data.info(c).runtime() + " " + c.engine + " " + c.memory + "@" + c.particles, c -> data.info(c).profile(), 2);
+        if (absent(gc, "The store has no JVM that ran several collectors (profiles) at the same particle count.")) {
             return;
         }
         List<List<String>> rows = new ArrayList<>();
@@ -142,10 +152,8 @@ final class EvaluationExplanations extends EvaluationSections {
         line("");
         List<ReportModel.Cell> missed = data.sweep().stream().filter(c -> c.ok > 0 && !c.causes.isEmpty()
                 && c.causes.values().stream().anyMatch(v -> v > 0)).toList();
-        if (missed.isEmpty()) {
-            line("No run in the store has attributed misses or late jobs (either nothing was missed, or the runs carry no "
-                    + "attribution rows).");
-            line("");
+        if (absent(missed, "No run in the store has attributed misses or late jobs (either nothing was missed, or the runs "
+                + "carry no attribution rows).")) {
             return;
         }
         int count = missed.stream().mapToInt(c -> c.particles).max().orElseThrow();

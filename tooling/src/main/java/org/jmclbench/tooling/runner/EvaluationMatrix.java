@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Locale;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.runner.MatrixFile.Setting;
 
 /**
  * The evaluation's matrix file: the lines of a matrix file ({@link MatrixFile}) in {@code [sections]},
@@ -30,9 +31,6 @@ public final class EvaluationMatrix {
 
     /** One {@code [name]} section: its matrix, the shared lines applied first. */
     public record Section(String name, MatrixSpec spec) {
-    }
-
-    private record Setting(String key, String value, String where) {
     }
 
     /** The sections in file order. */
@@ -84,20 +82,12 @@ public final class EvaluationMatrix {
                 bodies.add(new ArrayList<>());
                 continue;
             }
-            int eq = line.indexOf('=');
-            if (eq <= 0) {
-                throw new BadUsageException(where + ": expected 'key = value' or '[section]'");
-            }
-            String key = line.substring(0, eq).strip();
-            String value = line.substring(eq + 1).strip();
-            if (value.isEmpty()) {
-                throw new BadUsageException(where + ": " + key + ": empty value");
-            }
-            if (key.equals("db")) {
+            Setting setting = Setting.parse(line, where, "'key = value' or '[section]'");
+            if (setting.key().equals("db")) {
                 throw new BadUsageException(where + ": db: the evaluation's database is evaluate's --db, not the matrix file's");
             }
-            MatrixOptions.apply(new MatrixSpec(), key, value, where); // finds a bad key or value at its line
-            (bodies.isEmpty() ? shared : bodies.get(bodies.size() - 1)).add(new Setting(key, value, where));
+            MatrixOptions.apply(new MatrixSpec(), setting.key(), setting.value(), where); // finds a bad key or value at its line
+            (bodies.isEmpty() ? shared : bodies.get(bodies.size() - 1)).add(setting);
         }
         if (names.isEmpty()) {
             throw new BadUsageException("--matrix: " + file + ": no [section]");

@@ -48,16 +48,28 @@ public final class MatrixFile {
             if (line.isEmpty() || line.startsWith("#")) {
                 continue;
             }
+            Setting s = Setting.parse(line, where, "'key = value'");
+            MatrixOptions.apply(spec, s.key(), s.value(), where);
+        }
+    }
+
+    /** One {@code key = value} line of a matrix file, and where it stands (file:line) for messages. */
+    record Setting(String key, String value, String where) {
+        /**
+         * The stripped line {@code line} as a setting, or bad usage naming {@code where}: no key, or
+         * an empty value ({@code expected} says what the file's lines may be).
+         */
+        static Setting parse(String line, String where, String expected) {
             int eq = line.indexOf('=');
             if (eq <= 0) {
-                throw new BadUsageException(where + ": expected 'key = value'");
+                throw new BadUsageException(where + ": expected " + expected);
             }
             String key = line.substring(0, eq).strip();
             String value = line.substring(eq + 1).strip();
             if (value.isEmpty()) {
                 throw new BadUsageException(where + ": " + key + ": empty value");
             }
-            MatrixOptions.apply(spec, key, value, where);
+            return new Setting(key, value, where);
         }
     }
 }

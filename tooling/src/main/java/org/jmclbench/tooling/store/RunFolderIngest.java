@@ -11,6 +11,7 @@ import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Function;
 
 import org.HdrHistogram.Histogram;
 
@@ -181,26 +182,8 @@ public final class RunFolderIngest {
     }
 
     static List<Job> readJobs(Path file) throws IOException {
-        List<Job> jobs = new ArrayList<>();
-        int lineNo = 0;
-        for (String line : Files.readAllLines(file, StandardCharsets.UTF_8)) {
-            lineNo++;
-            String l = line.strip();
-            if (l.isEmpty() || l.startsWith("#")) {
-                continue;
-            }
-            String[] f = l.split("\\s+");
-            if (f.length < 7) {
-                throw new IOException(file + ":" + lineNo + ": expected 7 columns, found " + f.length);
-            }
-            try {
-                jobs.add(new Job(Long.parseLong(f[0]), Long.parseLong(f[1]), Long.parseLong(f[2]), Long.parseLong(f[3]),
-                        Long.parseLong(f[4]), f[5], Long.parseLong(f[6])));
-            } catch (NumberFormatException e) {
-                throw new IOException(file + ":" + lineNo + ": not a number: " + e.getMessage());
-            }
-        }
-        return jobs;
+        return readRows(file, 7, f -> new Job(Long.parseLong(f[0]), Long.parseLong(f[1]), Long.parseLong(f[2]),
+                Long.parseLong(f[3]), Long.parseLong(f[4]), f[5], Long.parseLong(f[6])));
     }
 
     /** dispatcherData.txt (when a workload writes one): {@code index requested_ns woke_ns} lines. */
@@ -213,7 +196,22 @@ public final class RunFolderIngest {
     }
 
     static List<double[]> readNumbers(Path file, int columns) throws IOException {
-        List<double[]> rows = new ArrayList<>();
+        return readRows(file, columns, f -> {
+            double[] r = new double[columns];
+            for (int i = 0; i < columns; i++) {
+                r[i] = Double.parseDouble(f[i]);
+            }
+            return r;
+        });
+    }
+
+    /**
+     * The rows of a whitespace-separated data file (blank and {@code #} lines skipped), each of at
+     * least {@code columns} fields, parsed by {@code row}; a short row or a bad number is an
+     * IOException naming file:line.
+     */
+    private static <T> List<T> readRows(Path file, int columns, Function<String[], T> row) throws IOException {
+        List<T> rows = new ArrayList<>();
         int lineNo = 0;
         for (String line : Files.readAllLines(file, StandardCharsets.UTF_8)) {
             lineNo++;
@@ -225,15 +223,11 @@ public final class RunFolderIngest {
             if (f.length < columns) {
                 throw new IOException(file + ":" + lineNo + ": expected " + columns + " columns, found " + f.length);
             }
-            double[] r = new double[columns];
             try {
-                for (int i = 0; i < columns; i++) {
-                    r[i] = Double.parseDouble(f[i]);
-                }
+                rows.add(row.apply(f));
             } catch (NumberFormatException e) {
                 throw new IOException(file + ":" + lineNo + ": not a number: " + e.getMessage());
             }
-            rows.add(r);
         }
         return rows;
     }

@@ -5,14 +5,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
-import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.jmclbench.tooling.Fixtures;
+import org.jmclbench.tooling.Fixtures.CliResult;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -20,30 +18,15 @@ class GenerateCommandTest {
     @TempDir
     Path tmp;
 
-    private record Result(int code, String out, String err) {
+    private static CliResult generate(String... args) {
+        String[] full = new String[args.length + 1];
+        full[0] = "generate";
+        System.arraycopy(args, 0, full, 1, args.length);
+        return Fixtures.cli(full);
     }
 
-    private static Result generate(String... args) {
-        PrintStream oldOut = System.out;
-        PrintStream oldErr = System.err;
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        try {
-            System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
-            System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
-            String[] full = new String[args.length + 1];
-            full[0] = "generate";
-            System.arraycopy(args, 0, full, 1, args.length);
-            int code = JmclbenchCli.execute(full);
-            return new Result(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
-        } finally {
-            System.setOut(oldOut);
-            System.setErr(oldErr);
-        }
-    }
-
-    private static void assertBadUsage(Result r, String mentions) {
-        assertEquals(2, r.code(), r.err());
+    private static void assertBadUsage(CliResult r, String mentions) {
+        assertEquals(2, r.exitCode(), r.err());
         assertTrue(r.err().startsWith("jmclbench: "), r.err());
         assertEquals(1, r.err().lines().count(), "one line: " + r.err());
         assertTrue(r.err().contains(mentions), r.err());
@@ -53,8 +36,8 @@ class GenerateCommandTest {
     void writesADatasetAndTheSameAgainForTheSameSeed() throws Exception {
         Path a = tmp.resolve("a");
         Path b = tmp.resolve("b");
-        assertEquals(0, generate("--scenario", "stay", "--seed", "3", "--duration", "2", "--out", a.toString()).code());
-        assertEquals(0, generate("--scenario", "stay", "--seed", "3", "--duration", "2", "--out", b.toString()).code());
+        assertEquals(0, generate("--scenario", "stay", "--seed", "3", "--duration", "2", "--out", a.toString()).exitCode());
+        assertEquals(0, generate("--scenario", "stay", "--seed", "3", "--duration", "2", "--out", b.toString()).exitCode());
         for (String f : DatasetWriter.FILES) {
             assertArrayEquals(Files.readAllBytes(a.resolve(f)), Files.readAllBytes(b.resolve(f)), f);
         }
@@ -84,20 +67,20 @@ class GenerateCommandTest {
 
     @Test
     void helpExitsZero() {
-        Result r = generate("--help");
-        assertEquals(0, r.code());
+        CliResult r = generate("--help");
+        assertEquals(0, r.exitCode());
         assertTrue(r.out().contains("--scenario") && r.out().contains("figure8"), r.out());
     }
 
     @Test
     void refusesToOverwriteWithoutForce() throws Exception {
         Path dir = tmp.resolve("d");
-        assertEquals(0, generate("--scenario", "stay", "--duration", "1", "--out", dir.toString()).code());
+        assertEquals(0, generate("--scenario", "stay", "--duration", "1", "--out", dir.toString()).exitCode());
         byte[] before = Files.readAllBytes(dir.resolve("odometry.txt"));
         assertBadUsage(generate("--scenario", "stay", "--seed", "2", "--duration", "1", "--out", dir.toString()), "--force");
         assertArrayEquals(before, Files.readAllBytes(dir.resolve("odometry.txt")));
         assertEquals(0, generate("--scenario", "stay", "--seed", "2", "--duration", "1", "--out", dir.toString(), "--force")
-                .code());
+                .exitCode());
         assertFalse(java.util.Arrays.equals(before, Files.readAllBytes(dir.resolve("odometry.txt"))));
     }
 
@@ -123,14 +106,14 @@ class GenerateCommandTest {
     void writesIntoAnEmptyExistingFolder() throws Exception {
         Path dir = tmp.resolve("empty");
         Files.createDirectories(dir);
-        assertEquals(0, generate("--scenario", "figure8", "--duration", "1", "--out", dir.toString()).code());
+        assertEquals(0, generate("--scenario", "figure8", "--duration", "1", "--out", dir.toString()).exitCode());
         assertTrue(Files.isRegularFile(dir.resolve("laser.txt")));
     }
 
     @Test
     void noNoiseWritesPerfectSensors() throws Exception {
         Path dir = tmp.resolve("clean");
-        assertEquals(0, generate("--scenario", "match", "--duration", "5", "--no-noise", "--out", dir.toString()).code());
+        assertEquals(0, generate("--scenario", "match", "--duration", "5", "--no-noise", "--out", dir.toString()).exitCode());
         String props = Files.readString(dir.resolve("dataset.properties"));
         assertTrue(props.contains("\nlaser.noise=0.0\n") && props.contains("\nlaser.missProbability=0.0\n"), props);
     }

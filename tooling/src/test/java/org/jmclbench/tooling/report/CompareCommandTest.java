@@ -3,14 +3,11 @@ package org.jmclbench.tooling.report;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
-import org.jmclbench.tooling.cli.JmclbenchCli;
+import org.jmclbench.tooling.Fixtures;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -42,22 +39,9 @@ class CompareCommandTest {
     }
 
     static String[] run(int expectedExit, String... args) {
-        PrintStream oldOut = System.out;
-        PrintStream oldErr = System.err;
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
-        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
-        int code;
-        try {
-            code = JmclbenchCli.execute(args);
-        } finally {
-            System.setOut(oldOut);
-            System.setErr(oldErr);
-        }
-        String[] result = {out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8)};
-        assertEquals(expectedExit, code, "stdout: " + result[0] + "\nstderr: " + result[1]);
-        return result;
+        Fixtures.CliResult r = Fixtures.cli(args);
+        assertEquals(expectedExit, r.exitCode(), "stdout: " + r.out() + "\nstderr: " + r.err());
+        return new String[] {r.out(), r.err()};
     }
 
     static String line(String table, String metric) {

@@ -16,10 +16,9 @@ import java.util.regex.Pattern;
 
 import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
-
 import org.junit.jupiter.api.BeforeAll;
-import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
@@ -40,12 +39,8 @@ class EvaluationDocumentTest {
     /** native, one JVM with both engines and all four memory styles, a JVM with three collectors, hvm. */
     static FixtureDb evaluationStore() {
         FixtureDb f = new FixtureDb();
-        f.configs = new ArrayList<>(List.of(
-                new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
-                new FixtureDb.Config("temurin-25", "default", "25+36", 1.15, "ok", "javase", "preallocated"),
-                new FixtureDb.Config("temurin-25", "default", "25+36", 1.3, "ok", "javase", "allocating"),
-                new FixtureDb.Config("temurin-25", "default", "25+36", 1.2, "ok", "scj", "preallocated"),
-                new FixtureDb.Config("temurin-25", "default", "25+36", 1.25, "ok", "scj", "scoped"),
+        f.configs = ReportFixtures.memoryModels("default");
+        f.configs.addAll(List.of(
                 new FixtureDb.Config("temurin-21", "g1", "21.0.5", 1.2, "ok"),
                 new FixtureDb.Config("temurin-21", "zgc", "21.0.5", 1.1, "ok"),
                 new FixtureDb.Config("temurin-21", "serial", "21.0.5", 1.4, "ok"),

@@ -44,17 +44,25 @@ final class ReportFixtures {
      */
     static FixtureDb engines() {
         FixtureDb f = new FixtureDb();
-        f.configs = new ArrayList<>(List.of(
-                new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
-                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.15, "ok", "javase", "preallocated"),
-                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.3, "ok", "javase", "allocating"),
-                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.2, "ok", "scj", "preallocated"),
-                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.25, "ok", "scj", "scoped")));
+        f.configs = memoryModels("g1");
         f.policies = List.of("skip");
         f.particles = List.of(100, 400);
         f.repetitions = 2;
         f.durationS = 6;
         return f;
+    }
+
+    /**
+     * native, and temurin-25 under {@code profile} with both engines and their four memory
+     * styles (Java SE preallocated and allocating, SCJ preallocated and scoped).
+     */
+    static List<FixtureDb.Config> memoryModels(String profile) {
+        return new ArrayList<>(List.of(
+                new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("temurin-25", profile, "25+36", 1.15, "ok", "javase", "preallocated"),
+                new FixtureDb.Config("temurin-25", profile, "25+36", 1.3, "ok", "javase", "allocating"),
+                new FixtureDb.Config("temurin-25", profile, "25+36", 1.2, "ok", "scj", "preallocated"),
+                new FixtureDb.Config("temurin-25", profile, "25+36", 1.25, "ok", "scj", "scoped")));
     }
 
     static Path write(FixtureDb f, Path dir, String name) throws Exception {

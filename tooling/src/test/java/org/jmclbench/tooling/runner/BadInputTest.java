@@ -8,24 +8,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 import org.jmclbench.tooling.Fixtures;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /** Bad input is one line naming the option or file:line, exit code 2, and nothing run or recorded. */
-class BadInputTest {
-
-    @TempDir
-    Path dir;
-    Path db;
-    Path fake;
-
-    @BeforeEach
-    void setUp() throws Exception {
-        Fixtures.home(dir);
-        db = dir.resolve("out/results.db");
-        fake = Fixtures.fakeJava(dir, "jvm", "ok", 0, null, 21);
-    }
+class BadInputTest extends FakeJvmHome {
 
     private void assertRejected(String expected, String... args) {
         Fixtures.CliResult r = Fixtures.cli(args);

@@ -26,25 +26,16 @@ import org.jmclbench.tooling.runtime.RuntimeInfo;
 import org.jmclbench.tooling.store.MachineInfo;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /**
  * The engine and memory-style dimensions of the matrix: planned per JVM (native once), passed to the
  * workload, recorded with each run and its memory areas; a style an engine lacks is unsupported.
  */
-class EngineMatrixTest {
-
-    @TempDir
-    Path dir;
-    Path db;
-    Path fake;
+class EngineMatrixTest extends FakeJvmHome {
     Path nat;
 
     @BeforeEach
-    void setUp() throws Exception {
-        Fixtures.home(dir);
-        db = dir.resolve("out/results.db");
-        fake = Fixtures.fakeJava(dir, "jvm", "ok", 0, null, 21);
+    void setUpNative() throws Exception {
         nat = Fixtures.fakeJava(dir, "nat", "ok", 0, null, 21);
     }
 

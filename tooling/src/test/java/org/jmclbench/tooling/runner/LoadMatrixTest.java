@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
-import java.nio.file.Path;
 import java.sql.Connection;
 import java.sql.DriverManager;
 import java.sql.ResultSet;
@@ -14,24 +13,10 @@ import java.util.HashMap;
 import java.util.Map;
 
 import org.jmclbench.tooling.Fixtures;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /** The load dimension of the matrix: planned, recorded with each run, passed to the workload, ended with the run. */
-class LoadMatrixTest {
-
-    @TempDir
-    Path dir;
-    Path db;
-    Path fake;
-
-    @BeforeEach
-    void setUp() throws Exception {
-        Fixtures.home(dir);
-        db = dir.resolve("out/results.db");
-        fake = Fixtures.fakeJava(dir, "jvm", "ok", 0, null, 21);
-    }
+class LoadMatrixTest extends FakeJvmHome {
 
     @Test
     void anUnknownLoadIsBadUsage() {

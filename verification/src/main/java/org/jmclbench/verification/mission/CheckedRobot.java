@@ -55,21 +55,22 @@ public class CheckedRobot extends Robot {
 
     @Override
     public synchronized boolean predict(int k, AbortSignal abort) {
-        long before = fingerprint();
-        long record = record(k);
-        watch.arm(abort, localizer, "predict");
-        boolean done = super.predict(k, watch);
-        jobEnded(k, done, before, record, "predict");
-        return done;
+        return checked(k, abort, false);
     }
 
     @Override
     public synchronized boolean update(int k, AbortSignal abort) {
+        return checked(k, abort, true);
+    }
+
+    /** Runs the robot's job for event k (update or predict) with its abort signal watched, then checks how it ended. */
+    private boolean checked(int k, AbortSignal abort, boolean update) {
+        String job = update ? "update" : "predict";
         long before = fingerprint();
         long record = record(k);
-        watch.arm(abort, localizer, "update");
-        boolean done = super.update(k, watch);
-        jobEnded(k, done, before, record, "update");
+        watch.arm(abort, localizer, job);
+        boolean done = update ? super.update(k, watch) : super.predict(k, watch);
+        jobEnded(k, done, before, record, job);
         return done;
     }
 

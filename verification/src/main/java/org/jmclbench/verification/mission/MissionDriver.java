@@ -10,8 +10,8 @@ import org.jmclbench.rtsjcompat.RunReport;
 import org.jmclbench.rtsjcompat.ScjRuntime;
 import org.jmclbench.rtsjcompat.TimeSource;
 import org.jmclbench.scj.MclSafelet;
-import org.jmclbench.scj.MissionInput;
 import org.jmclbench.scj.MissionOutput;
+import org.jmclbench.scj.SizedMissionInput;
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.verification.Property;
 import org.jmclbench.verification.jpf.Coverage;
@@ -35,7 +35,7 @@ import org.jmclbench.verification.jpf.Coverage;
  * <p>Usage: {@code MissionDriver POLICY MEMORY ODOMETRY_EVENTS LASER_EVENTS PARTICLES POLL_INTERVAL
  * COVARIANCE [FAULT_CLASS]}; the fault ({@link CheckedConfiguration}) is the seam seeded bugs come in by.
  */
-public final class MissionDriver implements MissionInput, MissionOutput {
+public final class MissionDriver extends SizedMissionInput implements MissionOutput {
     /** Virtual time after which the mission must have ended: far beyond the last event's deadline. */
     static final long HORIZON_NS = 1_000_000_000L;
     /** The outcome names reported per task ({@link Timeline#PREDICT}, {@link Timeline#UPDATE}) and outcome. */
@@ -43,13 +43,10 @@ public final class MissionDriver implements MissionInput, MissionOutput {
         {"predict pending", "predict done", "predict late", "predict skipped", "predict terminated"},
         {"update pending", "update done", "update late", "update skipped", "update terminated"}};
 
-    private final int odometry;
-    private final int laser;
     private JobRecords records;
 
     MissionDriver(int odometry, int laser) {
-        this.odometry = odometry;
-        this.laser = laser;
+        super(odometry, laser);
     }
 
     public static void main(String[] args) throws ReflectiveOperationException {
@@ -89,7 +86,7 @@ public final class MissionDriver implements MissionInput, MissionOutput {
     /** P5: every event ended once, as the gate counted and as the records say. */
     private void checkEnded(CheckedConfiguration config) {
         PropertyFailure p5 = new PropertyFailure(Property.P5, "an event did not end exactly once");
-        p5.unless(records != null && records.size() == odometry + laser, config.gate(), "ended");
+        p5.unless(records != null && records.size() == odometryCount() + laserCount(), config.gate(), "ended");
         p5.unless(config.gate().endedCount() == records.size(), config.gate(), "ended");
         for (int k = 0; k < records.size(); k++) {
             byte o = records.outcome[k];
@@ -130,6 +127,8 @@ public final class MissionDriver implements MissionInput, MissionOutput {
     private void replay(CheckedConfiguration config, MclConfig mcl) {
         Localizer mission = config.robot().localizer();
         Localizer fresh = config.shipped(playground(), startX(), startY(), startTheta());
+        int odometry = odometryCount();
+        int laser = laserCount();
         double[] dx = new double[odometry];
         double[] dy = new double[odometry];
         double[] dt = new double[odometry];
@@ -191,18 +190,8 @@ public final class MissionDriver implements MissionInput, MissionOutput {
     }
 
     @Override
-    public int odometryCount() {
-        return odometry;
-    }
-
-    @Override
-    public int laserCount() {
-        return laser;
-    }
-
-    @Override
     public void readOdometry(double[] time, double[] dx, double[] dy, double[] dtheta) {
-        for (int k = 0; k < odometry; k++) {
+        for (int k = 0; k < odometryCount(); k++) {
             time[k] = 0.05 * k;
             dx[k] = 0.01;
             dy[k] = 0.0;
@@ -214,7 +203,7 @@ public final class MissionDriver implements MissionInput, MissionOutput {
     public void readLaser(double[] time, double[] angle) {
         // Virtual time stands still while a job runs, so a job overruns only when another release
         // falls at the same instant: laser event k coincides with odometry event k.
-        for (int k = 0; k < laser; k++) {
+        for (int k = 0; k < laserCount(); k++) {
             time[k] = 0.05 * k;
             angle[k] = 1.0 + 0.5 * k;
         }

@@ -168,39 +168,22 @@ public final class Json {
         }
     }
 
+    /** RFC 8259's two-character escapes: {@code ESCAPED.charAt(i)} is written as a backslash and {@code ESCAPE_LETTER.charAt(i)}. */
+    private static final String ESCAPED = "\"\\\n\r\t\b\f";
+    private static final String ESCAPE_LETTER = "\"\\nrtbf";
+
     private void quote(String s) {
         out.append('"');
         for (int i = 0; i < s.length(); i++) {
             char c = s.charAt(i);
-            switch (c) {
-                case '"':
-                    out.append("\\\"");
-                    break;
-                case '\\':
-                    out.append("\\\\");
-                    break;
-                case '\n':
-                    out.append("\\n");
-                    break;
-                case '\r':
-                    out.append("\\r");
-                    break;
-                case '\t':
-                    out.append("\\t");
-                    break;
-                case '\b':
-                    out.append("\\b");
-                    break;
-                case '\f':
-                    out.append("\\f");
-                    break;
-                default:
-                    // Control characters, and U+2028/2029 which break JavaScript embedding.
-                    if (c < 0x20 || c == '\u2028' || c == '\u2029') {
-                        out.append(String.format("\\u%04x", (int) c));
-                    } else {
-                        out.append(c);
-                    }
+            int e = ESCAPED.indexOf(c);
+            if (e >= 0) {
+                out.append('\\').append(ESCAPE_LETTER.charAt(e));
+            } else if (c < 0x20 || c == '\u2028' || c == '\u2029') {
+                // Control characters, and U+2028/2029 which break JavaScript embedding.
+                out.append(String.format("\\u%04x", (int) c));
+            } else {
+                out.append(c);
             }
         }
         out.append('"');

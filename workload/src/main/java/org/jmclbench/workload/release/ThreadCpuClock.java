@@ -16,13 +16,12 @@ public final class ThreadCpuClock {
      */
     private static final long ONE_OFF_BYTES = 64 * 1024;
 
+    /** The runtime's clock, or null when it is not used (usable is exactly bean != null). */
     private final ThreadMXBean bean;
-    private final boolean usable;
     private final String status;
 
-    private ThreadCpuClock(ThreadMXBean bean, boolean usable, String status) {
+    private ThreadCpuClock(ThreadMXBean bean, String status) {
         this.bean = bean;
-        this.usable = usable;
         this.status = status;
     }
 
@@ -32,29 +31,29 @@ public final class ThreadCpuClock {
         try {
             bean = ManagementFactory.getThreadMXBean();
             if (!bean.isCurrentThreadCpuTimeSupported()) {
-                return new ThreadCpuClock(null, false, "unsupported");
+                return new ThreadCpuClock(null, "unsupported");
             }
             if (!bean.isThreadCpuTimeEnabled()) {
                 bean.setThreadCpuTimeEnabled(true);
             }
         } catch (RuntimeException | LinkageError e) {
-            return new ThreadCpuClock(null, false, "unavailable: " + e);
+            return new ThreadCpuClock(null, "unavailable: " + e);
         }
         long bytes = allocatedBytesPerProbe(bean);
         if (bytes < 0) {
             // Cannot check: trust it (HotSpot and OpenJ9 read a clock), and say so.
-            return new ThreadCpuClock(bean, true, "used (allocation not checkable)");
+            return new ThreadCpuClock(bean, "used (allocation not checkable)");
         }
         if (bytes > ONE_OFF_BYTES) {
-            return new ThreadCpuClock(null, false, "disabled: allocates " + bytes + " bytes per "
+            return new ThreadCpuClock(null, "disabled: allocates " + bytes + " bytes per "
                     + PROBE_CALLS + " calls");
         }
-        return new ThreadCpuClock(bean, true, "used (allocation-free)");
+        return new ThreadCpuClock(bean, "used (allocation-free)");
     }
 
     /** A clock that always answers -1. */
     public static ThreadCpuClock disabled(String why) {
-        return new ThreadCpuClock(null, false, why);
+        return new ThreadCpuClock(null, why);
     }
 
     /**
@@ -96,12 +95,12 @@ public final class ThreadCpuClock {
 
     /** CPU nanoseconds of the calling thread, or -1. */
     public long now() {
-        return usable ? bean.getCurrentThreadCpuTime() : -1;
+        return bean != null ? bean.getCurrentThreadCpuTime() : -1;
     }
 
     /** Whether {@link #now()} gives real values. */
     public boolean usable() {
-        return usable;
+        return bean != null;
     }
 
     /** One line for the run's summary: how per-job CPU time was obtained. */

@@ -1,17 +1,15 @@
 package org.jmclbench.workload.scj;
 
 import org.jmclbench.core.mcl.Playground;
-import org.jmclbench.scj.MissionInput;
+import org.jmclbench.scj.SizedMissionInput;
 import org.jmclbench.workload.data.Dataset;
 
 /**
  * The mission's input on Java SE: a dataset read by the workload, or its first events (a
  * warm-up or class-loading prefix). Copies into the mission's arrays; allocates nothing.
  */
-public final class DatasetInput implements MissionInput {
+public final class DatasetInput extends SizedMissionInput {
     private final Dataset dataset;
-    private final int odometry;
-    private final int laser;
 
     /** The whole dataset. */
     public DatasetInput(Dataset dataset) {
@@ -20,9 +18,8 @@ public final class DatasetInput implements MissionInput {
 
     /** The first {@code odometry} odometry and {@code laser} laser events of the dataset. */
     public DatasetInput(Dataset dataset, int odometry, int laser) {
+        super(odometry, laser);
         this.dataset = dataset;
-        this.odometry = odometry;
-        this.laser = laser;
     }
 
     /** The events of the dataset released before {@code seconds} (scaled time is the mission's business). */
@@ -39,27 +36,19 @@ public final class DatasetInput implements MissionInput {
     }
 
     @Override
-    public int odometryCount() {
-        return odometry;
-    }
-
-    @Override
-    public int laserCount() {
-        return laser;
-    }
-
-    @Override
     public void readOdometry(double[] time, double[] dx, double[] dy, double[] dtheta) {
-        System.arraycopy(dataset.odoTime, 0, time, 0, odometry);
-        System.arraycopy(dataset.odoDx, 0, dx, 0, odometry);
-        System.arraycopy(dataset.odoDy, 0, dy, 0, odometry);
-        System.arraycopy(dataset.odoDtheta, 0, dtheta, 0, odometry);
+        int n = odometryCount();
+        System.arraycopy(dataset.odoTime, 0, time, 0, n);
+        System.arraycopy(dataset.odoDx, 0, dx, 0, n);
+        System.arraycopy(dataset.odoDy, 0, dy, 0, n);
+        System.arraycopy(dataset.odoDtheta, 0, dtheta, 0, n);
     }
 
     @Override
     public void readLaser(double[] time, double[] angle) {
-        System.arraycopy(dataset.laserTime, 0, time, 0, laser);
-        System.arraycopy(dataset.laserAngle, 0, angle, 0, laser);
+        int n = laserCount();
+        System.arraycopy(dataset.laserTime, 0, time, 0, n);
+        System.arraycopy(dataset.laserAngle, 0, angle, 0, n);
     }
 
     @Override

@@ -107,31 +107,29 @@ class DatasetReaderTest {
         return msg.trim();
     }
 
+    /** Bad odometry files and what the workload says after "jmclbench: <file>". */
+    private static final String[][] BAD_ODOMETRY = {
+        {"0.05  0.01  0.0  0.001\n0.10  0.01  0.0\n", ":2: expected 4 columns but found 3"},
+        {"0.05  zero  0.0  0.001\n", ":1: not a number: 'zero'"},
+        {"# header\n0.05  0.01  0.0  0.001\n0.10  NaN  0.0  0.001\n", ":3: not a finite number: 'NaN'"},
+        {"0.05  0.01  Infinity  0.001\n", ":1: not a finite number: 'Infinity'"},
+        {"0.05  0.01  -Infinity  0.001\n", ":1: not a finite number: '-Infinity'"},
+        {"0.05  0.01  inf  0.001\n", ":1: not a finite number: 'inf'"},
+        {"0.05  1.0f  0  0\n", ":1: not a number: '1.0f'"},
+        {"0.05  0x1p3  0  0\n", ":1: not a number: '0x1p3'"},
+        {"0.05  1e999  0  0\n", ":1: not a finite number: '1e999' (overflows)"},
+        {"-0.05  0.01  0.0  0.001\n", ":1: negative time -0.05"},
+        {"0.05  0.01  0.0  0.001\n0.04  0.01  0.0  0.001\n", ":2: time 0.04 is before the previous line's (not sorted by time)"},
+        {"", ": empty file (no data lines)"},
+        {"# only a comment\n\n", ": empty file (no data lines)"},
+    };
+
     @Test
     void rejectsWithFileLineAndExitCodeTwo() throws IOException {
         String path = new File(tmp, "odometry.txt").getPath();
-        assertEquals("jmclbench: " + path + ":2: expected 4 columns but found 3",
-                rejectOdometry("0.05  0.01  0.0  0.001\n0.10  0.01  0.0\n"));
-        assertEquals("jmclbench: " + path + ":1: not a number: 'zero'",
-                rejectOdometry("0.05  zero  0.0  0.001\n"));
-        assertEquals("jmclbench: " + path + ":3: not a finite number: 'NaN'",
-                rejectOdometry("# header\n0.05  0.01  0.0  0.001\n0.10  NaN  0.0  0.001\n"));
-        assertEquals("jmclbench: " + path + ":1: not a finite number: 'Infinity'",
-                rejectOdometry("0.05  0.01  Infinity  0.001\n"));
-        assertEquals("jmclbench: " + path + ":1: not a finite number: '-Infinity'",
-                rejectOdometry("0.05  0.01  -Infinity  0.001\n"));
-        assertEquals("jmclbench: " + path + ":1: not a finite number: 'inf'",
-                rejectOdometry("0.05  0.01  inf  0.001\n"));
-        assertEquals("jmclbench: " + path + ":1: not a number: '1.0f'", rejectOdometry("0.05  1.0f  0  0\n"));
-        assertEquals("jmclbench: " + path + ":1: not a number: '0x1p3'", rejectOdometry("0.05  0x1p3  0  0\n"));
-        assertEquals("jmclbench: " + path + ":1: not a finite number: '1e999' (overflows)",
-                rejectOdometry("0.05  1e999  0  0\n"));
-        assertEquals("jmclbench: " + path + ":1: negative time -0.05",
-                rejectOdometry("-0.05  0.01  0.0  0.001\n"));
-        assertEquals("jmclbench: " + path + ":2: time 0.04 is before the previous line's (not sorted by time)",
-                rejectOdometry("0.05  0.01  0.0  0.001\n0.04  0.01  0.0  0.001\n"));
-        assertEquals("jmclbench: " + path + ": empty file (no data lines)", rejectOdometry(""));
-        assertEquals("jmclbench: " + path + ": empty file (no data lines)", rejectOdometry("# only a comment\n\n"));
+        for (String[] bad : BAD_ODOMETRY) {
+            assertEquals("jmclbench: " + path + bad[1], rejectOdometry(bad[0]));
+        }
         String missing = new File(tmp, "nope.txt").getPath();
         assertEquals("jmclbench: " + missing + ": no such file",
                 reject(missing, file("laser.txt", LASER).getPath(), file("real.txt", REAL).getPath()));

@@ -2,6 +2,7 @@ package org.jmclbench.workload.mcl;
 
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Localizer;
+import org.jmclbench.core.mcl.AbortAt;
 import org.jmclbench.core.mcl.AbortSignal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -124,20 +125,6 @@ class LocalizerBehaviourTest {
     }
 
     /** Aborts at the n-th poll (1-based) of one job. */
-    static final class AbortAt implements AbortSignal {
-        final int at;
-        int polls;
-
-        AbortAt(int at) {
-            this.at = at;
-        }
-
-        @Override
-        public boolean abortRequested() {
-            return ++polls >= at;
-        }
-    }
-
     @Test
     void anAbortedJobChangesNothing() {
         int n = 200; // 4 polls per loop over the particles
@@ -160,7 +147,7 @@ class LocalizerBehaviourTest {
                                 double bt = l.estimateTheta();
                                 AbortAt signal = new AbortAt(at);
                                 boolean completed = job(l, k, signal);
-                                if (signal.polls >= at) {
+                                if (signal.polls() >= at) {
                                     assertFalse(completed, "aborted at poll " + at);
                                     assertEquals(bx, l.estimateX());
                                     assertEquals(by, l.estimateY());

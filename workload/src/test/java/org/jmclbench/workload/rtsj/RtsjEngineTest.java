@@ -4,15 +4,13 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.File;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 
 import org.jmclbench.workload.RunOptions;
-import org.jmclbench.workload.WorkloadMain;
 import org.jmclbench.workload.testing.SyntheticDataset;
+import org.jmclbench.workload.testing.WorkloadCall;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -21,18 +19,7 @@ class RtsjEngineTest {
     @TempDir
     File tmp;
 
-    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
-    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
-
-    private int main(String... args) {
-        out.reset();
-        err.reset();
-        return WorkloadMain.run(args, new PrintStream(out), new PrintStream(err));
-    }
-
-    private String err() {
-        return new String(err.toByteArray(), StandardCharsets.UTF_8);
-    }
+    private final WorkloadCall call = new WorkloadCall();
 
     @Test
     void eachDesignWritesItsOwnRunFolderAndEveryEventEnds() throws Exception {
@@ -40,9 +27,9 @@ class RtsjEngineTest {
         File o = new File(tmp, "out");
         for (String design : new String[] {"thesis", "atomic"}) {
             for (String policy : new String[] {"queue", "terminate"}) {
-                assertEquals(0, main("run", "--engine", "rtsj", "--rtsj-design", design, "--policy", policy, "-p",
-                        "100", "--time-scale", "0.5", "--dataset", ds.getPath(), "-O", o.getPath()), err());
-                File dir = new File(out.toString().trim());
+                assertEquals(0, call.run("run", "--engine", "rtsj", "--rtsj-design", design, "--policy", policy, "-p",
+                        "100", "--time-scale", "0.5", "--dataset", ds.getPath(), "-O", o.getPath()), call.err());
+                File dir = new File(call.out().trim());
                 String runtime = RunOptions.defaultRuntimeName() + "-rtsj-" + design;
                 assertTrue(dir.getPath().startsWith(new File(o, runtime).getPath()), dir.getPath());
                 String s = new String(Files.readAllBytes(new File(dir, "summary.json").toPath()), StandardCharsets.UTF_8);
@@ -59,12 +46,12 @@ class RtsjEngineTest {
 
     @Test
     void optionsOfTheDesignAreBadUsageElsewhere() {
-        assertEquals(2, main("run", "--rtsj-design", "atomic"));
-        assertTrue(err().startsWith("jmclbench: --rtsj-design: chooses the rtsj engine's design"), err());
-        assertEquals(2, main("run", "--engine", "rtsj", "--rtsj-design", "fast"));
-        assertTrue(err().startsWith("jmclbench: --rtsj-design: 'fast' is not one of thesis|atomic"), err());
-        assertEquals(2, main("run", "--engine", "rtsj", "--memory", "scoped"));
-        assertTrue(err().startsWith("jmclbench: --memory: 'scoped' is not a memory style of the rtsj engine"), err());
-        assertEquals(1, err().trim().split("\n").length, err());
+        assertEquals(2, call.run("run", "--rtsj-design", "atomic"));
+        assertTrue(call.err().startsWith("jmclbench: --rtsj-design: chooses the rtsj engine's design"), call.err());
+        assertEquals(2, call.run("run", "--engine", "rtsj", "--rtsj-design", "fast"));
+        assertTrue(call.err().startsWith("jmclbench: --rtsj-design: 'fast' is not one of thesis|atomic"), call.err());
+        assertEquals(2, call.run("run", "--engine", "rtsj", "--memory", "scoped"));
+        assertTrue(call.err().startsWith("jmclbench: --memory: 'scoped' is not a memory style of the rtsj engine"), call.err());
+        assertEquals(1, call.err().trim().split("\n").length, call.err());
     }
 }

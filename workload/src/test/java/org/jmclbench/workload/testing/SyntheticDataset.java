@@ -4,6 +4,8 @@ import java.io.File;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.util.List;
 import java.util.Locale;
 
 import org.jmclbench.core.mcl.Angles;
@@ -21,6 +23,26 @@ public final class SyntheticDataset {
     public static final double START_THETA = 0.0;
 
     private SyntheticDataset() {
+    }
+
+    /**
+     * Moves the odometry event {@code row} (0 = the first data line) of the dataset in {@code dir}
+     * {@code seconds} later, so the odometry is no longer periodic; returns its line number in the file.
+     */
+    public static int delayOdometryEvent(File dir, int row, double seconds) throws IOException {
+        File odo = new File(dir, "odometry.txt");
+        List<String> lines = Files.readAllLines(odo.toPath(), StandardCharsets.UTF_8);
+        int line = 0;
+        for (int i = 0, rows = -1; i < lines.size(); i++) {
+            if (!lines.get(i).startsWith("#") && ++rows == row) {
+                String[] t = lines.get(i).trim().split("\\s+");
+                t[0] = String.format(Locale.ROOT, "%.16e", Double.parseDouble(t[0]) + seconds);
+                lines.set(i, String.join(" ", t));
+                line = i + 1;
+            }
+        }
+        Files.write(odo.toPath(), lines, StandardCharsets.UTF_8);
+        return line;
     }
 
     /** Writes odometry.txt, laser.txt, real.txt (and dataset.properties when withMetadata) into dir. */

@@ -72,7 +72,10 @@ class HvmFailureTest {
         return new String(err.toByteArray(), StandardCharsets.UTF_8);
     }
 
-    private void assertNothingRecorded() throws IOException {
+    /** The run's failure: one line on stderr starting with {@code message}, and nothing recorded as valid. */
+    private void assertFailedWith(String message) throws IOException {
+        assertTrue(err().startsWith(message), err());
+        assertEquals(1, err().trim().split("\n").length, err());
         try (Stream<Path> s = Files.walk(tmp.toPath().resolve("out"))) {
             assertFalse(s.anyMatch(p -> p.getFileName().toString().equals("summary.json")), "nothing recorded as valid");
         }
@@ -82,9 +85,7 @@ class HvmFailureTest {
     void aCrashingExecutableIsTheRunsFailure() throws Exception {
         homeWithExecutable("kill -SEGV $$");
         assertEquals(1, run(), err());
-        assertTrue(err().startsWith("jmclbench: failure: the HVM executable failed (exit status 139)"), err());
-        assertEquals(1, err().trim().split("\n").length, err());
-        assertNothingRecorded();
+        assertFailedWith("jmclbench: failure: the HVM executable failed (exit status 139)");
     }
 
     @Test
@@ -99,9 +100,7 @@ class HvmFailureTest {
             System.clearProperty(HvmRun.TIMEOUT_MARGIN_PROPERTY);
         }
         // 4 x the replay (2 s x 0.01) rounded up, plus the 1 s margin
-        assertTrue(err().startsWith("jmclbench: failure: the HVM executable did not end within 2 s (hung); log: "), err());
-        assertEquals(1, err().trim().split("\n").length, err());
-        assertNothingRecorded();
+        assertFailedWith("jmclbench: failure: the HVM executable did not end within 2 s (hung); log: ");
     }
 
     @Test
@@ -109,9 +108,7 @@ class HvmFailureTest {
         // icecap's words when an allocation does not fit: the area's size and the request, in hex (2000 = 0x7d0)
         homeWithExecutable("echo 'out of memory: 0x7d0, 0x1f40'\nexit 1");
         assertEquals(1, run("--memory", "scoped", "--area-size", "update=2000"), err());
-        assertTrue(err().startsWith("jmclbench: failure: memory area 'update' overflowed on the HVM: an allocation of 8000"
-                + " bytes did not fit its 2000 bytes"), err());
-        assertEquals(1, err().trim().split("\n").length, err());
-        assertNothingRecorded();
+        assertFailedWith("jmclbench: failure: memory area 'update' overflowed on the HVM: an allocation of 8000"
+                + " bytes did not fit its 2000 bytes");
     }
 }

@@ -8,11 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.ByteArrayOutputStream;
 import java.io.File;
 import java.io.IOException;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 
 import org.jmclbench.core.mcl.AbortSignal;
@@ -20,11 +16,11 @@ import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.workload.RunOptions;
-import org.jmclbench.workload.WorkloadMain;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
 import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.workload.testing.SyntheticDataset;
+import org.jmclbench.workload.testing.WorkloadCall;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -51,18 +47,7 @@ class HvmRunTest {
         }
     }
 
-    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
-    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
-
-    private int main(String... args) {
-        out.reset();
-        err.reset();
-        return WorkloadMain.run(args, new PrintStream(out), new PrintStream(err));
-    }
-
-    private String err() {
-        return new String(err.toByteArray(), StandardCharsets.UTF_8);
-    }
+    private final WorkloadCall call = new WorkloadCall();
 
     private static File projectHome() {
         File dir = new File("").getAbsoluteFile();
@@ -100,24 +85,12 @@ class HvmRunTest {
     void badInputIsRejectedBeforeAnythingIsBuilt() throws Exception {
         // No build script under this home: reaching the build would be a failure (1), not bad input (2).
         System.setProperty("jmclbench.home", tmp.getPath());
-        File ds = SyntheticDataset.write(new File(tmp, "ds"), 2.0, 3, true, false);
-        File odo = new File(ds, "odometry.txt");
-        List<String> lines = Files.readAllLines(odo.toPath(), StandardCharsets.UTF_8);
-        int line = 0;
-        for (int i = 0, rows = -1; i < lines.size(); i++) {
-            if (!lines.get(i).startsWith("#") && ++rows == 10) {
-                String[] t = lines.get(i).trim().split("\\s+");
-                t[0] = String.format(Locale.ROOT, "%.16e", Double.parseDouble(t[0]) + 0.010);
-                lines.set(i, String.join(" ", t));
-                line = i + 1;
-            }
-        }
-        Files.write(odo.toPath(), lines, StandardCharsets.UTF_8);
+        File ds = call.assertRejectsAperiodicOdometry(tmp, "hvm");
         File o = new File(tmp, "out");
-        assertEquals(2, main("run", "--engine", "hvm", "--dataset", ds.getPath(), "-O", o.getPath()), err());
-        assertTrue(err().startsWith("jmclbench: " + odo.getPath() + ":" + line + ": odometry is not periodic"), err());
-        assertEquals(2, main("run", "--engine", "hvm", "--memory", "allocating", "--dataset", ds.getPath()), err());
-        assertEquals(2, main("run", "--engine", "hvm", "--area-size", "nursery=100", "--dataset", ds.getPath()), err());
+        assertEquals(2, call.run("run", "--engine", "hvm", "--memory", "allocating", "--dataset", ds.getPath()),
+                call.err());
+        assertEquals(2, call.run("run", "--engine", "hvm", "--area-size", "nursery=100", "--dataset", ds.getPath()),
+                call.err());
         assertFalse(o.exists() && o.list().length > 0, "nothing recorded");
     }
 
@@ -175,9 +148,9 @@ class HvmRunTest {
         assumeHvm();
         File ds = SyntheticDataset.write(new File(tmp, "ds"), 2.0, 3, true, true);
         File o = new File(tmp, "out");
-        assertEquals(1, main("run", "--engine", "hvm", "--memory", "scoped", "--area-size", "update=2000", "-p", "400",
-                "--policy", "queue", "--dataset", ds.getPath(), "-O", o.getPath()), err());
-        assertTrue(err().contains("memory area 'update' overflowed"), err());
+        assertEquals(1, call.run("run", "--engine", "hvm", "--memory", "scoped", "--area-size", "update=2000",
+                "-p", "400", "--policy", "queue", "--dataset", ds.getPath(), "-O", o.getPath()), call.err());
+        assertTrue(call.err().contains("memory area 'update' overflowed"), call.err());
         assertFalse(new File(o, "hvm/nocov/400/QueueTest/1/summary.json").exists(), "nothing recorded as valid");
     }
 

@@ -228,7 +228,7 @@ public final class RunWriter {
     }
 
     /** Writes a STATS object; every field null when the sample is empty. */
-    static void writeStats(Json j, Stats s) {
+    public static void writeStats(Json j, Stats s) {
         j.beginObject();
         j.name("count").value(s.count);
         if (s.count == 0) {

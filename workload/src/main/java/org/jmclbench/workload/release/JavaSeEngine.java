@@ -34,8 +34,13 @@ public final class JavaSeEngine implements Engine {
 
     @Override
     public void checkOptions(RunOptions o) throws BadInputException {
+        checkHeapOptions(name(), o);
+    }
+
+    /** The options of an engine whose one memory area is the heap: no scoped style, no SCJ areas. */
+    public static void checkHeapOptions(String engine, RunOptions o) throws BadInputException {
         if (o.memory == MclConfig.Memory.SCOPED) {
-            throw BadInputException.ofOption("--memory", "'scoped' is not a memory style of the javase engine"
+            throw BadInputException.ofOption("--memory", "'scoped' is not a memory style of the " + engine + " engine"
                     + " (preallocated|allocating; scoped is --engine scj)");
         }
         if (!o.areaSizes.isEmpty()) {

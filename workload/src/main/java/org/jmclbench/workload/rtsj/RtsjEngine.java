@@ -6,7 +6,6 @@ import java.util.Collections;
 import javax.realtime.PriorityScheduler;
 
 import org.jmclbench.core.mcl.Localizer;
-import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
@@ -21,6 +20,7 @@ import org.jmclbench.workload.engine.EngineResult;
 import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.workload.output.HeapUse;
 import org.jmclbench.workload.record.Stats;
+import org.jmclbench.workload.release.JavaSeEngine;
 import org.jmclbench.workload.release.LocalizerJob;
 import org.jmclbench.workload.release.ReleaseSchedule;
 
@@ -49,13 +49,7 @@ public final class RtsjEngine implements Engine {
 
     @Override
     public void checkOptions(RunOptions o) throws BadInputException {
-        if (o.memory == MclConfig.Memory.SCOPED) {
-            throw BadInputException.ofOption("--memory", "'scoped' is not a memory style of the rtsj engine"
-                    + " (preallocated|allocating; scoped is --engine scj)");
-        }
-        if (!o.areaSizes.isEmpty()) {
-            throw BadInputException.ofOption("--area-size", "sets SCJ memory areas: needs --engine scj");
-        }
+        JavaSeEngine.checkHeapOptions(name(), o);
     }
 
     @Override

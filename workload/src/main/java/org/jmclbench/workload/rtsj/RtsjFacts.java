@@ -2,6 +2,7 @@ package org.jmclbench.workload.rtsj;
 
 import org.jmclbench.workload.engine.EngineFacts;
 import org.jmclbench.workload.output.Json;
+import org.jmclbench.workload.output.RunWriter;
 import org.jmclbench.workload.record.Stats;
 
 /** summary.json's {@code engine} object of an rtsj run (docs/FORMATS.md section 4). */
@@ -26,13 +27,7 @@ final class RtsjFacts implements EngineFacts {
         j.name("prioritiesApplied").value(prioritiesApplied);
         j.name("abortsRequested").value(abortsRequested);
         j.name("abortsDeferredToCompletion").value(abortsDeferredToCompletion);
-        j.name("abortLatencyNs").beginObject();
-        j.name("count").value(abortLatency.count);
-        if (abortLatency.count > 0) {
-            j.name("p50").value(abortLatency.p50);
-            j.name("p99").value(abortLatency.p99);
-            j.name("max").value(abortLatency.max);
-        }
-        j.endObject();
+        j.name("abortLatencyNs");
+        RunWriter.writeStats(j, abortLatency);
     }
 }

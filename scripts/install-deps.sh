@@ -9,6 +9,10 @@ command -v javac >/dev/null || need+=(openjdk-17-jdk-headless)
 command -v gcc >/dev/null || need+=(gcc)
 command -v make >/dev/null || need+=(make)
 command -v clang >/dev/null || need+=(clang)   # libFuzzer for the C parsers' fuzz targets (bench/fuzz.sh)
+# libFuzzer's and the sanitizers' runtime is a package of its own on Debian 12, not a dependency of clang
+if ! command -v clang >/dev/null || [ ! -f "$(clang -print-resource-dir)/lib/linux/libclang_rt.fuzzer-x86_64.a" ]; then
+    need+=(libclang-rt-dev)
+fi
 command -v ant >/dev/null || need+=(ant)
 command -v patch >/dev/null || need+=(patch)   # the HVM patches (hvm/build-hvm.sh)
 command -v python3 >/dev/null || need+=(python3)

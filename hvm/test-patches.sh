@@ -5,7 +5,8 @@
 # Each program runs in the modes its row names: interpreted (every method interpreted) and/or
 # compiled (hvmc.sh --mode compiled: icecap -aot translates every method but main to C, so these
 # programs keep their logic outside main). Upstream, a compiled program may also fail by not
-# compiling (the code generator refuses a bytecode it lacks): that counts as failing there.
+# compiling (the code generator refuses a bytecode it lacks, or crashes): that counts as failing
+# there; any other build failure is a broken test.
 #
 #   hvm/test-patches.sh [--unpatched] [--only=NAME]
 #
@@ -61,6 +62,8 @@ for variant in "${variants[@]}"; do
                     "${nat[@]}" --mode "$mode" --heap 4000000 --log "$exe.log" -o "$exe" 2>/dev/null; then
                 if [ "$mode" = compiled ] && grep -q "unsupported byte code" "$exe.log"; then
                     result="fail (the compiler refuses a bytecode)"; rc=-2
+                elif [ "$mode" = compiled ] && grep -q "^Exception in thread \"main\"" "$exe.log"; then
+                    result="fail (the compiler crashes)"; rc=-2
                 else
                     result="BUILD-FAILED"; rc=-1
                 fi

@@ -3,10 +3,12 @@ package hvmtest;
 import vm.VMTest;
 
 /**
- * Patch 18: float. The compiler leaves a method with float bytecodes to the interpreter (its
+ * Patch 18: float. The compiler leaves a method that handles floats to the interpreter (its
  * compiled float code converted floats through int variables; frem and f2l were missing); the
  * interpreter lacked frem, f2l and l2f, and fcmpl/fcmpg gave 0 for NaN, f2i did not saturate
- * (patch 17). Outside main (icecap -aot).
+ * (patch 17). "Handles floats": a float bytecode, parameter or result, float field access or call
+ * passing a float; check 7 relays floats through a method with no float bytecode. Outside main
+ * (icecap -aot).
  */
 public class FloatOps {
     static float f = 2.5f;
@@ -24,7 +26,7 @@ public class FloatOps {
 
     static int failures() {
         int failed = 0;
-        for (int i = 0; i < 7; i++) {
+        for (int i = 0; i < 8; i++) {
             if (!check(i)) {
                 devices.Console.println(i);
                 failed++;
@@ -50,8 +52,35 @@ public class FloatOps {
             return (float) lv == 1099511627776.0f && (float) -lv == -1099511627776.0f;
         case 6:
             return (double) f == 2.5 && (float) (f * 0.1) == 0.25f && (float) lv * 2 == 2199023255552.0f;
+        case 7:
+            return relay();
         default:
             return false;
         }
+    }
+
+    static float passed;
+    static Holder holder = new Holder();
+
+    static final class Holder {
+        float value;
+    }
+
+    /**
+     * No float bytecode here, but floats cross it: a float field is read and passed to a method,
+     * a float result is stored in fields (compiled code must move the bits, not convert them).
+     */
+    static boolean relay() {
+        passed = half(f);
+        holder.value = half(g);
+        return isValue(passed, 1.25) && isValue(holder.value, -0.625) && isValue(half(holder.value), -0.3125);
+    }
+
+    static float half(float x) {
+        return x / 2;
+    }
+
+    static boolean isValue(float x, double expected) {
+        return x == expected;
     }
 }

@@ -31,6 +31,11 @@ final class HvmFacts implements EngineFacts {
         j.name("processWallNs").value(processWallNs);
     }
 
+    /** interpreted or compiled. */
+    String mode() {
+        return mode(executable);
+    }
+
     /** The executable's mode, from the MODE file build-mission.sh writes beside it (interpreted when absent). */
     static String mode(File executable) {
         File f = new File(executable.getParentFile(), "MODE");

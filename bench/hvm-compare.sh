@@ -2,8 +2,11 @@
 # The SCJ mission on the icecap HVM against HotSpot (the same mission on rtsj-compat, and the
 # Java SE engine) and the native C baseline: one run each at each particle count, same data and
 # policy. Prints release jitter (mean, p99), task latency per particle and misses per runtime.
+# The HVM runs in each mode of --hvm-modes (JMCLBENCH_HVM_MODE; runtime names hvm-compiled,
+# hvm-interpreted); --only-hvm skips HotSpot and C.
 #
 #   bench/hvm-compare.sh [--particles 100,400,1600] [--policy skip] [--dataset match-short] [-O DIR]
+#                        [--hvm-modes compiled,interpreted] [--only-hvm]
 #
 # Needs HVM_SRC (docs/HVM.md). A benchmark, not a test: figures depend on the machine and its load.
 set -euo pipefail
@@ -13,13 +16,17 @@ particles=100,400,1600
 policy=skip
 dataset=match-short
 out=
+hvm_modes=compiled,interpreted
+only_hvm=0
 while [ $# -gt 0 ]; do
     case "$1" in
+        --hvm-modes) hvm_modes=$2; shift 2 ;;
+        --only-hvm) only_hvm=1; shift ;;
         --particles) particles=$2; shift 2 ;;
         --policy) policy=$2; shift 2 ;;
         --dataset) dataset=$2; shift 2 ;;
         -O) out=$2; shift 2 ;;
-        -h|--help) sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "hvm-compare: unknown option: $1" >&2; exit 2 ;;
     esac
 done
@@ -28,20 +35,26 @@ j=$ROOT/jmclbench
 common=(--policy "$policy" --dataset "$ROOT/data/$dataset" -O "$out")
 
 IFS=, read -ra counts <<< "$particles"
+IFS=, read -ra modes <<< "$hvm_modes"
 for p in "${counts[@]}"; do
     echo "hvm-compare: $p particles" >&2
-    "$j" run -p "$p" -j hotspot-javase "${common[@]}" > /dev/null || echo "hvm-compare: hotspot-javase $p failed" >&2
-    "$j" run --engine scj -p "$p" -j hotspot-scj "${common[@]}" > /dev/null || echo "hvm-compare: hotspot-scj $p failed" >&2
-    "$j" run-native -p "$p" -j c "${common[@]}" > /dev/null || echo "hvm-compare: c $p failed" >&2
-    "$j" run-hvm -p "$p" "${common[@]}" > /dev/null || echo "hvm-compare: hvm $p failed" >&2
+    if [ $only_hvm = 0 ]; then
+        "$j" run -p "$p" -j hotspot-javase "${common[@]}" > /dev/null || echo "hvm-compare: hotspot-javase $p failed" >&2
+        "$j" run --engine scj -p "$p" -j hotspot-scj "${common[@]}" > /dev/null || echo "hvm-compare: hotspot-scj $p failed" >&2
+        "$j" run-native -p "$p" -j c "${common[@]}" > /dev/null || echo "hvm-compare: c $p failed" >&2
+    fi
+    for m in "${modes[@]}"; do
+        JMCLBENCH_HVM_MODE=$m "$j" run-hvm -p "$p" -j "hvm-$m" "${common[@]}" > /dev/null || echo "hvm-compare: hvm-$m $p failed" >&2
+    done
 done
 
-python3 - "$out" "$particles" <<'EOF'
+python3 - "$out" "$particles" "$hvm_modes" <<'EOF'
 import glob, json, os, sys
 out, counts = sys.argv[1], sys.argv[2].split(',')
+hvms = tuple('hvm-' + m for m in sys.argv[3].split(','))
 print(f"{'runtime':16} {'particles':>9} {'jitter mean us':>15} {'jitter p99 us':>14} {'latency/particle us':>20} {'misses':>7} {'events':>7}")
 for p in counts:
-    for rt in ('hvm', 'hotspot-scj', 'hotspot-javase', 'c'):
+    for rt in hvms + ('hotspot-scj', 'hotspot-javase', 'c'):
         found = glob.glob(os.path.join(out, rt, '*', p, '*', '1', 'summary.json'))
         if not found:
             print(f"{rt:16} {p:>9} {'(failed)':>15}")

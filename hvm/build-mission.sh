@@ -4,8 +4,12 @@
 # and natives of hvm/mission) and prints its path. Cached beside the tool chain, keyed by the
 # sources, the natives and the heap size.
 #
-#   hvm/build-mission.sh [--heap BYTES]
+#   hvm/build-mission.sh [--heap BYTES] [--mode interpreted|compiled]
 #
+# --mode (default: $JMCLBENCH_HVM_MODE, else interpreted): interpreted runs every method in
+# icecap's interpreter; compiled translates every method but main to C (icecap -aot, with our
+# patches 13-18; a method with float bytecodes stays interpreted). The mode is part of the cache
+# key and is written to MODE beside the executable (summary.json's engine.mode).
 # Needs what build-hvm.sh needs (HVM_SRC, ...).
 set -euo pipefail
 
@@ -14,18 +18,24 @@ ROOT=$(dirname "$HERE")
 # The VM's Java heap holds the SCJ backing store (immortal, mission and private memories);
 # memory areas larger than this fail at launch.
 heap=268435456
+mode=${JMCLBENCH_HVM_MODE:-interpreted}
 while [ $# -gt 0 ]; do
     case "$1" in
         --heap) heap=$2; shift 2 ;;
-        -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        --mode) mode=$2; shift 2 ;;
+        -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "build-mission: unknown option: $1" >&2; exit 2 ;;
     esac
 done
+case "$mode" in
+    interpreted|compiled) ;;
+    *) echo "build-mission: the mode (--mode or JMCLBENCH_HVM_MODE) must be interpreted or compiled: $mode" >&2; exit 2 ;;
+esac
 
 tc=$("$HERE/build-hvm.sh")
 srcs=("$ROOT/core-immortal/src/main/java" "$ROOT/scj-mission/src/main/java" "$HERE/mission/src")
 key=$( { find "${srcs[@]}" -name '*.java' -print0 | sort -z | xargs -0 sha256sum | sed "s|$ROOT/||";
-         sha256sum "$HERE/mission/natives.c" "$HERE/hvmc.sh" | sed "s|$ROOT/||"; echo "heap $heap"; } \
+         sha256sum "$HERE/mission/natives.c" "$HERE/hvmc.sh" | sed "s|$ROOT/||"; echo "heap $heap"; [ "$mode" = interpreted ] || echo "mode $mode"; } \
        | sha256sum | cut -c1-16)
 out=$tc/mission-$key
 exe=$out/jmclbench-hvm
@@ -36,7 +46,7 @@ fi
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-mission.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-echo "build-mission: compiling the mission for the HVM (about 20 s)" >&2
+echo "build-mission: compiling the mission for the HVM, $mode (about 20 s)" >&2
 find "${srcs[@]}" -name '*.java' -not -name 'package-info.java' > "$work/sources"
 mkdir "$work/classes"
 if ! javac -nowarn -source 8 -target 8 -encoding UTF-8 -bootclasspath "$tc/rt.jar" -cp "$tc/sdk" \
@@ -47,9 +57,10 @@ if ! javac -nowarn -source 8 -target 8 -encoding UTF-8 -bootclasspath "$tc/rt.ja
 fi
 mkdir -p "$work/out"
 "$HERE/hvmc.sh" --toolchain "$tc" --classes "$work/classes" --main org.jmclbench.hvm.HvmMain \
-    --natives "$HERE/mission/natives.c" --heap "$heap" --log "$work/hvmc.log" -o "$work/out/jmclbench-hvm" \
+    --natives "$HERE/mission/natives.c" --heap "$heap" --mode "$mode" --log "$work/hvmc.log" -o "$work/out/jmclbench-hvm" \
     || { tail -20 "$work/hvmc.log" >&2; exit 1; }
 cp "$work/hvmc.log" "$work/out/build.log"
+echo "$mode" > "$work/out/MODE"
 mkdir -p "$tc"
 if ! mv -T "$work/out" "$out" 2>/dev/null; then
     [ -x "$exe" ] || { echo "build-mission: cannot write $out" >&2; exit 1; }

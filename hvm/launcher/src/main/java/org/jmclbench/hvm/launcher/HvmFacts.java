@@ -17,7 +17,10 @@ final class HvmFacts implements EngineFacts {
 
     @Override
     public void writeTo(Json j) {
-        j.name("vm").value("icecap HVM (interpreter), github.com/scj-devel/hvm-scj, with jmclbench's patches (hvm/patches)");
+        String mode = mode(executable);
+        j.name("vm").value("icecap HVM (" + ("compiled".equals(mode) ? "compiled to C, icecap -aot" : "interpreter")
+                + "), github.com/scj-devel/hvm-scj, with jmclbench's patches (hvm/patches)");
+        j.name("mode").value(mode);
         j.name("level").value(1);
         j.name("executable").value(executable.getPath());
         j.name("executableBytes").value(executable.length());
@@ -26,5 +29,21 @@ final class HvmFacts implements EngineFacts {
         j.name("timeSource").value("clock_gettime(CLOCK_MONOTONIC)");
         j.name("warmupEvents").value(0);
         j.name("processWallNs").value(processWallNs);
+    }
+
+    /** interpreted or compiled. */
+    String mode() {
+        return mode(executable);
+    }
+
+    /** The executable's mode, from the MODE file build-mission.sh writes beside it (interpreted when absent). */
+    static String mode(File executable) {
+        File f = new File(executable.getParentFile(), "MODE");
+        try {
+            String m = new String(java.nio.file.Files.readAllBytes(f.toPath()), java.nio.charset.StandardCharsets.UTF_8).trim();
+            return m.isEmpty() ? "interpreted" : m;
+        } catch (java.io.IOException e) {
+            return "interpreted";
+        }
     }
 }

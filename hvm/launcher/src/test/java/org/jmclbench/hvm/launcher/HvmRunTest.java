@@ -102,9 +102,13 @@ class HvmRunTest {
         // its order can differ from the timeline's (two events a tick apart run in priority
         // order): replay on the JVM, with the one Java MCL, the jobs in the order the HVM
         // started them, and compare every estimate. Independent of load by construction.
+        // Particles and memory style can be set for a longer check (-Djmclbench.hvmtest.particles=400,
+        // -Djmclbench.hvmtest.memory=scoped); the executable's mode follows JMCLBENCH_HVM_MODE.
         File home = projectHome();
-        RunOptions o = org.jmclbench.workload.RunOptionsParser.parse(new String[] {"run", "--engine", "hvm", "-p", "50",
-            "--policy", "queue", "--dataset", new File(home, "data/match-short").getPath()});
+        RunOptions o = org.jmclbench.workload.RunOptionsParser.parse(new String[] {"run", "--engine", "hvm", "-p",
+            System.getProperty("jmclbench.hvmtest.particles", "50"), "--memory",
+            System.getProperty("jmclbench.hvmtest.memory", "preallocated"), "--policy", "queue", "--dataset",
+            new File(home, "data/match-short").getPath()});
         Dataset d = DatasetReader.readFolder(new File(home, "data/match-short"));
         File folder = new File(tmp, "run");
         folder.mkdirs();
@@ -139,7 +143,8 @@ class HvmRunTest {
             double dt = Math.abs(l.estimateTheta() - r.estTheta[k]);
             assertTrue(Math.min(dt, 2 * Math.PI - dt) <= TOL, "theta after event " + k);
         }
-        System.out.println("HvmRunTest: " + order.length + " jobs agree; " + reordered
+        System.out.println("HvmRunTest (" + ((HvmFacts) result.facts).mode() + ", " + o.mclConfig().particles
+                + " particles, " + o.memory + "): " + order.length + " jobs agree; " + reordered
                 + " ran out of the timeline's order (1 ms tick, load)");
     }
 

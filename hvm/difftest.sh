@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# Differential tester of the icecap HVM (issue 18): generated programs of int, long and double
+# arithmetic, conversions, comparisons, shifts, arrays and calls between compiled and interpreted
+# methods (hvm/difftest/gen.py), run on HotSpot, the HVM interpreter and the HVM compiled (icecap
+# -aot), every value compared bit for bit with HotSpot's (NaNs equal). A few seeds are CI; many
+# seeds are a benchmark run.
+#
+#   hvm/difftest.sh [--seeds 1-5|1,7,9] [--count 100] [--modes interpreted,compiled] [--keep DIR]
+#                   [--toolchain DIR]
+#
+# --count: values (methods) per program. --keep DIR: copy each program that disagreed there
+# (with the indices) to keep as a regression program. --toolchain: another tool chain than
+# build-hvm.sh's (e.g. one built without some patches). Exit 0 when every value agreed.
+# Needs what build-hvm.sh needs (HVM_SRC, ...).
+set -euo pipefail
+
+HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
+TIMEOUT=60
+seeds=1-3
+count=100
+modes=interpreted,compiled
+keep=
+tc=
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --toolchain) tc=$(readlink -f "$2"); shift 2 ;;
+        --seeds) seeds=$2; shift 2 ;;
+        --count) count=$2; shift 2 ;;
+        --modes) modes=$2; shift 2 ;;
+        --keep) keep=$(readlink -f "$2"); shift 2 ;;
+        -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        *) echo "difftest: unknown option: $1" >&2; exit 2 ;;
+    esac
+done
+case "$seeds" in
+    *-*) seed_list=$(seq "${seeds%-*}" "${seeds#*-}") ;;
+    *) seed_list=${seeds//,/ } ;;
+esac
+
+[ -n "$tc" ] || tc=$("$HERE/build-hvm.sh")
+work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-difftest.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$work/runner"
+cat > "$work/runner/Runner.java" <<'JAVA'
+public class Runner {
+    public static void main(String[] a) throws Exception {
+        Class<?> c = Class.forName(a[0]);
+        int n = Integer.parseInt(a[1]);
+        StringBuilder b = new StringBuilder();
+        for (int k = 0; k < n; k++) {
+            java.lang.reflect.Method m = c.getDeclaredMethod("v" + k);
+            m.setAccessible(true);
+            b.append((long) (Long) m.invoke(null)).append('\n');
+        }
+        System.out.print(b);
+    }
+}
+JAVA
+javac -d "$work/runner" "$work/runner/Runner.java"
+jc() {
+    if ! javac -nowarn -source 8 -target 8 -bootclasspath "$tc/rt.jar" -cp "$tc/sdk" -d "$1" "$2" > "$1.log" 2>&1; then
+        grep -v '^warning\|^Note' "$1.log" >&2
+        echo "difftest: the generated program does not compile (a bug of gen.py)" >&2
+        exit 2
+    fi
+}
+
+values=0 disagreements=0
+for seed in $seed_list; do
+    d=$work/$seed
+    mkdir -p "$d/src/difftest" "$d/hs" "$d/hvm"
+    src=$d/src/difftest/G$seed.java
+    python3 "$HERE/difftest/gen.py" "$seed" "$count" "$src"
+    jc "$d/hs" "$src"
+    timeout "$TIMEOUT" java -cp "$d/hs:$work/runner" Runner "difftest.G$seed" "$count" > "$d/expected.txt"
+    python3 "$HERE/difftest/gen.py" "$seed" "$count" "$src" "$d/expected.txt"
+    jc "$d/hvm" "$src"
+    for mode in ${modes//,/ }; do
+        exe=$d/G$seed-$mode
+        if ! "$HERE/hvmc.sh" --toolchain "$tc" --classes "$d/hvm" --main "difftest.G$seed" --mode "$mode" \
+                --heap 4000000 --log "$exe.log" -o "$exe" 2>/dev/null; then
+            echo "difftest: seed $seed $mode: does not build ($(grep -m1 'Exception in\|unsupported\|error' "$exe.log" | cut -c1-120))"
+            disagreements=$((disagreements + 1))
+            continue
+        fi
+        rc=0
+        timeout "$TIMEOUT" "$exe" > "$exe.out" 2>&1 || rc=$?
+        values=$((values + count))
+        if [ $rc = 0 ] && [ ! -s "$exe.out" ]; then
+            echo "difftest: seed $seed $mode: $count values agree"
+        else
+            bad=$(tr '\n' ' ' < "$exe.out" | cut -c1-200)
+            echo "difftest: seed $seed $mode: DISAGREES (exit $rc; values $bad)"
+            disagreements=$((disagreements + 1))
+            if [ -n "$keep" ]; then
+                mkdir -p "$keep"
+                cp "$src" "$keep/G$seed.java"
+                echo "$mode: exit $rc; values $bad" >> "$keep/G$seed.txt"
+            fi
+        fi
+    done
+done
+echo "difftest: $values values compared, $disagreements program run(s) disagreeing"
+[ $disagreements = 0 ]

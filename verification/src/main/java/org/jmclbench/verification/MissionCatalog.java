@@ -29,7 +29,9 @@ public final class MissionCatalog implements CheckCatalog {
                         n -> isMission(n) && !n.startsWith("org/jmclbench/core/mcl/ScopedLocalizer"),
                         RELEASES::contains, MissionCatalog::isScjLayer, Set.of()),
                 new StaticCheck("P4-static-abort-poll", Property.P4,
-                        StaticCheck.Kind.ABORT_POLL, MissionCatalog::isMission, n -> false, n -> false, Set.of()));
+                        StaticCheck.Kind.ABORT_POLL, MissionCatalog::isMission, n -> false, n -> false, Set.of()),
+                new StaticCheck("P2-static-guarded", Property.P2,
+                        StaticCheck.Kind.GUARDED, MissionCatalog::isMission, n -> false, n -> false, Set.of()));
     }
 
     static boolean isMission(String internalName) {

@@ -4,6 +4,7 @@ import org.jmclbench.core.mcl.MotionModel;
 import org.jmclbench.verification.bytecode.AbortPollCheck;
 import org.jmclbench.verification.bytecode.AllocationCheck;
 import org.jmclbench.verification.bytecode.ClassPool;
+import org.jmclbench.verification.bytecode.GuardedFieldCheck;
 import org.jmclbench.verification.bytecode.Violation;
 
 import java.util.List;
@@ -17,7 +18,7 @@ import java.util.function.Predicate;
  *
  * @param id        short unique name
  * @param property  the property the rule is part of
- * @param kind      the rule: ALLOCATION (from releases of classes {@code releases} accepts) or ABORT_POLL
+ * @param kind      the rule: ALLOCATION (from releases of classes {@code releases} accepts), ABORT_POLL or GUARDED
  * @param classes   which classes of the pool the check looks at (internal names)
  * @param releases  release classes (ALLOCATION only)
  * @param layer     classes of the SCJ layer the job calls into (ALLOCATION only; looked at from the calls)
@@ -29,7 +30,8 @@ public record StaticCheck(String id, Property property, Kind kind, Predicate<Str
     /** The two static rules. */
     public enum Kind {
         ALLOCATION("no allocation reachable from a release"),
-        ABORT_POLL("every particle loop polls the abort request within the poll interval");
+        ABORT_POLL("every particle loop polls the abort request within the poll interval"),
+        GUARDED("a field guarded by its object's monitor is accessed only under it");
 
         /** The rule in words. */
         public final String rule;
@@ -49,6 +51,7 @@ public record StaticCheck(String id, Property property, Kind kind, Predicate<Str
         return switch (kind) {
             case ALLOCATION -> new AllocationCheck(pool, classes, layer).check(n -> classes.test(n) && releases.test(n));
             case ABORT_POLL -> new AbortPollCheck(pool, classes, MotionModel.ABORT_BLOCK).check();
+            case GUARDED -> new GuardedFieldCheck(pool, classes).check();
         };
     }
 

@@ -3,6 +3,7 @@ package org.jmclbench.verification;
 import org.jmclbench.verification.jpf.JpfCheck;
 import org.jmclbench.verification.jpf.JpfCheck.Expectation;
 import org.jmclbench.verification.seeded.AllocatingRelease;
+import org.jmclbench.verification.seeded.GuardedCounter;
 import org.jmclbench.verification.seeded.PollingJob;
 import org.jmclbench.verification.seeded.mission.CachedScratch;
 import org.jmclbench.verification.seeded.mission.CommitBeforePoll;
@@ -95,6 +96,9 @@ public final class SeededCatalog implements CheckCatalog {
                         Set.of(alloc + ":handleAsyncEvent", alloc + ":helper", alloc + "$AllocatingStep:apply",
                                 alloc + ":lambda$helper$1", alloc + "$Mode:<clinit>", alloc + "$Mode:$values",
                                 alloc + "$Mode:values", alloc + "$Table:<clinit>")),
+                new StaticCheck("static-seeded-guarded", Property.P2, StaticCheck.Kind.GUARDED,
+                        n -> n.equals(internal(GuardedCounter.class.getName())), n -> false, n -> false,
+                        Set.of(GuardedCounter.class.getName() + ":offer")),
                 new StaticCheck("static-seeded-abort-poll", Property.P4, StaticCheck.Kind.ABORT_POLL,
                         n -> n.equals(internal(poll)), n -> false, n -> false, Set.of(poll + ":update", poll + ":siblings", poll + ":wide",
                                 poll + ":sparse", poll + ":normalise")));

@@ -3,9 +3,11 @@ package org.jmclbench.verification;
 import org.jmclbench.verification.bytecode.AbortPollCheck;
 import org.jmclbench.verification.bytecode.AllocationCheck;
 import org.jmclbench.verification.bytecode.ClassPool;
+import org.jmclbench.verification.bytecode.GuardedFieldCheck;
 import org.jmclbench.verification.bytecode.Violation;
 import org.jmclbench.verification.seeded.AllocatingRelease;
 import org.jmclbench.verification.seeded.CleanRelease;
+import org.jmclbench.verification.seeded.GuardedCounter;
 import org.jmclbench.verification.seeded.PollingJob;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -73,6 +75,13 @@ class StaticChecksTest {
                 v.toString());
         assertTrue(v.stream().anyMatch(x -> x.method().equals("sparse") && x.what().contains("every 128 particle steps")),
                 v.toString());
+    }
+
+    @Test
+    void guardedFieldCheckReportsExactlyTheAccessesOutsideTheMonitor() throws IOException {
+        List<Violation> v = new GuardedFieldCheck(pool, n -> n.endsWith("/" + GuardedCounter.class.getSimpleName()))
+                .check();
+        assertEquals(markedLines(GuardedCounter.class), lines(v), v.toString());
     }
 
     private static Set<Integer> lines(List<Violation> v) {

@@ -137,8 +137,8 @@ UNIT_MODULES = "core-immortal,rtsj-compat,scj-mission"
 
 
 # A mutant that makes a test or a check hang is caught (the suite does not pass), after this long.
-UNIT_TIMEOUT_S = 600
-VERIFY_TIMEOUT_S = 1200
+UNIT_TIMEOUT_S = 180
+VERIFY_TIMEOUT_S = 900
 HUNG = -9
 
 

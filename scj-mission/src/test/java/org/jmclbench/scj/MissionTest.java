@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.mcl.Playground;
 import org.jmclbench.core.mcl.PreallocatedLocalizer;
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
@@ -147,6 +148,129 @@ class MissionTest {
                 assertEquals(Double.doubleToRawLongBits(replay.estimateTheta()),
                         Double.doubleToRawLongBits(r.estTheta[k]), policy + " " + memory + ": event " + k);
             }
+        }
+    }
+
+    /**
+     * Terminate stops a periodic job at its task's next release even when no other event is
+     * released meanwhile (the predict handler cannot admit its own next release while its job
+     * runs): the first predict job here would take 300 ms, the next odometry event comes 50 ms
+     * after it, the only laser event at the end.
+     */
+    @Test
+    void terminateStopsAPeriodicJobAtItsTasksNextRelease() {
+        MissionConfiguration c = new MissionConfiguration(MclConfig.builder().particles(16).build(),
+                OverrunPolicy.TERMINATE, 1.0) {
+            @Override
+            public Localizer newLocalizer(Playground p, double x, double y, double theta) {
+                return new SlowFirstPredict(super.newLocalizer(p, x, y, theta));
+            }
+        };
+        Launch l = launch(c, new OdometryThenOneLaser());
+        assertTrue(l.report.succeeded(), () -> String.valueOf(l.report.failure()));
+        JobRecords r = l.records;
+        assertEquals(JobRecords.TERMINATED, r.outcome[0], "the 300 ms job was not stopped at the next release");
+        assertTrue(r.endNs[0] < r.releaseNs[0] + 250_000_000L, "stopped long before its 300 ms: " + r.endNs[0]);
+    }
+
+    /** Ten odometry events 50 ms apart, one laser event after the last but one. */
+    private static final class OdometryThenOneLaser extends SizedMissionInput {
+        OdometryThenOneLaser() {
+            super(10, 1);
+        }
+
+        @Override
+        public void readOdometry(double[] time, double[] dx, double[] dy, double[] dtheta) {
+            for (int i = 0; i < time.length; i++) {
+                time[i] = 0.05 * (i + 1);
+                dx[i] = 0.01;
+                dtheta[i] = 0.01;
+            }
+        }
+
+        @Override
+        public void readLaser(double[] time, double[] angle) {
+            time[0] = 0.475;
+            angle[0] = 1.0;
+        }
+
+        @Override
+        public Playground playground() {
+            return Playground.thesis();
+        }
+
+        @Override
+        public double startX() {
+            return 1.5;
+        }
+
+        @Override
+        public double startY() {
+            return 1.0;
+        }
+
+        @Override
+        public double startTheta() {
+            return 0.0;
+        }
+    }
+
+    /** The shipped localizer, whose first predict job first works 300 ms, polling as the MCL loops do. */
+    private static final class SlowFirstPredict implements Localizer {
+        private final Localizer shipped;
+        private boolean first = true;
+
+        SlowFirstPredict(Localizer shipped) {
+            this.shipped = shipped;
+        }
+
+        @Override
+        public boolean predict(double dx, double dy, double dtheta, AbortSignal abort) {
+            if (first) {
+                first = false;
+                long end = System.nanoTime() + 300_000_000L;
+                while (System.nanoTime() < end) {
+                    if (abort.abortRequested()) {
+                        return false;
+                    }
+                }
+            }
+            return shipped.predict(dx, dy, dtheta, abort);
+        }
+
+        @Override
+        public boolean update(double angle, AbortSignal abort) {
+            return shipped.update(angle, abort);
+        }
+
+        @Override
+        public double estimateX() {
+            return shipped.estimateX();
+        }
+
+        @Override
+        public double estimateY() {
+            return shipped.estimateY();
+        }
+
+        @Override
+        public double estimateTheta() {
+            return shipped.estimateTheta();
+        }
+
+        @Override
+        public void covariance(double[] out) {
+            shipped.covariance(out);
+        }
+
+        @Override
+        public int particleCount() {
+            return shipped.particleCount();
+        }
+
+        @Override
+        public void particle(int i, double[] out) {
+            shipped.particle(i, out);
         }
     }
 

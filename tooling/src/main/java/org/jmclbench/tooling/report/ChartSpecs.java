@@ -126,6 +126,16 @@ final class ChartSpecs {
                     && setting.particles() != null && c.particles == setting.particles()).toList());
         }
 
+        /** The same setting with the cells {@code keep} accepts (the HVM alone, say, in its own panel). */
+        Scope where(java.util.function.Predicate<ReportModel.Cell> keep) {
+            return new Scope(model, setting, cells.stream().filter(keep).toList());
+        }
+
+        /** Whether a cell's runtime is the HVM, whose interpreted scale would hide the others' in a shared panel. */
+        boolean hvm(ReportModel.Cell c) {
+            return model.configs.stream().anyMatch(i -> i.id().equals(c.config) && i.kind() == org.jmclbench.tooling.runtime.RuntimeKind.HVM);
+        }
+
         /** "dataset, policy[, N particles]", the end of every title. */
         String where() {
             return setting.dataset() + ", " + setting.policy() + (setting.particles() == null ? "" : ", " + setting.particles() + " particles");

@@ -255,6 +255,24 @@ class TaskChartsTest {
     }
 
     @Test
+    void theHvmGetsItsOwnPanel() throws Exception {
+        FixtureDb f = ReportFixtures.engines();
+        f.configs.add(new FixtureDb.Config("hvm", "", "icecap 4d31e23", 30.0, "ok", "scj", "scoped"));
+        Path db = ReportFixtures.write(f, dir, "hvm.db");
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
+            ReportModel m = ReportModel.build(store, line -> { });
+            ChartSpecs.Scope all = new ChartSpecs.Scope(m, new ChartSpec.Setting("match-short", "skip", null), m.cells);
+            ChartSpec others = TaskCharts.vsParticlesPerTask(all.where(c -> !all.hvm(c)), "predict", TaskMetric.JITTER_P99);
+            ChartSpec hvm = TaskCharts.vsParticlesPerTask(all.where(all::hvm), "predict", TaskMetric.JITTER_P99);
+            assertEquals(List.of("hvm / scj scoped"), hvm.series().stream().map(ChartSpec.Series::name).toList());
+            assertEquals(5, others.series().size());
+            assertTrue(others.series().stream().noneMatch(s -> s.name().startsWith("hvm")));
+            assertEquals(m.configs.stream().filter(c -> c.id().equals("hvm / scj scoped")).findFirst().orElseThrow().color(),
+                    hvm.series().get(0).color(), "its colour is the one it has everywhere");
+        }
+    }
+
+    @Test
     void theExporterDrawsPointsWithIntervalsBothWays() throws Exception {
         ChartExporter exporter = new ChartExporter(dir.resolve("charts"));
         for (ChartSpec spec : List.of(TaskCharts.accuracyVsTimeliness(scope("skip", 1600).acrossPolicies()),

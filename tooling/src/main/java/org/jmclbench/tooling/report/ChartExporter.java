@@ -22,6 +22,7 @@ import java.util.function.Consumer;
 import org.jfree.chart.ChartUtils;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.annotations.AbstractXYAnnotation;
+import org.jfree.chart.annotations.XYAnnotationBoundsInfo;
 import org.jfree.chart.annotations.XYShapeAnnotation;
 import org.jfree.chart.axis.AxisLocation;
 import org.jfree.chart.axis.CategoryAxis;
@@ -47,6 +48,7 @@ import org.jfree.chart.title.TextTitle;
 import org.jfree.chart.ui.Layer;
 import org.jfree.chart.ui.RectangleEdge;
 import org.jfree.chart.ui.TextAnchor;
+import org.jfree.data.Range;
 import org.jfree.data.category.CategoryDataset;
 import org.jfree.data.category.DefaultCategoryDataset;
 import org.jfree.data.statistics.DefaultStatisticalCategoryDataset;
@@ -264,24 +266,25 @@ final class ChartExporter {
             r.setSeriesStroke(i, st.dash() == null ? new BasicStroke(w)
                     : new BasicStroke(w, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, st.dash(), 0f));
         }
-        XYPlot plot = new XYPlot(data, axis(spec.x(), false), axis(spec.y(), false), r);
-        floor(plot.getDomainAxis(), spec.x());
-        floor(plot.getRangeAxis(), spec.y());
-        plot.setDomainGridlinePaint(Color.LIGHT_GRAY);
-        plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
+        // before the plot: its axes' ranges then include the intervals
         for (ChartSpec.Series s : spec.series()) {
             for (int i = 0; i < s.points().size(); i++) {
                 double[] p = s.points().get(i);
                 double[] e = s.errors() == null ? null : s.errors().get(i);
                 double[] h = s.xErrors() == null ? null : s.xErrors().get(i);
                 if (e != null) {
-                    plot.addAnnotation(new ErrorBar(p[0], e[0], p[0], e[1], color(s.color())));
+                    r.addAnnotation(new ErrorBar(p[0], e[0], p[0], e[1], color(s.color())));
                 }
                 if (h != null) {
-                    plot.addAnnotation(new ErrorBar(h[0], p[1], h[1], p[1], color(s.color())));
+                    r.addAnnotation(new ErrorBar(h[0], p[1], h[1], p[1], color(s.color())));
                 }
             }
         }
+        XYPlot plot = new XYPlot(data, axis(spec.x(), false), axis(spec.y(), false), r);
+        floor(plot.getDomainAxis(), spec.x());
+        floor(plot.getRangeAxis(), spec.y());
+        plot.setDomainGridlinePaint(Color.LIGHT_GRAY);
+        plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
         String bandsOf = spec.bands().stream().map(ChartSpec.Band::config).findFirst().orElse(null);
         for (ChartSpec.Band b : spec.bands()) {
             if (java.util.Objects.equals(b.config(), bandsOf)) { // one run's pauses, as on the page
@@ -298,8 +301,9 @@ final class ChartExporter {
     /**
      * An error bar from (x0, y0) to (x1, y1) in data units, vertical or horizontal, with caps of a
      * few pixels whatever the axes' scales; an end at or below zero on a log axis is the axis' end.
+     * The axes' ranges include it, so that no interval runs off the plot.
      */
-    private static final class ErrorBar extends AbstractXYAnnotation {
+    private static final class ErrorBar extends AbstractXYAnnotation implements XYAnnotationBoundsInfo {
         private static final long serialVersionUID = 1L;
         private static final double CAP = 4;
         private final double x0;
@@ -336,6 +340,21 @@ final class ChartExporter {
                 path.lineTo(end[0] + (vertical ? CAP : 0), end[1] + (vertical ? 0 : CAP));
             }
             g2.draw(path);
+        }
+
+        @Override
+        public boolean getIncludeInDataBounds() {
+            return true;
+        }
+
+        @Override
+        public Range getXRange() {
+            return new Range(Math.min(x0, x1), Math.max(x0, x1));
+        }
+
+        @Override
+        public Range getYRange() {
+            return new Range(Math.min(y0, y1), Math.max(y0, y1));
         }
 
         private static double onAxis(ValueAxis axis, double v) {

@@ -487,11 +487,28 @@
     var notes = view.series.some(function (s) { return s.notes; });
     var o = {
       responsive: true, maintainAspectRatio: false, normalized: true, indexAxis: spec.horizontal ? 'y' : 'x',
-      plugins: { title: { display: true, text: spec.title }, legend: { display: !single, position: 'bottom', labels: { boxWidth: 12 } },
+      plugins: { title: { display: true, text: spec.title }, legend: { display: !single, position: 'bottom', labels: { boxWidth: 12,
+        // marks without lines (the policies' shapes): the legend shows each mark's shape
+        usePointStyle: !bars && view.series.length > 0 && view.series.every(function (s) { return !s.style.line; }) } },
         jmclbenchPauses: view.bands, jmclbenchFrame: spec.frame || null },
       scales: !bars ? { x: scale(spec.x, false), y: value } : spec.horizontal ? { y: category, x: value } : { x: category, y: value }
     };
-    if (!bars) { o.parsing = false; }
+    if (!bars) {
+      o.parsing = false;
+      // the axes reach the intervals' ends, so that no error bar runs off the plot
+      view.series.forEach(function (s) {
+        [[s.errors, 'y'], [s.xErrors, 'x']].forEach(function (ex) {
+          (ex[0] || []).forEach(function (e) {
+            if (!e) { return; }
+            var sc = o.scales[ex[1]];
+            if (sc.max === undefined) { sc.suggestedMax = Math.max(sc.suggestedMax === undefined ? -Infinity : sc.suggestedMax, e[1]); }
+            if (sc.min === undefined && sc.type !== 'logarithmic') {
+              sc.suggestedMin = Math.min(sc.suggestedMin === undefined ? Infinity : sc.suggestedMin, e[0]);
+            }
+          });
+        });
+      });
+    }
     if (notes) {
       o.plugins.tooltip = { callbacks: { label: function (ctx) { return (ctx.dataset.notes || [])[ctx.dataIndex] || ctx.dataset.label; } } };
     }

@@ -42,7 +42,6 @@ import org.jfree.chart.renderer.category.BarRenderer;
 import org.jfree.chart.renderer.category.CategoryItemRendererState;
 import org.jfree.chart.renderer.category.StackedBarRenderer;
 import org.jfree.chart.renderer.category.StandardBarPainter;
-import org.jfree.chart.renderer.category.StatisticalBarRenderer;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
 import org.jfree.chart.title.TextTitle;
 import org.jfree.chart.ui.Layer;
@@ -51,7 +50,6 @@ import org.jfree.chart.ui.TextAnchor;
 import org.jfree.data.Range;
 import org.jfree.data.category.CategoryDataset;
 import org.jfree.data.category.DefaultCategoryDataset;
-import org.jfree.data.statistics.DefaultStatisticalCategoryDataset;
 import org.jfree.data.xy.XYSeries;
 import org.jfree.data.xy.XYSeriesCollection;
 import org.jfree.svg.SVGGraphics2D;
@@ -127,9 +125,8 @@ final class ChartExporter {
 
     private static JFreeChart bars(ChartSpec spec) {
         boolean log = spec.y().scale() == ChartSpec.Scale.LOG;
-        boolean withErrors = spec.series().stream().anyMatch(s -> s.errors() != null);
-        DefaultStatisticalCategoryDataset stats = new DefaultStatisticalCategoryDataset();
         DefaultCategoryDataset plain = new DefaultCategoryDataset();
+        double errorTop = Double.NEGATIVE_INFINITY;
         for (ChartSpec.Series s : spec.series()) {
             for (int i = 0; i < spec.categories().size(); i++) {
                 String category = spec.categories().get(i).label();
@@ -140,22 +137,14 @@ final class ChartExporter {
                 if (log && v != null && v <= 0) {
                     v = null; // nothing to draw on a log axis
                 }
-                if (withErrors) {
-                    double[] e = s.errors() == null ? null : s.errors().get(i);
-                    if (v != null) {
-                        // symmetric about the mean; the axis starts at zero, which cuts the interval as the page does
-                        stats.add(v.doubleValue(), e == null ? 0.0 : e[1] - v, s.name(), category);
-                    }
-                } else {
-                    plain.addValue(v, s.name(), category);
+                plain.addValue(v, s.name(), category);
+                double[] e = s.errors() == null ? null : s.errors().get(i);
+                if (e != null && v != null) {
+                    errorTop = Math.max(errorTop, e[1]);
                 }
             }
         }
-        BarRenderer renderer = spec.kind() == ChartSpec.Kind.STACKED_BARS ? new StackedBarRenderer()
-                : withErrors ? new StatisticalBarRenderer() : perItemColours(spec);
-        if (renderer instanceof StatisticalBarRenderer sr) {
-            sr.setErrorIndicatorPaint(Color.BLACK);
-        }
+        BarRenderer renderer = spec.kind() == ChartSpec.Kind.STACKED_BARS ? new StackedBarRenderer() : perItemColours(spec);
         renderer.setShadowVisible(false);
         renderer.setBarPainter(new StandardBarPainter());
         for (int i = 0; i < spec.series().size(); i++) {
@@ -175,8 +164,11 @@ final class ChartExporter {
         if (y instanceof NumberAxis n) {
             n.setUpperMargin(spec.valueLabels() ? 0.12 : n.getUpperMargin());
         }
-        CategoryPlot plot = new CategoryPlot(withErrors ? stats : plain, x, y, renderer);
+        CategoryPlot plot = new CategoryPlot(plain, x, y, renderer);
         floor(y, spec.y());
+        if (errorTop > y.getUpperBound()) {
+            y.setUpperBound(errorTop * 1.05); // the intervals' ends inside the plot
+        }
         plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
         if (spec.horizontal()) {
             plot.setOrientation(PlotOrientation.HORIZONTAL);
@@ -187,7 +179,8 @@ final class ChartExporter {
 
     /**
      * Bars whose values carry their own colours (one series of bars in the runtimes' colours); on a
-     * log axis a value of 0 has no bar, so a "0" under the axis says it is zero, not missing.
+     * log axis a value of 0 has no bar, so a "0" under the axis says it is zero, not missing; a
+     * value's interval [low, high] is drawn as it is (cut at zero where the spec cut it), over the bar.
      */
     private static BarRenderer perItemColours(ChartSpec spec) {
         boolean log = spec.y().scale() == ChartSpec.Scale.LOG;
@@ -204,10 +197,30 @@ final class ChartExporter {
             public void drawItem(Graphics2D g2, CategoryItemRendererState state, Rectangle2D dataArea, CategoryPlot plot,
                                  CategoryAxis domainAxis, ValueAxis rangeAxis, CategoryDataset dataset, int row, int column, int pass) {
                 super.drawItem(g2, state, dataArea, plot, domainAxis, rangeAxis, dataset, row, column, pass);
-                Double v = spec.series().get(row).values().get(column);
-                if (log && pass == 0 && v != null && v == 0 && plot.getOrientation() == PlotOrientation.VERTICAL) {
-                    double x = calculateBarW0(plot, plot.getOrientation(), dataArea, domainAxis, state, row, column)
-                            + state.getBarWidth() / 2;
+                ChartSpec.Series s = spec.series().get(row);
+                Double v = s.values().get(column);
+                if (pass != getPassCount() - 1 || v == null || plot.getOrientation() != PlotOrientation.VERTICAL) {
+                    return; // after the bars, once
+                }
+                double x = calculateBarW0(plot, plot.getOrientation(), dataArea, domainAxis, state, row, column) + state.getBarWidth() / 2;
+                double[] e = s.errors() == null ? null : s.errors().get(column);
+                if (e != null) {
+                    RectangleEdge edge = plot.getRangeAxisEdge();
+                    double top = rangeAxis.valueToJava2D(e[1], dataArea, edge);
+                    double bottom = log && e[0] <= 0 ? dataArea.getMaxY() : rangeAxis.valueToJava2D(e[0], dataArea, edge);
+                    double cap = Math.min(4, state.getBarWidth() / 4);
+                    Path2D.Double bar = new Path2D.Double();
+                    bar.moveTo(x, top);
+                    bar.lineTo(x, bottom);
+                    bar.moveTo(x - cap, top);
+                    bar.lineTo(x + cap, top);
+                    bar.moveTo(x - cap, bottom);
+                    bar.lineTo(x + cap, bottom);
+                    g2.setPaint(Color.BLACK);
+                    g2.setStroke(new BasicStroke(1f));
+                    g2.draw(bar);
+                }
+                if (log && v == 0) {
                     g2.setPaint(Color.DARK_GRAY);
                     g2.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
                     g2.drawString("0", (float) (x - g2.getFontMetrics().stringWidth("0") / 2.0), (float) dataArea.getMaxY() - 3);

@@ -286,12 +286,23 @@ class TaskChartsTest {
                 assertTrue(svg.contains(">" + s.name() + "<"), s.name() + " in " + spec.stem());
             }
         }
-        // the error bars are drawn: the accuracy chart's file grows by them
-        ChartSpec acc = TaskCharts.accuracyVsTimeliness(scope("skip", 1600).acrossPolicies());
-        List<ChartSpec.Series> bare = acc.series().stream().map(s -> new ChartSpec.Series(s.name(), s.config(), s.engine(), s.color(),
-                s.style(), s.points(), null, null, null, null, null)).collect(Collectors.toList());
-        exporter.write(new ChartSpec(acc.id(), "bare", acc.setting(), acc.title(), acc.kind(), false, acc.x(), acc.y(), null, bare,
-                List.of(), null, false));
-        assertTrue(Files.size(dir.resolve("charts/" + acc.stem() + ".svg")) > Files.size(dir.resolve("charts/bare.svg")) + 18 * 50);
+        // the error bars are drawn, one SVG path each: points both ways, bars with their cut intervals
+        assertEquals(18 * 2, pathsOfErrors(exporter, TaskCharts.accuracyVsTimeliness(scope("skip", 1600).acrossPolicies())));
+        assertEquals(3 * 2, pathsOfErrors(exporter, TaskCharts.conditions(scope("queue", 1600), "load", "by load", Metric.DEVIATION,
+                c -> c.load)));
+    }
+
+    /** The SVG paths a chart's error bars add: those of the file with them less those of the file without. */
+    static long pathsOfErrors(ChartExporter exporter, ChartSpec spec) throws Exception {
+        List<ChartSpec.Series> bare = spec.series().stream().map(s -> new ChartSpec.Series(s.name(), s.config(), s.engine(), s.color(),
+                s.style(), s.points(), s.values(), null, s.colors(), s.notes(), null)).collect(Collectors.toList());
+        exporter.write(spec);
+        exporter.write(new ChartSpec(spec.id(), "bare", spec.setting(), spec.title(), spec.kind(), false, spec.x(), spec.y(),
+                spec.categories(), bare, List.of(), null, false));
+        return paths(dir.resolve("charts/" + spec.stem() + ".svg")) - paths(dir.resolve("charts/bare.svg"));
+    }
+
+    static long paths(Path svg) throws Exception {
+        return Files.readString(svg).split("<path", -1).length - 1;
     }
 }

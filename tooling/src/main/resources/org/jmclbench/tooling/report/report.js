@@ -31,6 +31,7 @@
   }
   function clear(e) { while (e.firstChild) { e.removeChild(e.firstChild); } }
   function fmt(v, digits) {
+    if (v === Infinity || v === 'Infinity') { return '\u221e'; } // a response time among jobs that never completed
     if (v === null || v === undefined || !isFinite(v)) { return '\u2013'; }
     if (v === 0) { return '0'; }
     var a = Math.abs(v);
@@ -157,6 +158,10 @@
     { key: 'runs', label: 'ok/runs', text: true },
     { key: 'miss', label: 'misses/run (95% CI)', metric: 'MISS_COUNT', ci: true, best: 'min' },
     { key: 'late', label: 'late/run', metric: 'LATE', best: 'min' },
+    { key: 'missRatioP', label: 'miss ratio predict', metric: 'predict.MISS_RATIO', ci: true, best: 'min', title: 'predict jobs not completed by their deadline (late, dropped, aborted) over those released, per run' },
+    { key: 'missRatioU', label: 'miss ratio update', metric: 'update.MISS_RATIO', ci: true, best: 'min', title: 'update jobs not completed by their deadline (late, dropped, aborted) over those released, per run' },
+    { key: 'respP99P', label: 'response p99 predict', metric: 'predict.RESPONSE_P99', best: 'min', title: 'predict response time (end \u2212 release, ms) p99 over every released job; \u221e: more than 1% never completed' },
+    { key: 'respP99U', label: 'response p99 update', metric: 'update.RESPONSE_P99', best: 'min', title: 'update response time (end \u2212 release, ms) p99 over every released job; \u221e: more than 1% never completed' },
     { key: 'latMean', label: 'latency mean', metric: 'LATENCY_MEAN', ci: true, best: 'min' },
     { key: 'latP99', label: 'latency p99', metric: 'LATENCY_P99', best: 'min' },
     { key: 'latMax', label: 'latency max', metric: 'LATENCY_MAX', stat: 'max', best: 'min' },
@@ -187,6 +192,7 @@
         if (!col.metric) { return; }
         var agg = c.metrics[col.metric] || { mean: null, max: null, half: null };
         var v = col.stat === 'max' ? agg.max : agg.mean;
+        if (v === 'Infinity') { v = Infinity; } // JSON has no infinity: the model writes it as a string
         row.values[col.key] = v;
         row.texts[col.key] = col.ci ? fmtCi(agg) : fmt(v);
       });

@@ -50,9 +50,7 @@ final class TaskCharts {
                 missing.add(c.config);
                 continue;
             }
-            double end = pts.get(pts.size() - 1)[1];
-            series.add(new Series(c.config, c.config, c.engine, s.color(c.config), Style.line(1.5).steps(), pts, null, null, null,
-                    List.of(String.format(Locale.ROOT, "%s: %.4f of the released jobs ever completed", c.config, end))));
+            series.add(new Series(c.config, c.config, c.engine, s.color(c.config), Style.line(1.5).steps(), pts, null, null, null, null));
         }
         String title = "Fraction of released " + task + " jobs completed by a response time"
                 + (missing.isEmpty() ? "" : "; no response times stored for " + String.join(", ", missing));

@@ -52,8 +52,8 @@ final class TaskCharts {
             }
             series.add(new Series(c.config, c.config, c.engine, s.color(c.config), Style.line(1.5).steps(), pts, null, null, null, null));
         }
-        String title = "Fraction of released " + task + " jobs completed by a response time"
-                + (missing.isEmpty() ? "" : "; no response times stored for " + String.join(", ", missing));
+        String title = "Fraction of released " + task + " jobs completed by a response time" + without("no response times stored",
+                missing);
         return s.spec("completion-" + task, title, Kind.LINES, false,
                 new Axis("response time, end \u2212 release (ms, log)", Scale.LOG, Format.NUMBER, null, null),
                 Axis.linear("fraction of released jobs completed").range(0.0, 1.0), null, series);
@@ -83,6 +83,7 @@ final class TaskCharts {
                                    boolean ratio) {
         List<Series> series = new ArrayList<>();
         Map<String, List<Integer>> infinite = new LinkedHashMap<>(); // per configuration, the counts where the mean is +inf
+        List<String> missing = new ArrayList<>();
         double top = 0;
         Style style = new Style(true, 1.5, null, false, "circle", 3, null);
         for (Map.Entry<String, String> e : s.configs().entrySet()) {
@@ -104,13 +105,16 @@ final class TaskCharts {
             }
             if (!pts.isEmpty()) {
                 series.add(new Series(e.getKey(), e.getKey(), e.getValue(), s.color(e.getKey()), style, pts, null, errors, null, null));
+            } else if (!infinite.containsKey(e.getKey())) {
+                missing.add(e.getKey());
             }
         }
         double mark = top > 0 ? top * 1.08 : 1;
         infinite.forEach((config, counts) -> series.add(new Series(config + " \u221e", config, s.configs().get(config), s.color(config),
                 Style.marks("triangle", 5, "none"), counts.stream().map(n -> new double[] {n, mark}).toList(), null, null, null,
                 counts.stream().map(n -> config + ": +\u221e at " + n + " particles (among the dropped or aborted jobs)").toList())));
-        return s.spec(id, title, Kind.LINES, false, new Axis("particles (log)", Scale.LOG, Format.NUMBER, null, null),
+        return s.spec(id, title + without("no value", missing), Kind.LINES, false,
+                new Axis("particles (log)", Scale.LOG, Format.NUMBER, null, null),
                 Axis.linear(yLabel).range(0.0, null), null, series);
     }
 
@@ -134,13 +138,15 @@ final class TaskCharts {
     static ChartSpec accuracyVsTimeliness(Scope s) {
         List<Series> series = new ArrayList<>();
         boolean severalCounts = s.cells().stream().map(c -> c.particles).distinct().count() > 1;
+        List<String> missing = new ArrayList<>();
         for (ReportModel.Cell c : s.ordered()) {
             ReportModel.Agg miss = c.metrics.get(TaskMetric.MISS_RATIO.key("all"));
             ReportModel.Agg dev = c.metrics.get(Metric.DEVIATION.name());
+            String name = c.config + " \u00b7 " + c.policy + (severalCounts ? " \u00b7 " + c.particles : "");
             if (miss == null || miss.mean() == null || dev == null || dev.mean() == null) {
+                missing.add(name);
                 continue;
             }
-            String name = c.config + " \u00b7 " + c.policy + (severalCounts ? " \u00b7 " + c.particles : "");
             List<double[]> xErr = new ArrayList<>();
             xErr.add(interval(miss, true));
             List<double[]> yErr = new ArrayList<>();
@@ -151,9 +157,15 @@ final class TaskCharts {
                     List.of(String.format(Locale.ROOT, "%s: miss ratio %.4f, deviation %.4f m (%d runs)", name, miss.mean(), dev.mean(),
                             miss.n())), xErr));
         }
-        return s.spec("accuracy", "Accuracy vs timeliness of the policies", Kind.LINES, false,
+        return s.spec("accuracy", "Accuracy vs timeliness of the policies" + without("no miss ratio or deviation", missing),
+                Kind.LINES, false,
                 Axis.linear("miss ratio, both tasks (late + dropped + aborted over released; mean, 95% CI)").range(0.0, null),
                 Axis.linear("mean localisation deviation (m, mean, 95% CI)").range(0.0, null), null, series);
+    }
+
+    /** What a title adds for the configurations a chart could not draw, so that none is silently missing. */
+    private static String without(String why, List<String> configs) {
+        return configs.isEmpty() ? "" : "; " + why + " for " + String.join(", ", configs);
     }
 
     // ---------------------------------------------------------------- conditions

@@ -154,6 +154,7 @@ class TaskChartsTest {
     void aStoreWithoutResponseHistogramsLeavesTheCurvesOutAndSaysSo() throws Exception {
         FixtureDb f = ReportFixtures.engines();
         f.responseHistograms = false;
+        f.deadlineAccounting = false;
         Path db = ReportFixtures.write(f, dir, "old.db");
         try (StoredRuns store = StoredRuns.open(db, "--db")) {
             ReportModel old = ReportModel.build(store, line -> { });
@@ -161,6 +162,14 @@ class TaskChartsTest {
                     old.cells.stream().filter(c -> c.particles == 400).toList()), "update");
             assertTrue(spec.series().isEmpty());
             assertTrue(spec.title().contains("no response times stored for " + ReportFixtures.NATIVE), spec.title());
+            // before the deadline accounting: the miss ratio from its definition, no response time over released jobs
+            ChartSpecs.Scope sweep = new ChartSpecs.Scope(old, new ChartSpec.Setting("match-short", "skip", null), old.cells);
+            ChartSpec ratio = TaskCharts.vsParticlesPerTask(sweep, "predict", TaskMetric.MISS_RATIO);
+            assertEquals(5, ratio.series().size());
+            assertTrue(ratio.series().stream().allMatch(s -> s.points().size() == 2));
+            ChartSpec p99 = TaskCharts.vsParticlesPerTask(sweep, "predict", TaskMetric.RESPONSE_P99);
+            assertTrue(p99.series().isEmpty());
+            assertTrue(p99.title().contains("; no value for " + ReportFixtures.NATIVE + ", "), p99.title());
         }
     }
 

@@ -499,8 +499,8 @@
         jmclbenchPauses: view.bands, jmclbenchFrame: spec.frame || null },
       scales: !bars ? { x: scale(spec.x, false), y: value } : spec.horizontal ? { y: category, x: value } : { x: category, y: value }
     };
-    if (!bars) {
-      o.parsing = false;
+    if (!bars) { o.parsing = false; }
+    if (!spec.horizontal) {
       // the axes reach the intervals' ends, so that no error bar runs off the plot
       view.series.forEach(function (s) {
         [[s.errors, 'y'], [s.xErrors, 'x']].forEach(function (ex) {

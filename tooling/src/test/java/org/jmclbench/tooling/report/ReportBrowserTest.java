@@ -212,6 +212,12 @@ class ReportBrowserTest {
                 + " return d.errorBars && d.errorBars.length === d.data.length; }); })"));
         assertEquals(Boolean.TRUE, js().executeScript("return window.jmclbenchCharts['accuracy'].data.datasets.every(function (d) {"
                 + " return d.xErrorBars && d.xErrorBars.length === 1 && d.xErrorBars[0][0] >= 0; })"));
+        // no interval runs off its chart: the value axis reaches the highest end (bars and points alike)
+        for (String id : List.of("misses", "deviation", "miss-ratio-predict", "accuracy", "conditions-load")) {
+            assertEquals(Boolean.TRUE, js().executeScript("var c = window.jmclbenchCharts[arguments[0]], top = 0;"
+                    + " c.data.datasets.forEach(function (d) { (d.errorBars || []).forEach(function (e) { if (e) { top = Math.max(top, e[1]); } }); });"
+                    + " return top > 0 && c.scales.y.max >= top;", id), id);
+        }
         assertEquals(6, tableConfigs().size(), "every runtime has a row, failed ones too");
         assertTrue(driver.findElement(By.id("headline-best")).getText().startsWith("Fewest deadline misses at match-short, skip, 400 particles"));
         assertTrue(driver.findElement(By.id("headline-ratio")).getText().contains("Java vs C"));

@@ -11,6 +11,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
 import java.util.concurrent.Callable;
+import java.util.function.IntFunction;
 import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.doctor.Doctor;
@@ -91,21 +92,32 @@ public final class CapacityCommand implements Callable<Integer> {
         if (from < 1 || max < from) {
             throw new org.jmclbench.tooling.cli.BadUsageException("--from/--max: need 1 <= from <= max, got " + from + " and " + max);
         }
-        PrintStream out = System.out;
+        String command = "jmclbench capacity " + String.join(" ", commandSpec.commandLine().getParseResult().originalArgs());
+        print(System.out, search(this::spec, from, max, command, System.out));
+        return 0;
+    }
+
+    /**
+     * Searches the breakdown load of every configuration of {@code at}'s matrices, one configuration
+     * after the other, each probe run into the store (so a rerun resumes); {@code at(n)} is the
+     * matrix of every configuration at {@code n} particles under queue. Used by capacity and by
+     * evaluate's breakdown sections.
+     */
+    static Map<Configuration, CapacitySearch> search(IntFunction<MatrixSpec> at, int from, int max, String command,
+                                                     PrintStream out) throws Exception {
         Path home = JmclbenchPaths.home();
         MachineInfo machine = MachineInfo.current();
-        ResolvedMatrix all = MatrixPlanner.resolve(spec(from), RuntimeDiscovery::discover, home, machine);
+        ResolvedMatrix all = MatrixPlanner.resolve(at.apply(from), RuntimeDiscovery::discover, home, machine);
         List<Configuration> configurations = all.plan().stream().map(Configuration::of).distinct().toList();
         Map<Configuration, CapacitySearch> searches = new LinkedHashMap<>();
         configurations.forEach(c -> searches.put(c, new CapacitySearch(from, max)));
-        String command = "jmclbench capacity " + String.join(" ", commandSpec.commandLine().getParseResult().originalArgs());
         try (RunRecorder store = RunRecorder.open(all.db(), "--db")) {
             store.saveMachine(machine, Doctor.toJson(Doctor.system().run()));
             for (Map.Entry<Configuration, CapacitySearch> e : searches.entrySet()) {
                 Configuration c = e.getKey();
                 CapacitySearch search = e.getValue();
                 for (int n = search.next(); n > 0; n = search.next()) {
-                    ResolvedMatrix m = MatrixPlanner.resolve(spec(n), RuntimeDiscovery::discover, home, machine);
+                    ResolvedMatrix m = MatrixPlanner.resolve(at.apply(n), RuntimeDiscovery::discover, home, machine);
                     String matrixId = UUID.randomUUID().toString();
                     store.saveMatrix(matrixId, machine.machineId(), command, m.orderSeed(), Instant.now().toString(),
                             MatrixSession.specJson(m));
@@ -122,8 +134,7 @@ public final class CapacityCommand implements Callable<Integer> {
                 }
             }
         }
-        print(out, searches);
-        return 0;
+        return searches;
     }
 
     /** Whether every run of these keys completed and no job of it missed its deadline. */
@@ -143,7 +154,7 @@ public final class CapacityCommand implements Callable<Integer> {
         return all.path("late").asLong(1) + all.path("skipped").asLong() + all.path("terminated").asLong();
     }
 
-    private static void print(PrintStream out, Map<Configuration, CapacitySearch> searches) {
+    static void print(PrintStream out, Map<Configuration, CapacitySearch> searches) {
         CapacitySearch c = searches.entrySet().stream().filter(e -> e.getKey().runtime().equals("native"))
                 .map(Map.Entry::getValue).findFirst().orElse(null);
         out.println("breakdown load (queue; every job of both tasks by its deadline in every repetition):");

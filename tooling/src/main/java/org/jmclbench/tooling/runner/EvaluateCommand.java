@@ -1,6 +1,7 @@
 package org.jmclbench.tooling.runner;
 
 import java.io.PrintStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
@@ -14,6 +15,7 @@ import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.JdkInstaller;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
+import org.jmclbench.tooling.store.StoreArchive;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -38,8 +40,13 @@ public final class EvaluateCommand implements Callable<Integer> {
     /** The runtime of the icecap HVM (branch hvm); absent when it cannot be built. */
     static final String HVM = "hvm";
 
-    @Option(names = "--db", paramLabel = "FILE", description = "results database (default: results/evaluation.db)")
-    String db = "results/evaluation.db";
+    @Option(names = "--db", paramLabel = "FILE", description = "results database the matrix runs into (default: results/evaluation.db); "
+            + "with --no-run, the document is written from it instead of from --data")
+    String db;
+
+    @Option(names = "--data", paramLabel = "FILE", description = "the evaluation's committed data: the store, compacted and gzipped, "
+            + "written after a run and read by --no-run (default: evaluation/evaluation.db.gz)")
+    Path data;
 
     @Option(names = "--out", paramLabel = "DIR", description = "figures folder; the document is EVALUATION.md beside it (default: docs/evaluation)")
     Path out = Path.of("docs", "evaluation");
@@ -56,7 +63,8 @@ public final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--no-run", description = "write the document from the store as it is, running nothing")
     boolean noRun;
 
-    @Option(names = "--verification", paramLabel = "FILE", description = "JPF results (default: results/verification.json)")
+    @Option(names = "--verification", paramLabel = "FILE", description = "JPF results (default: results/verification.json); a run copies them beside --data, "
+            + "where the document reads them")
     Path verification = Path.of("results", "verification.json");
 
     @Override
@@ -64,6 +72,8 @@ public final class EvaluateCommand implements Callable<Integer> {
         Path home = JmclbenchPaths.home();
         Path file = matrix != null ? matrix : home.resolve("evaluation").resolve(smoke ? "smoke.txt" : "matrix.txt");
         EvaluationMatrix m = EvaluationMatrix.read(file);
+        String db = this.db != null ? this.db : "results/evaluation.db";
+        Path data = this.data != null ? this.data : home.resolve("evaluation").resolve("evaluation.db.gz");
         for (EvaluationMatrix.Section s : m.sections) {
             MatrixOptions.apply(s.spec(), "db", db, "--db");
         }
@@ -119,10 +129,45 @@ public final class EvaluateCommand implements Callable<Integer> {
                 }
             }
         }
+        // the verification's results travel with the data, so that the document's section on them is reproduced too
+        Path verified = data.toAbsolutePath().resolveSibling("verification.json");
+        if (!noRun) {
+            StoreArchive.write(Path.of(db), data);
+            if (Files.isRegularFile(verification)) {
+                Files.copy(verification, verified, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            } else {
+                Files.deleteIfExists(verified);
+            }
+            o.println("wrote the evaluation's data " + data + " (" + Files.size(data) / 1024 + " KiB)"
+                    + (Files.isRegularFile(verified) ? " and " + verified.getFileName() : " (no verification results: run ./jmclbench verify first)"));
+        }
         // a missing or damaged store is refused where it is opened (exit 2, the file named)
-        EvaluationDocument.write(Path.of(db), document, out, m.cuts, verification);
+        if (noRun && this.db != null) {
+            EvaluationDocument.write(Path.of(db), Path.of(db).getFileName().toString(), document, out, m.cuts, verification);
+        } else {
+            // the document is always written from the committed data, so that --no-run on a fresh clone gives it byte for byte
+            Path scratch = Files.createTempDirectory("jmclbench-evaluation");
+            try {
+                EvaluationDocument.write(StoreArchive.extract(data, scratch, "--data"), label(home, data), document, out, m.cuts,
+                        verified);
+            } finally {
+                try (var files = Files.list(scratch)) {
+                    for (Path f : files.toList()) {
+                        Files.delete(f);
+                    }
+                }
+                Files.delete(scratch);
+            }
+        }
         o.println("wrote " + document + " and its figures in " + out);
         return 0;
+    }
+
+    /** The data file as the document names it: relative to the project when inside it. */
+    static String label(Path home, Path data) {
+        Path h = home.toAbsolutePath().normalize();
+        Path d = data.toAbsolutePath().normalize();
+        return (d.startsWith(h) ? h.relativize(d) : d.getFileName()).toString().replace('\\', '/');
     }
 
     /** Every runtime named by any section, in file order. */

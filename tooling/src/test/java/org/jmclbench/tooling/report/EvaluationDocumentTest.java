@@ -70,7 +70,7 @@ class EvaluationDocumentTest {
                    "policy": "queue", "kind": "jpf", "seeded": true, "verdict": "caught", "passed": true,
                    "seconds": 3.0, "scope": "1 odometry + 1 laser events", "states": 967}
                 ]}""");
-        EvaluationDocument.write(db, dir.resolve("docs/EVALUATION.md"), dir.resolve("docs/evaluation"),
+        EvaluationDocument.write(db, "evaluation.db", dir.resolve("docs/EVALUATION.md"), dir.resolve("docs/evaluation"),
                 List.of("only match-quick"), verification);
         doc = Files.readString(dir.resolve("docs/EVALUATION.md"));
         String keep = System.getProperty("evaluation.keep"); // to look at the document and its figures
@@ -313,7 +313,7 @@ class EvaluationDocumentTest {
         Path out = dir.resolve("stale");
         Files.createDirectories(out.resolve("evaluation"));
         Files.writeString(out.resolve("evaluation/memory-99999.svg"), "<svg/>");
-        EvaluationDocument.write(small, out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
+        EvaluationDocument.write(small, "small.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
         assertFalse(Files.exists(out.resolve("evaluation/memory-99999.svg")), "a figure the document no longer shows");
         try (var written = Files.list(out.resolve("evaluation"))) {
             String doc = Files.readString(out.resolve("EVALUATION.md"));
@@ -326,7 +326,7 @@ class EvaluationDocumentTest {
     void missingHvmAndVerificationAreSaidNotInvented() throws Exception {
         Path small = ReportFixtures.write(ReportFixtures.engines(), dir, "small.db");
         Path out = dir.resolve("small");
-        EvaluationDocument.write(small, out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
+        EvaluationDocument.write(small, "small.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
         String d = Files.readString(out.resolve("EVALUATION.md"));
         assertTrue(d.contains("**No data.** The store holds no completed run of the `hvm` runtime"), d);
         assertTrue(d.contains("none.json` does not exist"), d);

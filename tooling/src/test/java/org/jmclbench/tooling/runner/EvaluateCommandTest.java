@@ -196,5 +196,56 @@ class EvaluateCommandTest {
         try (var store = org.jmclbench.tooling.store.StoredRuns.open(db, "--db")) {
             assertEquals(4, store.runs().size());
         }
+        assertTrue(doc.contains("from `evaluation/evaluation.db.gz`"), "the document names the committed data it is written from");
+
+        // a fresh clone has the data but not the store: --no-run writes the same document, byte for byte, figures too
+        Path data = dir.resolve("evaluation/evaluation.db.gz");
+        assertTrue(Files.isRegularFile(data), "a run writes the evaluation's data");
+        Files.delete(db);
+        Path again = dir.resolve("again/evaluation");
+        assertEquals(0, JmclbenchCli.execute("evaluate", "--no-run", "--matrix", f.toString(), "--out", again.toString()));
+        assertEquals(doc, Files.readString(dir.resolve("again/EVALUATION.md")));
+        try (var figures = Files.list(out)) {
+            for (Path figure : figures.toList()) {
+                assertEquals(-1L, Files.mismatch(figure, again.resolve(figure.getFileName())), figure.getFileName() + " differs");
+            }
+        }
+    }
+
+    @Test
+    void damagedDataIsRefusedNamingTheOption() throws Exception {
+        Fixtures.home(dir);
+        Path data = dir.resolve("evaluation.db.gz");
+        Files.writeString(data, "not gzip");
+        Path f = dir.resolve("m.txt");
+        Files.writeString(f, "datasets = tiny\n[a]\nruntimes = native\n");
+        Fixtures.CliResult r = Fixtures.cli("evaluate", "--no-run", "--matrix", f.toString(), "--data", data.toString(),
+                "--out", dir.resolve("docs/evaluation").toString());
+        assertEquals(2, r.exitCode());
+        assertTrue(r.err().strip().startsWith("jmclbench: --data: " + data + ": not a gzip'd results store"), r.err());
+        assertTrue(!Files.exists(dir.resolve("docs/EVALUATION.md")), "no document from bad data");
+        Files.delete(data);
+        r = Fixtures.cli("evaluate", "--no-run", "--matrix", f.toString(), "--data", data.toString(),
+                "--out", dir.resolve("docs/evaluation").toString());
+        assertEquals(2, r.exitCode());
+        assertTrue(r.err().contains("no such file"), r.err());
+    }
+
+    /** The committed document is what the committed data gives (once the evaluation has been run and its data committed). */
+    @Test
+    void theCommittedDocumentIsReproducedFromTheCommittedData() throws Exception {
+        Path repo = repo();
+        Path data = repo.resolve("evaluation/evaluation.db.gz");
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isRegularFile(data), "no evaluation data committed yet");
+        Path out = dir.resolve("docs/evaluation");
+        Fixtures.CliResult r = Fixtures.cli("evaluate", "--no-run", "--matrix", repo.resolve("evaluation/matrix.txt").toString(),
+                "--data", data.toString(), "--out", out.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertEquals(Files.readString(repo.resolve("docs/EVALUATION.md")), Files.readString(dir.resolve("docs/EVALUATION.md")));
+        try (var figures = Files.list(repo.resolve("docs/evaluation"))) {
+            for (Path figure : figures.filter(p -> p.toString().endsWith(".svg")).toList()) {
+                assertEquals(-1L, Files.mismatch(figure, out.resolve(figure.getFileName())), figure.getFileName() + " differs");
+            }
+        }
     }
 }

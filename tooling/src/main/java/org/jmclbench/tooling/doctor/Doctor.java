@@ -47,6 +47,7 @@ public final class Doctor {
         c.add(transparentHugePages());
         c.add(clocksource());
         c.add(virtualisation());
+        c.add(memory());
         c.add(stealTime());
         c.add(cyclictest());
         c.add(hvm());
@@ -183,6 +184,16 @@ public final class Doctor {
         }
         return DoctorCheck.warn("clocksource", cs,
                 "tsc is the cheapest and most precise clock; " + cs + " makes every timestamp cost more (check available_clocksource)");
+    }
+
+    /** The machine's memory (MemTotal), for the record: an evaluation says what it ran on. */
+    DoctorCheck memory() {
+        String meminfo = read("proc/meminfo");
+        java.util.regex.Matcher m = meminfo == null ? null : java.util.regex.Pattern.compile("(?m)^MemTotal:\\s+(\\d+) kB").matcher(meminfo);
+        if (m == null || !m.find()) {
+            return DoctorCheck.warn("memory", "unknown", "proc/meminfo has no MemTotal: the machine's memory is not recorded with its results");
+        }
+        return DoctorCheck.pass("memory", String.format(java.util.Locale.ROOT, "%.1f GiB", Long.parseLong(m.group(1)) / 1048576.0));
     }
 
     DoctorCheck virtualisation() {

@@ -67,6 +67,23 @@ final class EvaluationData {
         return order(counts.entrySet().stream().filter(e -> e.getValue() == most).map(Map.Entry::getKey).toList());
     }
 
+    /**
+     * The load the conclusions compare at: the particle count whose cells completed the most
+     * repetitions (the largest such count on a tie); null when nothing completed.
+     */
+    Integer compareCount() {
+        Map<Integer, Integer> most = new java.util.TreeMap<>();
+        cells(c -> c.ok > 0).forEach(c -> most.merge(c.particles, c.ok, Math::max));
+        int best = most.values().stream().max(Integer::compare).orElse(0);
+        Integer out = null;
+        for (Map.Entry<Integer, Integer> e : most.entrySet()) {
+            if (e.getValue() == best) {
+                out = e.getKey();
+            }
+        }
+        return out;
+    }
+
     /** The particle count latency is compared at: the largest of the sweep at which the C baseline missed nothing. */
     Integer referenceCount() {
         List<Integer> counts = sweepCounts();

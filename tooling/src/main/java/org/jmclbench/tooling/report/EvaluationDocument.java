@@ -92,16 +92,19 @@ public final class EvaluationDocument extends EvaluationSections {
         method();
         line("## 2. Results");
         line("");
-        misses();
+        breakdown();
+        EvaluationQuestions questions = new EvaluationQuestions(this);
+        questions.deadlineAccounting();
         latency();
-        if (!breakdown()) {
-            sustainable();
-        }
+        misses();
         scjCost();
         hvm();
         EvaluationExplanations explanations = new EvaluationExplanations(this);
-        explanations.memoryModel();
         explanations.policies();
+        questions.scheduling();
+        questions.load();
+        questions.steadyState();
+        explanations.memoryModel();
         explanations.collectors();
         explanations.attribution();
         explanations.verification();
@@ -113,16 +116,32 @@ public final class EvaluationDocument extends EvaluationSections {
         line("## 1. Method");
         line("");
         line("**Workload.** Monte-Carlo Localization replayed on its recorded timeline (dataset `" + data.dataset + "`): "
-                + "predict is released with each odometry reading (period " + PERIOD + "), update at each laser time; "
-                + "a job that has not finished by its deadline is a miss, handled by the run's policy (skip, terminate "
-                + "or queue). Task latency is completion time minus release time; release jitter is the start's lateness "
-                + "after the release (docs/ALGORITHM.md, docs/FORMATS.md).");
+                + "predict is released with each odometry reading (period " + PERIOD + "; its deadline is the next reading), "
+                + "update at each laser time (its deadline is the next laser event, 32 to 250 ms later). Each released job "
+                + "ends in one of four ways: **done** (completed by its deadline), **late** (completed after it), **dropped** "
+                + "(skip: released while the robot was busy, never started) or **aborted** (terminate: stopped by the next "
+                + "release). A deadline miss is late + dropped + aborted; the miss ratio divides it by the jobs released. The "
+                + "thesis's `missCount` is dropped + aborted under skip and terminate and late under queue; it is kept under "
+                + "that name, not called the misses.");
+        line("");
+        line("**Times** (docs/FORMATS.md): **response time** = end − release, what a deadline is checked against, over every "
+                + "released job, a dropped or aborted job counting as never completed (+∞), so that no runtime looks faster by "
+                + "dropping work; **task latency** = end − start and **release jitter** = start − release, as in the thesis.");
         line("");
         line("**Machine.**");
         line("");
-        table(List.of("host", "kernel", "CPU", "processors"), model.machines.stream()
-                .map(m -> List.of(s(m.hostname()), s(m.kernel()), s(m.cpu()), m.processors() == null ? "?" : m.processors().toString()))
+        table(List.of("host", "kernel", "CPU", "processors", "memory", "virtualisation", "PREEMPT_RT"), model.machines.stream()
+                .map(m -> List.of(s(m.hostname()), s(m.kernel()), s(m.cpu()), m.processors() == null ? "?" : m.processors().toString(),
+                        check(m, "memory"), check(m, "virtualisation"), check(m, "preempt-rt")))
                 .toList());
+        List<String> loads = model.cells.stream().filter(c -> c.config.contains(" + load "))
+                .map(c -> c.config.substring(c.config.indexOf(" + load ") + " + load ".length())).distinct().sorted().toList();
+        line("Load during the runs: " + (loads.isEmpty()
+                ? "none beside the run under test (no load scenario)."
+                : "the load scenarios " + String.join(", ", loads) + " (section 2.8); every other run had none beside it.")
+                + " Runs never overlap; the machine is a shared virtual machine, so its neighbours are not controlled.");
+        line("");
+        whatRunsWhere();
         line("**Configurations** (runtime/profile, engine and memory style; a profile is the JVM's flags, docs/RUNNER.md):");
         line("");
         List<List<String>> rows = new ArrayList<>();
@@ -155,8 +174,33 @@ public final class EvaluationDocument extends EvaluationSections {
         line("");
     }
 
+    /** The machine's doctor check {@code name}, as stored with the runs ("?" when it was not recorded). */
+    private static String check(ReportModel.MachineInfo m, String name) {
+        if (m.checks() == null) {
+            return "?";
+        }
+        return m.checks().stream().filter(c -> name.equals(c.get("check"))).map(c -> s(c.get("value"))).findFirst().orElse("?");
+    }
+
+    /** Item 7 of the issue: per configuration, how it executes, is scheduled and keeps memory, and how it releases jobs. */
+    private void whatRunsWhere() {
+        line("**What runs where.** Per configuration, as its runs recorded it (scheduling, priorities, the HVM's mode, the VM) "
+                + "and as its engine works (memory, release):");
+        line("");
+        List<List<String>> rows = new ArrayList<>();
+        for (ReportModel.ConfigInfo c : model.configs) {
+            Execution e = c.execution();
+            if (e == null) {
+                rows.add(List.of(c.id(), "no completed run", "", "", "", ""));
+            } else {
+                rows.add(List.of(c.id(), e.execution(), e.scheduling(), e.priorities(), e.memory(), e.release()));
+            }
+        }
+        table(List.of("configuration", "execution", "scheduling", "thread priorities", "memory", "release"), rows);
+    }
+
     private void misses() throws IOException {
-        line("### 2.1 Deadline misses per runtime and particle count (Table 1, Figure 1)");
+        line("### 2.4 Deadline misses per runtime and particle count (Table 4, Figure 3)");
         line("");
         List<ReportModel.Cell> sweep = data.sweep();
         if (sweep.isEmpty()) {
@@ -175,7 +219,7 @@ public final class EvaluationDocument extends EvaluationSections {
             }
             rows.add(row);
         }
-        line("Table 1: deadline misses per run, policy skip (mean ± 95% CI over repetitions; empty: not run).");
+        line("Table 4: the thesis's missCount per run (dropped + aborted jobs), policy skip (mean ± 95% CI over repetitions; empty: not run).");
         line("");
         table(header, rows);
         // The figure shows the configurations of the whole sweep, except the HVM: its misses (Table 1,
@@ -183,7 +227,7 @@ public final class EvaluationDocument extends EvaluationSections {
         List<String> compared = data.sweepConfigs();
         List<ReportModel.Cell> drawn = sweep.stream().filter(c -> compared.contains(c.config) && !data.isHvm(c)).toList();
         boolean hvmLeftOut = sweep.stream().anyMatch(data::isHvm);
-        figure("misses-skip", "Figure 1: deadline misses per run vs particles, policy skip, 95% CI error bars"
+        figure("misses-skip", "Figure 3: the thesis's missCount per run vs particles, policy skip, 95% CI error bars"
                         + (hvmLeftOut ? "; the HVM's rows are in Table 1 only (its scale would hide the others)." : "."),
                 () -> charts.write(ChartSpecs.misses(scope(null, drawn.isEmpty() ? sweep : drawn)).withStem("misses-skip")));
         int heaviest = counts.get(counts.size() - 1);
@@ -193,12 +237,12 @@ public final class EvaluationDocument extends EvaluationSections {
         if (!at.isEmpty()) {
             ReportModel.Cell best = at.get(0);
             ReportModel.Cell worst = at.get(at.size() - 1);
-            String claim = String.format(Locale.ROOT, "At %d particles (the heaviest load of the sweep), **%s** missed the fewest "
-                    + "deadlines: %s per run; **%s** missed the most: %s (Table 1, Figure 1). %s", heaviest, best.config,
+            String claim = String.format(Locale.ROOT, "At %d particles (the heaviest load of the sweep), **%s** dropped or aborted "
+                    + "the fewest jobs (missCount): %s per run; **%s** the most: %s (Table 4, Figure 3). %s", heaviest, best.config,
                     agg(best, Metric.MISS_COUNT, 1), worst.config, agg(worst, Metric.MISS_COUNT, 1), separation(best, worst, Metric.MISS_COUNT));
             line(claim);
             line("");
-            findings.add(String.format(Locale.ROOT, "Fewest misses at %d particles: %s (%s per run); most: %s (%s) (2.1).",
+            findings.add(String.format(Locale.ROOT, "Fewest dropped or aborted jobs (missCount) at %d particles: %s (%s per run); most: %s (%s) (2.4).",
                     heaviest, best.config, agg(best, Metric.MISS_COUNT, 1), worst.config, agg(worst, Metric.MISS_COUNT, 1)));
         }
     }
@@ -218,7 +262,7 @@ public final class EvaluationDocument extends EvaluationSections {
     }
 
     private void latency() throws IOException {
-        line("### 2.2 Latency and jitter, and the distance to C (Table 2, Figure 2)");
+        line("### 2.3 Latency and jitter, and the distance to C (Table 3, Figure 2)");
         line("");
         Integer ref = data.referenceCount();
         if (ref == null) {
@@ -229,7 +273,7 @@ public final class EvaluationDocument extends EvaluationSections {
         List<ReportModel.Cell> at = data.order(data.sweep().stream().filter(c -> c.particles == ref && c.ok > 0).toList());
         ReportModel.Cell c0 = at.stream().filter(data::isNative).findFirst().orElse(null);
         Double nativeLatency = c0 == null ? null : mean(c0, Metric.LATENCY_MEAN);
-        line(String.format(Locale.ROOT, "Table 2: task latency and release jitter at %d particles, policy skip (ms; mean ± 95%% CI "
+        line(String.format(Locale.ROOT, "Table 3: task latency and release jitter at %d particles, policy skip (ms; mean ± 95%% CI "
                 + "over repetitions of each run's mean, p99 and max). %s The last column is the mean task latency divided by C's.",
                 ref, referenceReason(ref)));
         line("");
@@ -254,25 +298,29 @@ public final class EvaluationDocument extends EvaluationSections {
                     num(mean(best, Metric.LATENCY_P99) / mean(c0, Metric.LATENCY_P99), 2),
                     num(mean(best, Metric.LATENCY_MEAN) / nativeLatency, 2));
             line(String.format(Locale.ROOT, "At %d particles the lowest p99 task latency of the Java configurations is **%s**'s: %s ms, "
-                    + "with a mean release jitter of %s ms (Table 2, Figure 2). %s", ref, best.config, agg(best, Metric.LATENCY_P99, 3),
+                    + "with a mean release jitter of %s ms (Table 3, Figure 2). %s", ref, best.config, agg(best, Metric.LATENCY_P99, 3),
                     agg(best, Metric.JITTER_MEAN, 3), vsC));
             line("");
-            findings.add(String.format(Locale.ROOT, "Lowest p99 latency of a JVM at %d particles: %s, %s ms (2.2).", ref, best.config,
+            findings.add(String.format(Locale.ROOT, "Lowest p99 latency of a JVM at %d particles: %s, %s ms (2.3).", ref, best.config,
                     num(mean(best, Metric.LATENCY_P99), 3)));
         }
     }
 
     /**
-     * 2.3 as the breakdown load under queue, when the store has queue runs of the dataset (the
-     * capacity command's); false, writing nothing, when it has none.
+     * The headline: the breakdown load under queue, from the store's queue runs of the dataset
+     * (the evaluation's breakdown sections, or the capacity command's).
      */
-    private boolean breakdown() throws IOException {
-        List<ReportModel.Cell> queue = data.cells(c -> c.policy.equals("queue") && c.ok > 0);
-        if (queue.isEmpty()) {
-            return false;
-        }
-        line("### 2.3 Breakdown load: the largest load with every job by its deadline (Table 3, Figure 3)");
+    private void breakdown() throws IOException {
+        line("### 2.1 Breakdown load: the largest load with every job by its deadline (Table 1, Figure 1)");
         line("");
+        List<ReportModel.Cell> queue = data.cells(c -> c.policy.equals("queue") && c.ok > 0 && c.config.indexOf(" + load ") < 0);
+        if (queue.isEmpty()) {
+            line("The store has no run under the queue policy, so no breakdown load is known. (The largest load \"with no "
+                    + "miss\" under skip is not reported: under skip a miss is mostly an event released within a few "
+                    + "milliseconds of the previous one, so it measures the dataset's event spacing, not the runtime.)");
+            line("");
+            return;
+        }
         List<String> configs = data.order(queue.stream().map(c -> c.config).distinct().toList());
         Map<String, BreakdownLoad> loads = BreakdownLoad.of(data.cells(c -> c.policy.equals("queue")), configs);
         BreakdownLoad c0 = configs.stream().filter(c -> queue.stream().anyMatch(x -> x.config.equals(c) && data.isNative(x)))
@@ -287,69 +335,23 @@ public final class EvaluationDocument extends EvaluationSections {
                             : (b == c0 ? "" : c0.fails() == null && b.fails() != null ? "<= " : b.fails() == null && c0.fails() != null ? ">= " : "")
                             + num((double) b.holds() / c0.holds(), 2) + "x"));
         });
-        line("Table 3: per configuration, under queue (no job is dropped or aborted), the largest particle count at which every "
+        line("Table 1: per configuration, under queue (no job is dropped or aborted), the largest particle count at which every "
                 + "job of both tasks completed by its deadline in every repetition, every smaller count in the store holding too, "
                 + "and the smallest count above it at which one did not; the last column divides the held count by the C "
                 + "baseline's (a bound, `<=` or `>=`, where one of the two held at every count in the store). The bracket is as fine "
                 + "as the counts in the store (`./jmclbench capacity` narrows it to 10%).");
         line("");
         table(List.of("configuration", "holds at", "fails at", "vs C"), rows);
-        figure("breakdown-load", "Figure 3: the breakdown load per configuration (queue).",
+        figure("breakdown-load", "Figure 1: the breakdown load per configuration (queue).",
                 () -> charts.write(ChartSpecs.sustained(scope(null, queue), "breakdown-load",
                         "Breakdown load: every job by its deadline (" + data.dataset + ", queue)", holds)));
         findings.add("Breakdown load under queue: " + loads.entrySet().stream()
                 .map(e -> e.getKey() + " " + (e.getValue().holds() == null ? "none" : e.getValue().holds()))
-                .collect(Collectors.joining(", ")) + " particles (2.3).");
-        return true;
-    }
-
-    private void sustainable() throws IOException {
-        line("### 2.3 The largest load each runtime sustains with no miss at " + PERIOD + " (Table 3, Figure 3)");
-        line("");
-        List<String> configs = data.sweepConfigs();
-        if (configs.isEmpty()) {
-            line("No completed run with the skip policy is in the store.");
-            line("");
-            return;
-        }
-        List<Integer> counts = data.sweepCounts();
-        int largest = counts.get(counts.size() - 1);
-        Map<String, Integer> loads = new LinkedHashMap<>();
-        List<List<String>> rows = new ArrayList<>();
-        for (String config : configs) {
-            List<ReportModel.Cell> cs = data.sweep().stream().filter(c -> c.config.equals(config)).toList();
-            int n = sustained(cs);
-            loads.put(config, n);
-            String first = cs.stream().filter(c -> c.ok > 0 && c.particles > n).map(c -> String.valueOf(c.particles)).findFirst().orElse("");
-            rows.add(List.of(config, n == 0 ? "none (missed at " + counts.get(0) + ")" : String.valueOf(n),
-                    first.isEmpty() ? "no miss up to " + largest : first));
-        }
-        line("Table 3: per configuration, the largest particle count of the sweep at which no completed repetition missed a "
-                + "deadline (policy skip; every smaller count also without a miss), and the first count that missed.");
-        line("");
-        table(List.of("configuration", "sustained particles", "first count with a miss"), rows);
-        figure("sustainable-load", "Figure 3: the largest particle count sustained with no miss, per configuration.",
-                () -> charts.write(ChartSpecs.sustained(scope(null, data.sweep()), "sustainable-load",
-                        "Largest particle count with no deadline miss (" + data.dataset + ", skip, " + PERIOD + " period)", loads)));
-        int most = loads.values().stream().max(Integer::compare).orElseThrow();
-        String top = loads.entrySet().stream().filter(e -> e.getValue() == most).map(e -> "**" + e.getKey() + "**")
-                .collect(Collectors.joining(", "));
-        if (most == 0) {
-            line(String.format(Locale.ROOT, "The sweep's counts are %s. No configuration ran even %d particles without a miss "
-                    + "(Table 3, Figure 3): the sweep should start lower on this machine.", counts, counts.get(0)));
-            line("");
-            findings.add(String.format(Locale.ROOT, "Largest load with no miss: none; every configuration missed at %d particles (2.3).",
-                    counts.get(0)));
-            return;
-        }
-        line(String.format(Locale.ROOT, "The sweep's counts are %s: a sustained load is known only to the resolution of the sweep. "
-                + "The most sustained, %d particles, by %s (Table 3, Figure 3).", counts, most, top));
-        line("");
-        findings.add(String.format(Locale.ROOT, "Largest load with no miss: %d particles, by %s (2.3).", most, top.replace("**", "")));
+                .collect(Collectors.joining(", ")) + " particles (2.1).");
     }
 
     private void scjCost() throws IOException {
-        line("### 2.4 The cost of the SCJ layer on a JVM (Table 4)");
+        line("### 2.5 The cost of the SCJ layer on a JVM (Table 5)");
         line("");
         List<List<String>> rows = new ArrayList<>();
         List<double[]> ratios = new ArrayList<>();
@@ -376,28 +378,28 @@ public final class EvaluationDocument extends EvaluationSections {
             line("");
             return;
         }
-        line("Table 4: the same JVM and particle count with the Java SE release engine and with the SCJ mission on rtsj-compat "
+        line("Table 5: the same JVM and particle count with the Java SE release engine and with the SCJ mission on rtsj-compat "
                 + "(both preallocated, policy skip): mean task latency (ms) and misses per run.");
         line("");
         table(List.of("JVM", "particles", "javase latency", "scj latency", "scj / javase", "javase misses", "scj misses"), rows);
         double lo = ratios.stream().mapToDouble(r -> r[0]).min().orElse(Double.NaN);
         double hi = ratios.stream().mapToDouble(r -> r[0]).max().orElse(Double.NaN);
         line(String.format(Locale.ROOT, "Over the %d pairs, the SCJ engine's mean task latency is %s to %s times the Java SE engine's "
-                + "(Table 4).", ratios.size(), num(lo, 2), num(hi, 2)));
+                + "(Table 5).", ratios.size(), num(lo, 2), num(hi, 2)));
         line("");
-        findings.add(String.format(Locale.ROOT, "SCJ layer on a JVM: mean latency %s to %s times the Java SE engine's (2.4).",
+        findings.add(String.format(Locale.ROOT, "SCJ layer on a JVM: mean latency %s to %s times the Java SE engine's (2.5).",
                 num(lo, 2), num(hi, 2)));
     }
 
     private void hvm() throws IOException {
-        line("### 2.5 SCJ on a real SCJ VM (HVM) against SCJ on HotSpot (Table 5)");
+        line("### 2.5b SCJ on a real SCJ VM (HVM) against SCJ on HotSpot (Table 5b)");
         line("");
         List<ReportModel.Cell> hvm = data.order(data.cells(c -> data.isHvm(c) && c.policy.equals("skip") && c.ok > 0));
         if (hvm.isEmpty()) {
             line("**No data.** The store holds no completed run of the `hvm` runtime (the icecap HVM was not built or not found "
                     + "on this machine), so SCJ on a real SCJ VM is not compared here.");
             line("");
-            findings.add("SCJ on HVM vs HotSpot: no HVM run in the store (2.5).");
+            findings.add("SCJ on HVM vs HotSpot: no HVM run in the store (2.5b).");
             return;
         }
         List<List<String>> rows = new ArrayList<>();
@@ -412,12 +414,12 @@ public final class EvaluationDocument extends EvaluationSections {
                         ratio(mean(h, Metric.LATENCY_P99), mean(c, Metric.LATENCY_P99))));
             }
         }
-        line("Table 5: the SCJ mission on the HVM and on each JVM (same memory style, policy skip): misses per run, task latency "
+        line("Table 5b: the SCJ mission on the HVM and on each JVM (same memory style, policy skip): misses per run, task latency "
                 + "(ms). The ratio columns give HVM / JVM.");
         line("");
         table(List.of("configuration", "particles", "misses", "latency mean", "latency p99", "HVM / JVM mean", "HVM / JVM p99"), rows);
         ReportModel.Cell first = hvm.get(0);
-        findings.add(String.format(Locale.ROOT, "SCJ on HVM at %d particles: %s misses, %s ms mean latency (2.5).", first.particles,
+        findings.add(String.format(Locale.ROOT, "SCJ on HVM at %d particles: %s misses, %s ms mean latency (2.5b).", first.particles,
                 agg(first, Metric.MISS_COUNT, 1), agg(first, Metric.LATENCY_MEAN, 3)));
     }
 

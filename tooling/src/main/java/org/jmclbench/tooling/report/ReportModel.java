@@ -56,7 +56,8 @@ public final class ReportModel {
      * {@link RuntimeKind}) and its colour in every chart ({@link Palette}).
      */
     public record ConfigInfo(String id, String runtime, String profile, String engine, String memory, RuntimeKind kind,
-                             String color, List<String> versions, List<String> flags, List<String> machines, List<String> facts) {
+                             String color, List<String> versions, List<String> flags, List<String> machines, List<String> facts,
+                             Execution execution) {
         /** The C baseline the Java runtimes are compared with. */
         @com.fasterxml.jackson.annotation.JsonProperty("nativeBaseline")
         public boolean nativeBaseline() {
@@ -175,6 +176,8 @@ public final class ReportModel {
         m.put("STEADY_P99", new String[] {"all/taskLatencyNs.steady/p99", "1e-6"});
         m.put("WARM_MISSES", new String[] {"all/missedOrLate.warm/value", "1"});
         m.put("STEADY_MISSES", new String[] {"all/missedOrLate.steady/value", "1"});
+        m.put("WARM_RESPONSE_P99", new String[] {"all/responseTimeNs.warm/p99", "1e-6"});
+        m.put("STEADY_RESPONSE_P99", new String[] {"all/responseTimeNs.steady/p99", "1e-6"});
         return m;
     }
 
@@ -348,7 +351,11 @@ public final class ReportModel {
             List<String> flags = new ArrayList<>(); // a list: an argument may repeat ("-n 1 ... --seed 1")
             Set<String> machines = new LinkedHashSet<>();
             List<String> facts = new ArrayList<>();
+            Execution execution = null;
             for (StoredRun r : e.getValue()) {
+                if (r.ok() && execution == null) {
+                    execution = Execution.of(kinds.get(e.getKey()), r.engine, r.memory, Metric.summaryOf(r));
+                }
                 if (r.runtimeVersion != null) {
                     versions.add(r.runtimeVersion);
                 }
@@ -367,7 +374,7 @@ public final class ReportModel {
                 }
             }
             out.add(new ConfigInfo(e.getKey(), first.runtime, first.profile, first.engine, first.memory, kinds.get(e.getKey()),
-                    colors.get(e.getKey()), List.copyOf(versions), List.copyOf(flags), List.copyOf(machines), List.copyOf(facts)));
+                    colors.get(e.getKey()), List.copyOf(versions), List.copyOf(flags), List.copyOf(machines), List.copyOf(facts), execution));
         }
         return out;
     }

@@ -54,7 +54,8 @@ public final class StoredRun {
     /**
      * The configuration under test: runtime, and profile when there is one; then, when the runs
      * shown together have several engines or memory styles, the engine and memory style:
-     * {@code temurin-25/default / scj scoped}, {@code native / allocating}.
+     * {@code temurin-25/default / scj scoped}, {@code native / allocating}; a run under a load
+     * scenario ends with {@code + load cpu}.
      */
     public String config() {
         String c = profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
@@ -65,7 +66,9 @@ public final class StoredRun {
         if (showMemory) {
             parts.add(memory);
         }
-        return parts.isEmpty() ? c : c + " / " + String.join(" ", parts);
+        String config = parts.isEmpty() ? c : c + " / " + String.join(" ", parts);
+        // a run beside a load scenario is another configuration: never averaged with the idle machine's runs
+        return load == null || load.isEmpty() || load.equals("none") ? config : config + " + load " + load;
     }
 
     /** {@link #config()}, with " @host" when the report tells machines apart. */

@@ -425,6 +425,19 @@ public final class FixtureDb {
         }
         stats(t.putObject("responseTimeNs"), resp);
         stats(t.putObject("cpuNs"), Arrays.stream(lat).map(v -> v * 0.97).toArray());
+        int released = jobs.length + missed;
+        t.put("deadlineMisses", missed).put("missRatio", released == 0 ? 0.0 : (double) missed / released);
+        // every released job, a dropped one as +inf: the p99 is "inf" once 1% or more were dropped
+        double[] withDropped = Arrays.copyOf(resp, released);
+        Arrays.fill(withDropped, resp.length, released, Double.POSITIVE_INFINITY);
+        Arrays.sort(withDropped);
+        double p99 = withDropped[Math.max(0, (int) Math.ceil(0.99 * released) - 1)];
+        ObjectNode r = t.putObject("responseTimeReleasedNs").put("count", released).put("completed", jobs.length);
+        if (Double.isInfinite(p99)) {
+            r.put("p99", "inf");
+        } else {
+            r.put("p99", (long) p99);
+        }
     }
 
     /** STATS of docs/FORMATS.md 4: nearest-rank percentiles. */

@@ -40,6 +40,7 @@ tests=(
     "LongArithmetic 16-long-arithmetic interpreted,compiled"
     "NaNCompare 17-nan-compare-saturation interpreted,compiled"
     "FloatOps 18-float-interpreted interpreted,compiled"
+    "ArrayBounds 19-array-bounds interpreted,compiled"
 )
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-patches.XXXXXX")

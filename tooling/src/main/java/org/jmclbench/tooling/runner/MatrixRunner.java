@@ -13,6 +13,8 @@ import java.util.Map;
 
 import org.jmclbench.tooling.attribution.AttributionData;
 import org.jmclbench.tooling.attribution.RunInstrumentation;
+import org.jmclbench.tooling.runtime.HvmRuntime;
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.ProfileComponent;
 import org.jmclbench.tooling.runtime.ProfileProbe;
@@ -151,7 +153,11 @@ public final class MatrixRunner {
             List<String> workloadArgs = new ArrayList<>(matrix.workloadArgs());
             workloadArgs.addAll(inst.workloadArgs());
             cmd = WorkloadCommand.build(run, plan, jvmFlags, home, jar, folder, matrix.timeScale(), workloadArgs);
-            o = ForkedRun.execute(cmd, folder, folder, matrix.timeoutFor(run), Map.of("JMCLBENCH_HOME", home.toString()));
+            Map<String, String> env = new java.util.HashMap<>(Map.of("JMCLBENCH_HOME", home.toString()));
+            if (run.runtime().kind() == RuntimeKind.HVM) {
+                env.putAll(HvmRuntime.environment(run.profile()));
+            }
+            o = ForkedRun.execute(cmd, folder, folder, matrix.timeoutFor(run), env);
         }
         String status = o.status();
         String failure = o.failure();
@@ -218,6 +224,10 @@ public final class MatrixRunner {
         }
         if (p.hasNonNull("memory") && !p.path("memory").asText().equals(run.memory())) {
             return "memory " + p.path("memory").asText() + ", asked " + run.memory();
+        }
+        String mode = summary.path("engine").path("mode").asText("");
+        if (run.runtime().kind() == RuntimeKind.HVM && !mode.equals(run.profile().hvmMode())) {
+            return "hvm mode " + (mode.isEmpty() ? "missing" : mode) + ", asked " + run.profile().hvmMode();
         }
         return null;
     }

@@ -263,7 +263,7 @@ public final class EvaluateCommand implements Callable<Integer> {
                     nativeCells += (int) nativeProfiles * (int) memory.stream().filter(x -> Engines.memoryStyles(Engines.NATIVE).contains(x)).count();
                 } else if (name.equals(HVM)) {
                     // its own engine; a run starts the tool's JVM around the executable (docs/HVM.md), so it costs what a JVM run does
-                    jvmCells += (int) memory.stream().filter(x -> Engines.memoryStyles(HVM).contains(x)).count();
+                    jvmCells += profiles.size() * (int) memory.stream().filter(x -> Engines.memoryStyles(HVM).contains(x)).count();
                 } else {
                     for (String e : engines) {
                         jvmCells += profiles.size() * (int) memory.stream().filter(x -> Engines.memoryStyles(e).contains(x)).count();

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.DelegatingLocalizer;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;
@@ -174,9 +175,9 @@ class MissionTest {
     }
 
     /** Ten odometry events 50 ms apart, one laser event after the last but one. */
-    private static final class OdometryThenOneLaser extends SizedMissionInput {
+    private static final class OdometryThenOneLaser extends PlacedMissionInput {
         OdometryThenOneLaser() {
-            super(10, 1);
+            super(10, 1, Playground.thesis(), 1.5, 1.0, 0.0);
         }
 
         @Override
@@ -193,35 +194,14 @@ class MissionTest {
             time[0] = 0.475;
             angle[0] = 1.0;
         }
-
-        @Override
-        public Playground playground() {
-            return Playground.thesis();
-        }
-
-        @Override
-        public double startX() {
-            return 1.5;
-        }
-
-        @Override
-        public double startY() {
-            return 1.0;
-        }
-
-        @Override
-        public double startTheta() {
-            return 0.0;
-        }
     }
 
     /** The shipped localizer, whose first predict job first works 300 ms, polling as the MCL loops do. */
-    private static final class SlowFirstPredict implements Localizer {
-        private final Localizer shipped;
+    private static final class SlowFirstPredict extends DelegatingLocalizer {
         private boolean first = true;
 
         SlowFirstPredict(Localizer shipped) {
-            this.shipped = shipped;
+            super(shipped);
         }
 
         @Override
@@ -235,42 +215,7 @@ class MissionTest {
                     }
                 }
             }
-            return shipped.predict(dx, dy, dtheta, abort);
-        }
-
-        @Override
-        public boolean update(double angle, AbortSignal abort) {
-            return shipped.update(angle, abort);
-        }
-
-        @Override
-        public double estimateX() {
-            return shipped.estimateX();
-        }
-
-        @Override
-        public double estimateY() {
-            return shipped.estimateY();
-        }
-
-        @Override
-        public double estimateTheta() {
-            return shipped.estimateTheta();
-        }
-
-        @Override
-        public void covariance(double[] out) {
-            shipped.covariance(out);
-        }
-
-        @Override
-        public int particleCount() {
-            return shipped.particleCount();
-        }
-
-        @Override
-        public void particle(int i, double[] out) {
-            shipped.particle(i, out);
+            return super.predict(dx, dy, dtheta, abort);
         }
     }
 

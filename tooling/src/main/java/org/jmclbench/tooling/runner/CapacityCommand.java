@@ -3,7 +3,6 @@ package org.jmclbench.tooling.runner;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.time.Instant;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -26,6 +25,7 @@ import org.jmclbench.tooling.store.StoredRuns;
 import com.fasterxml.jackson.databind.JsonNode;
 
 import picocli.CommandLine.Command;
+import picocli.CommandLine.IModelTransformer;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -43,22 +43,14 @@ import picocli.CommandLine.Spec;
                 "tasks completes by its deadline under the queue policy in every repetition, and the smallest at which",
                 "one does not, by a geometric then bisecting search to within 10%. Every probe is a run in the store;",
                 "rerunning the same command resumes. Exit 0 when every search ended, 2 for bad input."},
-        footer = {"", "Example: capacity --runtimes native,temurin-25 --engines javase,scj --repeat 3 --from 100 --max 102400"})
+        footer = {"", "Example: capacity --runtimes native,temurin-25 --engines javase,scj --repeat 3 --from 100 --max 102400"},
+        modelTransformer = CapacityCommand.Settings.class)
 public final class CapacityCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec commandSpec;
 
-    @Option(names = "--runtimes", paramLabel = "LIST", description = "runtime names as for matrix (default: all found)")
-    List<String> runtimes = new ArrayList<>();
-    @Option(names = "--java", paramLabel = "PATH", description = "a JVM by path, repeatable")
-    List<String> javas = new ArrayList<>();
-    @Option(names = "--profiles", paramLabel = "LIST", description = "profiles as for matrix (default: default)")
-    List<String> profiles = new ArrayList<>();
-    @Option(names = "--engines", paramLabel = "LIST", description = "javase, scj (default: javase)")
-    List<String> engines = new ArrayList<>();
-    @Option(names = "--memory", paramLabel = "LIST", description = "memory styles (default: preallocated)")
-    List<String> memory = new ArrayList<>();
+    // The matrix settings SHARED come first (Settings), then:
     @Option(names = "--datasets", paramLabel = "NAME", description = "one dataset (default: match-short)")
     String dataset;
     @Option(names = "--repeat", paramLabel = "N", description = "repetitions of each probe; one late job in any fails the count (default: 3)")
@@ -67,14 +59,18 @@ public final class CapacityCommand implements Callable<Integer> {
     int from = 100;
     @Option(names = "--max", paramLabel = "N", description = "the largest particle count probed (default: 102400)")
     int max = 102_400;
-    @Option(names = "--time-scale", paramLabel = "F", description = "the workload's --time-scale (default: 1.0)")
-    String timeScale;
-    @Option(names = "--timeout", paramLabel = "S", description = "timeout of one run in seconds (default as for matrix)")
-    String timeout;
-    @Option(names = "--db", paramLabel = "FILE", description = "results database (default: results/results.db)")
-    String db;
-    @Option(names = "--native", paramLabel = "PATH", description = "the native baseline binary (default: native/build/jmclbench-native)")
-    String nativeBinary;
+
+    /** The matrix settings a capacity search takes as they are. */
+    static final List<String> SHARED = List.of("runtimes", "java", "profiles", "engines", "memory", "time-scale", "timeout",
+            "db", "native");
+
+    /** Adds the options of the {@link #SHARED} settings. */
+    static final class Settings implements IModelTransformer {
+        @Override
+        public CommandSpec transform(CommandSpec command) {
+            return SettingOptions.add(command, 0, SHARED);
+        }
+    }
 
     /** One configuration under search: runtime, profile, engine and memory style. */
     record Configuration(String runtime, String profile, String engine, String memory) {
@@ -187,21 +183,13 @@ public final class CapacityCommand implements Callable<Integer> {
     /** The matrix of one probe: every configuration at {@code particles}, under queue. */
     private MatrixSpec spec(int particles) {
         MatrixSpec spec = new MatrixSpec();
-        MatrixCommand.list(spec, "runtimes", runtimes);
-        MatrixCommand.list(spec, "java", javas);
-        MatrixCommand.list(spec, "profiles", profiles);
-        MatrixCommand.list(spec, "engines", engines);
-        MatrixCommand.list(spec, "memory", memory);
-        MatrixCommand.list(spec, "policies", List.of("queue"));
-        MatrixCommand.list(spec, "particles", List.of(String.valueOf(particles)));
+        SettingOptions.apply(commandSpec, spec);
+        SettingOptions.list(spec, "policies", List.of("queue"));
+        SettingOptions.list(spec, "particles", List.of(String.valueOf(particles)));
         if (dataset != null) {
-            MatrixCommand.list(spec, "datasets", List.of(dataset));
+            SettingOptions.list(spec, "datasets", List.of(dataset));
         }
-        MatrixCommand.one(spec, "repeat", repeat);
-        MatrixCommand.one(spec, "time-scale", timeScale);
-        MatrixCommand.one(spec, "timeout", timeout);
-        MatrixCommand.one(spec, "db", db);
-        MatrixCommand.one(spec, "native", nativeBinary);
+        SettingOptions.one(spec, "repeat", repeat);
         return spec;
     }
 }

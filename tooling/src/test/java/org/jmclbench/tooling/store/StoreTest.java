@@ -39,13 +39,11 @@ class StoreTest {
     @Test
     void mergeKeepsEveryRunOnceAndCopiesFolders() throws Exception {
         Fixtures.home(dir);
-        String a = Fixtures.fakeJava(dir, "a", "ok", 0, null, 17).toString();
-        String b = Fixtures.fakeJava(dir, "b", "ok", 0, null, 21).toString();
-        String bad = Fixtures.fakeJava(dir, "bad", "crash", 0, null, 11).toString();
+        Fixtures.FakeJvms jvms = Fixtures.FakeJvms.in(dir);
         Path dbA = dir.resolve("A/results.db");
         Path dbB = dir.resolve("B/results.db");
-        matrix(dbA, "100,200", a, bad);        // fake-17 x2, fake-11 x2 (failed)
-        matrix(dbB, "200,300", a, b);          // fake-17 200 overlaps A's; fake-21 x2
+        matrix(dbA, "100,200", jvms.java17(), jvms.crashing11()); // fake-17 x2, fake-11 x2 (failed)
+        matrix(dbB, "200,300", jvms.java17(), jvms.java21());     // fake-17 200 overlaps A's; fake-21 x2
         Path dbC = dir.resolve("C/results.db");
         Fixtures.CliResult r = Fixtures.cli("merge", dbA.toString(), dbB.toString(), "--into", dbC.toString());
         assertEquals(0, r.exitCode(), r.err());

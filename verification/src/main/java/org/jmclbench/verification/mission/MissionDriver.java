@@ -11,7 +11,7 @@ import org.jmclbench.rtsjcompat.ScjRuntime;
 import org.jmclbench.rtsjcompat.TimeSource;
 import org.jmclbench.scj.MclSafelet;
 import org.jmclbench.scj.MissionOutput;
-import org.jmclbench.scj.SizedMissionInput;
+import org.jmclbench.scj.PlacedMissionInput;
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.verification.Property;
 import org.jmclbench.verification.jpf.Coverage;
@@ -35,7 +35,7 @@ import org.jmclbench.verification.jpf.Coverage;
  * <p>Usage: {@code MissionDriver POLICY MEMORY ODOMETRY_EVENTS LASER_EVENTS PARTICLES POLL_INTERVAL
  * COVARIANCE [FAULT_CLASS]}; the fault ({@link CheckedConfiguration}) is the seam seeded bugs come in by.
  */
-public final class MissionDriver extends SizedMissionInput implements MissionOutput {
+public final class MissionDriver extends PlacedMissionInput implements MissionOutput {
     /** Virtual time after which the mission must have ended: far beyond the last event's deadline. */
     static final long HORIZON_NS = 1_000_000_000L;
     /** The outcome names reported per task ({@link Timeline#PREDICT}, {@link Timeline#UPDATE}) and outcome. */
@@ -46,7 +46,7 @@ public final class MissionDriver extends SizedMissionInput implements MissionOut
     private JobRecords records;
 
     MissionDriver(int odometry, int laser) {
-        super(odometry, laser);
+        super(odometry, laser, Playground.thesis(), 1.5, 1.0, 0.0);
     }
 
     public static void main(String[] args) throws ReflectiveOperationException {
@@ -207,26 +207,6 @@ public final class MissionDriver extends SizedMissionInput implements MissionOut
             time[k] = 0.05 * k;
             angle[k] = 1.0 + 0.5 * k;
         }
-    }
-
-    @Override
-    public Playground playground() {
-        return Playground.thesis();
-    }
-
-    @Override
-    public double startX() {
-        return 1.5;
-    }
-
-    @Override
-    public double startY() {
-        return 1.0;
-    }
-
-    @Override
-    public double startTheta() {
-        return 0.0;
     }
 
     @Override

@@ -31,11 +31,12 @@ final class CellSeries {
     List<String> keys = ok.stream().map(r -> r.runKey).toList();
     Histogram latency = merged(store.histograms(keys, "all", "taskLatencyNs"));
     if (latency != null) {
-        for (HistogramIterationValue v : latency.percentiles(5)) {
-            double p = v.getPercentileLevelIteratedTo();
-            double x = p >= 100 ? 1e7 : Math.min(1e7, 100.0 / (100.0 - p));
-            c.latencySpectrum.add(new double[] {SeriesTable.round(x), SeriesTable.round(v.getValueIteratedTo() / 1e6),
-                    SeriesTable.round(p)});
+        c.latencySpectrum = spectrum(latency);
+    }
+    for (String task : List.of("predict", "update")) {
+        List<double[]> completion = completion(store.histograms(keys, task, "responseTimeNs"), ok, task);
+        if (completion != null) {
+            c.responseCompletion.put(task, completion);
         }
     }
     Histogram jitter = merged(store.histograms(keys, "all", "releaseJitterNs"));
@@ -62,6 +63,55 @@ final class CellSeries {
         c.trajectory = t.points(t.column("x", "estX", "estimateX", "xEst"), 1, t.column("y", "estY", "estimateY", "yEst"), 1, MAX_POINTS);
         c.real = t.points(t.column("realX", "trueX", "xReal"), 1, t.column("realY", "trueY", "yReal"), 1, MAX_POINTS);
     }
+    }
+
+    /**
+     * [1/(1-p), value ms, percentile p] of a histogram, up to p = 1 - 1/n for its n values: past
+     * that level the n-th value is all there is, and the curve would run flat to any x.
+     */
+    static List<double[]> spectrum(Histogram h) {
+        List<double[]> out = new ArrayList<>();
+        long n = h.getTotalCount();
+        for (HistogramIterationValue v : h.percentiles(5)) {
+            double p = v.getPercentileLevelIteratedTo();
+            double x = p >= 100 ? Double.POSITIVE_INFINITY : 100.0 / (100.0 - p);
+            if (x >= n) {
+                break;
+            }
+            out.add(new double[] {SeriesTable.round(x), SeriesTable.round(v.getValueIteratedTo() / 1e6), SeriesTable.round(p)});
+        }
+        double last = 100.0 * (1 - 1.0 / n); // the end of the curve: the last level n values tell
+        out.add(new double[] {n, SeriesTable.round(h.getValueAtPercentile(last) / 1e6), SeriesTable.round(last)});
+        return out;
+    }
+
+    /**
+     * "Fraction of released jobs completed by time t" of one task: the completed jobs' response
+     * times of every run that stored them (merged) over the jobs those runs released; null when no
+     * run has both. A dropped or aborted job never completes, so the curve ends below 1.
+     */
+    static List<double[]> completion(Map<String, Histogram> histograms, List<StoredRun> ok, String task) {
+        Map<String, Histogram> counted = new java.util.HashMap<>();
+        double released = 0;
+        for (StoredRun r : ok) {
+            Double n = TaskMetric.released(r, task);
+            if (histograms.containsKey(r.runKey) && n != null) {
+                counted.put(r.runKey, histograms.get(r.runKey));
+                released += n;
+            }
+        }
+        Histogram h = merged(counted);
+        if (h == null || released <= 0) {
+            return null;
+        }
+        List<double[]> out = new ArrayList<>();
+        out.add(new double[] {SeriesTable.round(Math.max(1e-4, h.getMinValue() / 1e6)), 0});
+        // steps of 5% in value: a few hundred points from microseconds to seconds
+        for (HistogramIterationValue v : h.logarithmicBucketValues(Math.max(1, h.getMinValue()), 1.05)) {
+            out.add(new double[] {SeriesTable.round(Math.max(1e-4, v.getValueIteratedTo() / 1e6)),
+                    SeriesTable.round(v.getTotalCountToThisValue() / released)});
+        }
+        return out;
     }
 
     /**

@@ -3,6 +3,7 @@ package org.jmclbench.tooling.report;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
+import java.awt.Graphics2D;
 import java.awt.Paint;
 import java.awt.Rectangle;
 import java.awt.Shape;
@@ -20,6 +21,7 @@ import java.util.function.Consumer;
 
 import org.jfree.chart.ChartUtils;
 import org.jfree.chart.JFreeChart;
+import org.jfree.chart.annotations.AbstractXYAnnotation;
 import org.jfree.chart.annotations.XYShapeAnnotation;
 import org.jfree.chart.axis.AxisLocation;
 import org.jfree.chart.axis.CategoryAxis;
@@ -31,16 +33,21 @@ import org.jfree.chart.labels.ItemLabelPosition;
 import org.jfree.chart.labels.StandardCategoryItemLabelGenerator;
 import org.jfree.chart.plot.CategoryPlot;
 import org.jfree.chart.plot.IntervalMarker;
+import org.jfree.chart.plot.Plot;
+import org.jfree.chart.plot.PlotRenderingInfo;
 import org.jfree.chart.plot.PlotOrientation;
 import org.jfree.chart.plot.XYPlot;
 import org.jfree.chart.renderer.category.BarRenderer;
+import org.jfree.chart.renderer.category.CategoryItemRendererState;
 import org.jfree.chart.renderer.category.StackedBarRenderer;
 import org.jfree.chart.renderer.category.StandardBarPainter;
 import org.jfree.chart.renderer.category.StatisticalBarRenderer;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
 import org.jfree.chart.title.TextTitle;
 import org.jfree.chart.ui.Layer;
+import org.jfree.chart.ui.RectangleEdge;
 import org.jfree.chart.ui.TextAnchor;
+import org.jfree.data.category.CategoryDataset;
 import org.jfree.data.category.DefaultCategoryDataset;
 import org.jfree.data.statistics.DefaultStatisticalCategoryDataset;
 import org.jfree.data.xy.XYSeries;
@@ -177,8 +184,12 @@ final class ChartExporter {
         return new JFreeChart(spec.title(), JFreeChart.DEFAULT_TITLE_FONT, plot, legend(spec));
     }
 
-    /** Bars whose values carry their own colours (one series in the runtimes' colours). */
+    /**
+     * Bars whose values carry their own colours (one series of bars in the runtimes' colours); on a
+     * log axis a value of 0 has no bar, so a "0" under the axis says it is zero, not missing.
+     */
     private static BarRenderer perItemColours(ChartSpec spec) {
+        boolean log = spec.y().scale() == ChartSpec.Scale.LOG;
         return new BarRenderer() {
             private static final long serialVersionUID = 1L;
 
@@ -186,6 +197,20 @@ final class ChartExporter {
             public Paint getItemPaint(int row, int column) {
                 List<String> colors = spec.series().get(row).colors();
                 return colors == null ? super.getItemPaint(row, column) : color(colors.get(column));
+            }
+
+            @Override
+            public void drawItem(Graphics2D g2, CategoryItemRendererState state, Rectangle2D dataArea, CategoryPlot plot,
+                                 CategoryAxis domainAxis, ValueAxis rangeAxis, CategoryDataset dataset, int row, int column, int pass) {
+                super.drawItem(g2, state, dataArea, plot, domainAxis, rangeAxis, dataset, row, column, pass);
+                Double v = spec.series().get(row).values().get(column);
+                if (log && pass == 0 && v != null && v == 0 && plot.getOrientation() == PlotOrientation.VERTICAL) {
+                    double x = calculateBarW0(plot, plot.getOrientation(), dataArea, domainAxis, state, row, column)
+                            + state.getBarWidth() / 2;
+                    g2.setPaint(Color.DARK_GRAY);
+                    g2.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
+                    g2.drawString("0", (float) (x - g2.getFontMetrics().stringWidth("0") / 2.0), (float) dataArea.getMaxY() - 3);
+                }
             }
         };
     }
@@ -245,6 +270,19 @@ final class ChartExporter {
         floor(plot.getRangeAxis(), spec.y());
         plot.setDomainGridlinePaint(Color.LIGHT_GRAY);
         plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
+        for (ChartSpec.Series s : spec.series()) {
+            for (int i = 0; i < s.points().size(); i++) {
+                double[] p = s.points().get(i);
+                double[] e = s.errors() == null ? null : s.errors().get(i);
+                double[] h = s.xErrors() == null ? null : s.xErrors().get(i);
+                if (e != null) {
+                    plot.addAnnotation(new ErrorBar(p[0], e[0], p[0], e[1], color(s.color())));
+                }
+                if (h != null) {
+                    plot.addAnnotation(new ErrorBar(h[0], p[1], h[1], p[1], color(s.color())));
+                }
+            }
+        }
         String bandsOf = spec.bands().stream().map(ChartSpec.Band::config).findFirst().orElse(null);
         for (ChartSpec.Band b : spec.bands()) {
             if (java.util.Objects.equals(b.config(), bandsOf)) { // one run's pauses, as on the page
@@ -256,6 +294,54 @@ final class ChartExporter {
                     new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 3f}, 0f), Color.GRAY));
         }
         return new JFreeChart(spec.title(), JFreeChart.DEFAULT_TITLE_FONT, plot, legend(spec));
+    }
+
+    /**
+     * An error bar from (x0, y0) to (x1, y1) in data units, vertical or horizontal, with caps of a
+     * few pixels whatever the axes' scales; an end at or below zero on a log axis is the axis' end.
+     */
+    private static final class ErrorBar extends AbstractXYAnnotation {
+        private static final long serialVersionUID = 1L;
+        private static final double CAP = 4;
+        private final double x0;
+        private final double y0;
+        private final double x1;
+        private final double y1;
+        private final transient Color paint;
+
+        ErrorBar(double x0, double y0, double x1, double y1, Color paint) {
+            this.x0 = x0;
+            this.y0 = y0;
+            this.x1 = x1;
+            this.y1 = y1;
+            this.paint = paint;
+        }
+
+        @Override
+        public void draw(Graphics2D g2, XYPlot plot, Rectangle2D area, ValueAxis domain, ValueAxis range, int index,
+                         PlotRenderingInfo info) {
+            RectangleEdge de = Plot.resolveDomainAxisLocation(plot.getDomainAxisLocation(), plot.getOrientation());
+            RectangleEdge re = Plot.resolveRangeAxisLocation(plot.getRangeAxisLocation(), plot.getOrientation());
+            double ax = domain.valueToJava2D(onAxis(domain, x0), area, de);
+            double bx = domain.valueToJava2D(onAxis(domain, x1), area, de);
+            double ay = range.valueToJava2D(onAxis(range, y0), area, re);
+            double by = range.valueToJava2D(onAxis(range, y1), area, re);
+            boolean vertical = x0 == x1;
+            g2.setPaint(paint);
+            g2.setStroke(new BasicStroke(1.2f));
+            Path2D.Double path = new Path2D.Double();
+            path.moveTo(ax, ay);
+            path.lineTo(bx, by);
+            for (double[] end : new double[][] {{ax, ay}, {bx, by}}) {
+                path.moveTo(end[0] - (vertical ? CAP : 0), end[1] - (vertical ? 0 : CAP));
+                path.lineTo(end[0] + (vertical ? CAP : 0), end[1] + (vertical ? 0 : CAP));
+            }
+            g2.draw(path);
+        }
+
+        private static double onAxis(ValueAxis axis, double v) {
+            return axis instanceof LogAxis && v <= 0 ? axis.getLowerBound() : v;
+        }
     }
 
     private static Shape shape(String marker, double radius) {

@@ -75,15 +75,23 @@ public record ChartSpec(String id, String stem, Setting setting, String title, K
      * A series. {@code config} and {@code engine} name the runtime it belongs to, so that the page
      * can hide it with its runtime (null: a series of no runtime, the ground truth say).
      *
-     * @param points x/y pairs (LINES)
-     * @param values one per category, null where none (bar kinds)
-     * @param errors per value, the interval [low, high] drawn as an error bar, or null
-     * @param colors per value, its own colour (one series of bars in the runtimes' colours), or null
-     * @param notes  per value, what a pointer over it reads, or null
+     * @param points  x/y pairs (LINES)
+     * @param values  one per category, null where none (bar kinds)
+     * @param errors  per value (bars) or per point (LINES), the interval [low, high] of y drawn as an
+     *                error bar (null: none there), or null
+     * @param colors  per value, its own colour (one series of bars in the runtimes' colours), or null
+     * @param notes   per value or point, what a pointer over it reads, or null
+     * @param xErrors per point (LINES), the interval [low, high] of x drawn as a horizontal error bar, or null
      */
     @JsonInclude(JsonInclude.Include.NON_NULL)
     public record Series(String name, String config, String engine, String color, Style style, List<double[]> points,
-                         List<Double> values, List<double[]> errors, List<String> colors, List<String> notes) {
+                         List<Double> values, List<double[]> errors, List<String> colors, List<String> notes,
+                         List<double[]> xErrors) {
+        /** A series without horizontal error bars. */
+        public Series(String name, String config, String engine, String color, Style style, List<double[]> points,
+                      List<Double> values, List<double[]> errors, List<String> colors, List<String> notes) {
+            this(name, config, engine, color, style, points, values, errors, colors, notes, null);
+        }
     }
 
     /**

@@ -35,6 +35,15 @@ final class ChartSpecs {
                   @JsonIgnore Function<Scope, ChartSpec> builder) {
     }
 
+    private static final String COMPLETION = "Every released job of every repetition merged: the fraction completed within "
+            + "the response time on the x axis (end \u2212 release, ms, log). A dropped (skip) or aborted (terminate) job never "
+            + "completes, so a runtime that drops work ends below 1 and cannot look faster for it.";
+    private static final String MISS_RATIO = "Jobs not completed by their deadline (late + dropped + aborted) over the jobs "
+            + "released, per run; mean over repetitions with its 95% interval cut at 0 and 1, on a log particle axis.";
+    private static final String RESPONSE_P99 = "The 99th percentile of the response time (end \u2212 release, ms) over every "
+            + "released job, a dropped or aborted job counting as +\u221e; mean over repetitions with its 95% interval cut at "
+            + "0. A hollow triangle at the top: the p99 of a repetition fell among the jobs that never completed (+\u221e).";
+
     /** The page's figures, in page order. */
     static final List<Figure> FIGURES = List.of(
             new Figure("misses", "Deadline misses vs particles", "missCount per run (skipped + terminated jobs; late jobs "
@@ -53,6 +62,12 @@ final class ChartSpecs {
                     + "allocated nothing, as the preallocated style promises); on a JVM these areas are budgets kept on its heap, "
                     + "on the HVM real areas. Hover a bar for the area\u2019s size and the bytes allocated per release. The native "
                     + "baseline reports no areas.", true, ChartSpecs::memory),
+            new Figure("memory-release", "Memory areas: bytes allocated per release", "What one release allocates in each "
+                    + "area (mean over the repetitions, bytes, log axis; a \u201c0\u201d under the axis: nothing), beside the "
+                    + "peaks above. The areas are different things: the Java SE engine\u2019s heap is a GC heap (its bytes per "
+                    + "release are per job of the measured run); the SCJ engine\u2019s immortal, mission and private memories are "
+                    + "budgets kept on the JVM\u2019s GC heap on a JVM, and real memory areas with no collector only on the HVM.",
+                    true, ChartSpecs::memoryPerRelease),
             new Figure("causes", "Why deadlines were missed", "Jobs missed or late per run (mean over the attributed "
                     + "repetitions), split by each job\u2019s largest cause (the primary cause of ./jmclbench explain): gc, "
                     + "safepoint, jit, os, preemption, compute, queued, overlap, unknown. Runs without attribution evidence are "
@@ -66,8 +81,32 @@ final class ChartSpecs {
             new Figure("trajectory", "Estimated vs real trajectory", "On the playground (dashed frame, metres); black: ground "
                     + "truth; triangles: the beacons; one estimate per runtime (first repetition).", true, ChartSpecs::trajectory),
             new Figure("spectrum", "Task latency percentile spectrum", "HdrHistogram style: every job of every repetition "
-                    + "merged; x = 1/(1\u2212p) on a log axis (10 = 90%, 100 = 99%, 1000 = 99.9%), latency (ms) on a log axis.",
+                    + "merged; x = 1/(1\u2212p) on a log axis (10 = 90%, 100 = 99%, 1000 = 99.9%), latency (ms) on a log axis. "
+                    + "Each curve ends at p = 1 \u2212 1/n for its n jobs: past it n jobs say nothing more.",
                     true, ChartSpecs::spectrum),
+            new Figure("completion-predict", "Predict: fraction of released jobs completed by a response time", COMPLETION
+                    + " Predict\u2019s deadline is 50 ms.", true, s -> TaskCharts.responseCompletion(s, "predict")),
+            new Figure("completion-update", "Update: fraction of released jobs completed by a response time", COMPLETION
+                    + " Update\u2019s deadline is the next laser event (32 to 250 ms on the match datasets).", true,
+                    s -> TaskCharts.responseCompletion(s, "update")),
+            new Figure("miss-ratio-predict", "Predict: miss ratio vs particles", MISS_RATIO, false,
+                    s -> TaskCharts.vsParticlesPerTask(s, "predict", TaskMetric.MISS_RATIO)),
+            new Figure("miss-ratio-update", "Update: miss ratio vs particles", MISS_RATIO, false,
+                    s -> TaskCharts.vsParticlesPerTask(s, "update", TaskMetric.MISS_RATIO)),
+            new Figure("response-p99-predict", "Predict: response time p99 vs particles", RESPONSE_P99, false,
+                    s -> TaskCharts.vsParticlesPerTask(s, "predict", TaskMetric.RESPONSE_P99)),
+            new Figure("response-p99-update", "Update: response time p99 vs particles", RESPONSE_P99, false,
+                    s -> TaskCharts.vsParticlesPerTask(s, "update", TaskMetric.RESPONSE_P99)),
+            new Figure("accuracy", "Accuracy vs timeliness of the policies", "At this particle count, one point per runtime "
+                    + "and policy (every policy of the store, whichever is chosen above): x, the miss ratio over both tasks "
+                    + "(late + dropped + aborted jobs over released ones); y, the mean localisation deviation (m); 95% intervals "
+                    + "both ways, cut at 0 (and the ratio\u2019s at 1). Shape: skip circle, terminate triangle, queue square; "
+                    + "colour: the runtime. Down and to the left is better.", true, s -> TaskCharts.accuracyVsTimeliness(s.acrossPolicies())),
+            new Figure("conditions-load", "Idle vs loaded machine: miss ratio", "Per configuration, one bar per load scenario "
+                    + "it ran under (none: an idle machine; cpu, alloc: docs/RUNNER.md), the miss ratio over both tasks, mean with "
+                    + "its 95% interval cut at 0 and 1. A store run on an idle machine only has one bar per configuration.", true,
+                    s -> TaskCharts.conditions(s, "conditions-load", "Miss ratio by load scenario", TaskMetric.MISS_RATIO, "all",
+                            c -> c.load)),
             new Figure("breakdown", "Breakdown load (queue)", "Per runtime, the largest particle count at which every job of "
                     + "both tasks completed by its deadline in every repetition under queue, every smaller count of the store "
                     + "holding too (hover: the smallest count that did not). Only under the queue policy, where no job is dropped: "
@@ -80,6 +119,12 @@ final class ChartSpecs {
      * the store the chart is, and the cells it shows.
      */
     record Scope(ReportModel model, Setting setting, List<ReportModel.Cell> cells) {
+
+        /** The same setting with the cells of every policy of the store at its dataset and particle count. */
+        Scope acrossPolicies() {
+            return new Scope(model, setting, model.cells.stream().filter(c -> c.dataset.equals(setting.dataset())
+                    && setting.particles() != null && c.particles == setting.particles()).toList());
+        }
 
         /** "dataset, policy[, N particles]", the end of every title. */
         String where() {
@@ -211,6 +256,22 @@ final class ChartSpecs {
      * memory area; a peak of 0 is a value of 0 (no bar on a log axis, a mark under it).
      */
     static ChartSpec memory(Scope s) {
+        return areaBars(s, "memory", "Peak bytes per memory area", "peak bytes (log)", a -> a.peakBytes() == null ? null
+                : a.peakBytes().doubleValue());
+    }
+
+    /**
+     * Grouped bars on a log axis: per row, the mean bytes one release allocated in each memory
+     * area (the heap: per job of the measured run), 0 drawn as a "0" under the axis: what tells a
+     * preallocated style from an allocating one when the peaks are alike.
+     */
+    static ChartSpec memoryPerRelease(Scope s) {
+        return areaBars(s, "memory-release", "Bytes allocated per release per memory area (SCJ budgets on a JVM heap, "
+                + "real HVM areas and a GC heap are different things)", "bytes per release (log; 0 under the axis)",
+                ReportModel.MemoryArea::bytesPerRelease);
+    }
+
+    private static ChartSpec areaBars(Scope s, String id, String title, String axis, Function<ReportModel.MemoryArea, Double> value) {
         List<ReportModel.Cell> rows = s.ordered().stream().filter(c -> !c.memoryAreas.isEmpty()).toList();
         List<String> names = new ArrayList<>();
         rows.forEach(c -> c.memoryAreas.stream().map(ReportModel.MemoryArea::name).filter(n -> !names.contains(n)).forEach(names::add));
@@ -222,7 +283,7 @@ final class ChartSpecs {
             List<String> notes = new ArrayList<>();
             for (ReportModel.Cell c : rows) {
                 ReportModel.MemoryArea a = c.memoryAreas.stream().filter(x -> x.name().equals(n)).findFirst().orElse(null);
-                values.add(a == null || a.peakBytes() == null ? null : a.peakBytes().doubleValue());
+                values.add(a == null ? null : value.apply(a));
                 notes.add(a == null ? null : n + ": peak " + ChartFormats.bytes(a.peakBytes())
                         + (a.size() == null ? "" : " of " + ChartFormats.bytes(a.size()))
                         + (a.bytesPerRelease() == null ? "" : ", " + ChartFormats.bytes(a.bytesPerRelease()) + " per release"));
@@ -230,10 +291,13 @@ final class ChartSpecs {
             String color = Palette.area(n, Palette.AREA_COLORS.containsKey(n) ? 0 : privateIndex++);
             series.add(new Series(n, null, null, color, Style.BAR, null, values, null, null, notes));
         }
-        Axis y = rows.isEmpty() ? Axis.linear("peak bytes (no memory areas reported)")
-                : new Axis("peak bytes (log)", Scale.LOG, Format.BYTES, 1.0, null);
-        return s.spec("memory", "Peak bytes per memory area", Kind.BARS, false, Axis.linear("runtime / engine memory style"), y,
-                categories(rows), series);
+        // from 1 B, or the power of ten under the smallest value (a mean of 72 B in one release of 200 is 0.36 B)
+        double smallest = series.stream().flatMap(x -> x.values().stream()).filter(v -> v != null && v > 0)
+                .mapToDouble(Double::doubleValue).min().orElse(1.0);
+        double lo = Math.min(1.0, Math.pow(10, Math.floor(Math.log10(smallest))));
+        Axis y = rows.isEmpty() ? Axis.linear(axis + ": no memory areas reported")
+                : new Axis(axis, Scale.LOG, Format.BYTES, lo, null);
+        return s.spec(id, title, Kind.BARS, false, Axis.linear("runtime / engine memory style"), y, categories(rows), series);
     }
 
     /** Stacked bars across: per runtime, the jobs missed or late per run by primary cause, in the causes' fixed colours. */

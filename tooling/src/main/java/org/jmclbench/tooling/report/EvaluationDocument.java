@@ -134,8 +134,7 @@ public final class EvaluationDocument extends EvaluationSections {
                 .map(m -> List.of(s(m.hostname()), s(m.kernel()), s(m.cpu()), m.processors() == null ? "?" : m.processors().toString(),
                         check(m, "memory"), check(m, "virtualisation"), check(m, "preempt-rt")))
                 .toList());
-        List<String> loads = model.cells.stream().filter(c -> c.config.contains(" + load "))
-                .map(c -> c.config.substring(c.config.indexOf(" + load ") + " + load ".length())).distinct().sorted().toList();
+        List<String> loads = model.cells.stream().map(c -> c.load).filter(l -> l != null && !l.equals("none")).distinct().sorted().toList();
         line("Load during the runs: " + (loads.isEmpty()
                 ? "none beside the run under test (no load scenario)."
                 : "the load scenarios " + String.join(", ", loads) + " (section 2.8); every other run had none beside it.")
@@ -172,6 +171,11 @@ public final class EvaluationDocument extends EvaluationSections {
             cuts.forEach(c -> line("- " + c));
         }
         line("");
+    }
+
+    /** A run on the idle machine (no load scenario beside it). */
+    static boolean idle(ReportModel.Cell c) {
+        return c.load == null || c.load.equals("none");
     }
 
     /** The machine's doctor check {@code name}, as stored with the runs ("?" when it was not recorded). */
@@ -320,7 +324,7 @@ public final class EvaluationDocument extends EvaluationSections {
     private void breakdown() throws IOException {
         line("### 2.1 Breakdown load: the largest load with every job by its deadline (Table 1, Figure 1)");
         line("");
-        List<ReportModel.Cell> queue = data.cells(c -> c.policy.equals("queue") && c.ok > 0 && c.config.indexOf(" + load ") < 0);
+        List<ReportModel.Cell> queue = data.cells(c -> c.policy.equals("queue") && c.ok > 0 && idle(c));
         if (queue.isEmpty()) {
             line("The store has no run under the queue policy, so no breakdown load is known. (The largest load \"with no "
                     + "miss\" under skip is not reported: under skip a miss is mostly an event released within a few "

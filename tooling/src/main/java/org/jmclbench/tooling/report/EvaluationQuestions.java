@@ -6,6 +6,8 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
 
+import org.jmclbench.tooling.store.StoredRun;
+
 import static org.jmclbench.tooling.report.EvaluationData.*;
 
 /**
@@ -25,7 +27,7 @@ final class EvaluationQuestions extends EvaluationSections {
         line("### 2.2 Deadline accounting per task (Table 2)");
         line("");
         Integer n = data.compareCount();
-        List<ReportModel.Cell> at = n == null ? List.of() : data.order(data.cells(c -> c.particles == n && c.ok > 0 && c.config.indexOf(" + load ") < 0));
+        List<ReportModel.Cell> at = n == null ? List.of() : data.order(data.cells(c -> c.particles == n && c.ok > 0 && EvaluationDocument.idle(c)));
         if (at.isEmpty()) {
             line("No completed run is in the store.");
             line("");
@@ -38,9 +40,8 @@ final class EvaluationQuestions extends EvaluationSections {
         line("");
         List<List<String>> rows = new ArrayList<>();
         for (ReportModel.Cell c : at) {
-            rows.add(List.of(c.config, c.policy, String.valueOf(c.ok), percent(c, Metric.PREDICT_MISS_RATIO),
-                    percent(c, Metric.UPDATE_MISS_RATIO), response(c, Metric.PREDICT_RESPONSE_P99), response(c, Metric.UPDATE_RESPONSE_P99),
-                    agg(c, Metric.MISS_COUNT, 1)));
+            rows.add(List.of(c.config, c.policy, String.valueOf(c.ok), percent(c, "predict"), percent(c, "update"),
+                    response(c, "predict"), response(c, "update"), agg(c, Metric.MISS_COUNT, 1)));
         }
         table(List.of("configuration", "policy", "runs", "predict miss ratio", "update miss ratio", "predict response p99 (ms)",
                 "update response p99 (ms)", "thesis missCount"), rows);
@@ -61,14 +62,14 @@ final class EvaluationQuestions extends EvaluationSections {
         for (ReportModel.Cell f : data.order(fifo)) {
             ReportModel.ConfigInfo fi = data.info(f);
             ReportModel.Cell plain = data.cells(c -> c.ok > 0 && c.particles == f.particles && c.policy.equals(f.policy)
-                    && Objects.equals(c.engine, f.engine) && Objects.equals(c.memory, f.memory) && c.config.indexOf(" + load ") < 0
+                    && Objects.equals(c.engine, f.engine) && Objects.equals(c.memory, f.memory) && EvaluationDocument.idle(c)
                     && data.info(c).runtime().equals(fi.runtime()) && !Objects.equals(data.info(c).profile(), fi.profile())
                     && (data.info(c).profile() == null || !data.info(c).profile().contains("fifo"))).stream().findFirst().orElse(null);
             if (plain == null) {
                 continue;
             }
             for (ReportModel.Cell c : List.of(plain, f)) {
-                rows.add(List.of(c.config, String.valueOf(c.particles), c.policy, String.valueOf(c.ok), percent(c, Metric.MISS_RATIO),
+                rows.add(List.of(c.config, String.valueOf(c.particles), c.policy, String.valueOf(c.ok), percent(c, "all"),
                         agg(c, Metric.JITTER_P99, 3), agg(c, Metric.LATENCY_P99, 3), data.info(c).execution() == null ? "?"
                                 : data.info(c).execution().scheduling() + ", priorities " + data.info(c).execution().priorities()));
             }
@@ -85,16 +86,16 @@ final class EvaluationQuestions extends EvaluationSections {
     void load() {
         line("### 2.8 An idle vs a loaded machine (Table 8)");
         line("");
-        List<ReportModel.Cell> loaded = data.cells(c -> c.ok > 0 && c.config.indexOf(" + load ") > 0);
+        List<ReportModel.Cell> loaded = data.cells(c -> c.ok > 0 && !EvaluationDocument.idle(c));
         if (loaded.isEmpty()) {
             line("The store has no run under a load scenario, so an idle and a loaded machine are not compared here.");
             line("");
             return;
         }
         List<List<String>> rows = new ArrayList<>();
-        List<String> bases = data.order(loaded.stream().map(c -> c.config.substring(0, c.config.indexOf(" + load "))).distinct().toList());
+        List<String> bases = data.order(loaded.stream().map(c -> c.config.replace(StoredRun.loadLabel(c.load), "")).distinct().toList());
         for (String base : bases) {
-            for (ReportModel.Cell l : data.order(loaded.stream().filter(c -> c.config.startsWith(base + " + load ")).toList())) {
+            for (ReportModel.Cell l : data.order(loaded.stream().filter(c -> c.config.equals(base + StoredRun.loadLabel(c.load))).toList())) {
                 ReportModel.Cell idle = data.cells(c -> c.ok > 0 && c.config.equals(base) && c.particles == l.particles
                         && c.policy.equals(l.policy)).stream().findFirst().orElse(null);
                 if (idle != null && rows.stream().noneMatch(r -> r.get(0).equals(idle.config) && r.get(1).equals(String.valueOf(idle.particles)))) {
@@ -114,7 +115,7 @@ final class EvaluationQuestions extends EvaluationSections {
     }
 
     private static List<String> loadRow(ReportModel.Cell c) {
-        return List.of(c.config, String.valueOf(c.particles), c.policy, String.valueOf(c.ok), percent(c, Metric.MISS_RATIO),
+        return List.of(c.config, String.valueOf(c.particles), c.policy, String.valueOf(c.ok), percent(c, "all"),
                 agg(c, Metric.LATENCY_P99, 3), agg(c, Metric.JITTER_P99, 3));
     }
 
@@ -150,25 +151,25 @@ final class EvaluationQuestions extends EvaluationSections {
         return a.half() == null ? num(a.mean(), decimals) : num(a.mean(), decimals) + " ± " + num(a.half(), decimals);
     }
 
-    /** A ratio as a percentage with its interval. */
-    static String percent(ReportModel.Cell c, Metric m) {
-        ReportModel.Agg a = c.metrics.get(m.name());
+    /** A task's miss ratio as a percentage with its interval. */
+    static String percent(ReportModel.Cell c, String task) {
+        ReportModel.Agg a = c.metrics.get(TaskMetric.MISS_RATIO.key(task));
         if (a == null || a.mean() == null) {
             return "n/a";
         }
         return num(100 * a.mean(), 2) + "%" + (a.half() == null ? "" : " ± " + num(100 * a.half(), 2));
     }
 
-    /** A response time that may be infinite in some repetitions: the count of those is said instead of a mean. */
-    static String response(ReportModel.Cell c, Metric m) {
-        ReportModel.Agg a = c.metrics.get(m.name());
-        if (a == null || a.n() == 0) {
+    /** A task's response time p99 over released jobs, infinite when a dropped or aborted job is in some run's top 1%. */
+    static String response(ReportModel.Cell c, String task) {
+        ReportModel.Agg a = c.metrics.get(TaskMetric.RESPONSE_P99.key(task));
+        if (a == null || a.n() == 0 || a.mean() == null) {
             return "n/a";
         }
         if (a.max() != null && a.max().isInfinite()) {
             return "∞ (in at least one of " + a.n() + " runs)";
         }
-        return agg(c, m, 3);
+        return a.half() == null ? num(a.mean(), 3) : num(a.mean(), 3) + " ± " + num(a.half(), 3);
     }
 
     /** "A's x is ... against B's ...", with whether the intervals separate them. */

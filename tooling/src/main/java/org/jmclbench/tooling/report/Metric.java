@@ -18,14 +18,7 @@ public enum Metric {
     JITTER_P99("release jitter p99", "ms", 1e-6, "/tasks/all/releaseJitterNs/p99", "all/releaseJitterNs/p99"),
     JITTER_MAX("release jitter max", "ms", 1e-6, "/tasks/all/releaseJitterNs/max", "all/releaseJitterNs/max"),
     DEVIATION("deviation xy mean", "m", 1, "/deviation/xy/mean", "run/deviationXY/mean", "run/deviationXY/value",
-            "all/deviationXY/mean", "all/deviationXY/value"),
-    /** Per task: deadline misses (late + dropped + aborted) over the jobs released (docs/FORMATS.md 4). */
-    MISS_RATIO("miss ratio", "", 1, "/tasks/all/missRatio"),
-    PREDICT_MISS_RATIO("predict miss ratio", "", 1, "/tasks/predict/missRatio"),
-    UPDATE_MISS_RATIO("update miss ratio", "", 1, "/tasks/update/missRatio"),
-    /** Response time (end - release) over every released job, a dropped or aborted one counting as +inf. */
-    PREDICT_RESPONSE_P99("predict response time p99", "ms", 1e-6, "/tasks/predict/responseTimeReleasedNs/p99"),
-    UPDATE_RESPONSE_P99("update response time p99", "ms", 1e-6, "/tasks/update/responseTimeReleasedNs/p99");
+            "all/deviationXY/mean", "all/deviationXY/value");
 
 
     /** Name shown in tables. */
@@ -54,8 +47,6 @@ public enum Metric {
             JsonNode n = run.summary().at(summaryPointer);
             if (n.isNumber()) {
                 v = n.asDouble();
-            } else if (n.isTextual() && n.asText().equals("inf")) {
-                v = Double.POSITIVE_INFINITY; // a quantile that falls on a dropped or aborted job
             }
         }
         return v == null || v.isNaN() ? null : v * scale;

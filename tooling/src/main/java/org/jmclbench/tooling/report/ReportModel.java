@@ -87,12 +87,20 @@ public final class ReportModel {
                               String virtualization, List<Map<String, String>> checks) {
     }
 
-    /** Mean over repetitions with its 95% interval half-width (null when it cannot be made). */
+    /**
+     * Mean over repetitions with its 95% interval half-width (null when it cannot be made). A
+     * value of +infinity in a repetition (a response-time quantile among dropped jobs) makes the
+     * mean and the max +infinity, with no interval.
+     */
     public record Agg(int n, Double mean, Double half, Double min, Double max) {
         static Agg of(List<Double> values) {
             double[] xs = values.stream().mapToDouble(Double::doubleValue).toArray();
             if (xs.length == 0) {
                 return new Agg(0, null, null, null, null);
+            }
+            if (values.contains(Double.POSITIVE_INFINITY)) {
+                double min = values.stream().mapToDouble(Double::doubleValue).min().orElseThrow();
+                return new Agg(xs.length, Double.POSITIVE_INFINITY, null, min, Double.POSITIVE_INFINITY);
             }
             Stats.MeanCi ci = Stats.meanCi(xs);
             double min = Double.POSITIVE_INFINITY;
@@ -126,8 +134,13 @@ public final class ReportModel {
         public String policy;
         public int particles;
         public String config;
+        /** The runtime and profile of {@link #config} (the profile empty when none). */
+        public String runtime;
+        public String profile;
         public String engine;
         public String memory;
+        /** The load scenario the runs ran under ({@code none}: an idle machine). */
+        public String load;
         public int runs;
         public int ok;
         public int failed;
@@ -140,6 +153,12 @@ public final class ReportModel {
         /** [release jitter ms, cumulative fraction], all repetitions merged. */
         @JsonIgnore
         public List<double[]> jitterCdf = new ArrayList<>();
+        /**
+         * Per task (predict, update): [response time ms, fraction of the released jobs completed by
+         * then], all repetitions merged; a task is absent when its runs stored no response-time histogram.
+         */
+        @JsonIgnore
+        public Map<String, List<double[]>> responseCompletion = new LinkedHashMap<>();
         /** [event index, task latency ms] of the first repetition. */
         @JsonIgnore
         public List<double[]> latencyPredict = new ArrayList<>();
@@ -236,8 +255,11 @@ public final class ReportModel {
         c.policy = first.policy;
         c.particles = first.particles;
         c.config = first.configOnMachine();
+        c.runtime = first.runtime;
+        c.profile = first.profile;
         c.engine = first.engine;
         c.memory = first.memory;
+        c.load = first.loadScenario();
         c.runs = group.size();
         List<StoredRun> ok = new ArrayList<>();
         for (StoredRun r : group) {
@@ -261,6 +283,18 @@ public final class ReportModel {
                 }
             }
             c.metrics.put(metric.name(), Agg.of(values));
+        }
+        for (String task : TaskMetric.TASKS) {
+            for (TaskMetric metric : TaskMetric.values()) {
+                List<Double> values = new ArrayList<>();
+                for (StoredRun r : ok) {
+                    Double v = metric.of(r, task);
+                    if (v != null) {
+                        values.add(v);
+                    }
+                }
+                c.metrics.put(metric.key(task), Agg.of(values));
+            }
         }
         for (Map.Entry<String, String[]> e : WARMUP_METRICS.entrySet()) {
             double scale = Double.parseDouble(e.getValue()[1]);

@@ -50,12 +50,13 @@ public final class StoredRun {
     /** Set by {@link #labelEngines} when the runs have several engines or memory styles. */
     private boolean showEngine;
     private boolean showMemory;
+    private boolean showLoad;
 
     /**
      * The configuration under test: runtime, and profile when there is one; then, when the runs
      * shown together have several engines or memory styles, the engine and memory style:
-     * {@code temurin-25/default / scj scoped}, {@code native / allocating}; a run under a load
-     * scenario ends with {@code + load cpu}.
+     * {@code temurin-25/default / scj scoped}, {@code native / allocating}; and when they ran under
+     * several load scenarios, a loaded run's in brackets: {@code temurin-25/default [load cpu]}.
      */
     public String config() {
         String c = profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
@@ -66,9 +67,19 @@ public final class StoredRun {
         if (showMemory) {
             parts.add(memory);
         }
-        String config = parts.isEmpty() ? c : c + " / " + String.join(" ", parts);
-        // a run beside a load scenario is another configuration: never averaged with the idle machine's runs
-        return load == null || load.isEmpty() || load.equals("none") ? config : config + " + load " + load;
+        String base = parts.isEmpty() ? c : c + " / " + String.join(" ", parts);
+        // the idle machine's runs keep their plain name: only a run beside a load is labelled
+        return showLoad && !loadScenario().equals("none") ? base + loadLabel(loadScenario()) : base;
+    }
+
+    /** The load scenario the run ran under; a store row without one ran on an idle machine ({@code none}). */
+    public String loadScenario() {
+        return load == null || load.isEmpty() ? "none" : load;
+    }
+
+    /** What {@link #config()} appends for a load scenario when the runs shown together differ in it. */
+    public static String loadLabel(String scenario) {
+        return " [load " + scenario + "]";
     }
 
     /** {@link #config()}, with " @host" when the report tells machines apart. */
@@ -106,14 +117,17 @@ public final class StoredRun {
     /**
      * Marks the runs' labels to show the engine when the JVM runs among them have more than one,
      * and the memory style when they have more than one, so that a store of one engine keeps its
-     * short labels ({@code temurin-25/g1}).
+     * short labels ({@code temurin-25/g1}); likewise the load scenario, so that runs on an idle and
+     * on a loaded machine are never pooled into one configuration.
      */
     public static void labelEngines(Collection<StoredRun> runs) {
         boolean engines = runs.stream().filter(r -> !"native".equals(r.engine)).map(r -> r.engine).distinct().count() > 1;
         boolean memory = runs.stream().map(r -> r.memory).distinct().count() > 1;
+        boolean loads = runs.stream().map(StoredRun::loadScenario).distinct().count() > 1;
         for (StoredRun r : runs) {
             r.showEngine = engines;
             r.showMemory = memory;
+            r.showLoad = loads;
         }
     }
 }

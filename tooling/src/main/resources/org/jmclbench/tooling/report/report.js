@@ -324,24 +324,35 @@
   // ---- charts ----------------------------------------------------------------------------
   // Each chart is a specification built once in Java (ChartSpecs, DATA.charts) and drawn here as it
   // is: this script only leaves out what belongs to runtimes or engines not chosen.
+  /** A value's pixel on a scale; on a log scale a value at or below zero is the scale's low end. */
+  function pixel(scale, v) { return scale.type === 'logarithmic' && v <= 0 ? scale.getPixelForValue(scale.min) : scale.getPixelForValue(v); }
+  // Intervals [low, high] per bar or point: errorBars of y (vertical), xErrorBars of x (horizontal, points only).
   var errorBars = {
     id: 'jmclbenchErrorBars',
     afterDatasetsDraw: function (chart) {
       if (chart.options.indexAxis === 'y') { return; }
       var ctx = chart.ctx;
       chart.data.datasets.forEach(function (ds, i) {
-        if (!ds.errorBars) { return; }
+        if (!ds.errorBars && !ds.xErrorBars) { return; }
         var meta = chart.getDatasetMeta(i);
         if (meta.hidden) { return; }
-        var y = chart.scales[meta.yAxisID || 'y'];
-        ctx.save(); ctx.strokeStyle = '#222'; ctx.lineWidth = 1.2;
-        meta.data.forEach(function (bar, j) {
-          var e = ds.errorBars[j];
-          if (!e || e[0] === null || e[1] === null) { return; }
-          var x = bar.x, top = y.getPixelForValue(e[1]), bottom = y.getPixelForValue(e[0]), w = Math.min(8, (bar.width || 10) / 3);
-          ctx.beginPath(); ctx.moveTo(x, top); ctx.lineTo(x, bottom);
-          ctx.moveTo(x - w, top); ctx.lineTo(x + w, top); ctx.moveTo(x - w, bottom); ctx.lineTo(x + w, bottom);
-          ctx.stroke();
+        var y = chart.scales[meta.yAxisID || 'y'], x = chart.scales[meta.xAxisID || 'x'];
+        ctx.save(); ctx.strokeStyle = ds.errorBarColor || '#222'; ctx.lineWidth = 1.2;
+        meta.data.forEach(function (item, j) {
+          var e = ds.errorBars ? ds.errorBars[j] : null, w = Math.min(8, (item.width || 10) / 3);
+          if (e && e[0] !== null && e[1] !== null) {
+            var top = pixel(y, e[1]), bottom = pixel(y, e[0]);
+            ctx.beginPath(); ctx.moveTo(item.x, top); ctx.lineTo(item.x, bottom);
+            ctx.moveTo(item.x - w, top); ctx.lineTo(item.x + w, top); ctx.moveTo(item.x - w, bottom); ctx.lineTo(item.x + w, bottom);
+            ctx.stroke();
+          }
+          var h = ds.xErrorBars ? ds.xErrorBars[j] : null;
+          if (h && h[0] !== null && h[1] !== null) {
+            var left = pixel(x, h[0]), right = pixel(x, h[1]);
+            ctx.beginPath(); ctx.moveTo(left, item.y); ctx.lineTo(right, item.y);
+            ctx.moveTo(left, item.y - w); ctx.lineTo(left, item.y + w); ctx.moveTo(right, item.y - w); ctx.lineTo(right, item.y + w);
+            ctx.stroke();
+          }
         });
         ctx.restore();
       });
@@ -426,7 +437,8 @@
   /** What of a specification the chosen runtimes and engines keep: a filter, nothing computed. */
   function shown(spec) {
     var keep = (spec.categories || []).map(function (c) { return !c.config || chosenConfig(c.config, c.engine); });
-    function pick(list) { return list ? list.filter(function (v, i) { return keep[i]; }) : list; }
+    // per-category lists of bars lose the categories left out; a series of points keeps its own
+    function pick(list) { return list && spec.kind !== 'LINES' ? list.filter(function (v, i) { return keep[i]; }) : list; }
     var series = spec.series.filter(function (s) { return !s.config || chosenConfig(s.config, s.engine); }).map(function (s) {
       return Object.assign({}, s, { values: pick(s.values), errors: pick(s.errors), colors: pick(s.colors), notes: pick(s.notes) });
     }).filter(function (s) {
@@ -459,7 +471,8 @@
       return { label: s.name, data: s.points.map(function (p) { return { x: p[0], y: p[1] }; }), showLine: st.line,
         borderWidth: st.line ? st.width : 1, borderDash: st.dash || [], stepped: st.stepped,
         pointRadius: st.marker ? st.size : 0, pointStyle: st.marker === 'square' ? 'rect' : (st.marker || 'circle'),
-        borderColor: s.color, backgroundColor: st.fill === 'none' ? 'transparent' : (st.fill || s.color) };
+        borderColor: s.color, backgroundColor: st.fill === 'none' ? 'transparent' : (st.fill || s.color),
+        errorBars: s.errors, xErrorBars: s.xErrors, errorBarColor: s.color, notes: s.notes };
     }
     var log = spec.y.scale === 'LOG', stacked = spec.kind === 'STACKED_BARS';
     return { label: s.name, borderColor: s.color, backgroundColor: s.colors || s.color, errorBars: s.errors, notes: s.notes,

@@ -55,8 +55,8 @@ class ChartSpecsTest {
 
     @Test
     void everyFigureIsBuiltAtEverySettingWithItsFileName() {
-        // 2 policies x (3 sweep charts + 3 counts x 7 charts at one count)
-        assertEquals(2 * (3 + 3 * 7), model.charts.size());
+        // 2 policies x (7 sweep charts + 3 counts x 12 charts at one count)
+        assertEquals(2 * (7 + 3 * 12), model.charts.size());
         assertEquals(model.charts.size(), model.charts.stream().map(ChartSpec::stem).distinct().count(), "one file per chart");
         assertEquals("match-short-skip-misses", chart("misses", "skip", null).stem());
         assertEquals("match-short-terminate-1600-spectrum", chart("spectrum", "terminate", 1600).stem());

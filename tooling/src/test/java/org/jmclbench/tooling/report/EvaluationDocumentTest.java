@@ -192,10 +192,11 @@ class EvaluationDocumentTest {
         assertFalse(rows.isEmpty());
         for (List<String> row : rows) {
             int n = 1600;
-            Double predict = mean(row.get(0), row.get(1), n, Metric.PREDICT_MISS_RATIO);
+            Double predict = runs.stream().filter(r -> r.ok() && r.config().equals(row.get(0)) && r.policy.equals(row.get(1))
+                    && r.particles == n).map(r -> TaskMetric.MISS_RATIO.of(r, "predict")).mapToDouble(Double::doubleValue).average().orElseThrow();
             assertTrue(row.get(3).startsWith(num(100 * predict, 2) + "%"), row.toString());
             boolean dropped = runs.stream().anyMatch(r -> r.ok() && r.config().equals(row.get(0)) && r.policy.equals(row.get(1))
-                    && r.particles == n && Double.isInfinite(Metric.UPDATE_RESPONSE_P99.of(r)));
+                    && r.particles == n && Double.isInfinite(TaskMetric.RESPONSE_P99.of(r, "update")));
             assertEquals(dropped, row.get(6).startsWith("∞"), "a run whose top 1% holds a dropped job has no finite p99: " + row);
         }
     }

@@ -82,6 +82,10 @@ public final class FixtureDb {
     public List<String> datasets = List.of("match-short");
     public List<String> policies = List.of("skip", "terminate");
     public List<Integer> particles = List.of(100, 400, 1600);
+    /** The load scenarios every setting runs under ({@code none}: an idle machine). */
+    public List<String> loads = List.of("none");
+    /** Store each task's response-time histogram (a store before them has none). */
+    public boolean responseHistograms = true;
     public int repetitions = 3;
     /** Length of the replayed timeline in seconds (odometry every 50 ms, laser about 3.6 per second). */
     public double durationS = 12.0;
@@ -120,12 +124,14 @@ public final class FixtureDb {
                     for (String policy : policies) {
                         for (int p : particles) {
                             for (Config cfg : configs) {
-                                for (int rep = 1; rep <= repetitions; rep++) {
-                                    insertRun(run, metric, hist, series, rng, dataset, policy, p, cfg, rep);
-                                    if (!legacySchema && "ok".equals(cfg.status())) {
-                                        insertAreas(area, runKey(dataset, policy, p, cfg, rep), p, cfg);
+                                for (String load : loads) {
+                                    for (int rep = 1; rep <= repetitions; rep++) {
+                                        insertRun(run, metric, hist, series, rng, dataset, policy, p, cfg, load, rep);
+                                        if (!legacySchema && "ok".equals(cfg.status())) {
+                                            insertAreas(area, runKey(dataset, policy, p, cfg, load, rep), p, cfg);
+                                        }
+                                        runs++;
                                     }
-                                    runs++;
                                 }
                             }
                         }
@@ -164,9 +170,9 @@ public final class FixtureDb {
         }
     }
 
-    private static String runKey(String dataset, String policy, int particles, Config cfg, int rep) {
+    private static String runKey(String dataset, String policy, int particles, Config cfg, String load, int rep) {
         return String.format(Locale.ROOT, "%s-%s-%s-%d-%s-%d", dataset, policy, cfg.key().replaceAll("[^A-Za-z0-9]", "_"),
-                particles, Integer.toHexString(cfg.key().hashCode()), rep);
+                particles, Integer.toHexString(cfg.key().hashCode()), rep) + ("none".equals(load) ? "" : "-" + load);
     }
 
     /**
@@ -178,7 +184,8 @@ public final class FixtureDb {
         List<Object[]> areas = new ArrayList<>();
         boolean scoped = "scoped".equals(cfg.memory());
         switch (cfg.engine()) {
-            case "javase" -> areas.add(new Object[] {"heap", 512L << 20, 2_000_000L + particles * ("allocating".equals(cfg.memory()) ? 9000L : 1000L), null});
+            case "javase" -> areas.add(new Object[] {"heap", 512L << 20, 2_000_000L + particles * ("allocating".equals(cfg.memory()) ? 9000L : 1000L),
+                    "allocating".equals(cfg.memory()) ? particles * 50.0 : 0.0});
             case "scj" -> {
                 areas.add(new Object[] {"immortal", 1L << 20, 120_000L, null});
                 areas.add(new Object[] {"mission", 4L << 20, 5_000L + particles * 100L, null});
@@ -198,9 +205,9 @@ public final class FixtureDb {
     }
 
     private void insertRun(PreparedStatement run, PreparedStatement metric, PreparedStatement hist, PreparedStatement series,
-                           SplittableRandom rng, String dataset, String policy, int particles, Config cfg, int rep)
+                           SplittableRandom rng, String dataset, String policy, int particles, Config cfg, String load, int rep)
             throws Exception {
-        String key = runKey(dataset, policy, particles, cfg, rep);
+        String key = runKey(dataset, policy, particles, cfg, load, rep);
         if (!legacySchema) {
             run.setString(21, cfg.engine());
             run.setString(22, cfg.memory());
@@ -214,7 +221,7 @@ public final class FixtureDb {
         run.setString(7, policy);
         run.setInt(8, particles);
         run.setString(9, dataset);
-        run.setString(10, "none");
+        run.setString(10, load);
         run.setInt(11, rep);
         run.setString(12, cfg.status());
         run.setString(16, "2026-11-22T02:10:00Z");
@@ -300,7 +307,7 @@ public final class FixtureDb {
             for (String m : List.of("releaseJitterNs", "taskLatencyNs", "responseTimeNs", "cpuNs")) {
                 tn.get(m).fields().forEachRemaining(e -> addMetric(metric, key, t, m, e.getKey(), e.getValue().isNull() ? null : e.getValue().asDouble()));
             }
-            for (String m : List.of("missCount", "late", "skipped", "terminated")) {
+            for (String m : List.of("missCount", "late", "skipped", "terminated", "released")) {
                 addMetric(metric, key, t, m, "value", tn.get(m).asDouble());
             }
         }
@@ -313,8 +320,11 @@ public final class FixtureDb {
 
         for (String t : List.of("predict", "update", "all")) {
             Job[] jobs = t.equals("predict") ? predict : t.equals("update") ? update : all;
-            addHistogram(hist, key, t, "taskLatencyNs", jobs, true);
-            addHistogram(hist, key, t, "releaseJitterNs", jobs, false);
+            addHistogram(hist, key, t, "taskLatencyNs", jobs, j -> j.latencyNs);
+            addHistogram(hist, key, t, "releaseJitterNs", jobs, j -> j.jitterNs);
+            if (responseHistograms) {
+                addHistogram(hist, key, t, "responseTimeNs", jobs, j -> j.latencyNs + j.jitterNs); // completed jobs only
+            }
         }
 
         // Columns as the runner's ingest writes them (the outcome column is text there; a number here).
@@ -424,20 +434,21 @@ public final class FixtureDb {
             resp[i] = lat[i] + jit[i];
         }
         stats(t.putObject("responseTimeNs"), resp);
-        stats(t.putObject("cpuNs"), Arrays.stream(lat).map(v -> v * 0.97).toArray());
+        // the deadline accounting of FORMATS.md 4: the skipped jobs never complete (+inf)
         int released = jobs.length + missed;
-        t.put("deadlineMisses", missed).put("missRatio", released == 0 ? 0.0 : (double) missed / released);
-        // every released job, a dropped one as +inf: the p99 is "inf" once 1% or more were dropped
-        double[] withDropped = Arrays.copyOf(resp, released);
-        Arrays.fill(withDropped, resp.length, released, Double.POSITIVE_INFINITY);
-        Arrays.sort(withDropped);
-        double p99 = withDropped[Math.max(0, (int) Math.ceil(0.99 * released) - 1)];
-        ObjectNode r = t.putObject("responseTimeReleasedNs").put("count", released).put("completed", jobs.length);
-        if (Double.isInfinite(p99)) {
-            r.put("p99", "inf");
-        } else {
-            r.put("p99", (long) p99);
+        t.put("deadlineMisses", missed).put("missRatio", (double) missed / released);
+        ObjectNode all = t.putObject("responseTimeReleasedNs").put("count", released).put("completed", jobs.length);
+        double[] sorted = resp.clone();
+        Arrays.sort(sorted);
+        for (String[] q : new String[][] {{"min", "0"}, {"p50", "0.5"}, {"p90", "0.9"}, {"p99", "0.99"}, {"p999", "0.999"}, {"max", "1"}}) {
+            int i = Math.max(0, (int) Math.ceil(Double.parseDouble(q[1]) * released) - 1);
+            if (i < sorted.length) {
+                all.put(q[0], (long) sorted[i]);
+            } else {
+                all.put(q[0], "inf");
+            }
         }
+        stats(t.putObject("cpuNs"), Arrays.stream(lat).map(v -> v * 0.97).toArray());
     }
 
     /** STATS of docs/FORMATS.md 4: nearest-rank percentiles. */
@@ -476,11 +487,11 @@ public final class FixtureDb {
         return Base64.getEncoder().encodeToString(Arrays.copyOf(buf.array(), len));
     }
 
-    private static void addHistogram(PreparedStatement ps, String key, String task, String metric, Job[] jobs, boolean latency)
-            throws SQLException {
+    private static void addHistogram(PreparedStatement ps, String key, String task, String metric, Job[] jobs,
+                                     java.util.function.ToDoubleFunction<Job> value) throws SQLException {
         Histogram h = new Histogram(3);
         for (Job j : jobs) {
-            h.recordValue((long) (latency ? j.latencyNs : j.jitterNs));
+            h.recordValue((long) value.applyAsDouble(j));
         }
         ps.setString(1, key);
         ps.setString(2, task);

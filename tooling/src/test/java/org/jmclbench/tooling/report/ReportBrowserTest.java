@@ -129,6 +129,19 @@ class ReportBrowserTest {
         return out;
     }
 
+    /**
+     * The series counts without the response-time p99 charts, after checking those: a line per
+     * runtime, and a mark per runtime whose p99 was +infinity at some count (as the data fall).
+     */
+    static Map<String, Integer> withoutResponseP99(Map<String, Integer> counts, int configs) {
+        Map<String, Integer> out = new LinkedHashMap<>(counts);
+        for (String task : List.of("predict", "update")) {
+            int n = out.remove("response-p99-" + task);
+            assertTrue(n >= configs && n <= 2 * configs, "response-p99-" + task + ": " + n);
+        }
+        return out;
+    }
+
     static Map<String, Integer> expected(int configs, int repetitions) {
         Map<String, Integer> m = new LinkedHashMap<>();
         m.put("misses", configs);
@@ -142,6 +155,13 @@ class ReportBrowserTest {
         m.put("jitter-cdf", configs);
         m.put("memory", 1);                         // the Java SE engine's one area, the heap (native reports none)
         m.put("breakdown", 0);                      // a queue figure: the fixture's skip and terminate runs draw none
+        m.put("memory-release", 1);                 // the heap's bytes per release
+        m.put("completion-predict", configs);
+        m.put("completion-update", configs);
+        m.put("miss-ratio-predict", configs);
+        m.put("miss-ratio-update", configs);
+        m.put("accuracy", 2 * configs);             // a point per runtime and policy (skip, terminate)
+        m.put("conditions-load", 1);                // one load scenario: none
         return m;
     }
 
@@ -181,11 +201,17 @@ class ReportBrowserTest {
         Number requests = (Number) js().executeScript("return performance.getEntriesByType('resource').length");
         assertEquals(0, requests.intValue(), "the page fetched something");
         Number chartJs = (Number) js().executeScript("return Object.keys(window.jmclbenchCharts).length");
-        assertEquals(11, chartJs.intValue());
+        assertEquals(ChartSpecs.FIGURES.size(), chartJs.intValue());
         // Four runtimes completed runs (the unsupported and the crashed one draw nothing), three repetitions each.
-        assertEquals(expected(4, 3), seriesPerChart());
+        assertEquals(expected(4, 3), withoutResponseP99(seriesPerChart(), 4));
         Number datasets = (Number) js().executeScript("return window.jmclbenchCharts['spectrum'].data.datasets.length");
         assertEquals(4, datasets.intValue(), "the hook agrees with Chart.js");
+        // points keep their own intervals (bars lose those of hidden categories): one per point, both ways in the accuracy chart
+        assertEquals(Boolean.TRUE, js().executeScript("return ['miss-ratio-predict', 'accuracy'].every(function (id) {"
+                + " return window.jmclbenchCharts[id].data.datasets.every(function (d) {"
+                + " return d.errorBars && d.errorBars.length === d.data.length; }); })"));
+        assertEquals(Boolean.TRUE, js().executeScript("return window.jmclbenchCharts['accuracy'].data.datasets.every(function (d) {"
+                + " return d.xErrorBars && d.xErrorBars.length === 1 && d.xErrorBars[0][0] >= 0; })"));
         assertEquals(6, tableConfigs().size(), "every runtime has a row, failed ones too");
         assertTrue(driver.findElement(By.id("headline-best")).getText().startsWith("Fewest deadline misses at match-short, skip, 400 particles"));
         assertTrue(driver.findElement(By.id("headline-ratio")).getText().contains("Java vs C"));
@@ -294,7 +320,7 @@ class ReportBrowserTest {
         driver.findElement(By.cssSelector("#sel-configs input[value='temurin-17/g1']")).click();
         waitForRender(before);
         assertFalse(tableConfigs().contains("temurin-17/g1"));
-        assertEquals(expected(3, 3), seriesPerChart());
+        assertEquals(expected(3, 3), withoutResponseP99(seriesPerChart(), 3));
         assertEquals(List.of(XSS_CONFIG, "native", "temurin-25/zgc"), causeBars(), "the cause chart follows the runtimes chosen (legend order)");
         assertEquals(0.0, causeOf("native", "gc"), "native has no GC to blame");
         assertTrue(causeOf("temurin-25/zgc", "gc") > 0, "the fixture's JVM misses include GC-caused ones");

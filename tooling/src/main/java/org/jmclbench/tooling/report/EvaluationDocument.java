@@ -204,7 +204,7 @@ public final class EvaluationDocument extends EvaluationSections {
     }
 
     private void misses() throws IOException {
-        line("### 2.4 Deadline misses per runtime and particle count (Table 4, Figure 3)");
+        line("### 2.4 Misses, deviation, response time and jitter vs particles (Table 4, Figure 3)");
         line("");
         List<ReportModel.Cell> sweep = data.sweep();
         if (sweep.isEmpty()) {
@@ -241,6 +241,23 @@ public final class EvaluationDocument extends EvaluationSections {
         }
         figure("deviation-skip", "Figure 3c: mean localisation deviation (m) vs particles, policy skip, 95% CI error bars: "
                 + "what the particles buy.", () -> charts.write(ChartSpecs.deviation(scope(null, main)).withStem("deviation-skip")));
+        String[] letters = {"d", "e"};
+        for (int i = 0; i < 2; i++) {
+            String task = i == 0 ? "predict" : "update";
+            figure("miss-ratio-" + task + "-skip", "Figure 3" + letters[i] + ": " + task + "'s miss ratio (late + dropped + aborted "
+                    + "over released) vs particles, policy skip, 95% CI.",
+                    () -> charts.write(TaskCharts.vsParticlesPerTask(scope(null, main), task, TaskMetric.MISS_RATIO)
+                            .withStem("miss-ratio-" + task + "-skip")));
+        }
+        for (String task : List.of("predict", "update")) {
+            figure("response-p99-" + task + "-skip", "Figure 3" + (task.equals("predict") ? "f" : "g") + ": " + task
+                    + "'s response time p99 over released jobs vs particles, policy skip (a hollow mark at the top: a run "
+                    + "whose top 1% holds a dropped job).", () -> charts.write(TaskCharts.vsParticlesPerTask(scope(null, main), task,
+                    TaskMetric.RESPONSE_P99).withStem("response-p99-" + task + "-skip")));
+        }
+        figure("jitter-p99-skip", "Figure 3h: release jitter p99 vs particles, both tasks, policy skip, 95% CI.",
+                () -> charts.write(TaskCharts.vsParticlesPerTask(scope(null, main), "all", TaskMetric.JITTER_P99)
+                        .withStem("jitter-p99-skip")));
         int heaviest = counts.get(counts.size() - 1);
         List<ReportModel.Cell> at = compared.stream().map(c -> cell(sweep, c, heaviest).orElse(null)).filter(Objects::nonNull)
                 .filter(c -> mean(c, Metric.MISS_COUNT) != null).sorted(Comparator.comparingDouble((ReportModel.Cell c) -> mean(c, Metric.MISS_COUNT))

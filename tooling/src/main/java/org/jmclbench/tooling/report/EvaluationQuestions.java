@@ -23,7 +23,7 @@ final class EvaluationQuestions extends EvaluationSections {
     }
 
     /** Per configuration and policy at the comparison load: each task's miss ratio and response time over released jobs. */
-    void deadlineAccounting() {
+    void deadlineAccounting() throws IOException {
         line("### 2.2 Deadline accounting per task (Table 2)");
         line("");
         Integer n = data.compareCount();
@@ -45,11 +45,25 @@ final class EvaluationQuestions extends EvaluationSections {
         }
         table(List.of("configuration", "policy", "runs", "predict miss ratio", "update miss ratio", "predict response p99 (ms)",
                 "update response p99 (ms)", "thesis missCount"), rows);
+        for (String policy : List.of("skip", "queue")) {
+            List<ReportModel.Cell> cs = at.stream().filter(c -> c.policy.equals(policy)).toList();
+            if (cs.isEmpty()) {
+                continue;
+            }
+            for (String task : List.of("predict", "update")) {
+                String stem = "completion-" + task + "-" + policy + "-" + n;
+                figure(stem, String.format(Locale.ROOT, "Figure 2%s: %s, policy %s, %d particles: the fraction of released jobs "
+                                + "completed within a response time (every repetition merged); a curve that ends below 1 dropped or "
+                                + "aborted jobs.", task.equals("predict") ? (policy.equals("skip") ? "a" : "c") : (policy.equals("skip") ? "b" : "d"),
+                        task, policy, n),
+                        () -> charts.write(TaskCharts.responseCompletion(scope(policy, n, cs), task).withStem(stem)));
+            }
+        }
         findings.add(String.format(Locale.ROOT, "Per-task deadline accounting at %d particles: Table 2 (2.2).", n));
     }
 
     /** The thesis's section 5.3: the same runtime under the default scheduler and under SCHED_FIFO pinned to one CPU. */
-    void scheduling() {
+    void scheduling() throws IOException {
         line("### 2.7 Generic vs real-time scheduling (Table 7)");
         line("");
         List<ReportModel.Cell> fifo = data.cells(c -> c.ok > 0 && data.info(c).profile() != null && data.info(c).profile().contains("fifo"));
@@ -80,10 +94,17 @@ final class EvaluationQuestions extends EvaluationSections {
                 + "given; scheduling as the runs recorded it.");
         line("");
         table(List.of("configuration", "particles", "policy", "runs", "miss ratio", "jitter p99 (ms)", "latency p99 (ms)", "scheduling"), rows);
+        ReportModel.Cell first = fifo.get(0);
+        List<ReportModel.Cell> compared = data.cells(c -> c.ok > 0 && c.particles == first.particles && c.policy.equals(first.policy)
+                && EvaluationDocument.idle(c) && fifo.stream().anyMatch(f -> data.info(f).runtime().equals(data.info(c).runtime())
+                || data.isNative(c)));
+        figure("scheduling", "Figure 7: release jitter p99 under the default scheduler and under SCHED_FIFO pinned, per runtime "
+                + "(mean, 95% CI cut at zero).", () -> charts.write(TaskCharts.conditions(scope(first.policy, first.particles, compared),
+                "scheduling", "Generic vs real-time scheduling", Metric.JITTER_P99, c -> data.info(c).profile()).withStem("scheduling")));
     }
 
     /** An idle machine against the same runs beside a CPU or allocation load (the thesis's further work). */
-    void load() {
+    void load() throws IOException {
         line("### 2.8 An idle vs a loaded machine (Table 8)");
         line("");
         List<ReportModel.Cell> loaded = data.cells(c -> c.ok > 0 && !EvaluationDocument.idle(c));
@@ -112,6 +133,12 @@ final class EvaluationQuestions extends EvaluationSections {
                 + "alloc allocates in another JVM).");
         line("");
         table(List.of("configuration", "particles", "policy", "runs", "miss ratio", "latency p99 (ms)", "jitter p99 (ms)"), rows);
+        ReportModel.Cell first = loaded.get(0);
+        List<ReportModel.Cell> compared = data.cells(c -> c.ok > 0 && c.particles == first.particles && c.policy.equals(first.policy)
+                && bases.contains(c.config.replace(StoredRun.loadLabel(c.load), "")));
+        figure("load", "Figure 8: task latency p99 on an idle machine and beside each load scenario, per configuration (mean, "
+                + "95% CI cut at zero).", () -> charts.write(TaskCharts.conditions(scope(first.policy, first.particles, compared), "load",
+                "Idle vs loaded machine", Metric.LATENCY_P99, c -> c.load).withStem("load")));
     }
 
     private static List<String> loadRow(ReportModel.Cell c) {
@@ -140,6 +167,11 @@ final class EvaluationQuestions extends EvaluationSections {
         line("");
         table(List.of("configuration", "dataset", "particles", "runs", "warm-up response p99", "steady response p99",
                 "warm-up missed or late", "steady missed or late"), rows);
+    }
+
+    /** The cells of one policy and particle count as a figure's scope. */
+    private ChartSpecs.Scope scope(String policy, int particles, List<ReportModel.Cell> cells) {
+        return new ChartSpecs.Scope(model, new ChartSpec.Setting(data.dataset, policy, particles), cells);
     }
 
     /** A metric of {@link ReportModel#WARMUP_METRICS}, as {@link EvaluationData#agg} writes a Metric. */

@@ -79,22 +79,10 @@ int jm_task_summary_compute(jm_task_summary *s, const jm_timeline *tl, int task)
 		if (j->outcome == JM_OUTCOME_PENDING)
 			continue; /* never released (a run cut short) */
 		s->released++;
-		switch (j->outcome) {
-		case JM_OUTCOME_DONE:
-			s->done++;
-			break;
-		case JM_OUTCOME_LATE:
-			s->late++;
-			break;
-		case JM_OUTCOME_SKIPPED:
-			s->skipped++;
-			break;
-		case JM_OUTCOME_TERMINATED:
-			s->terminated++;
-			break;
-		default:
-			break;
-		}
+		s->done += j->outcome == JM_OUTCOME_DONE;
+		s->late += j->outcome == JM_OUTCOME_LATE;
+		s->skipped += j->outcome == JM_OUTCOME_SKIPPED;
+		s->terminated += j->outcome == JM_OUTCOME_TERMINATED;
 		if (j->start_ns >= 0 && j->release_ns >= 0)
 			v[0][nv[0]++] = j->start_ns - j->release_ns;
 		/* latency and response time of completed jobs only: an aborted job's end is no answer */

@@ -2,20 +2,17 @@ package org.jmclbench.tooling.runner;
 
 import java.io.PrintStream;
 import java.nio.file.Path;
-import java.time.Instant;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
-import java.util.UUID;
 import java.util.concurrent.Callable;
 import java.util.function.IntFunction;
 import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.doctor.Doctor;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
-import org.jmclbench.tooling.runtime.ProfileProbe;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.store.MachineInfo;
 import org.jmclbench.tooling.store.RunRecorder;
@@ -114,11 +111,7 @@ public final class CapacityCommand implements Callable<Integer> {
                 CapacitySearch search = e.getValue();
                 for (int n = search.next(); n > 0; n = search.next()) {
                     ResolvedMatrix m = MatrixPlanner.resolve(at.apply(n), RuntimeDiscovery::discover, home, machine);
-                    String matrixId = UUID.randomUUID().toString();
-                    store.saveMatrix(matrixId, machine.machineId(), command, m.orderSeed(), Instant.now().toString(),
-                            MatrixSession.specJson(m));
-                    MatrixRunner runner = new MatrixRunner(m, store, machine, matrixId, home, JmclbenchPaths.workloadJar(),
-                            ProfileProbe.withUserCache());
+                    MatrixRunner runner = MatrixRunner.begin(m, store, machine, command, home, JmclbenchPaths.workloadJar());
                     List<PlannedRun> mine = m.plan().stream().filter(r -> Configuration.of(r).equals(c)).toList();
                     Set<String> keys = mine.stream().map(PlannedRun::runKey).collect(Collectors.toSet());
                     runner.run(runner.remaining(false).stream().filter(r -> keys.contains(r.runKey())).toList(),

@@ -10,6 +10,7 @@ import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.UUID;
 
 import org.jmclbench.tooling.attribution.AttributionData;
 import org.jmclbench.tooling.attribution.RunInstrumentation;
@@ -44,20 +45,34 @@ public final class MatrixRunner {
     private final ResolvedMatrix matrix;
     private final RunRecorder store;
     private final MachineInfo machine;
-    private final String matrixId;
+    private final String matrixId = UUID.randomUUID().toString();
     private final Path home;
     private final Path jar;
-    private final ProfileProbe probe;
+    private final ProfileProbe probe = ProfileProbe.withUserCache();
 
-    public MatrixRunner(ResolvedMatrix matrix, RunRecorder store, MachineInfo machine, String matrixId, Path home,
-                        Path jar, ProfileProbe probe) {
+    private MatrixRunner(ResolvedMatrix matrix, RunRecorder store, MachineInfo machine, Path home, Path jar) {
         this.matrix = matrix;
         this.store = store;
         this.machine = machine;
-        this.matrixId = matrixId;
         this.home = home;
         this.jar = jar;
-        this.probe = probe;
+    }
+
+    /**
+     * Records a new matrix of {@code matrix}'s runs in {@code store} (a fresh id, the command that
+     * asked for it, the order seed and the resolved settings) and gives the runner of its runs.
+     */
+    public static MatrixRunner begin(ResolvedMatrix matrix, RunRecorder store, MachineInfo machine, String command,
+                                     Path home, Path jar) throws SQLException, IOException {
+        MatrixRunner r = new MatrixRunner(matrix, store, machine, home, jar);
+        store.saveMatrix(r.matrixId, machine.machineId(), command, matrix.orderSeed(), Instant.now().toString(),
+                MatrixSession.specJson(matrix));
+        return r;
+    }
+
+    /** The matrix's id in the store. */
+    public String matrixId() {
+        return matrixId;
     }
 
     /** The runs still to do: not in the store, or failed/timed out when {@code retryFailed}. */

@@ -67,9 +67,12 @@ public final class ReportModel {
     /**
      * A memory area of a configuration over its completed repetitions: the largest size and peak
      * (bytes; for a handler's private memory, the peak of one release), the mean bytes allocated per
-     * release; null where no run told.
+     * release, and the releases measured and those that allocated anything, summed over the runs
+     * (a preallocated release style shows 0 of N, or a JIT one-off such as 1 of N on HotSpot:
+     * rtsj-compat/README.md); null where no run told.
      */
-    public record MemoryArea(String name, Long size, Long peakBytes, Double bytesPerRelease, int runs) {
+    public record MemoryArea(String name, Long size, Long peakBytes, Double bytesPerRelease, int runs,
+                             Long releases, Long allocatingReleases) {
     }
 
     /** Areas in the order of the memory chart: the heap, then SCJ's from the longest-lived, then the handlers' private ones. */
@@ -295,10 +298,24 @@ public final class ReportModel {
             List<Double> perRelease = as.stream().map(MemoryAreaRow::bytesPerRelease).filter(v -> v != null).toList();
             Double mean = perRelease.isEmpty() ? null
                     : SeriesTable.round(perRelease.stream().mapToDouble(Double::doubleValue).average().orElse(0));
-            out.add(new MemoryArea(e.getKey(), size, peak, mean, as.size()));
+            out.add(new MemoryArea(e.getKey(), size, peak, mean, as.size(),
+                    summedAreaField(ok, e.getKey(), "releases"), summedAreaField(ok, e.getKey(), "allocatingReleases")));
         }
         out.sort(Comparator.comparingInt((MemoryArea a) -> areaRank(a.name())));
         return out;
+    }
+
+    /** An area's summary.json field summed over the runs that have it (not in the store's columns); null when none has. */
+    static Long summedAreaField(List<StoredRun> ok, String area, String field) {
+        Long sum = null;
+        for (StoredRun r : ok) {
+            for (JsonNode a : r.summary().path("memory").path("areas")) {
+                if (area.equals(a.path("name").asText()) && a.path(field).isNumber()) {
+                    sum = (sum == null ? 0 : sum) + a.path(field).asLong();
+                }
+            }
+        }
+        return sum;
     }
 
     /**

@@ -89,21 +89,32 @@ public final class ReportModel {
                               String virtualization, List<Map<String, String>> checks) {
     }
 
-    /** Mean over repetitions with its 95% interval half-width (null when it cannot be made). */
-    public record Agg(int n, Double mean, Double half, Double min, Double max) {
+    /**
+     * Mean over repetitions with its 95% percentile-bootstrap interval [low, high] (null when it
+     * cannot be made: one repetition), the range, and the per-run values the separation test needs
+     * ({@link Separation}; not on the page).
+     */
+    public record Agg(int n, Double mean, Double low, Double high, Double min, Double max,
+                      @JsonIgnore double[] values) {
         static Agg of(List<Double> values) {
             double[] xs = values.stream().mapToDouble(Double::doubleValue).toArray();
             if (xs.length == 0) {
-                return new Agg(0, null, null, null, null);
+                return new Agg(0, null, null, null, null, null, xs);
             }
-            Stats.MeanCi ci = Stats.meanCi(xs);
+            Stats.Interval ci = Stats.bootstrapMean(xs);
             double min = Double.POSITIVE_INFINITY;
             double max = Double.NEGATIVE_INFINITY;
             for (double x : xs) {
                 min = Math.min(min, x);
                 max = Math.max(max, x);
             }
-            return new Agg(xs.length, finite(ci.mean()), finite(ci.halfWidth()), min, max);
+            return new Agg(xs.length, finite(ci.estimate()), finite(ci.low()), finite(ci.high()), min, max, xs);
+        }
+
+        /** The mean and its interval as {@link Stats.Interval} (NaN where null). */
+        public Stats.Interval interval() {
+            return new Stats.Interval(mean == null ? Double.NaN : mean, low == null ? Double.NaN : low,
+                    high == null ? Double.NaN : high);
         }
     }
 
@@ -167,6 +178,9 @@ public final class ReportModel {
         public List<String> pauseKinds = new ArrayList<>();
         /** The configuration's memory areas (empty when its runs reported none). */
         public List<MemoryArea> memoryAreas = new ArrayList<>();
+        /** Per task (predict, update, all): {released, deadline misses} summed over the completed runs that report them. */
+        @JsonIgnore
+        public Map<String, long[]> deadlines = new LinkedHashMap<>();
     }
 
     /** Extra per-cell aggregates (not {@link Metric}s): the warm-up split of the attribution, in ms and jobs per run. */
@@ -274,6 +288,7 @@ public final class ReportModel {
             c.metrics.put(e.getKey(), Agg.of(values));
         }
         c.causes = causes(ok);
+        c.deadlines = deadlines(ok);
         c.memoryAreas = memoryAreas(ok);
         if (ok.isEmpty()) {
             return c;
@@ -302,6 +317,29 @@ public final class ReportModel {
                     summedAreaField(ok, e.getKey(), "releases"), summedAreaField(ok, e.getKey(), "allocatingReleases")));
         }
         out.sort(Comparator.comparingInt((MemoryArea a) -> areaRank(a.name())));
+        return out;
+    }
+
+    /**
+     * Per task, released jobs and deadline misses (summary.json tasks.T.released and deadlineMisses,
+     * else late + skipped + terminated) summed over the runs: the counts behind a pooled miss ratio.
+     */
+    static Map<String, long[]> deadlines(List<StoredRun> ok) {
+        Map<String, long[]> out = new LinkedHashMap<>();
+        for (StoredRun r : ok) {
+            JsonNode tasks = r.summary().path("tasks");
+            for (String task : List.of("predict", "update", "all")) {
+                JsonNode t = tasks.path(task);
+                if (!t.path("released").isNumber()) {
+                    continue;
+                }
+                long misses = t.has("deadlineMisses") ? t.path("deadlineMisses").asLong()
+                        : t.path("late").asLong() + t.path("skipped").asLong() + t.path("terminated").asLong();
+                long[] sum = out.computeIfAbsent(task, k -> new long[2]);
+                sum[0] += t.path("released").asLong();
+                sum[1] += misses;
+            }
+        }
         return out;
     }
 

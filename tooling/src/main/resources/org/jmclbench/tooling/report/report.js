@@ -39,7 +39,7 @@
   }
   function fmtCi(agg, digits) {
     if (!agg || agg.mean === null) { return '\u2013'; }
-    return agg.half === null ? fmt(agg.mean, digits) : fmt(agg.mean, digits) + ' \u00b1 ' + fmt(agg.half, digits);
+    return agg.low === null ? fmt(agg.mean, digits) : fmt(agg.mean, digits) + ' [' + fmt(agg.low, digits) + ', ' + fmt(agg.high, digits) + ']';
   }
 
   function cellsWhere(pred) { return DATA.cells.filter(pred); }
@@ -185,7 +185,7 @@
       row.texts.memory = c.memory; row.values.memory = c.memory;
       COLUMNS.forEach(function (col) {
         if (!col.metric) { return; }
-        var agg = c.metrics[col.metric] || { mean: null, max: null, half: null };
+        var agg = c.metrics[col.metric] || { mean: null, max: null, low: null, high: null };
         var v = col.stat === 'max' ? agg.max : agg.mean;
         row.values[col.key] = v;
         row.texts[col.key] = col.ci ? fmtCi(agg) : fmt(v);

@@ -165,7 +165,7 @@ class EvaluationDocumentTest {
         for (List<String> row : rows) {
             for (int i = 0; i < counts.size(); i++) {
                 Double m = mean(row.get(0), "skip", counts.get(i), Metric.MISS_COUNT);
-                assertTrue(row.get(i + 1).startsWith(num(m, 1) + " ± "), row.get(0) + " at " + counts.get(i) + ": " + row.get(i + 1));
+                assertTrue(row.get(i + 1).startsWith(num(m, 1) + " ["), row.get(0) + " at " + counts.get(i) + ": " + row.get(i + 1));
             }
         }
     }
@@ -212,7 +212,7 @@ class EvaluationDocumentTest {
         double c = mean(nativeConfig(), "skip", ref, Metric.LATENCY_MEAN);
         for (List<String> row : rows) {
             double lat = mean(row.get(0), "skip", ref, Metric.LATENCY_MEAN);
-            assertTrue(row.get(1).startsWith(num(lat, 3) + " ± "), row.toString());
+            assertTrue(row.get(1).startsWith(num(lat, 3) + " ["), row.toString());
             assertTrue(row.get(5).startsWith(num(mean(row.get(0), "skip", ref, Metric.JITTER_P99), 3)), row.toString());
             assertEquals(num(lat / c, 2) + "x", row.get(6));
         }

@@ -178,6 +178,12 @@ public final class ReportModel {
         public List<String> pauseKinds = new ArrayList<>();
         /** The configuration's memory areas (empty when its runs reported none). */
         public List<MemoryArea> memoryAreas = new ArrayList<>();
+        /**
+         * For misses per run, {@link Separation}'s verdict against each other configuration at the
+         * same setting (dataset, policy, particles): A_LOWER when this cell is lower, B_LOWER, NOT_SEPARATED
+         * or TOO_FEW; the page's headline names the lowest only together with what it is not separated from.
+         */
+        public Map<String, String> missSeparation = new LinkedHashMap<>();
         /** Per task (predict, update, all): {released, deadline misses} summed over the completed runs that report them. */
         @JsonIgnore
         public Map<String, long[]> deadlines = new LinkedHashMap<>();
@@ -238,6 +244,7 @@ public final class ReportModel {
                 last = System.nanoTime();
             }
         }
+        separateMisses(m.cells);
         m.defaults = defaults(m, runs);
         m.charts = ChartSpecs.all(m);
         return m;
@@ -318,6 +325,28 @@ public final class ReportModel {
         }
         out.sort(Comparator.comparingInt((MemoryArea a) -> areaRank(a.name())));
         return out;
+    }
+
+    /** Fills each cell's {@link Cell#missSeparation} against the other cells of its setting. */
+    static void separateMisses(List<Cell> cells) {
+        Map<String, List<Cell>> bySetting = new LinkedHashMap<>();
+        cells.forEach(c -> bySetting.computeIfAbsent(c.dataset + "\u0000" + c.policy + "\u0000" + c.particles, k -> new ArrayList<>()).add(c));
+        for (List<Cell> setting : bySetting.values()) {
+            for (int i = 0; i < setting.size(); i++) {
+                for (int j = i + 1; j < setting.size(); j++) {
+                    Cell a = setting.get(i);
+                    Cell b = setting.get(j);
+                    Separation.Verdict v = Separation.of(EvaluationData.values(a, Metric.MISS_COUNT),
+                            EvaluationData.values(b, Metric.MISS_COUNT)).verdict();
+                    a.missSeparation.put(b.config, v.name());
+                    b.missSeparation.put(a.config, switch (v) {
+                        case A_LOWER -> Separation.Verdict.B_LOWER.name();
+                        case B_LOWER -> Separation.Verdict.A_LOWER.name();
+                        default -> v.name();
+                    });
+                }
+            }
+        }
     }
 
     /**

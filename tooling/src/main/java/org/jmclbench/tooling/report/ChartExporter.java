@@ -41,7 +41,6 @@ import org.jfree.chart.renderer.category.BarRenderer;
 import org.jfree.chart.renderer.category.CategoryItemRendererState;
 import org.jfree.chart.renderer.category.StackedBarRenderer;
 import org.jfree.chart.renderer.category.StandardBarPainter;
-import org.jfree.chart.renderer.category.StatisticalBarRenderer;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
 import org.jfree.chart.title.TextTitle;
 import org.jfree.chart.ui.Layer;
@@ -49,7 +48,6 @@ import org.jfree.chart.ui.RectangleEdge;
 import org.jfree.chart.ui.TextAnchor;
 import org.jfree.data.category.CategoryDataset;
 import org.jfree.data.category.DefaultCategoryDataset;
-import org.jfree.data.statistics.DefaultStatisticalCategoryDataset;
 import org.jfree.data.xy.XYSeries;
 import org.jfree.data.xy.XYSeriesCollection;
 import org.jfree.svg.SVGGraphics2D;
@@ -127,9 +125,10 @@ final class ChartExporter {
     private static JFreeChart bars(ChartSpec spec) {
         boolean log = spec.y().scale() == ChartSpec.Scale.LOG;
         boolean withErrors = spec.series().stream().anyMatch(s -> s.errors() != null);
-        DefaultStatisticalCategoryDataset stats = new DefaultStatisticalCategoryDataset();
         DefaultCategoryDataset plain = new DefaultCategoryDataset();
-        for (ChartSpec.Series s : spec.series()) {
+        ErrorBarRenderer errorBars = withErrors && spec.kind() != ChartSpec.Kind.STACKED_BARS ? new ErrorBarRenderer() : null;
+        for (int row = 0; row < spec.series().size(); row++) {
+            ChartSpec.Series s = spec.series().get(row);
             for (int i = 0; i < spec.categories().size(); i++) {
                 String category = spec.categories().get(i).label();
                 Double v = s.values().get(i);
@@ -139,22 +138,14 @@ final class ChartExporter {
                 if (log && v != null && v <= 0) {
                     v = null; // nothing to draw on a log axis
                 }
-                if (withErrors) {
-                    double[] e = s.errors() == null ? null : s.errors().get(i);
-                    if (v != null) {
-                        // symmetric about the mean; the axis starts at zero, which cuts the interval as the page does
-                        stats.add(v.doubleValue(), e == null ? 0.0 : e[1] - v, s.name(), category);
-                    }
-                } else {
-                    plain.addValue(v, s.name(), category);
+                plain.addValue(v, s.name(), category);
+                if (errorBars != null && s.errors() != null) {
+                    errorBars.interval(row, i, s.errors().get(i)); // [low, high], not symmetric about the mean
                 }
             }
         }
         BarRenderer renderer = spec.kind() == ChartSpec.Kind.STACKED_BARS ? new StackedBarRenderer()
-                : withErrors ? new StatisticalBarRenderer() : perItemColours(spec);
-        if (renderer instanceof StatisticalBarRenderer sr) {
-            sr.setErrorIndicatorPaint(Color.BLACK);
-        }
+                : errorBars != null ? errorBars : perItemColours(spec);
         renderer.setShadowVisible(false);
         renderer.setBarPainter(new StandardBarPainter());
         for (int i = 0; i < spec.series().size(); i++) {
@@ -174,7 +165,7 @@ final class ChartExporter {
         if (y instanceof NumberAxis n) {
             n.setUpperMargin(spec.valueLabels() ? 0.12 : n.getUpperMargin());
         }
-        CategoryPlot plot = new CategoryPlot(withErrors ? stats : plain, x, y, renderer);
+        CategoryPlot plot = new CategoryPlot(plain, x, y, renderer);
         floor(y, spec.y());
         plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
         if (spec.horizontal()) {

@@ -207,7 +207,7 @@ final class ChartSpecs {
         return vsParticles(s, "deviation", "Mean deviation vs particles", "deviation xy (m, mean, 95% CI)", Metric.DEVIATION);
     }
 
-    /** Bars per particle count, one per runtime, with the 95% interval cut at zero (a count or a distance is never negative). */
+    /** Bars per particle count, one per runtime, with the 95% bootstrap interval of the mean (within the runs' range: never below zero). */
     private static ChartSpec vsParticles(Scope s, String id, String title, String yLabel, Metric metric) {
         List<Integer> counts = s.cells().stream().map(c -> c.particles).distinct().sorted().toList();
         List<Series> series = new ArrayList<>();
@@ -219,7 +219,7 @@ final class ChartSpecs {
                         .map(c -> c.metrics.get(metric.name())).findFirst().orElse(null);
                 boolean has = a != null && a.mean() != null;
                 values.add(has ? a.mean() : null);
-                errors.add(has && a.half() != null ? new double[] {Math.max(0, a.mean() - a.half()), a.mean() + a.half()} : null);
+                errors.add(has && a.low() != null ? new double[] {a.low(), a.high()} : null);
             }
             if (values.stream().anyMatch(v -> v != null)) {
                 series.add(new Series(config, config, engine, s.color(config), Style.BAR, null, values, errors, null, null));

@@ -195,24 +195,47 @@ final class EvaluationData {
         return d == null ? 0 : d;
     }
 
-    /** {@code mean ± half} with {@code decimals} digits; the half-width is left out with one repetition. */
+    /**
+     * {@code mean [low, high]} with {@code decimals} digits: the mean over repetitions and its 95%
+     * percentile-bootstrap interval (never below zero; the mean alone with one repetition).
+     */
     static String agg(ReportModel.Cell c, Metric m, int decimals) {
         ReportModel.Agg a = c.metrics.get(m.name());
         if (a == null || a.mean() == null) {
             return "n/a";
         }
-        return a.half() == null ? num(a.mean(), decimals) : num(a.mean(), decimals) + " ± " + num(a.half(), decimals);
+        return a.interval().text(decimals);
     }
 
-    /** Whether the 95% intervals of two cells separate them, said in a sentence. */
+    /** {@link Separation}'s rule applied to two cells' per-run values of a metric. */
+    static Separation.Result separate(ReportModel.Cell a, ReportModel.Cell b, Metric m) {
+        return Separation.of(values(a, m), values(b, m));
+    }
+
+    /** The per-run values of a metric in a cell (none when the cell has no such metric). */
+    static double[] values(ReportModel.Cell c, Metric m) {
+        ReportModel.Agg x = c.metrics.get(m.name());
+        return x == null || x.values() == null ? new double[0] : x.values();
+    }
+
+    /**
+     * Whether two cells differ in a metric, said in a sentence with the test behind it, e.g.
+     * "Mann-Whitney U with the bootstrap interval of the ratio (docs/REPORT.md): native lower than
+     * temurin-25 (p &lt; 0.001, n = 10 vs 10)." or "...: not separated (p = 0.412, n = 10 vs 10)."
+     */
     static String separation(ReportModel.Cell a, ReportModel.Cell b, Metric m) {
-        ReportModel.Agg x = a.metrics.get(m.name());
-        ReportModel.Agg y = b.metrics.get(m.name());
-        if (x == null || y == null || x.half() == null || y.half() == null || x.mean() == null || y.mean() == null) {
-            return "With a single repetition the difference has no confidence interval.";
-        }
-        boolean apart = x.mean() + x.half() < y.mean() - y.half() || y.mean() + y.half() < x.mean() - x.half();
-        return apart ? "Their 95% confidence intervals do not overlap." : "Their 95% confidence intervals overlap: the store does not separate them.";
+        return "Mann-Whitney U with the bootstrap interval of the ratio (docs/REPORT.md): "
+                + separate(a, b, m).text(a.config, b.config) + ".";
+    }
+
+    /**
+     * A task's miss ratio in a cell (jobs not completed by their deadline over jobs released,
+     * pooled over the completed repetitions) with its 95% Wilson interval; NaN when nothing was
+     * released. {@code task}: predict, update or all.
+     */
+    static Stats.Interval missRatio(ReportModel.Cell c, String task) {
+        long[] d = c.deadlines.get(task);
+        return d == null ? Stats.wilson(0, 0) : Stats.wilson(d[1], d[0]);
     }
 
     static String ratio(Double a, Double b) {

@@ -159,9 +159,11 @@ public final class EvaluationDocument extends EvaluationSections {
         IntSummary reps = data.repetitions();
         line(String.format(Locale.ROOT, "**Runs.** %d runs in the store, %d completed. Each configuration and setting "
                 + "completed %s repetitions; runs were shuffled within each repetition round so that drift of the machine spreads over "
-                + "every configuration. Values are means over the completed repetitions with a 95%% Student-t confidence "
-                + "interval (`mean ± half-width`); two configurations are told apart only where their intervals do not overlap. "
-                + "Each run is a fresh process.", total, ok, reps.text()));
+                + "every configuration. Values are means over the completed repetitions with a 95%% percentile-bootstrap "
+                + "interval (`mean [low, high]`), which never leaves the range of the quantity; a miss ratio is pooled over the "
+                + "repetitions with a 95%% Wilson interval. Two configurations are called different only by one rule (docs/REPORT.md): "
+                + "at least 10 runs a side, the Mann-Whitney U test at 0.05, and the bootstrap interval of the ratio of their means "
+                + "wholly on one side of 1; anything else is said as not separated. Each run is a fresh process.", total, ok, reps.text()));
         line("");
         line("**What was cut to fit the time budget.**");
         line("");

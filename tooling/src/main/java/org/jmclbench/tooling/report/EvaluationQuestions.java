@@ -34,8 +34,8 @@ final class EvaluationQuestions extends EvaluationSections {
             return;
         }
         line(String.format(Locale.ROOT, "Table 2: at %d particles (the load with the most repetitions), per configuration and "
-                + "policy: each task's miss ratio (late + dropped + aborted over released, mean over repetitions with its "
-                + "interval) and its response time p99 over every released job (∞ where a dropped or aborted job falls in the "
+                + "policy: each task's miss ratio (late + dropped + aborted over released, pooled over the repetitions, "
+                + "with its 95%% Wilson interval) and its response time p99 over every released job (∞ where a dropped or aborted job falls in the "
                 + "top 1%%: such a run did not complete 99%% of its jobs, however fast the others were).", n));
         line("");
         List<List<String>> rows = new ArrayList<>();
@@ -180,16 +180,16 @@ final class EvaluationQuestions extends EvaluationSections {
         if (a == null || a.mean() == null) {
             return "n/a";
         }
-        return a.half() == null ? num(a.mean(), decimals) : num(a.mean(), decimals) + " ± " + num(a.half(), decimals);
+        return a.interval().text(decimals);
     }
 
-    /** A task's miss ratio as a percentage with its interval. */
+    /** A task's miss ratio, pooled over the repetitions, as a percentage with its 95% Wilson interval. */
     static String percent(ReportModel.Cell c, String task) {
-        ReportModel.Agg a = c.metrics.get(TaskMetric.MISS_RATIO.key(task));
-        if (a == null || a.mean() == null) {
+        Stats.Interval i = EvaluationData.missRatio(c, task);
+        if (Double.isNaN(i.estimate())) {
             return "n/a";
         }
-        return num(100 * a.mean(), 2) + "%" + (a.half() == null ? "" : " ± " + num(100 * a.half(), 2));
+        return new Stats.Interval(100 * i.estimate(), 100 * i.low(), 100 * i.high()).text(2) + " %";
     }
 
     /** A task's response time p99 over released jobs, infinite when a dropped or aborted job is in some run's top 1%. */
@@ -201,7 +201,7 @@ final class EvaluationQuestions extends EvaluationSections {
         if (a.max() != null && a.max().isInfinite()) {
             return "∞ (in at least one of " + a.n() + " runs)";
         }
-        return a.half() == null ? num(a.mean(), 3) : num(a.mean(), 3) + " ± " + num(a.half(), 3);
+        return a.interval().text(3);
     }
 
     /** "A's x is ... against B's ...", with whether the intervals separate them. */

@@ -75,8 +75,9 @@ class ChartSpecsTest {
                 ReportModel.Agg a = cell(s.config(), "skip", List.of(100, 400, 1600).get(i)).metrics.get("MISS_COUNT");
                 assertEquals(a.mean(), s.values().get(i));
                 double[] e = s.errors().get(i);
-                assertEquals(Math.max(0, a.mean() - a.half()), e[0], 1e-12);
-                assertEquals(a.mean() + a.half(), e[1], 1e-12);
+                assertEquals(a.low(), e[0], 1e-12);
+                assertEquals(a.high(), e[1], 1e-12);
+                assertTrue(e[0] >= a.min() && e[1] <= a.max(), "a bootstrap interval stays in the runs' range");
             }
         }
         assertEquals(0.0, misses.y().min());

@@ -62,6 +62,20 @@ class EngineReportTest {
     }
 
     @Test
+    void theReleasesThatAllocatedAreSummedOverTheRunsFromTheirSummaries() {
+        java.util.List<org.jmclbench.tooling.store.StoredRun> runs = new java.util.ArrayList<>();
+        for (int allocating : new int[] {1, 0, 2}) {
+            org.jmclbench.tooling.store.StoredRun r = new org.jmclbench.tooling.store.StoredRun();
+            r.summaryJson = "{\"memory\": {\"areas\": [{\"name\": \"update\", \"releases\": 90, \"allocatingReleases\": "
+                    + allocating + "}, {\"name\": \"mission\", \"releases\": null}]}}";
+            runs.add(r);
+        }
+        assertEquals(270L, ReportModel.summedAreaField(runs, "update", "releases"));
+        assertEquals(3L, ReportModel.summedAreaField(runs, "update", "allocatingReleases"));
+        assertEquals(null, ReportModel.summedAreaField(runs, "mission", "releases"), "no run told");
+    }
+
+    @Test
     void theMemoryChartIsExportedWithEveryArea() throws Exception {
         Path db = ReportFixtures.write(ReportFixtures.engines(), dir, "results.db");
         Path out = dir.resolve("report");

@@ -186,17 +186,11 @@ public final class RunWriter {
             j.beginObject();
             j.name("name").value(a.name);
             j.name("size").value(a.size);
-            j.name("peakBytes");
-            if (a.peakBytes == null) {
-                j.nullValue();
-            } else {
-                j.value(a.peakBytes.longValue());
-            }
-            j.name("bytesPerRelease");
-            if (a.bytesPerRelease == null) {
-                j.nullValue();
-            } else {
-                j.value(a.bytesPerRelease.longValue());
+            nullableLong(j, "peakBytes", a.peakBytes);
+            nullableLong(j, "bytesPerRelease", a.bytesPerRelease);
+            if (a.releases != null) {
+                nullableLong(j, "releases", a.releases);
+                nullableLong(j, "allocatingReleases", a.allocatingReleases);
             }
             j.endObject();
         }
@@ -210,6 +204,15 @@ public final class RunWriter {
         j.endObject();
         j.endObject();
         return j.toString();
+    }
+
+    private static void nullableLong(Json j, String name, Long value) {
+        j.name(name);
+        if (value == null) {
+            j.nullValue();
+        } else {
+            j.value(value.longValue());
+        }
     }
 
     private static void meanMax(Json j, String name, double mean, double max) {

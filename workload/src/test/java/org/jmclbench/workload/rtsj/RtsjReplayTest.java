@@ -66,8 +66,9 @@ class RtsjReplayTest {
         assertEquals(JobRecords.TERMINATED, r.outcome[0]);
         assertEquals(JobRecords.DONE, r.outcome[1]);
         assertEquals(1, job.commits.get(), "only the second job committed");
-        assertTrue(replay.abortRequestNs[0] >= 0, "an AIE was fired at the first job");
-        long latency = replay.abortEndNs[0] - replay.abortRequestNs[0];
+        assertEquals(-1, r.abortFromNs(1), "nothing asked the last job to abort");
+        assertTrue(r.abortFromNs(0) >= 0, "an AIE was fired at the first job");
+        long latency = r.endNs[0] - r.abortFromNs(0);
         assertTrue(latency < JOB_NS / 2, "aborted at a poll, not at the job's end: " + latency + " ns");
     }
 
@@ -79,8 +80,8 @@ class RtsjReplayTest {
         replay.run(60_000_000_000L);
         assertNotEquals(JobRecords.TERMINATED, r.outcome[0], "the robot's monitor defers the AIE");
         assertEquals(2, job.commits.get());
-        assertTrue(replay.abortRequestNs[0] >= 0, "an AIE was fired at the first job");
-        long latency = replay.abortEndNs[0] - replay.abortRequestNs[0];
+        assertTrue(r.abortFromNs(0) >= 0, "an AIE was fired at the first job");
+        long latency = r.endNs[0] - r.abortFromNs(0);
         assertTrue(latency >= JOB_NS - SECOND_RELEASE_NS - 20_000_000L,
                 "the abort took the job's remaining time: " + latency + " ns");
     }

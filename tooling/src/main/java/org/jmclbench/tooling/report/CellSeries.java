@@ -11,8 +11,8 @@ import org.HdrHistogram.Histogram;
 import org.HdrHistogram.HistogramIterationValue;
 
 /**
- * The series of a cell read from the store: the merged histograms' latency spectrum and jitter
- * CDF, the first repetition's task latencies, pauses and trajectory, the repetitions' deviation.
+ * The series of a cell read from the store: the merged histograms' latency and abort latency
+ * spectra and jitter CDF, the first repetition's task latencies, pauses and trajectory, the repetitions' deviation.
  */
 final class CellSeries {
 
@@ -29,15 +29,8 @@ final class CellSeries {
     /** Fills the series of {@code c} from its completed runs {@code ok} (at least one). */
     static void read(StoredRuns store, List<StoredRun> ok, ReportModel.Cell c) {
     List<String> keys = ok.stream().map(r -> r.runKey).toList();
-    Histogram latency = merged(store.histograms(keys, "all", "taskLatencyNs"));
-    if (latency != null) {
-        for (HistogramIterationValue v : latency.percentiles(5)) {
-            double p = v.getPercentileLevelIteratedTo();
-            double x = p >= 100 ? 1e7 : Math.min(1e7, 100.0 / (100.0 - p));
-            c.latencySpectrum.add(new double[] {SeriesTable.round(x), SeriesTable.round(v.getValueIteratedTo() / 1e6),
-                    SeriesTable.round(p)});
-        }
-    }
+    spectrum(merged(store.histograms(keys, "all", "taskLatencyNs")), c.latencySpectrum);
+    spectrum(merged(store.histograms(keys, "all", "abortLatencyNs")), c.abortSpectrum);
     Histogram jitter = merged(store.histograms(keys, "all", "releaseJitterNs"));
     if (jitter != null) {
         for (HistogramIterationValue v : jitter.percentiles(5)) {
@@ -155,6 +148,18 @@ final class CellSeries {
             }
         }
         return out;
+    }
+
+    /** [1/(1-p), value ms, percentile] points of a histogram (none when it is null). */
+    private static void spectrum(Histogram h, List<double[]> out) {
+        if (h == null) {
+            return;
+        }
+        for (HistogramIterationValue v : h.percentiles(5)) {
+            double p = v.getPercentileLevelIteratedTo();
+            double x = p >= 100 ? 1e7 : Math.min(1e7, 100.0 / (100.0 - p));
+            out.add(new double[] {SeriesTable.round(x), SeriesTable.round(v.getValueIteratedTo() / 1e6), SeriesTable.round(p)});
+        }
     }
 
     private static Histogram merged(Map<String, Histogram> histograms) {

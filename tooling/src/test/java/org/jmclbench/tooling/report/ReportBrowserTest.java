@@ -129,7 +129,8 @@ class ReportBrowserTest {
         return out;
     }
 
-    static Map<String, Integer> expected(int configs, int repetitions) {
+    /** The series per chart with {@code configs} runtimes, and {@code aborting} of them drawing abort latency (terminate). */
+    static Map<String, Integer> expected(int configs, int repetitions, int aborting) {
         Map<String, Integer> m = new LinkedHashMap<>();
         m.put("misses", configs);
         m.put("deviation", configs);
@@ -139,6 +140,7 @@ class ReportBrowserTest {
         m.put("deviation-time", configs * repetitions);
         m.put("trajectory", configs + 2);           // the real trajectory, one estimate per runtime, the beacons
         m.put("spectrum", configs);
+        m.put("abort-latency", aborting);            // a terminate figure: none at skip
         m.put("jitter-cdf", configs);
         m.put("memory", 1);                         // the Java SE engine's one area, the heap (native reports none)
         m.put("breakdown", 0);                      // a queue figure: the fixture's skip and terminate runs draw none
@@ -181,9 +183,9 @@ class ReportBrowserTest {
         Number requests = (Number) js().executeScript("return performance.getEntriesByType('resource').length");
         assertEquals(0, requests.intValue(), "the page fetched something");
         Number chartJs = (Number) js().executeScript("return Object.keys(window.jmclbenchCharts).length");
-        assertEquals(11, chartJs.intValue());
+        assertEquals(12, chartJs.intValue());
         // Four runtimes completed runs (the unsupported and the crashed one draw nothing), three repetitions each.
-        assertEquals(expected(4, 3), seriesPerChart());
+        assertEquals(expected(4, 3, 0), seriesPerChart());
         Number datasets = (Number) js().executeScript("return window.jmclbenchCharts['spectrum'].data.datasets.length");
         assertEquals(4, datasets.intValue(), "the hook agrees with Chart.js");
         assertEquals(6, tableConfigs().size(), "every runtime has a row, failed ones too");
@@ -294,7 +296,7 @@ class ReportBrowserTest {
         driver.findElement(By.cssSelector("#sel-configs input[value='temurin-17/g1']")).click();
         waitForRender(before);
         assertFalse(tableConfigs().contains("temurin-17/g1"));
-        assertEquals(expected(3, 3), seriesPerChart());
+        assertEquals(expected(3, 3, 3), seriesPerChart());
         assertEquals(List.of(XSS_CONFIG, "native", "temurin-25/zgc"), causeBars(), "the cause chart follows the runtimes chosen (legend order)");
         assertEquals(0.0, causeOf("native", "gc"), "native has no GC to blame");
         assertTrue(causeOf("temurin-25/zgc", "gc") > 0, "the fixture's JVM misses include GC-caused ones");
@@ -313,6 +315,6 @@ class ReportBrowserTest {
         new Select(driver.findElement(By.id("sel-policy"))).selectByValue("skip");
         new Select(driver.findElement(By.id("sel-particles"))).selectByValue("400");
         driver.findElement(By.cssSelector("#results-table th[data-key=config]")).click();
-        assertEquals(expected(4, 3), seriesPerChart());
+        assertEquals(expected(4, 3, 0), seriesPerChart());
     }
 }

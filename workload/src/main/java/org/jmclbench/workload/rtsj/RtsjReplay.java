@@ -270,6 +270,11 @@ final class RtsjReplay {
                     runJob(signal);
                 }
             } finally {
+                if (!committed && start >= 0) {
+                    // an aborted job ends here, before the robot is handed on (the next job's
+                    // thread may take the CPU at the unlock), as the other engines take its end
+                    end = System.nanoTime();
+                }
                 running = -1;
                 if (busy.isHeldByCurrentThread()) {
                     busy.unlock();
@@ -295,7 +300,7 @@ final class RtsjReplay {
                 r.endNs[k] = -1;
                 r.outcome[k] = JobRecords.TERMINATED; // superseded before it started
             } else {
-                long jobEnd = committed ? end : now;
+                long jobEnd = end >= 0 ? end : now;
                 r.startNs[k] = start - t0;
                 r.endNs[k] = jobEnd - t0;
                 if (!committed) {

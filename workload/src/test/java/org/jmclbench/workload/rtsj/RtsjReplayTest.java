@@ -81,9 +81,10 @@ class RtsjReplayTest {
         assertNotEquals(JobRecords.TERMINATED, r.outcome[0], "the robot's monitor defers the AIE");
         assertEquals(2, job.commits.get());
         assertTrue(r.abortFromNs(0) >= 0, "an AIE was fired at the first job");
-        long latency = r.endNs[0] - r.abortFromNs(0);
-        assertTrue(latency >= JOB_NS - SECOND_RELEASE_NS - 20_000_000L,
-                "the abort took the job's remaining time: " + latency + " ns");
+        // The abort took the job's remaining time: from the fire, the job ran on to the end of its
+        // 400 ms (not timed against the release: a late dispatcher fires later, leaving less).
+        assertTrue(r.endNs[0] - r.startNs[0] >= JOB_NS, "the job ran whole: " + (r.endNs[0] - r.startNs[0]) + " ns");
+        assertTrue(r.abortFromNs(0) < r.startNs[0] + JOB_NS, "fired while it ran");
     }
 
     @Test

@@ -125,6 +125,12 @@ class MissionTest {
                 if (policy == OverrunPolicy.SKIP) {
                     assertNotEquals(JobRecords.TERMINATED, r.outcome[k], "skip never aborts");
                 }
+                // An abort is asked only under terminate, and a job aborted while it ran was asked.
+                if (policy != OverrunPolicy.TERMINATE) {
+                    assertEquals(-1, r.abortNs[k], policy + ": event " + k + " asked to abort");
+                } else if (r.outcome[k] == JobRecords.TERMINATED && r.startNs[k] >= 0) {
+                    assertTrue(r.abortFromNs(k) >= r.startNs[k], "event " + k + " aborted unasked");
+                }
             }
             int dropped = 0;
             for (int k = 0; k < n; k++) {
@@ -172,6 +178,8 @@ class MissionTest {
         JobRecords r = l.records;
         assertEquals(JobRecords.TERMINATED, r.outcome[0], "the 300 ms job was not stopped at the next release");
         assertTrue(r.endNs[0] < r.releaseNs[0] + 250_000_000L, "stopped long before its 300 ms: " + r.endNs[0]);
+        // its abort was requested at the next release (the timed request; no other event came)
+        assertEquals(Math.max(r.releaseNs[1], r.startNs[0]), r.abortFromNs(0), "abort requested at the task's next release");
     }
 
     /** Ten odometry events 50 ms apart, one laser event after the last but one. */

@@ -161,6 +161,9 @@ public final class ReportModel {
         /** [1/(1-p), latency ms, percentile] of every job's task latency, all repetitions merged. */
         @JsonIgnore
         public List<double[]> latencySpectrum = new ArrayList<>();
+        /** [1/(1-p), abort latency ms, percentile] of every job an abort took hold of, all repetitions merged (terminate). */
+        @JsonIgnore
+        public List<double[]> abortSpectrum = new ArrayList<>();
         /** [release jitter ms, cumulative fraction], all repetitions merged. */
         @JsonIgnore
         public List<double[]> jitterCdf = new ArrayList<>();

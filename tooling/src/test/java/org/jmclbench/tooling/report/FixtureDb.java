@@ -325,6 +325,9 @@ public final class FixtureDb {
             if (responseHistograms) {
                 addHistogram(hist, key, t, "responseTimeNs", jobs, j -> j.latencyNs + j.jitterNs); // completed jobs only
             }
+            if (policy.equals("terminate")) {
+                addAbortHistogram(hist, key, t, jobs);
+            }
         }
 
         // Columns as the runner's ingest writes them (the outcome column is text there; a number here).
@@ -496,6 +499,19 @@ public final class FixtureDb {
         ps.setString(1, key);
         ps.setString(2, task);
         ps.setString(3, metric);
+        ps.setString(4, encode(h));
+        ps.addBatch();
+    }
+
+    /** Under terminate: every fourth job was asked to abort and ended a quarter of its latency later. */
+    private static void addAbortHistogram(PreparedStatement ps, String key, String task, Job[] jobs) throws SQLException {
+        Histogram h = new Histogram(3);
+        for (int i = 0; i < jobs.length; i += 4) {
+            h.recordValue((long) (jobs[i].latencyNs / 4));
+        }
+        ps.setString(1, key);
+        ps.setString(2, task);
+        ps.setString(3, "abortLatencyNs");
         ps.setString(4, encode(h));
         ps.addBatch();
     }

@@ -142,7 +142,8 @@ class ReportBrowserTest {
         return out;
     }
 
-    static Map<String, Integer> expected(int configs, int repetitions) {
+    /** The series per chart with {@code configs} runtimes, and {@code aborting} of them drawing abort latency (terminate). */
+    static Map<String, Integer> expected(int configs, int repetitions, int aborting) {
         Map<String, Integer> m = new LinkedHashMap<>();
         m.put("misses", configs);
         m.put("deviation", configs);
@@ -152,6 +153,7 @@ class ReportBrowserTest {
         m.put("deviation-time", configs * repetitions);
         m.put("trajectory", configs + 2);           // the real trajectory, one estimate per runtime, the beacons
         m.put("spectrum", configs);
+        m.put("abort-latency", aborting);            // a terminate figure: none at skip
         m.put("jitter-cdf", configs);
         m.put("memory", 1);                         // the Java SE engine's one area, the heap (native reports none)
         m.put("breakdown", 0);                      // a queue figure: the fixture's skip and terminate runs draw none
@@ -203,7 +205,7 @@ class ReportBrowserTest {
         Number chartJs = (Number) js().executeScript("return Object.keys(window.jmclbenchCharts).length");
         assertEquals(ChartSpecs.FIGURES.size(), chartJs.intValue());
         // Four runtimes completed runs (the unsupported and the crashed one draw nothing), three repetitions each.
-        assertEquals(expected(4, 3), withoutResponseP99(seriesPerChart(), 4));
+        assertEquals(expected(4, 3, 0), withoutResponseP99(seriesPerChart(), 4));
         Number datasets = (Number) js().executeScript("return window.jmclbenchCharts['spectrum'].data.datasets.length");
         assertEquals(4, datasets.intValue(), "the hook agrees with Chart.js");
         // points keep their own intervals (bars lose those of hidden categories): one per point, both ways in the accuracy chart
@@ -324,7 +326,7 @@ class ReportBrowserTest {
         driver.findElement(By.cssSelector("#sel-configs input[value='temurin-17/g1']")).click();
         waitForRender(before);
         assertFalse(tableConfigs().contains("temurin-17/g1"));
-        assertEquals(expected(3, 3), withoutResponseP99(seriesPerChart(), 3));
+        assertEquals(expected(3, 3, 3), withoutResponseP99(seriesPerChart(), 3));
         assertEquals(List.of(XSS_CONFIG, "native", "temurin-25/zgc"), causeBars(), "the cause chart follows the runtimes chosen (legend order)");
         assertEquals(0.0, causeOf("native", "gc"), "native has no GC to blame");
         assertTrue(causeOf("temurin-25/zgc", "gc") > 0, "the fixture's JVM misses include GC-caused ones");
@@ -343,6 +345,6 @@ class ReportBrowserTest {
         new Select(driver.findElement(By.id("sel-policy"))).selectByValue("skip");
         new Select(driver.findElement(By.id("sel-particles"))).selectByValue("400");
         driver.findElement(By.cssSelector("#results-table th[data-key=config]")).click();
-        assertEquals(expected(4, 3), seriesPerChart());
+        assertEquals(expected(4, 3, 0), seriesPerChart());
     }
 }

@@ -19,7 +19,6 @@ import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
 import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.workload.output.HeapUse;
-import org.jmclbench.workload.record.Stats;
 import org.jmclbench.workload.release.JavaSeEngine;
 import org.jmclbench.workload.release.LocalizerJob;
 import org.jmclbench.workload.release.ReleaseSchedule;
@@ -85,7 +84,6 @@ public final class RtsjEngine implements Engine {
                     new LocalizerJob(d, timeline, localizer, records), records);
             replay.run(hangNs(schedule));
             records.durationNs = System.nanoTime() - replay.runStartNanoTime();
-            abortLatency(replay, records, facts);
             return new EngineResult(records, Collections.singletonList(heap.end(null, records)), facts);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -105,22 +103,5 @@ public final class RtsjEngine implements Engine {
 
     private static long hangNs(ReleaseSchedule schedule) {
         return (schedule.size() == 0 ? 0 : schedule.releaseNs(schedule.size() - 1)) + HANG_MARGIN_NS;
-    }
-
-    /** Abort latency of every job an AIE was fired at: from the fire to the job's end (its remaining time, when deferred). */
-    private static void abortLatency(RtsjReplay replay, JobRecords records, RtsjFacts facts) {
-        int n = records.outcome.length;
-        long[] latency = new long[n];
-        int count = 0;
-        for (int k = 0; k < n; k++) {
-            if (replay.abortRequestNs[k] >= 0 && replay.abortEndNs[k] >= 0) {
-                latency[count++] = Math.max(0, replay.abortEndNs[k] - replay.abortRequestNs[k]);
-                if (records.outcome[k] != JobRecords.TERMINATED) {
-                    facts.abortsDeferredToCompletion++;
-                }
-            }
-        }
-        facts.abortsRequested = count;
-        facts.abortLatency = Stats.of(latency, count);
     }
 }

@@ -32,9 +32,9 @@ import org.jmclbench.workload.release.ReleaseSchedule;
  * {@link AsynchronouslyInterruptedException} of the job in progress, and a job superseded before
  * it started never starts. Every event ends once: done, late, skipped or terminated.
  *
- * <p>Times in the records are ns from the release of time 0. Per event it also keeps when an
- * abort was requested (the AIE fired), so that abort latency (request to the job's end) is
- * measured, for the thesis design the job's remaining time.
+ * <p>Times in the records are ns from the release of time 0. A job's abort request
+ * ({@link JobRecords#abortNs}) is when its AIE was fired, so that abort latency (request to the
+ * job's end) is measured: for the thesis design, the job's remaining time.
  */
 final class RtsjReplay {
     /** The handlers are started this long before the release of time 0. */
@@ -51,10 +51,6 @@ final class RtsjReplay {
     /** Held by the job in progress: the thesis's test of whether a task is running. */
     private final ReentrantLock busy = new ReentrantLock();
     private final Task[] tasks = new Task[TASK_NAMES.length];
-    /** Per event: when its abort was requested (its AIE fired at it), System.nanoTime; -1 never. */
-    final long[] abortRequestNs;
-    /** Per event: when the job it was asked to abort ended; -1 never asked. */
-    final long[] abortEndNs;
     /** terminate: the latest released event, the only one that may run. */
     private volatile int latest = -1;
     /** The event whose job is in its doInterruptible (terminate), or -1. */
@@ -68,8 +64,6 @@ final class RtsjReplay {
         this.design = design;
         this.job = job;
         this.records = records;
-        this.abortRequestNs = new long[schedule.size()];
-        this.abortEndNs = new long[schedule.size()];
     }
 
     /** The System.nanoTime of the release of time 0. */
@@ -86,8 +80,7 @@ final class RtsjReplay {
         for (int k = 0; k < n; k++) {
             records.releaseNs[k] = schedule.releaseNs(k);
             records.deadlineNs[k] = schedule.deadlineNs(k);
-            abortRequestNs[k] = -1;
-            abortEndNs[k] = -1;
+            records.abortNs[k] = -1;
         }
         RtsjRuntime.reset();
         int max = PriorityScheduler.instance().getMaxPriority();
@@ -180,9 +173,9 @@ final class RtsjReplay {
                     latest = k; // a job not started yet sees this and never starts
                     int r = running;
                     if (r >= 0) {
-                        abortRequestNs[r] = System.nanoTime();
-                        if (!tasks[schedule.task(r)].aie.fire()) {
-                            abortRequestNs[r] = -1; // it ended meanwhile: nothing was asked of it
+                        long fired = System.nanoTime() - t0;
+                        if (tasks[schedule.task(r)].aie.fire()) { // false: it ended meanwhile, nothing was asked of it
+                            records.requestAbort(r, fired);
                         }
                     }
                 }
@@ -277,6 +270,11 @@ final class RtsjReplay {
                     runJob(signal);
                 }
             } finally {
+                if (!committed && start >= 0) {
+                    // an aborted job ends here, before the robot is handed on (the next job's
+                    // thread may take the CPU at the unlock), as the other engines take its end
+                    end = System.nanoTime();
+                }
                 running = -1;
                 if (busy.isHeldByCurrentThread()) {
                     busy.unlock();
@@ -302,16 +300,13 @@ final class RtsjReplay {
                 r.endNs[k] = -1;
                 r.outcome[k] = JobRecords.TERMINATED; // superseded before it started
             } else {
-                long jobEnd = committed ? end : now;
+                long jobEnd = end >= 0 ? end : now;
                 r.startNs[k] = start - t0;
                 r.endNs[k] = jobEnd - t0;
                 if (!committed) {
                     r.outcome[k] = JobRecords.TERMINATED;
                 } else {
                     r.outcome[k] = jobEnd - t0 <= r.deadlineNs[k] ? JobRecords.DONE : JobRecords.LATE;
-                }
-                if (abortRequestNs[k] >= 0) {
-                    abortEndNs[k] = jobEnd;
                 }
             }
             ended();

@@ -101,6 +101,7 @@ public final class EvaluationDocument extends EvaluationSections {
         hvm();
         EvaluationExplanations explanations = new EvaluationExplanations(this);
         explanations.policies();
+        questions.termination();
         questions.scheduling();
         questions.load();
         questions.steadyState();

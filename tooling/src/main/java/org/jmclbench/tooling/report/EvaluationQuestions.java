@@ -103,6 +103,44 @@ final class EvaluationQuestions extends EvaluationSections {
                 "scheduling", "Generic vs real-time scheduling", Metric.JITTER_P99, c -> data.info(c).profile()).withStem("scheduling")));
     }
 
+    /**
+     * The termination policies' measured side: per configuration under terminate at the comparison
+     * load, the aborts and the abort latency, and its percentile spectrum.
+     */
+    void termination() throws IOException {
+        line("### 2.6b Termination: how long an abort takes (Table 6b, Figure 6b)");
+        line("");
+        Integer n = data.compareCount();
+        List<ReportModel.Cell> at = n == null ? List.of() : data.order(data.cells(c -> c.particles == n && c.ok > 0
+                && c.policy.equals("terminate") && EvaluationDocument.idle(c)));
+        if (at.isEmpty()) {
+            line("The store has no run under terminate at the comparison load, so abort latency is not reported.");
+            line("");
+            return;
+        }
+        List<List<String>> rows = new ArrayList<>();
+        for (ReportModel.Cell c : at) {
+            rows.add(List.of(c.config, String.valueOf(c.ok), task(c, TaskMetric.ABORTED, 1), task(c, TaskMetric.ABORT_P50, 3),
+                    task(c, TaskMetric.ABORT_P99, 3), task(c, TaskMetric.ABORT_MAX, 3)));
+        }
+        line(String.format(Locale.ROOT, "Table 6b: under terminate at %d particles, per configuration: the jobs aborted per run and "
+                + "the abort latency, from the abort request (the gate's request, or the AIE fired at the job) to the aborted job's "
+                + "end (ms; mean over repetitions of each run's percentile, with its 95%% bootstrap interval). A cooperative job "
+                + "ends at its next poll (every 64 particle steps); the RTSJ thesis design defers the AIE inside the robot's "
+                + "monitor, so its job runs to its end (`./jmclbench abort-bound` gives the static bound of each).", n));
+        line("");
+        table(List.of("configuration", "runs", "aborted per run", "abort latency p50", "abort latency p99", "abort latency max"), rows);
+        figure("abort-latency-" + n, "Figure 6b: abort latency by percentile under terminate, " + n + " particles (every aborted "
+                + "job of every repetition merged, log scales).", () -> charts.write(ChartSpecs.abortLatency(scope("terminate", n, at))
+                .withStem("abort-latency-" + n)));
+    }
+
+    /** A per-task metric of both tasks ({@code all}) with its interval. */
+    private static String task(ReportModel.Cell c, TaskMetric m, int decimals) {
+        ReportModel.Agg a = c.metrics.get(m.key("all"));
+        return a == null || a.mean() == null ? "n/a" : a.interval().text(decimals);
+    }
+
     /** An idle machine against the same runs beside a CPU or allocation load (the thesis's further work). */
     void load() throws IOException {
         line("### 2.8 An idle vs a loaded machine (Table 8)");

@@ -204,6 +204,20 @@ class EvaluationDocumentTest {
     }
 
     @Test
+    void terminationGivesEachConfigurationsAbortLatencyUnderTerminate() {
+        List<List<String>> rows = table("Table 6b:");
+        assertFalse(rows.isEmpty());
+        for (List<String> row : rows) {
+            List<StoredRun> cell = runs.stream().filter(r -> r.ok() && r.config().equals(row.get(0)) && r.policy.equals("terminate")
+                    && r.particles == 1600).toList();
+            java.util.OptionalDouble p50 = cell.stream().map(r -> TaskMetric.ABORT_P50.of(r, "all")).filter(v -> v != null)
+                    .mapToDouble(Double::doubleValue).average();
+            assertEquals(p50.isPresent() ? num(p50.getAsDouble(), 3) : "n/a", row.get(3).split(" ")[0], row.toString());
+        }
+        assertTrue(doc.contains("(evaluation/abort-latency-1600.svg)") || rows.stream().allMatch(r -> r.get(3).equals("n/a")));
+    }
+
+    @Test
     void whatRunsWhereHasARowPerConfiguration() {
         List<List<String>> rows = table("**What runs where.**");
         assertEquals(configs().size(), rows.size());

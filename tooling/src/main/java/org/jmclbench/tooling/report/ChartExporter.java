@@ -22,6 +22,7 @@ import java.util.function.Consumer;
 import org.jfree.chart.ChartUtils;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.annotations.AbstractXYAnnotation;
+import org.jfree.chart.annotations.XYAnnotationBoundsInfo;
 import org.jfree.chart.annotations.XYShapeAnnotation;
 import org.jfree.chart.axis.AxisLocation;
 import org.jfree.chart.axis.CategoryAxis;
@@ -46,6 +47,7 @@ import org.jfree.chart.title.TextTitle;
 import org.jfree.chart.ui.Layer;
 import org.jfree.chart.ui.RectangleEdge;
 import org.jfree.chart.ui.TextAnchor;
+import org.jfree.data.Range;
 import org.jfree.data.category.CategoryDataset;
 import org.jfree.data.category.DefaultCategoryDataset;
 import org.jfree.data.xy.XYSeries;
@@ -124,11 +126,9 @@ final class ChartExporter {
 
     private static JFreeChart bars(ChartSpec spec) {
         boolean log = spec.y().scale() == ChartSpec.Scale.LOG;
-        boolean withErrors = spec.series().stream().anyMatch(s -> s.errors() != null);
         DefaultCategoryDataset plain = new DefaultCategoryDataset();
-        ErrorBarRenderer errorBars = withErrors && spec.kind() != ChartSpec.Kind.STACKED_BARS ? new ErrorBarRenderer() : null;
-        for (int row = 0; row < spec.series().size(); row++) {
-            ChartSpec.Series s = spec.series().get(row);
+        double errorTop = Double.NEGATIVE_INFINITY;
+        for (ChartSpec.Series s : spec.series()) {
             for (int i = 0; i < spec.categories().size(); i++) {
                 String category = spec.categories().get(i).label();
                 Double v = s.values().get(i);
@@ -139,13 +139,13 @@ final class ChartExporter {
                     v = null; // nothing to draw on a log axis
                 }
                 plain.addValue(v, s.name(), category);
-                if (errorBars != null && s.errors() != null) {
-                    errorBars.interval(row, i, s.errors().get(i)); // [low, high], not symmetric about the mean
+                double[] e = s.errors() == null ? null : s.errors().get(i);
+                if (e != null && v != null) {
+                    errorTop = Math.max(errorTop, e[1]);
                 }
             }
         }
-        BarRenderer renderer = spec.kind() == ChartSpec.Kind.STACKED_BARS ? new StackedBarRenderer()
-                : errorBars != null ? errorBars : perItemColours(spec);
+        BarRenderer renderer = spec.kind() == ChartSpec.Kind.STACKED_BARS ? new StackedBarRenderer() : perItemColours(spec);
         renderer.setShadowVisible(false);
         renderer.setBarPainter(new StandardBarPainter());
         for (int i = 0; i < spec.series().size(); i++) {
@@ -167,6 +167,9 @@ final class ChartExporter {
         }
         CategoryPlot plot = new CategoryPlot(plain, x, y, renderer);
         floor(y, spec.y());
+        if (errorTop > y.getUpperBound()) {
+            y.setUpperBound(errorTop * 1.05); // the intervals' ends inside the plot
+        }
         plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
         if (spec.horizontal()) {
             plot.setOrientation(PlotOrientation.HORIZONTAL);
@@ -177,7 +180,8 @@ final class ChartExporter {
 
     /**
      * Bars whose values carry their own colours (one series of bars in the runtimes' colours); on a
-     * log axis a value of 0 has no bar, so a "0" under the axis says it is zero, not missing.
+     * log axis a value of 0 has no bar, so a "0" under the axis says it is zero, not missing; a
+     * value's interval [low, high] is drawn as it is (cut at zero where the spec cut it), over the bar.
      */
     private static BarRenderer perItemColours(ChartSpec spec) {
         boolean log = spec.y().scale() == ChartSpec.Scale.LOG;
@@ -194,10 +198,30 @@ final class ChartExporter {
             public void drawItem(Graphics2D g2, CategoryItemRendererState state, Rectangle2D dataArea, CategoryPlot plot,
                                  CategoryAxis domainAxis, ValueAxis rangeAxis, CategoryDataset dataset, int row, int column, int pass) {
                 super.drawItem(g2, state, dataArea, plot, domainAxis, rangeAxis, dataset, row, column, pass);
-                Double v = spec.series().get(row).values().get(column);
-                if (log && pass == 0 && v != null && v == 0 && plot.getOrientation() == PlotOrientation.VERTICAL) {
-                    double x = calculateBarW0(plot, plot.getOrientation(), dataArea, domainAxis, state, row, column)
-                            + state.getBarWidth() / 2;
+                ChartSpec.Series s = spec.series().get(row);
+                Double v = s.values().get(column);
+                if (pass != getPassCount() - 1 || v == null || plot.getOrientation() != PlotOrientation.VERTICAL) {
+                    return; // after the bars, once
+                }
+                double x = calculateBarW0(plot, plot.getOrientation(), dataArea, domainAxis, state, row, column) + state.getBarWidth() / 2;
+                double[] e = s.errors() == null ? null : s.errors().get(column);
+                if (e != null) {
+                    RectangleEdge edge = plot.getRangeAxisEdge();
+                    double top = rangeAxis.valueToJava2D(e[1], dataArea, edge);
+                    double bottom = log && e[0] <= 0 ? dataArea.getMaxY() : rangeAxis.valueToJava2D(e[0], dataArea, edge);
+                    double cap = Math.min(4, state.getBarWidth() / 4);
+                    Path2D.Double bar = new Path2D.Double();
+                    bar.moveTo(x, top);
+                    bar.lineTo(x, bottom);
+                    bar.moveTo(x - cap, top);
+                    bar.lineTo(x + cap, top);
+                    bar.moveTo(x - cap, bottom);
+                    bar.lineTo(x + cap, bottom);
+                    g2.setPaint(Color.BLACK);
+                    g2.setStroke(new BasicStroke(1f));
+                    g2.draw(bar);
+                }
+                if (log && v == 0) {
                     g2.setPaint(Color.DARK_GRAY);
                     g2.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
                     g2.drawString("0", (float) (x - g2.getFontMetrics().stringWidth("0") / 2.0), (float) dataArea.getMaxY() - 3);
@@ -256,24 +280,25 @@ final class ChartExporter {
             r.setSeriesStroke(i, st.dash() == null ? new BasicStroke(w)
                     : new BasicStroke(w, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, st.dash(), 0f));
         }
-        XYPlot plot = new XYPlot(data, axis(spec.x(), false), axis(spec.y(), false), r);
-        floor(plot.getDomainAxis(), spec.x());
-        floor(plot.getRangeAxis(), spec.y());
-        plot.setDomainGridlinePaint(Color.LIGHT_GRAY);
-        plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
+        // before the plot: its axes' ranges then include the intervals
         for (ChartSpec.Series s : spec.series()) {
             for (int i = 0; i < s.points().size(); i++) {
                 double[] p = s.points().get(i);
                 double[] e = s.errors() == null ? null : s.errors().get(i);
                 double[] h = s.xErrors() == null ? null : s.xErrors().get(i);
                 if (e != null) {
-                    plot.addAnnotation(new ErrorBar(p[0], e[0], p[0], e[1], color(s.color())));
+                    r.addAnnotation(new ErrorBar(p[0], e[0], p[0], e[1], color(s.color())));
                 }
                 if (h != null) {
-                    plot.addAnnotation(new ErrorBar(h[0], p[1], h[1], p[1], color(s.color())));
+                    r.addAnnotation(new ErrorBar(h[0], p[1], h[1], p[1], color(s.color())));
                 }
             }
         }
+        XYPlot plot = new XYPlot(data, axis(spec.x(), false), axis(spec.y(), false), r);
+        floor(plot.getDomainAxis(), spec.x());
+        floor(plot.getRangeAxis(), spec.y());
+        plot.setDomainGridlinePaint(Color.LIGHT_GRAY);
+        plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
         String bandsOf = spec.bands().stream().map(ChartSpec.Band::config).findFirst().orElse(null);
         for (ChartSpec.Band b : spec.bands()) {
             if (java.util.Objects.equals(b.config(), bandsOf)) { // one run's pauses, as on the page
@@ -290,8 +315,9 @@ final class ChartExporter {
     /**
      * An error bar from (x0, y0) to (x1, y1) in data units, vertical or horizontal, with caps of a
      * few pixels whatever the axes' scales; an end at or below zero on a log axis is the axis' end.
+     * The axes' ranges include it, so that no interval runs off the plot.
      */
-    private static final class ErrorBar extends AbstractXYAnnotation {
+    private static final class ErrorBar extends AbstractXYAnnotation implements XYAnnotationBoundsInfo {
         private static final long serialVersionUID = 1L;
         private static final double CAP = 4;
         private final double x0;
@@ -328,6 +354,21 @@ final class ChartExporter {
                 path.lineTo(end[0] + (vertical ? CAP : 0), end[1] + (vertical ? 0 : CAP));
             }
             g2.draw(path);
+        }
+
+        @Override
+        public boolean getIncludeInDataBounds() {
+            return true;
+        }
+
+        @Override
+        public Range getXRange() {
+            return new Range(Math.min(x0, x1), Math.max(x0, x1));
+        }
+
+        @Override
+        public Range getYRange() {
+            return new Range(Math.min(y0, y1), Math.max(y0, y1));
         }
 
         private static double onAxis(ValueAxis axis, double v) {

@@ -47,10 +47,12 @@ final class ChartSpecs {
     /** The page's figures, in page order. */
     static final List<Figure> FIGURES = List.of(
             new Figure("misses", "Deadline misses vs particles", "missCount per run (skipped + terminated jobs; late jobs "
-                    + "under queue), mean over repetitions with 95% CI error bars, per runtime. The thesis\u2019s histogram with errors.",
+                    + "under queue), mean over repetitions with 95% CI error bars (cut at 0: a count is never negative), per runtime. "
+                    + "The thesis\u2019s histogram with errors.",
                     false, ChartSpecs::misses),
             new Figure("deviation", "Mean localisation deviation vs particles", "Mean Euclidean xy deviation of the estimate "
-                    + "from the ground truth (m), mean over repetitions with 95% CI error bars.", false, ChartSpecs::deviation),
+                    + "from the ground truth (m), mean over repetitions with 95% CI error bars (cut at 0: a distance is never negative).",
+                    false, ChartSpecs::deviation),
             new Figure("latency-jitter", "Average task latency and release jitter vs particles", "Mean over all jobs, then over "
                     + "repetitions (ms), on a log particle axis. Solid: task latency (end \u2212 start); dashed: release jitter "
                     + "(start \u2212 release).", false, ChartSpecs::latencyJitter),
@@ -130,6 +132,16 @@ final class ChartSpecs {
         Scope acrossPolicies() {
             return new Scope(model, setting, model.cells.stream().filter(c -> c.dataset.equals(setting.dataset())
                     && setting.particles() != null && c.particles == setting.particles()).toList());
+        }
+
+        /** The same setting with the cells {@code keep} accepts (the HVM alone, say, in its own panel). */
+        Scope where(java.util.function.Predicate<ReportModel.Cell> keep) {
+            return new Scope(model, setting, cells.stream().filter(keep).toList());
+        }
+
+        /** Whether a cell's runtime is the HVM, whose interpreted scale would hide the others' in a shared panel. */
+        boolean hvm(ReportModel.Cell c) {
+            return model.configs.stream().anyMatch(i -> i.id().equals(c.config) && i.kind() == org.jmclbench.tooling.runtime.RuntimeKind.HVM);
         }
 
         /** "dataset, policy[, N particles]", the end of every title. */

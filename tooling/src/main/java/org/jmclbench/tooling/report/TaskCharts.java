@@ -50,9 +50,7 @@ final class TaskCharts {
                 missing.add(c.config);
                 continue;
             }
-            double end = pts.get(pts.size() - 1)[1];
-            series.add(new Series(c.config, c.config, c.engine, s.color(c.config), Style.line(1.5).steps(), pts, null, null, null,
-                    List.of(String.format(Locale.ROOT, "%s: %.4f of the released jobs ever completed", c.config, end))));
+            series.add(new Series(c.config, c.config, c.engine, s.color(c.config), Style.line(1.5).steps(), pts, null, null, null, null));
         }
         String title = "Fraction of released " + task + " jobs completed by a response time"
                 + (missing.isEmpty() ? "" : "; no response times stored for " + String.join(", ", missing));
@@ -84,8 +82,7 @@ final class TaskCharts {
     private static ChartSpec lines(Scope s, String id, String title, String yLabel, Function<ReportModel.Cell, ReportModel.Agg> agg,
                                    boolean ratio) {
         List<Series> series = new ArrayList<>();
-        List<double[]> infinite = new ArrayList<>();
-        List<String> infiniteConfigs = new ArrayList<>();
+        Map<String, List<Integer>> infinite = new LinkedHashMap<>(); // per configuration, the counts where the mean is +inf
         double top = 0;
         Style style = new Style(true, 1.5, null, false, "circle", 3, null);
         for (Map.Entry<String, String> e : s.configs().entrySet()) {
@@ -97,8 +94,7 @@ final class TaskCharts {
                     continue;
                 }
                 if (a.mean().isInfinite()) {
-                    infinite.add(new double[] {c.particles, 0});
-                    infiniteConfigs.add(e.getKey());
+                    infinite.computeIfAbsent(e.getKey(), k -> new ArrayList<>()).add(c.particles);
                     continue;
                 }
                 pts.add(new double[] {c.particles, a.mean()});
@@ -111,12 +107,9 @@ final class TaskCharts {
             }
         }
         double mark = top > 0 ? top * 1.08 : 1;
-        for (int i = 0; i < infinite.size(); i++) {
-            String config = infiniteConfigs.get(i);
-            series.add(new Series(config + " \u221e", config, s.configs().get(config), s.color(config), Style.marks("triangle", 5, "none"),
-                    List.of(new double[] {infinite.get(i)[0], mark}), null, null, null,
-                    List.of(config + ": +\u221e at " + (int) infinite.get(i)[0] + " particles (among the dropped or aborted jobs)")));
-        }
+        infinite.forEach((config, counts) -> series.add(new Series(config + " \u221e", config, s.configs().get(config), s.color(config),
+                Style.marks("triangle", 5, "none"), counts.stream().map(n -> new double[] {n, mark}).toList(), null, null, null,
+                counts.stream().map(n -> config + ": +\u221e at " + n + " particles (among the dropped or aborted jobs)").toList())));
         return s.spec(id, title, Kind.LINES, false, new Axis("particles (log)", Scale.LOG, Format.NUMBER, null, null),
                 Axis.linear(yLabel).range(0.0, null), null, series);
     }

@@ -56,7 +56,8 @@ public final class StoredRun {
      * The configuration under test: runtime, and profile when there is one; then, when the runs
      * shown together have several engines or memory styles, the engine and memory style:
      * {@code temurin-25/default / scj scoped}, {@code native / allocating}; and when they ran under
-     * several load scenarios, a loaded run's in brackets: {@code temurin-25/default [load cpu]}.
+     * several load scenarios, a loaded run's scenario in brackets: {@code temurin-25/default [load cpu]}
+     * (a run on an idle machine keeps the plain name).
      */
     public String config() {
         String c = profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
@@ -68,8 +69,7 @@ public final class StoredRun {
             parts.add(memory);
         }
         String base = parts.isEmpty() ? c : c + " / " + String.join(" ", parts);
-        // the idle machine's runs keep their plain name: only a run beside a load is labelled
-        return showLoad && !loadScenario().equals("none") ? base + loadLabel(loadScenario()) : base;
+        return showLoad && !"none".equals(loadScenario()) ? base + loadLabel(loadScenario()) : base;
     }
 
     /** The load scenario the run ran under; a store row without one ran on an idle machine ({@code none}). */

@@ -31,6 +31,7 @@
   }
   function clear(e) { while (e.firstChild) { e.removeChild(e.firstChild); } }
   function fmt(v, digits) {
+    if (v === Infinity || v === 'Infinity') { return '\u221e'; } // a response time among jobs that never completed
     if (v === null || v === undefined || !isFinite(v)) { return '\u2013'; }
     if (v === 0) { return '0'; }
     var a = Math.abs(v);
@@ -172,6 +173,10 @@
     { key: 'runs', label: 'ok/runs', text: true },
     { key: 'miss', label: 'misses/run (95% CI)', metric: 'MISS_COUNT', ci: true, best: 'min' },
     { key: 'late', label: 'late/run', metric: 'LATE', best: 'min' },
+    { key: 'missRatioP', label: 'miss ratio predict', metric: 'predict.MISS_RATIO', ci: true, best: 'min', title: 'predict jobs not completed by their deadline (late, dropped, aborted) over those released, per run' },
+    { key: 'missRatioU', label: 'miss ratio update', metric: 'update.MISS_RATIO', ci: true, best: 'min', title: 'update jobs not completed by their deadline (late, dropped, aborted) over those released, per run' },
+    { key: 'respP99P', label: 'response p99 predict', metric: 'predict.RESPONSE_P99', best: 'min', title: 'predict response time (end \u2212 release, ms) p99 over every released job; \u221e: more than 1% never completed' },
+    { key: 'respP99U', label: 'response p99 update', metric: 'update.RESPONSE_P99', best: 'min', title: 'update response time (end \u2212 release, ms) p99 over every released job; \u221e: more than 1% never completed' },
     { key: 'latMean', label: 'latency mean', metric: 'LATENCY_MEAN', ci: true, best: 'min' },
     { key: 'latP99', label: 'latency p99', metric: 'LATENCY_P99', best: 'min' },
     { key: 'latMax', label: 'latency max', metric: 'LATENCY_MAX', stat: 'max', best: 'min' },
@@ -202,6 +207,7 @@
         if (!col.metric) { return; }
         var agg = c.metrics[col.metric] || { mean: null, max: null, low: null, high: null };
         var v = col.stat === 'max' ? agg.max : agg.mean;
+        if (v === 'Infinity') { v = Infinity; } // JSON has no infinity: the model writes it as a string
         row.values[col.key] = v;
         row.texts[col.key] = col.ci ? fmtCi(agg) : fmt(v);
       });
@@ -502,11 +508,28 @@
     var notes = view.series.some(function (s) { return s.notes; });
     var o = {
       responsive: true, maintainAspectRatio: false, normalized: true, indexAxis: spec.horizontal ? 'y' : 'x',
-      plugins: { title: { display: true, text: spec.title }, legend: { display: !single, position: 'bottom', labels: { boxWidth: 12 } },
+      plugins: { title: { display: true, text: spec.title }, legend: { display: !single, position: 'bottom', labels: { boxWidth: 12,
+        // marks without lines (the policies' shapes): the legend shows each mark's shape
+        usePointStyle: !bars && view.series.length > 0 && view.series.every(function (s) { return !s.style.line; }) } },
         jmclbenchPauses: view.bands, jmclbenchFrame: spec.frame || null },
       scales: !bars ? { x: scale(spec.x, false), y: value } : spec.horizontal ? { y: category, x: value } : { x: category, y: value }
     };
-    if (!bars) { o.parsing = false; }
+    if (!bars) {
+      o.parsing = false;
+      // the axes reach the intervals' ends, so that no error bar runs off the plot
+      view.series.forEach(function (s) {
+        [[s.errors, 'y'], [s.xErrors, 'x']].forEach(function (ex) {
+          (ex[0] || []).forEach(function (e) {
+            if (!e) { return; }
+            var sc = o.scales[ex[1]];
+            if (sc.max === undefined) { sc.suggestedMax = Math.max(sc.suggestedMax === undefined ? -Infinity : sc.suggestedMax, e[1]); }
+            if (sc.min === undefined && sc.type !== 'logarithmic') {
+              sc.suggestedMin = Math.min(sc.suggestedMin === undefined ? Infinity : sc.suggestedMin, e[0]);
+            }
+          });
+        });
+      });
+    }
     if (notes) {
       o.plugins.tooltip = { callbacks: { label: function (ctx) { return (ctx.dataset.notes || [])[ctx.dataIndex] || ctx.dataset.label; } } };
     }

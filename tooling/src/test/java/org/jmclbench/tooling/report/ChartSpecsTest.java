@@ -152,6 +152,55 @@ class ChartSpecsTest {
     }
 
     @Test
+    void theSpectrumEndsAtOneMinusOneOverTheJobsMerged() {
+        ChartSpec spectrum = chart("spectrum", "skip", 400);
+        for (ChartSpec.Series s : spectrum.series()) {
+            ReportModel.Cell c = cell(s.config(), "skip", 400);
+            // every completed job of every repetition: the "all" task latency counts of the runs
+            double n = jobsOf(c);
+            double[] last = s.points().get(s.points().size() - 1);
+            assertEquals(n, last[0], 1e-9, s.name() + ": x = 1/(1-p) ends at n");
+            assertTrue(s.points().stream().allMatch(p -> p[0] <= n), s.name());
+            assertTrue(s.points().size() > 10, "the curve itself is kept: " + s.points().size());
+        }
+    }
+
+    /** The jobs whose task latency the fixture recorded in a cell's runs (summary count of task all). */
+    static double jobsOf(ReportModel.Cell c) {
+        try (StoredRuns store = StoredRuns.open(dir.resolve("results.db"), "--db")) {
+            return store.runs().stream().filter(r -> r.ok() && r.configOnMachine().equals(c.config) && r.policy.equals(c.policy)
+                    && r.particles == c.particles).mapToDouble(r -> r.summary().at("/tasks/all/taskLatencyNs/count").asDouble()).sum();
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    @Test
+    void memoryPerReleaseDrawsZeroAsZeroAndSaysWhatTheAreasAre() throws Exception {
+        Path db = ReportFixtures.write(ReportFixtures.engines(), dir, "engines.db");
+        ReportModel m;
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
+            m = ReportModel.build(store, line -> { });
+        }
+        ChartSpec spec = m.charts.stream().filter(c -> c.id().equals("memory-release") && Integer.valueOf(400).equals(c.setting().particles()))
+                .findFirst().orElseThrow();
+        assertTrue(spec.title().contains("SCJ budgets on a JVM heap, real HVM areas and a GC heap are different things"), spec.title());
+        assertEquals(ChartSpec.Scale.LOG, spec.y().scale());
+        List<String> rows = spec.categories().stream().map(ChartSpec.Category::label).toList();
+        ChartSpec.Series update = spec.series().stream().filter(s -> s.name().equals("update")).findFirst().orElseThrow();
+        assertEquals(400.0 * 80, update.values().get(rows.indexOf(ReportFixtures.SCJ_SCOPED)));
+        assertEquals(0.0, update.values().get(rows.indexOf(ReportFixtures.SCJ)), "preallocated: 0 bytes, a value, not a gap");
+        assertNull(update.values().get(rows.indexOf(ReportFixtures.JAVASE)), "the Java SE engine has no update area");
+        ChartSpec.Series heap = spec.series().stream().filter(s -> s.name().equals("heap")).findFirst().orElseThrow();
+        assertEquals(400.0 * 50, heap.values().get(rows.indexOf(ReportFixtures.JAVASE_ALLOCATING)));
+        ChartExporter exporter = new ChartExporter(dir.resolve("charts"));
+        exporter.write(spec);
+        String svg = Files.readString(dir.resolve("charts/" + spec.stem() + ".svg"));
+        long zeros = svg.split(">0<", -1).length - 1;
+        assertEquals(3, zeros, "a 0 under the axis for each zero bar: the preallocated heap, SCJ predict and update");
+    }
+
+    @Test
     void latencyIndexCarriesThePausesOfEachRuntime() {
         ChartSpec li = chart("latency-index", "skip", 400);
         assertEquals(2 * 4, li.series().size(), "predict and update per runtime");

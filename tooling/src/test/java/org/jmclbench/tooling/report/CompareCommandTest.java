@@ -49,6 +49,20 @@ class CompareCommandTest {
     }
 
     @Test
+    void runsUnderTwoLoadsAreComparedByTheirRowNamesNeverPooled() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.policies = List.of("skip");
+        f.particles = List.of(400);
+        f.loads = List.of("none", "cpu");
+        Path db = ReportFixtures.write(f, dir, "loads.db");
+        String out = run(0, "compare", "--db", db.toString(), "--a", "temurin-25/zgc", "--b", "temurin-25/zgc [load cpu]")[0];
+        assertTrue(out.contains("== match-short  skip  400 particles =="), out);
+        assertEquals(2, line(out, "missCount").split("n=3 ", -1).length - 1, "three repetitions a side, not six: " + line(out, "missCount"));
+        String err = run(2, "compare", "--db", db.toString(), "--a", "temurin-25", "--b", "native")[1];
+        assertTrue(err.contains("say which: temurin-25/zgc, temurin-25/zgc [load cpu]"), err);
+    }
+
+    @Test
     void twoDatabasesPairTheSameConfigurations() {
         String out = run(0, "compare", a.toString(), b.toString())[0];
         assertTrue(out.contains("== match-short  skip  400 particles  native =="), out);

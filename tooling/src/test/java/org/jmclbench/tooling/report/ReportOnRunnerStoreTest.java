@@ -77,6 +77,16 @@ class ReportOnRunnerStoreTest {
                     .get(0).get("points").isEmpty(), where);
             assertFalse(ReportCommandTest.seriesOf(ReportCommandTest.chart(model, "skip", particles, "jitter-cdf"), config)
                     .get(0).get("points").isEmpty(), where);
+            // per-task accounting: predict released 10 and dropped 1 (the summary predates missRatio: from its definition)
+            assertEquals(0.1, c.at("/metrics/predict.MISS_RATIO/mean").asDouble(), 1e-9, where);
+            assertEquals(0.0, c.at("/metrics/update.MISS_RATIO/mean").asDouble(), 1e-9, where);
+            assertEquals(1.0, c.at("/metrics/predict.DROPPED/mean").asDouble(), 1e-9, where);
+            // the completion curves from the per-task response-time histograms the ingest stored: 9 of 10, 4 of 4
+            for (String[] t : new String[][] {{"predict", "0.9"}, {"update", "1.0"}}) {
+                JsonNode pts = ReportCommandTest.seriesOf(ReportCommandTest.chart(model, "skip", particles, "completion-" + t[0]), config)
+                        .get(0).get("points");
+                assertEquals(Double.parseDouble(t[1]), pts.get(pts.size() - 1).get(1).asDouble(), 1e-9, where + " " + t[0]);
+            }
             if (!okConfigs.contains(c.get("config").asText())) {
                 okConfigs.add(c.get("config").asText());
             }

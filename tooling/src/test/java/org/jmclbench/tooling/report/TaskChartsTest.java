@@ -73,8 +73,8 @@ class TaskChartsTest {
 
     @Test
     void runsUnderTwoLoadsAreTwoConfigurationsNeverPooled() {
-        assertEquals(List.of("native", "native [load cpu]", DEFAULT, DEFAULT + " [load cpu]",
-                PINNED, PINNED + " [load cpu]"), model.configs.stream().map(ReportModel.ConfigInfo::id).toList());
+        assertEquals(List.of("native", "native [load cpu]", DEFAULT, DEFAULT + " [load cpu]", PINNED, PINNED + " [load cpu]"),
+                model.configs.stream().map(ReportModel.ConfigInfo::id).toList(), "an idle machine's runs keep the plain name");
         ReportModel.Cell c = cell(DEFAULT + " [load cpu]", "skip", 100);
         assertEquals("cpu", c.load);
         assertEquals("temurin-25", c.runtime);
@@ -232,8 +232,9 @@ class TaskChartsTest {
         assertEquals(List.of("none", "cpu"), load.series().stream().map(ChartSpec.Series::name).toList(), "the idle machine first");
         for (ChartSpec.Series cond : load.series()) {
             for (int i = 0; i < 3; i++) {
-                ReportModel.Agg a = cell(load.categories().get(i).label() + (cond.name().equals("none") ? "" : " [load " + cond.name() + "]"), "queue", 1600).metrics
-                        .get("MISS_COUNT");
+                String label = load.categories().get(i).label();
+                ReportModel.Agg a = cell(cond.name().equals("none") ? label : label + " [load " + cond.name() + "]", "queue", 1600)
+                        .metrics.get("MISS_COUNT");
                 assertEquals(a.mean(), cond.values().get(i));
                 assertEquals(Math.max(0, a.low()), cond.errors().get(i)[0], 1e-12);
             }
@@ -249,9 +250,28 @@ class TaskChartsTest {
                 "native, without a profile, under default");
         ChartSpec.Series pinned = series(profile, "fifo+pinned");
         assertNull(pinned.values().get(0), "native has no fifo+pinned profile");
+        assertEquals(cell(PINNED, "queue", 1600).metrics.get("predict.MISS_RATIO").mean(), pinned.values().get(2));
         assertEquals(cell(PINNED + " [load cpu]", "queue", 1600).metrics.get("predict.MISS_RATIO").mean(), pinned.values().get(3));
-        assertEquals(cell("native [load cpu]", "queue", 1600).metrics.get("predict.MISS_RATIO").mean(),
-                series(profile, "default").values().get(1));
+        assertEquals(cell("native", "queue", 1600).metrics.get("predict.MISS_RATIO").mean(),
+                series(profile, "default").values().get(0));
+    }
+
+    @Test
+    void theHvmGetsItsOwnPanel() throws Exception {
+        FixtureDb f = ReportFixtures.engines();
+        f.configs.add(new FixtureDb.Config("hvm", "", "icecap 4d31e23", 30.0, "ok", "scj", "scoped"));
+        Path db = ReportFixtures.write(f, dir, "hvm.db");
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
+            ReportModel m = ReportModel.build(store, line -> { });
+            ChartSpecs.Scope all = new ChartSpecs.Scope(m, new ChartSpec.Setting("match-short", "skip", null), m.cells);
+            ChartSpec others = TaskCharts.vsParticlesPerTask(all.where(c -> !all.hvm(c)), "predict", TaskMetric.JITTER_P99);
+            ChartSpec hvm = TaskCharts.vsParticlesPerTask(all.where(all::hvm), "predict", TaskMetric.JITTER_P99);
+            assertEquals(List.of("hvm / scj scoped"), hvm.series().stream().map(ChartSpec.Series::name).toList());
+            assertEquals(5, others.series().size());
+            assertTrue(others.series().stream().noneMatch(s -> s.name().startsWith("hvm")));
+            assertEquals(m.configs.stream().filter(c -> c.id().equals("hvm / scj scoped")).findFirst().orElseThrow().color(),
+                    hvm.series().get(0).color(), "its colour is the one it has everywhere");
+        }
     }
 
     @Test
@@ -268,12 +288,23 @@ class TaskChartsTest {
                 assertTrue(svg.contains(">" + s.name() + "<"), s.name() + " in " + spec.stem());
             }
         }
-        // the error bars are drawn: the accuracy chart's file grows by them
-        ChartSpec acc = TaskCharts.accuracyVsTimeliness(scope("skip", 1600).acrossPolicies());
-        List<ChartSpec.Series> bare = acc.series().stream().map(s -> new ChartSpec.Series(s.name(), s.config(), s.engine(), s.color(),
-                s.style(), s.points(), null, null, null, null, null)).collect(Collectors.toList());
-        exporter.write(new ChartSpec(acc.id(), "bare", acc.setting(), acc.title(), acc.kind(), false, acc.x(), acc.y(), null, bare,
-                List.of(), null, false));
-        assertTrue(Files.size(dir.resolve("charts/" + acc.stem() + ".svg")) > Files.size(dir.resolve("charts/bare.svg")) + 18 * 50);
+        // the error bars are drawn, one SVG path each: points both ways, bars with their cut intervals
+        assertEquals(18 * 2, pathsOfErrors(exporter, TaskCharts.accuracyVsTimeliness(scope("skip", 1600).acrossPolicies())));
+        assertEquals(3 * 2, pathsOfErrors(exporter, TaskCharts.conditions(scope("queue", 1600), "load", "by load", Metric.DEVIATION,
+                c -> c.load)));
+    }
+
+    /** The SVG paths a chart's error bars add: those of the file with them less those of the file without. */
+    static long pathsOfErrors(ChartExporter exporter, ChartSpec spec) throws Exception {
+        List<ChartSpec.Series> bare = spec.series().stream().map(s -> new ChartSpec.Series(s.name(), s.config(), s.engine(), s.color(),
+                s.style(), s.points(), s.values(), null, s.colors(), s.notes(), null)).collect(Collectors.toList());
+        exporter.write(spec);
+        exporter.write(new ChartSpec(spec.id(), "bare", spec.setting(), spec.title(), spec.kind(), false, spec.x(), spec.y(),
+                spec.categories(), bare, List.of(), null, false));
+        return paths(dir.resolve("charts/" + spec.stem() + ".svg")) - paths(dir.resolve("charts/bare.svg"));
+    }
+
+    static long paths(Path svg) throws Exception {
+        return Files.readString(svg).split("<path", -1).length - 1;
     }
 }

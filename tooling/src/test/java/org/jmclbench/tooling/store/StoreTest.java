@@ -134,6 +134,21 @@ class StoreTest {
     }
 
     @Test
+    void theDeadlineAccountingIsFlattenedAndAnInfiniteQuantileStaysInTheSummary() throws Exception {
+        JsonNode summary = new ObjectMapper().readTree("{\"tasks\": {\"update\": {\"released\": 40, \"deadlineMisses\": 3,"
+                + " \"missRatio\": 0.075, \"responseTimeReleasedNs\": {\"count\": 40, \"completed\": 37, \"p50\": 2000000,"
+                + " \"p99\": \"inf\", \"max\": \"inf\"}}}}");
+        RunDetails d = new RunDetails();
+        RunFolderIngest.flattenSummary(summary, d);
+        java.util.Map<String, Double> rows = new java.util.HashMap<>();
+        d.metrics.forEach(m -> rows.put(m.task() + "/" + m.metric() + "/" + m.stat(), m.value()));
+        assertEquals(3.0, rows.get("update/deadlineMisses/value"));
+        assertEquals(0.075, rows.get("update/missRatio/value"));
+        assertEquals(2000000.0, rows.get("update/responseTimeReleasedNs/p50"));
+        assertTrue(!rows.containsKey("update/responseTimeReleasedNs/p99"), "\"inf\" is no number: the report reads it from the summary");
+    }
+
+    @Test
     void histogramsRoundTrip() {
         Histogram h = new Histogram(3);
         for (int i = 1; i <= 1000; i++) {

@@ -37,7 +37,7 @@ final class ErrorBarRenderer extends BarRenderer {
             CategoryAxis domainAxis, ValueAxis rangeAxis, CategoryDataset dataset, int row, int column, int pass) {
         super.drawItem(g2, state, dataArea, plot, domainAxis, rangeAxis, dataset, row, column, pass);
         double[] e = intervals.get(((long) row << 32) | column);
-        if (pass != 1 || e == null || dataset.getValue(row, column) == null) {
+        if (pass != getPassCount() - 1 || e == null || dataset.getValue(row, column) == null) { // over the bar, once
             return;
         }
         PlotOrientation o = plot.getOrientation();

@@ -305,7 +305,8 @@ final class ChartSpecs {
                 values.add(a == null ? null : value.apply(a));
                 notes.add(a == null ? null : n + ": peak " + ChartFormats.bytes(a.peakBytes())
                         + (a.size() == null ? "" : " of " + ChartFormats.bytes(a.size()))
-                        + (a.bytesPerRelease() == null ? "" : ", " + ChartFormats.bytes(a.bytesPerRelease()) + " per release"));
+                        + (a.bytesPerRelease() == null ? "" : ", " + ChartFormats.bytes(a.bytesPerRelease()) + " per release")
+                        + (a.allocatingReleases() == null ? "" : ", " + a.allocatingReleases() + " of " + a.releases() + " releases allocated"));
             }
             String color = Palette.area(n, Palette.AREA_COLORS.containsKey(n) ? 0 : privateIndex++);
             series.add(new Series(n, null, null, color, Style.BAR, null, values, null, null, notes));

@@ -38,8 +38,8 @@ import picocli.CommandLine.Parameters;
 public final class CompareCommand implements Callable<Integer> {
 
     /** The metrics compared, in table order. */
-    static final List<Metric> METRICS = List.of(Metric.MISS_COUNT, Metric.LATENCY_MEAN, Metric.LATENCY_P99,
-            Metric.JITTER_MEAN, Metric.JITTER_P99, Metric.DEVIATION);
+    static final List<Metric> METRICS = List.of(Metric.MISS_COUNT, Metric.DEADLINE_MISSES, Metric.MISS_RATIO_PREDICT,
+            Metric.MISS_RATIO_UPDATE, Metric.LATENCY_MEAN, Metric.LATENCY_P99, Metric.JITTER_MEAN, Metric.JITTER_P99, Metric.DEVIATION);
 
     @Parameters(arity = "0..2", paramLabel = "DB", description = "two databases, A then B")
     List<Path> databases = new ArrayList<>();

@@ -238,6 +238,23 @@ final class EvaluationData {
         return d == null ? Stats.wilson(0, 0) : Stats.wilson(d[1], d[0]);
     }
 
+    /**
+     * A memory area as the evaluation's table gives it: {@code update 248 B (1 of 90 releases
+     * allocated, 3 B/release)}; a private memory says how many releases allocated, so that a JIT
+     * one-off (rtsj-compat/README.md) does not read as a release style that allocates.
+     */
+    static String areaText(ReportModel.MemoryArea a) {
+        StringBuilder t = new StringBuilder(a.name()).append(' ').append(bytes(a.peakBytes()));
+        List<String> notes = new ArrayList<>();
+        if (a.releases() != null && a.allocatingReleases() != null) {
+            notes.add(a.allocatingReleases() + " of " + a.releases() + " releases allocated");
+        }
+        if (a.bytesPerRelease() != null) {
+            notes.add(bytes(Math.round(a.bytesPerRelease())) + "/release");
+        }
+        return notes.isEmpty() ? t.toString() : t.append(" (").append(String.join(", ", notes)).append(')').toString();
+    }
+
     static String ratio(Double a, Double b) {
         return a == null || b == null || b == 0 ? "" : num(a / b, 2) + "x";
     }

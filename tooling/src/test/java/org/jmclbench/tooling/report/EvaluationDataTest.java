@@ -67,6 +67,13 @@ class EvaluationDataTest {
     }
 
     @Test
+    void aMemoryAreaSaysHowManyReleasesAllocated() {
+        assertEquals("update 248 B (1 of 270 releases allocated, 3 B/release)",
+                EvaluationData.areaText(new ReportModel.MemoryArea("update", 4096L, 248L, 2.8, 3, 270L, 1L)));
+        assertEquals("immortal 0 B", EvaluationData.areaText(new ReportModel.MemoryArea("immortal", 55_316L, 0L, null, 3, null, null)));
+    }
+
+    @Test
     void aTasksMissRatioIsPooledOverTheRunsWithAWilsonInterval() {
         List<StoredRun> runs = new ArrayList<>();
         for (int missed : new int[] {0, 3, 2}) {

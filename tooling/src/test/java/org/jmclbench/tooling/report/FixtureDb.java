@@ -427,7 +427,8 @@ public final class FixtureDb {
 
     private static void task(ObjectNode t, Job[] jobs, int missed) {
         t.put("released", jobs.length + missed).put("completed", jobs.length).put("done", jobs.length).put("late", 0)
-                .put("skipped", missed).put("terminated", 0).put("missCount", missed);
+                .put("skipped", missed).put("terminated", 0).put("missCount", missed).put("deadlineMisses", missed)
+                .put("missRatio", (double) missed / (jobs.length + missed));
         double[] lat = Arrays.stream(jobs).mapToDouble(Job::latencyNs).toArray();
         double[] jit = Arrays.stream(jobs).mapToDouble(Job::jitterNs).toArray();
         stats(t.putObject("releaseJitterNs"), jit);

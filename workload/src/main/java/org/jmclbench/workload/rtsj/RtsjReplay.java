@@ -150,6 +150,16 @@ public final class RtsjReplay {
         return failure;
     }
 
+    /** Whether an abort of event k's job was requested (its AIE fired at it while it ran). */
+    public boolean abortRequested(int k) {
+        return abortRequestNs[k] >= 0;
+    }
+
+    /** How many events have ended (each must end once: after {@link #run}, the schedule's size). */
+    public synchronized int endedCount() {
+        return ended;
+    }
+
     private synchronized void ended() {
         ended++;
         if (ended == schedule.size()) {

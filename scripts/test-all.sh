@@ -32,5 +32,5 @@ else
     echo "== skipped: scj-mission against the icecap SDK (set HVM_SRC to the hvm-scj folder or tarball) =="
 fi
 
-echo "== verification (Java PathFinder and static checks of the SCJ mission) =="
+echo "== verification (Java PathFinder and static checks of the SCJ mission and the rtsj engine) =="
 "$home/jmclbench" verify

@@ -11,11 +11,6 @@ import org.jmclbench.rtsjcompat.ScjLauncher;
  */
 public final class CompatShim extends RuntimeShim {
     @Override
-    public String name() {
-        return "rtsj-compat";
-    }
-
-    @Override
     public boolean prioritiesApplied() {
         return ScjLauncher.prioritiesApplied();
     }

@@ -28,9 +28,6 @@ public abstract class RuntimeShim {
         }
     }
 
-    /** A short name for summary.json: {@code rtsj-compat} or {@code rtsj}. */
-    public abstract String name();
-
     /** Whether the thread priorities an engine sets are applied by the OS. */
     public abstract boolean prioritiesApplied();
 

@@ -11,11 +11,6 @@ import java.util.List;
  */
 final class StandardShim extends RuntimeShim {
     @Override
-    public String name() {
-        return "rtsj";
-    }
-
-    @Override
     public boolean prioritiesApplied() {
         return true;
     }

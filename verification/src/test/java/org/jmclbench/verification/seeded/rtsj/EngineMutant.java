@@ -70,6 +70,9 @@ public enum EngineMutant {
             }
         }
     }),
+    /** The weaver's slip: a delivery point at the entry of runJob, the robot work, which is not AI-enabled. */
+    POLL_IN_NON_AI(EngineMutant.TASK, "runJob", m -> m.instructions.insert(
+            new MethodInsnNode(Opcodes.INVOKESTATIC, "org/jmclbench/rtsjcompat/Atc", "poll", "()V", false))),
     /** ended() no longer notifies: the dispatcher waits for every event's end forever. */
     LOST_NOTIFY(EngineMutant.REPLAY, "ended", m -> {
         for (AbstractInsnNode i : m.instructions.toArray()) {

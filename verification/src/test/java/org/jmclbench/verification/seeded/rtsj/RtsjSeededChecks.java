@@ -39,6 +39,8 @@ public final class RtsjSeededChecks {
                 aie + ".doInterruptible", "doInterruptible that lets its AIE escape"));
         l.add(mutant(root, "poll-in-monitor", EngineMutant.POLL_IN_MONITOR, Property.P9, "terminate", "thesis",
                 task + ".lockAndRun", "delivery points inside the robot's monitor"));
+        l.add(mutant(root, "poll-in-non-ai", EngineMutant.POLL_IN_NON_AI, Property.P9, "terminate", "atomic",
+                task + ".runJob", "delivery point woven into a method that is not AI-enabled"));
         l.add(mutant(root, "lost-notify", EngineMutant.LOST_NOTIFY, Property.P1, "queue", "thesis",
                 replay + ".awaitEveryEvent", "end of an event not notified"));
         l.add(mutant(root, "ends-twice", EngineMutant.ENDS_TWICE, Property.P5, "queue", "thesis",

@@ -95,32 +95,9 @@ public final class MissionDriver extends PlacedMissionInput implements MissionOu
         }
     }
 
-    /**
-     * P7: skip drops an event only while an admitted job holds the robot (one released at or before
-     * it that ended at or after its release), and terminate aborts a job only when another event
-     * was released at or after it and before its end. In virtual time a job takes no time, so
-     * "busy" is exact: a drop or abort with no such event is the policy's gate deciding wrongly.
-     */
+    /** P7, on the records ({@link PolicyOracle}); a wrong decision is the gate's. */
     private void checkPolicy(CheckedConfiguration config) {
-        PropertyFailure p7 = new PropertyFailure(Property.P7, "an event was dropped or aborted against its policy");
-        JobRecords r = records;
-        for (int k = 0; k < r.size(); k++) {
-            if (r.outcome[k] == JobRecords.SKIPPED) {
-                boolean busy = false;
-                for (int j = 0; j < r.size(); j++) {
-                    busy |= j != k && r.outcome[j] != JobRecords.SKIPPED && r.releaseNs[j] <= r.releaseNs[k]
-                            && r.endNs[j] >= r.releaseNs[k];
-                }
-                p7.unless(busy, config.gate(), "admit");
-            } else if (r.outcome[k] == JobRecords.TERMINATED) {
-                long end = r.startNs[k] < 0 ? Long.MAX_VALUE : r.endNs[k];
-                boolean superseded = false;
-                for (int j = 0; j < r.size(); j++) {
-                    superseded |= j != k && r.releaseNs[j] >= r.releaseNs[k] && r.releaseNs[j] <= end;
-                }
-                p7.unless(superseded, config.gate(), "abortRequested");
-            }
-        }
+        PolicyOracle.check(records, config.gate(), "admit", "abortRequested");
     }
 
     /** P3's oracle: the completed jobs replayed on a fresh localizer equal what the mission recorded. */

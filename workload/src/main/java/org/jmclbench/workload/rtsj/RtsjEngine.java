@@ -9,7 +9,6 @@ import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
-import org.jmclbench.rtsjcompat.ScjLauncher;
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.RunOptions;
@@ -22,6 +21,7 @@ import org.jmclbench.workload.output.HeapUse;
 import org.jmclbench.workload.release.JavaSeEngine;
 import org.jmclbench.workload.release.LocalizerJob;
 import org.jmclbench.workload.release.ReleaseSchedule;
+import org.jmclbench.workload.shim.RuntimeShim;
 
 /**
  * {@code --engine rtsj}: the thesis's RTSJ program on rtsj-compat's RTSJ layer ({@link RtsjReplay}),
@@ -61,7 +61,7 @@ public final class RtsjEngine implements Engine {
         facts.design = o.rtsjDesign;
         facts.dispatcherPriority = PriorityScheduler.instance().getMaxPriority();
         facts.handlerPriority = facts.dispatcherPriority - 1;
-        facts.prioritiesApplied = ScjLauncher.prioritiesApplied();
+        facts.prioritiesApplied = RuntimeShim.get().prioritiesApplied();
         int warmup = o.warmupS > 0 ? schedule.countBefore(o.warmupS, o.timeScale) : 0;
         facts.warmupEvents = warmup;
         try {
@@ -83,7 +83,7 @@ public final class RtsjEngine implements Engine {
             RtsjReplay replay = new RtsjReplay(schedule, o.policy, o.rtsjDesign,
                     new LocalizerJob(d, timeline, localizer, records), records);
             replay.run(hangNs(schedule));
-            records.durationNs = System.nanoTime() - replay.runStartNanoTime();
+            records.durationNs = replay.elapsedNs();
             return new EngineResult(records, Collections.singletonList(heap.end(null, records)), facts);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

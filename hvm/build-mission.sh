@@ -7,7 +7,7 @@
 #   hvm/build-mission.sh [--heap BYTES] [--mode compiled|interpreted]
 #
 # --mode (default: $JMCLBENCH_HVM_MODE, else compiled): compiled translates every method but main
-# to C (icecap -aot, with our patches 13-19; a method that handles floats stays interpreted);
+# to C (icecap -aot, with our patches 13-21; a method that handles floats stays interpreted);
 # interpreted runs every method in icecap's interpreter (the hvm runtime's profile int). The mode
 # is part of the cache key and is written to MODE beside the executable (summary.json's engine.mode).
 # Needs what build-hvm.sh needs (HVM_SRC, ...).

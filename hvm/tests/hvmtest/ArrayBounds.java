@@ -1,14 +1,12 @@
 package hvmtest;
 
-import vm.VMTest;
-
 /**
  * Patch 19, both modes: an array index outside 0..length-1 throws ArrayIndexOutOfBoundsException
  * and reads or writes nothing. Compiled code had no check at all (it read and wrote past the
  * array); the interpreter let a negative index through and threw NullPointerException for one at
  * or above the length. Outside main (icecap -aot).
  */
-public class ArrayBounds {
+public class ArrayBounds extends PatchCases {
     static int[] ints = new int[4];
     static double[] doubles = new double[3];
     static byte[] bytes = new byte[5];
@@ -22,21 +20,11 @@ public class ArrayBounds {
     static long sink;
 
     public static void main(String[] args) {
-        VMTest.markResult(failures() != 0);
+        new ArrayBounds().run(10);
     }
 
-    static int failures() {
-        int failed = 0;
-        for (int i = 0; i < 10; i++) {
-            if (!check(i)) {
-                devices.Console.println(i);
-                failed++;
-            }
-        }
-        return failed;
-    }
-
-    static boolean check(int i) {
+    @Override
+    boolean check(int i) {
         switch (i) {
         case 0:
             return loadInt(ints, four) && loadInt(ints, minus1) && loadInt(ints, big) && loadInt(ints, min)

@@ -506,7 +506,10 @@ public final class ReportModel {
         }
         JsonNode kind = summary.at("/engine/kind");
         if (kind.isTextual()) {
-            out.add("engine " + kind.asText() + (summary.at("/engine/level").isInt() ? " (SCJ level " + summary.at("/engine/level").asInt() + ")" : ""));
+            // the HVM's mode (compiled to C or interpreted) is what its row measures, so the report says it
+            String mode = summary.at("/engine/mode").isTextual() ? ", " + summary.at("/engine/mode").asText() : "";
+            out.add("engine " + kind.asText() + (summary.at("/engine/level").isInt()
+                    ? " (SCJ level " + summary.at("/engine/level").asInt() + mode + ")" : mode.isEmpty() ? "" : " (" + mode.substring(2) + ")"));
         }
         if (params.hasNonNull("memory")) {
             out.add("memory " + params.get("memory").asText());

@@ -19,7 +19,7 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "quick", mixinStandardHelpOptions = true,
         description = {"Runs every JVM found (with its default GC) with the javase and scj engines, the native",
-                "baseline and, with HVM_SRC set, the icecap HVM, x {skip, terminate} x {100, 1600} particles x 1 repetition",
+                "baseline and, with HVM_SRC set, the icecap HVM (compiled to C), x {skip, terminate} x {100, 1600} particles x 1 repetition",
                 "on dataset " + QuickCommand.DATASET + " (10 s) into results/results.db, then builds the report. It is a matrix:",
                 "rerunning it resumes, and `matrix` can add to the same database. With many runtimes, the replay is sped up",
                 "to stay under 5 minutes (--time-scale, which scales deadlines too); the estimate and the chosen scale are printed."})

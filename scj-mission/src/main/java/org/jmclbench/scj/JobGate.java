@@ -49,7 +49,7 @@ public class JobGate {
      * asked to abort at that release's wake-up ({@code r.wakeNs}, set before {@link #admit(int)}),
      * a periodic job at its task's next release ({@link #periodicAbortRequested(int, long)}).
      */
-    public void recordAbortsIn(JobRecords r) {
+    public synchronized void recordAbortsIn(JobRecords r) {
         records = r;
     }
 

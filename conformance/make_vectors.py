@@ -533,23 +533,46 @@ def account(jobs, task):
     return n, by, misses, (misses / n if n else None), len(finite), quantiles
 
 
+def abort_from(job):
+    """When an abort took hold of a job (FORMATS.md section 3, abort_ns): the request, or the start when
+    requested before it; None when the job never started or nothing was requested before its end."""
+    _, _, _, start, end, abort = job
+    if abort < 0 or start < 0 or end < 0:
+        return None
+    at = max(abort, start)
+    return at if at < end else None
+
+
+def abort_latency(jobs, task):
+    """Abort latency (end - abort_ns) over the released jobs an abort took hold of, and how many completed."""
+    mine = [j for j in jobs if (task == "all" or j[0] == task) and j[1] != "pending" and abort_from(j) is not None]
+    values = sorted(j[4] - abort_from(j) for j in mine)
+    n = len(values)
+    quantiles = [None if n == 0 else values[min(n - 1, max(0, (pm * n + 999) // 1000 - 1))] for _, pm in QUANTILES]
+    return n, sum(1 for j in mine if j[1] in ("done", "late")), quantiles
+
+
 def deadline_cases():
-    """Hand-made edge cases, then seeded random runs: (name, [(task, outcome, release, start, end)])."""
+    """Hand-made edge cases, then seeded random runs: (name, [(task, outcome, release, start, end, abort)])."""
     cases = [
         ("empty", []),
-        ("one-predict-done", [("predict", "done", 0, 100, 2100)]),
-        ("all-dropped", [("update", "skipped", 1000 * k, -1, -1) for k in range(3)]),
+        ("one-predict-done", [("predict", "done", 0, 100, 2100, -1)]),
+        ("all-dropped", [("update", "skipped", 1000 * k, -1, -1, -1) for k in range(3)]),
+        # aborts: requested at the end (nothing asked), mid-way, of a job never started, before the start
+        # (it counts from the start; the job completed all the same)
         ("aborted-with-and-without-times", [
-            ("predict", "done", 0, 10, 510), ("update", "terminated", 100, 520, 900),
-            ("update", "terminated", 200, -1, -1), ("predict", "late", 300, 900, 60000300),
-            ("update", "done", 400, 60000310, 60000400)]),
+            ("predict", "done", 0, 10, 510, 510), ("update", "terminated", 100, 520, 900, 600),
+            ("update", "terminated", 200, -1, -1, 300), ("predict", "late", 300, 900, 60000300, 400),
+            ("update", "done", 400, 60000310, 60000400, -1)]),
         ("ties-and-pending", [
-            ("predict", "done", 0, 0, 500), ("predict", "done", 1000, 1000, 1500), ("predict", "late", 2000, 2000, 2500),
-            ("update", "done", 3000, 3000, 3500), ("update", "pending", -1, -1, -1), ("predict", "pending", -1, -1, -1)]),
+            ("predict", "done", 0, 0, 500, -1), ("predict", "done", 1000, 1000, 1500, -1),
+            ("predict", "late", 2000, 2000, 2500, -1), ("update", "done", 3000, 3000, 3500, -1),
+            ("update", "pending", -1, -1, -1, -1), ("predict", "pending", -1, -1, -1, -1)]),
     ]
     # cumulative probabilities of done, late, skipped, terminated (with times); the rest terminated before starting
     for seed, n, cut in ((21, 97, (0.70, 0.82, 0.92, 0.97)), (2026, 1001, (0.90, 0.975, 0.99, 0.995))):
         r = Rng(seed)
+        ra = Rng(seed + 1)  # the abort requests: a stream of their own, so the jobs stay those of before
         jobs = []
         t = 0
         for _ in range(n):
@@ -558,16 +581,19 @@ def deadline_cases():
             u = r.uniform()
             start = t + (r.next() >> 50)
             end = start + 1 + (r.next() >> 40)
+            # an abort request anywhere from before the start to after the end, or none
+            a = ra.uniform()
+            abort = -1 if a < 0.5 else start - (ra.next() >> 52) + int((a - 0.5) * 2.4 * (end - start))
             if u < cut[0]:
-                jobs.append((task, "done", t, start, end))
+                jobs.append((task, "done", t, start, end, abort))
             elif u < cut[1]:
-                jobs.append((task, "late", t, start, end + 50000000))
+                jobs.append((task, "late", t, start, end + 50000000, abort))
             elif u < cut[2]:
-                jobs.append((task, "skipped", t, -1, -1))
+                jobs.append((task, "skipped", t, -1, -1, -1))
             elif u < cut[3]:
-                jobs.append((task, "terminated", t, start, end))
+                jobs.append((task, "terminated", t, start, end, max(abort, start)))
             else:
-                jobs.append((task, "terminated", t, -1, -1))
+                jobs.append((task, "terminated", t, -1, -1, abort))
         cases.append(("random-%d" % seed, jobs))
     return cases
 
@@ -580,11 +606,13 @@ def write_deadlines(out):
               "#   count TASK released done late skipped terminated deadlineMisses missRatio (double bits, hex, or null)"
               " missRatio (%.17g, for humans)\n"
               "#   response TASK count completed min p50 p90 p99 p999 max (ns; inf: not completed; null: nothing released)\n"
+              "#   abort TASK count completed min p50 p90 p99 p999 max: abort latency, end - abort_ns, over the jobs an\n"
+              "#     abort took hold of (abort_ns: the request, or the start when before it; none at or after the end)\n"
               "# end. Pending jobs were never released and count nowhere. Integers exact, missRatio bit-exact.\n")
     for name, jobs in deadline_cases():
         out.write("case %s %d\n" % (name, len(jobs)))
-        for task, outcome, release, start, end in jobs:
-            out.write("job %s %s %d %d %d\n" % (task, outcome, release, start, end))
+        for task, outcome, release, start, end, abort in jobs:
+            out.write("job %s %s %d %d %d %d\n" % (task, outcome, release, start, end, abort))
         for task in ("predict", "update", "all"):
             n, by, misses, ratio, completed, quantiles = account(jobs, task)
             out.write("count %s %d %d %d %d %d %d %s %s\n" % (
@@ -592,6 +620,10 @@ def write_deadlines(out):
                 "null" if ratio is None else hexd(ratio), "null" if ratio is None else g17(ratio)))
             out.write("response %s %d %d %s\n" % (task, n, completed, " ".join(
                 "null" if q is None else "inf" if q == math.inf else "%d" % q for q in quantiles)))
+        for task in ("predict", "update", "all"):
+            n, completed, quantiles = abort_latency(jobs, task)
+            out.write("abort %s %d %d %s\n" % (task, n, completed, " ".join(
+                "null" if q is None else "%d" % q for q in quantiles)))
         out.write("end\n")
 
 

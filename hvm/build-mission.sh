@@ -2,14 +2,14 @@
 # Builds the HVM executable of the jmclbench SCJ mission (the same core-immortal and
 # scj-mission sources the JVM runs, compiled against icecap's SCJ library, with the entry point
 # and natives of hvm/mission) and prints its path. Cached beside the tool chain, keyed by the
-# sources, the natives and the heap size.
+# sources, the natives, the heap size and the mode.
 #
-#   hvm/build-mission.sh [--heap BYTES] [--mode interpreted|compiled]
+#   hvm/build-mission.sh [--heap BYTES] [--mode compiled|interpreted]
 #
-# --mode (default: $JMCLBENCH_HVM_MODE, else interpreted): interpreted runs every method in
-# icecap's interpreter; compiled translates every method but main to C (icecap -aot, with our
-# patches 13-18; a method with float bytecodes stays interpreted). The mode is part of the cache
-# key and is written to MODE beside the executable (summary.json's engine.mode).
+# --mode (default: $JMCLBENCH_HVM_MODE, else compiled): compiled translates every method but main
+# to C (icecap -aot, with our patches 13-21; a method that handles floats stays interpreted);
+# interpreted runs every method in icecap's interpreter (the hvm runtime's profile int). The mode
+# is part of the cache key and is written to MODE beside the executable (summary.json's engine.mode).
 # Needs what build-hvm.sh needs (HVM_SRC, ...).
 set -euo pipefail
 
@@ -18,7 +18,7 @@ ROOT=$(dirname "$HERE")
 # The VM's Java heap holds the SCJ backing store (immortal, mission and private memories);
 # memory areas larger than this fail at launch.
 heap=268435456
-mode=${JMCLBENCH_HVM_MODE:-interpreted}
+mode=${JMCLBENCH_HVM_MODE:-compiled}
 while [ $# -gt 0 ]; do
     case "$1" in
         --heap) heap=$2; shift 2 ;;
@@ -35,7 +35,7 @@ esac
 tc=$("$HERE/build-hvm.sh")
 srcs=("$ROOT/core-immortal/src/main/java" "$ROOT/scj-mission/src/main/java" "$HERE/mission/src")
 key=$( { find "${srcs[@]}" -name '*.java' -print0 | sort -z | xargs -0 sha256sum | sed "s|$ROOT/||";
-         sha256sum "$HERE/mission/natives.c" "$HERE/hvmc.sh" | sed "s|$ROOT/||"; echo "heap $heap"; [ "$mode" = interpreted ] || echo "mode $mode"; } \
+         sha256sum "$HERE/mission/natives.c" "$HERE/hvmc.sh" | sed "s|$ROOT/||"; echo "heap $heap"; echo "mode $mode"; } \
        | sha256sum | cut -c1-16)
 out=$tc/mission-$key
 exe=$out/jmclbench-hvm

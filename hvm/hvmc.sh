@@ -7,8 +7,9 @@
 #
 # --mode: interpreted (the default) translates no method (the VM interprets the bytecode);
 # compiled translates every method to C except those named main (icecap's -aot), and except
-# methods that handle floats (patch 18; they stay interpreted). With patches 13-18 compiled code
-# follows Java for int, long and double (issue 18; no array bounds checks yet).
+# methods that handle floats (patch 18; they stay interpreted). With patches 13-21 compiled code
+# follows Java for int, long and double, array bounds included (issue 18). The mission's default
+# (build-mission.sh) is compiled; this script's stays interpreted, and its callers say which.
 # CP: the program's class folders (':'-separated), compiled for Java 8 against DIR/rt.jar
 # (-bootclasspath) and DIR/sdk. FILE.c: C natives of the program (functions named
 # n_<package>_<Class>_<method>(int32 *sp)); they are compiled with the generated VM, with its

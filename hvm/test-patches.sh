@@ -40,6 +40,8 @@ tests=(
     "LongArithmetic 16-long-arithmetic interpreted,compiled"
     "NaNCompare 17-nan-compare-saturation interpreted,compiled"
     "FloatOps 18-float-interpreted interpreted,compiled"
+    "ArrayBounds 19-array-bounds interpreted,compiled"
+    "FloorCeil 21-strictmath-floor-ceil interpreted,compiled"
 )
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-patches.XXXXXX")
@@ -66,6 +68,7 @@ for variant in "${variants[@]}"; do
                     result="fail (the compiler crashes)"; rc=-2
                 else
                     result="BUILD-FAILED"; rc=-1
+                    tail -5 "$exe.log" | sed 's/^/    | /' >&2
                 fi
             else
                 timeout "$TIMEOUT" "$exe" > "$exe.out" 2>&1 || rc=$?

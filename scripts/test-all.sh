@@ -25,6 +25,18 @@ echo "== short fuzz runs of every parser (bench/fuzz.sh; docs/RELIABILITY.md) ==
 
 echo "== Ant build of the SCJ variant (build.xml) =="
 ant -q -f "$home/build.xml" clean jars
+
+echo "== Ant build of the rtsj engine for an RTSJ VM (rtsj-compat's jar standing for the VM's library) =="
+ant -q -f "$home/build.xml" -Drtsj.api="$home/build/ant/jmclbench-rtsj-compat.jar" rtsj-engine
+# rtsj-compat is on that class path, so javac alone cannot see a use of it: the bytecode rule can.
+"${JAVA_HOME:+$JAVA_HOME/bin/}java" -cp "$home/verification/target/classes:$(cat "$home/verification/target/verify-classpath.txt")" \
+    org.jmclbench.verification.bytecode.RtsjApiCheck --unwoven "$home/build/ant/jmclbench-rtsj-engine.jar"
+rtsj_out=$(mktemp -d)
+"${JAVA_HOME:+$JAVA_HOME/bin/}java" -cp "$home/build/ant/jmclbench-rtsj-engine.jar:$home/build/ant/jmclbench-rtsj-compat.jar" \
+    org.jmclbench.workload.WorkloadMain run --engine rtsj -p 100 --policy terminate --dataset "$home/data/match-quick" \
+    -O "$rtsj_out" --force
+[ -n "$(find "$rtsj_out" -name summary.json)" ] || { echo "test-all: the Ant-built rtsj engine wrote no summary.json" >&2; exit 1; }
+rm -rf "$rtsj_out"
 if [ -n "${HVM_SRC:-}" ]; then
     echo "== scj-mission against the icecap SDK's SCJ API =="
     "$home/scripts/check-icecap-api.sh"
@@ -32,5 +44,5 @@ else
     echo "== skipped: scj-mission against the icecap SDK (set HVM_SRC to the hvm-scj folder or tarball) =="
 fi
 
-echo "== verification (Java PathFinder and static checks of the SCJ mission) =="
+echo "== verification (Java PathFinder and static checks of the SCJ mission and the rtsj engine) =="
 "$home/jmclbench" verify

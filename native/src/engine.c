@@ -96,12 +96,22 @@ int jm_timeline_build(jm_timeline *tl, const jm_dataset *ds, double time_scale, 
 	for (i = 0; i < tl->n; i++) {
 		jm_job *j = &tl->jobs[i];
 
-		j->start_ns = j->end_ns = j->cpu_ns = j->wake_ns = -1;
+		j->start_ns = j->end_ns = j->cpu_ns = j->wake_ns = j->abort_ns = -1;
 		j->release_ns = tl->events[i].release_ns;
 		j->deadline_ns = tl->events[i].deadline_ns;
 		j->outcome = JM_OUTCOME_PENDING;
 	}
 	return 0;
+}
+
+int64_t jm_abort_from_ns(const jm_job *j)
+{
+	int64_t from;
+
+	if (j->abort_ns < 0 || j->start_ns < 0 || j->end_ns < 0)
+		return -1;
+	from = j->abort_ns > j->start_ns ? j->abort_ns : j->start_ns;
+	return from < j->end_ns ? from : -1;
 }
 
 void jm_timeline_free(jm_timeline *tl)
@@ -293,7 +303,7 @@ static void *dispatcher_main(void *arg)
 {
 	struct engine *e = arg;
 	struct sched_param sp;
-	int k;
+	int k, latest = -1;
 
 	if (pthread_getschedparam(pthread_self(), &e->dispatcher_policy, &sp) == 0)
 		e->dispatcher_priority = sp.sched_priority;
@@ -315,6 +325,10 @@ static void *dispatcher_main(void *arg)
 		case JM_POLICY_TERMINATE:
 			if (e->running >= 0)
 				atomic_store_explicit(&e->abort, 1, memory_order_relaxed);
+			/* the request of the superseded event's job (running, waiting or ended), as Java's gates */
+			if (latest >= 0 && e->tl->jobs[latest].abort_ns < 0)
+				e->tl->jobs[latest].abort_ns = wake - e->t0;
+			latest = k;
 			/* a released event superseded before it could start never will: terminated */
 			while (e->head < e->tail)
 				e->tl->jobs[e->fifo[e->head++]].outcome = JM_OUTCOME_TERMINATED;

@@ -29,6 +29,7 @@ typedef struct {
 typedef struct {
 	int64_t start_ns, end_ns, cpu_ns; /* -1 where there is no such time */
 	int64_t wake_ns;                  /* dispatcher wake-up for this release; -1 in ideal runs */
+	int64_t abort_ns;                 /* first abort request (terminate), -1 never; see jm_abort_from_ns */
 	int64_t release_ns, deadline_ns;  /* as recorded (ideal: release = start, deadline -1) */
 	enum jm_outcome outcome;
 	double ex, ey, et;                /* estimate committed by a completed job */
@@ -48,6 +49,13 @@ typedef struct {
 int jm_timeline_build(jm_timeline *tl, const jm_dataset *ds, double time_scale, double until_s,
 		      int inclusive);
 void jm_timeline_free(jm_timeline *tl);
+
+/*
+ * When the abort of a job took hold, the job files' abort_ns (Java's JobRecords.abortFromNs): its
+ * first abort request, or its start when requested before it started; -1 when it never started or
+ * nothing was requested before its end. The abort latency is end_ns minus this.
+ */
+int64_t jm_abort_from_ns(const jm_job *j);
 
 /* How the real-time engine ran: the scheduling it actually got. */
 typedef struct {

@@ -62,14 +62,14 @@ static int completed(enum jm_outcome o)
 
 int jm_task_summary_compute(jm_task_summary *s, const jm_timeline *tl, int task)
 {
-	int64_t *v[4];
-	long nv[4] = { 0 };
+	int64_t *v[5];
+	long nv[5] = { 0 };
 	int k, q, ret = -1;
 
 	memset(s, 0, sizeof(*s));
-	for (q = 0; q < 4; q++)
+	for (q = 0; q < 5; q++)
 		v[q] = malloc(sizeof(int64_t) * (size_t)(tl->n ? tl->n : 1));
-	if (!v[0] || !v[1] || !v[2] || !v[3])
+	if (!v[0] || !v[1] || !v[2] || !v[3] || !v[4])
 		goto out;
 	for (k = 0; k < tl->n; k++) {
 		const jm_job *j = &tl->jobs[k];
@@ -79,22 +79,10 @@ int jm_task_summary_compute(jm_task_summary *s, const jm_timeline *tl, int task)
 		if (j->outcome == JM_OUTCOME_PENDING)
 			continue; /* never released (a run cut short) */
 		s->released++;
-		switch (j->outcome) {
-		case JM_OUTCOME_DONE:
-			s->done++;
-			break;
-		case JM_OUTCOME_LATE:
-			s->late++;
-			break;
-		case JM_OUTCOME_SKIPPED:
-			s->skipped++;
-			break;
-		case JM_OUTCOME_TERMINATED:
-			s->terminated++;
-			break;
-		default:
-			break;
-		}
+		s->done += j->outcome == JM_OUTCOME_DONE;
+		s->late += j->outcome == JM_OUTCOME_LATE;
+		s->skipped += j->outcome == JM_OUTCOME_SKIPPED;
+		s->terminated += j->outcome == JM_OUTCOME_TERMINATED;
 		if (j->start_ns >= 0 && j->release_ns >= 0)
 			v[0][nv[0]++] = j->start_ns - j->release_ns;
 		/* latency and response time of completed jobs only: an aborted job's end is no answer */
@@ -105,6 +93,11 @@ int jm_task_summary_compute(jm_task_summary *s, const jm_timeline *tl, int task)
 		}
 		if (j->cpu_ns >= 0)
 			v[3][nv[3]++] = j->cpu_ns;
+		if (jm_abort_from_ns(j) >= 0) {
+			v[4][nv[4]++] = j->end_ns - jm_abort_from_ns(j);
+			if (completed(j->outcome))
+				s->aborts_completed++;
+		}
 	}
 	s->completed = s->done + s->late;
 	s->deadline_misses = s->late + s->skipped + s->terminated;
@@ -122,9 +115,10 @@ int jm_task_summary_compute(jm_task_summary *s, const jm_timeline *tl, int task)
 		s->released_response[q] = i < nv[2] ? v[2][i] : JM_NOT_COMPLETED;
 	}
 	jm_stats_compute(&s->cpu, v[3], nv[3]);
+	jm_stats_compute(&s->abort_latency, v[4], nv[4]);
 	ret = 0;
 out:
-	for (q = 0; q < 4; q++)
+	for (q = 0; q < 5; q++)
 		free(v[q]);
 	return ret;
 }

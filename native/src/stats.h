@@ -33,6 +33,8 @@ typedef struct {
 	long released, completed, done, late, skipped, terminated;
 	long deadline_misses; /* late + skipped + terminated, under every policy */
 	jm_stats jitter, latency, response, cpu;
+	jm_stats abort_latency; /* end - jm_abort_from_ns of the jobs an abort took hold of */
+	long aborts_completed;  /* of those, the ones that completed all the same */
 	/* response time at jm_released_per_mille over every release, JM_NOT_COMPLETED = +inf;
 	 * meaningful when released > 0 */
 	int64_t released_response[JM_RELEASED_QUANTILES];

@@ -539,7 +539,7 @@ static enum jm_outcome outcome_of(struct vfile *v, const char *name)
 	return JM_OUTCOME_PENDING;
 }
 
-/* deadlines.txt: the accounting and released quantiles of summary.json, as the Java side computes them. */
+/* deadlines.txt: the accounting, released quantiles and abort latency of summary.json, as the Java side computes them. */
 static void check_deadlines(const char *dir)
 {
 	struct vfile v;
@@ -563,7 +563,7 @@ static void check_deadlines(const char *dir)
 			tl.events = calloc((size_t)tl.n + 1, sizeof(*tl.events));
 			tl.jobs = calloc((size_t)tl.n + 1, sizeof(*tl.jobs));
 			for (int k = 0; k < tl.n; k++) {
-				if (!vnext(&v) || need(&v, 6) || strcmp(v.tok[0], "job")) {
+				if (!vnext(&v) || need(&v, 7) || strcmp(v.tok[0], "job")) {
 					fail(&v, "expected a job line");
 					goto out;
 				}
@@ -572,6 +572,7 @@ static void check_deadlines(const char *dir)
 				tl.jobs[k].release_ns = integer(&v, 3);
 				tl.jobs[k].start_ns = integer(&v, 4);
 				tl.jobs[k].end_ns = integer(&v, 5);
+				tl.jobs[k].abort_ns = integer(&v, 6);
 				tl.jobs[k].cpu_ns = -1;
 			}
 			continue;
@@ -611,6 +612,22 @@ static void check_deadlines(const char *dir)
 					snprintf(got, sizeof(got), "%lld", (long long)s.released_response[q]);
 				if (strcmp(want, got))
 					fail(&v, "%s: expected %s, got %s", jm_released_names[q], want, got);
+			}
+		} else if (!strcmp(kind, "abort")) {
+			const jm_stats *a = &s.abort_latency;
+			int64_t got[6] = { a->min, a->p50, a->p90, a->p99, a->p999, a->max };
+
+			if (integer(&v, 2) != a->count || integer(&v, 3) != s.aborts_completed)
+				fail(&v, "count/completed: got %ld %ld", a->count, s.aborts_completed);
+			for (q = 0; q < 6; q++) {
+				char want[32];
+
+				if (a->count == 0)
+					snprintf(want, sizeof(want), "null");
+				else
+					snprintf(want, sizeof(want), "%lld", (long long)got[q]);
+				if (strcmp(v.tok[4 + q], want))
+					fail(&v, "abort quantile %d: expected %s, got %s", q, v.tok[4 + q], want);
 			}
 		} else {
 			fail(&v, "unknown line kind %s", kind);

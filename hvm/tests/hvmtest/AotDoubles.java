@@ -1,34 +1,22 @@
 package hvmtest;
 
-import vm.VMTest;
-
 /**
  * Patch 13: the compiled code's double opcodes. dsub and ddiv in order, drem, dastore (stored
  * nothing) and daload (missing), l2d (missing), d2l of values beyond 32 bits (wrote 0 as the
  * high word). The checks are outside main: icecap's -aot compiles every method but main.
  */
-public class AotDoubles {
+public class AotDoubles extends PatchCases {
     static double a = 7.5;
     static double b = 2.0;
     static long big = (1L << 40) + 3;
     static double[] shared = new double[3];
 
     public static void main(String[] args) {
-        VMTest.markResult(failures() != 0);
+        new AotDoubles().run(8);
     }
 
-    static int failures() {
-        int failed = 0;
-        for (int i = 0; i < 8; i++) {
-            if (!check(i)) {
-                devices.Console.println(i);
-                failed++;
-            }
-        }
-        return failed;
-    }
-
-    static boolean check(int i) {
+    @Override
+    boolean check(int i) {
         switch (i) {
         case 0:
             return a - b == 5.5 && b - a == -5.5 && a / b == 3.75 && b / a == 2.0 / 7.5;

@@ -1,13 +1,11 @@
 package hvmtest;
 
-import vm.VMTest;
-
 /**
  * Patch 14: the compiled code's pop2 (a discarded long or double result), dup2_x1 (a long
  * assigned to a field inside an expression) and dup2_x2 (a long or double assigned to an array
  * element inside an expression): "unsupported byte code" before. Outside main (icecap -aot).
  */
-public class AotStackOps {
+public class AotStackOps extends PatchCases {
     static long big = 0x123456789ABCDEFL;
     static double d = 2.75;
     static int calls;
@@ -15,18 +13,7 @@ public class AotStackOps {
     double dfield;
 
     public static void main(String[] args) {
-        VMTest.markResult(failures() != 0);
-    }
-
-    static int failures() {
-        int failed = 0;
-        for (int i = 0; i < 4; i++) {
-            if (!check(i)) {
-                devices.Console.println(i);
-                failed++;
-            }
-        }
-        return failed;
+        new AotStackOps().run(4);
     }
 
     static long countedLong() {
@@ -39,7 +26,8 @@ public class AotStackOps {
         return d;
     }
 
-    static boolean check(int i) {
+    @Override
+    boolean check(int i) {
         switch (i) {
         case 0: {
             calls = 0;

@@ -1,7 +1,5 @@
 package hvmtest;
 
-import vm.VMTest;
-
 /**
  * Patch 18: float. The compiler leaves a method that handles floats to the interpreter (its
  * compiled float code converted floats through int variables; frem and f2l were missing); the
@@ -10,7 +8,7 @@ import vm.VMTest;
  * passing a float; check 7 relays floats through a method with no float bytecode. Outside main
  * (icecap -aot).
  */
-public class FloatOps {
+public class FloatOps extends PatchCases {
     static float f = 2.5f;
     static float g = -1.25f;
     static float fnan = fzero() / fzero();
@@ -21,21 +19,11 @@ public class FloatOps {
     }
 
     public static void main(String[] args) {
-        VMTest.markResult(failures() != 0);
+        new FloatOps().run(8);
     }
 
-    static int failures() {
-        int failed = 0;
-        for (int i = 0; i < 8; i++) {
-            if (!check(i)) {
-                devices.Console.println(i);
-                failed++;
-            }
-        }
-        return failed;
-    }
-
-    static boolean check(int i) {
+    @Override
+    boolean check(int i) {
         switch (i) {
         case 0:
             return f + g == 1.25f && f * g == -3.125f && f / g == -2.0f && f - g == 3.75f && g - f == -3.75f;

@@ -1,7 +1,5 @@
 package hvmtest;
 
-import vm.VMTest;
-
 /**
  * Patch 15: Java's int semantics in both modes. Compiled: ishr was logical, shift counts were not
  * masked, i2b and i2c were no-ops, arithmetic was done in the operands' inferred width (8 bits
@@ -10,7 +8,7 @@ import vm.VMTest;
  * compiler, MIN_VALUE % -1 trapped. Both modes: x / MIN_VALUE looped forever and MIN_VALUE / y
  * gave 0. Interpreted: i2b zero-extended, i2c kept 8 bits. Outside main (icecap -aot).
  */
-public class IntSemantics {
+public class IntSemantics extends PatchCases {
     static int m = -16;
     static int big = 0x12345678;
     static int minus1 = -1;
@@ -25,21 +23,11 @@ public class IntSemantics {
     static byte bmin = -128;
 
     public static void main(String[] args) {
-        VMTest.markResult(failures() != 0);
+        new IntSemantics().run(10);
     }
 
-    static int failures() {
-        int failed = 0;
-        for (int i = 0; i < 10; i++) {
-            if (!check(i)) {
-                devices.Console.println(i);
-                failed++;
-            }
-        }
-        return failed;
-    }
-
-    static boolean check(int i) {
+    @Override
+    boolean check(int i) {
         switch (i) {
         case 0:
             return m >> 2 == -4 && m >>> 28 == 15 && (m >> s33) == -8 && (big >> s35) == (big >> 3);

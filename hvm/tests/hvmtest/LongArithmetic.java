@@ -1,13 +1,11 @@
 package hvmtest;
 
-import vm.VMTest;
-
 /**
  * Patch 16: 64-bit arithmetic. Both modes: lshr shifted logically. Compiled: ladd, lsub, lmul,
  * land, lor, lxor, lneg, lcmp and the shifts are emitted as C 64-bit operations (they were helper
  * calls on 32-bit halves). Outside main (icecap -aot).
  */
-public class LongArithmetic {
+public class LongArithmetic extends PatchCases {
     static long x = -16L;
     static long p = 0x123456789L;
     static long q = 0x987654321L;
@@ -19,21 +17,11 @@ public class LongArithmetic {
     static int minus5 = -5;
 
     public static void main(String[] args) {
-        VMTest.markResult(failures() != 0);
+        new LongArithmetic().run(8);
     }
 
-    static int failures() {
-        int failed = 0;
-        for (int i = 0; i < 8; i++) {
-            if (!check(i)) {
-                devices.Console.println(i);
-                failed++;
-            }
-        }
-        return failed;
-    }
-
-    static boolean check(int i) {
+    @Override
+    boolean check(int i) {
         switch (i) {
         case 0:
             return x >> s2 == -4L && (x >>> 60) == 15L && (mone >> 63) == -1L && (Long.MIN_VALUE >> 63) == -1L;

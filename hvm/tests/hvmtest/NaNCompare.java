@@ -1,13 +1,11 @@
 package hvmtest;
 
-import vm.VMTest;
-
 /**
  * Patch 17, both modes: dcmpl/dcmpg gave 0 for a NaN operand (so x != x was false and
  * Double.isNaN failed); d2i did not saturate (C's conversion is undefined out of range) nor map NaN
  * to 0. Outside main (icecap -aot).
  */
-public class NaNCompare {
+public class NaNCompare extends PatchCases {
     static double nan = zero() / zero();
     static double one = 1.0;
     static double big = 1e20;
@@ -17,21 +15,11 @@ public class NaNCompare {
     }
 
     public static void main(String[] args) {
-        VMTest.markResult(failures() != 0);
+        new NaNCompare().run(5);
     }
 
-    static int failures() {
-        int failed = 0;
-        for (int i = 0; i < 5; i++) {
-            if (!check(i)) {
-                devices.Console.println(i);
-                failed++;
-            }
-        }
-        return failed;
-    }
-
-    static boolean check(int i) {
+    @Override
+    boolean check(int i) {
         switch (i) {
         case 0:
             return nan != nan && !(nan == nan) && one == one;

@@ -28,6 +28,8 @@ final class HvmOutput implements MissionOutput {
         for (int k = 0; k < n; k++) {
             HvmData.put(r.outcome[k]);
         }
+        HvmData.put(MissionRunFile.ABORT_SECTION);
+        putLongs(r.abortNs, n);
         putReals(r.estX, n);
         putReals(r.estY, n);
         putReals(r.estTheta, n);

@@ -94,6 +94,7 @@ public class AsynchronouslyInterruptedException extends InterruptedException {
             target = s;
         }
         boolean interrupted = false;
+        boolean mine;
         try {
             logic.run(this);
         } catch (AsynchronouslyInterruptedException e) {
@@ -103,9 +104,10 @@ public class AsynchronouslyInterruptedException extends InterruptedException {
                 target = null;
             }
             s.exit();
+            // Whatever this call was asked to handle is cleared, however the logic ended (another
+            // throwable included: found by the rtsj engine's JPF check); an outer AIE stays for the caller.
+            mine = s.clear(this) | s.clear(GENERIC);
         }
-        // Whatever this call was asked to handle is cleared; an outer AIE stays for the caller.
-        boolean mine = s.clear(this) | s.clear(GENERIC);
         AsynchronouslyInterruptedException p = s.pending();
         if (interrupted && (mine || p == null)) {
             logic.interruptAction(this);

@@ -13,10 +13,13 @@ import org.jmclbench.rtsjcompat.TimeSource;
  * areas (as an SCJ thread: {@link org.jmclbench.rtsjcompat.ScjThread}) and be the target of
  * asynchronous transfer of control ({@link AsynchronouslyInterruptedException}).
  *
- * <p>Sleeps use the real-time clock on system time ({@code System.nanoTime} and
- * {@code LockSupport.parkNanos} re-armed from the absolute deadline); this layer's virtual time
- * is for SCJ missions only. {@link #run()} begins when {@link #start()} is called; a periodic
- * thread's release k is at (start() + the start offset) + k * period.
+ * <p>Sleeps use the real-time clock of the installed {@link TimeSource}: on system time
+ * {@code System.nanoTime} and {@code LockSupport.parkNanos} re-armed from the absolute deadline;
+ * on virtual time (Java PathFinder, deterministic tests) a thread running a {@code logic}
+ * Runnable takes part from {@link #start()} to the end of its {@link #run()}, as an SCJ handler
+ * does (a subclass that overrides {@code run()} does not: its end cannot be seen). {@link #run()}
+ * begins when {@link #start()} is called; a periodic thread's release k is at (start() + the start
+ * offset) + k * period.
  */
 public class RealtimeThread extends ScjThread implements Schedulable {
     private static int created;
@@ -27,6 +30,8 @@ public class RealtimeThread extends ScjThread implements Schedulable {
     private final MemoryArea area;
     private long firstReleaseNs;
     private long releases;
+    // Counted by the time source from start() to the end of run() (virtual time's participants).
+    private boolean participant;
 
     /** A thread at the default priority, not periodic. */
     public RealtimeThread() {
@@ -79,21 +84,39 @@ public class RealtimeThread extends ScjThread implements Schedulable {
             offset = ((PeriodicParameters) release).getStart().toNanos();
         }
         firstReleaseNs = now + offset;
+        participant = !overridesRun();
+        if (participant) {
+            TimeSource.current().threadStarted();
+        }
         super.start();
+    }
+
+    private boolean overridesRun() {
+        try {
+            return getClass().getMethod("run").getDeclaringClass() != RealtimeThread.class;
+        } catch (NoSuchMethodException e) {
+            throw new IllegalStateException(e);
+        }
     }
 
     /** Runs the logic given at construction, with this thread's memory area as allocation context. */
     @Override
     public void run() {
-        if (area != null) {
-            area.enter(new Runnable() {
-                @Override
-                public void run() {
-                    RealtimeThread.super.run();
-                }
-            });
-        } else {
-            super.run();
+        try {
+            if (area != null) {
+                area.enter(new Runnable() {
+                    @Override
+                    public void run() {
+                        RealtimeThread.super.run();
+                    }
+                });
+            } else {
+                super.run();
+            }
+        } finally {
+            if (participant) {
+                TimeSource.current().threadEnded();
+            }
         }
     }
 
@@ -187,14 +210,21 @@ public class RealtimeThread extends ScjThread implements Schedulable {
     }
 
     private static long clockNanos() {
-        TimeSource t = TimeSource.current();
-        if (!(t instanceof SystemTimeSource)) {
-            throw new UnsupportedOperationException("RTSJ threads run on system time, not on the " + t.name() + " time source");
-        }
-        return t.nanoTime();
+        return TimeSource.current().nanoTime();
     }
 
     private static void sleepUntilNanos(long deadline) throws InterruptedException {
+        TimeSource t = TimeSource.current();
+        if (!(t instanceof SystemTimeSource)) {
+            // Virtual time: the source's own sleep, which advances the clock when all participants wait.
+            ScjThread self = ScjThread.self();
+            while (!t.sleepUntil(self, deadline)) {
+                if (Thread.interrupted()) {
+                    throw new InterruptedException("sleep interrupted");
+                }
+            }
+            return;
+        }
         while (true) {
             if (Thread.interrupted()) {
                 throw new InterruptedException("sleep interrupted");

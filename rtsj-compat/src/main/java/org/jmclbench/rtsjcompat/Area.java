@@ -50,6 +50,8 @@ public final class Area {
     private long peak;
     private long total;
     private long cycles;
+    // cycles in which something was charged: tells a one-off (a JIT compile request, docs) from a release that always allocates
+    private long allocatingCycles;
 
     /** A new area whose budget is enforced; {@code parent} is the next longer-lived area (null for immortal). */
     public Area(String name, int kind, long size, Area parent) {
@@ -177,6 +179,11 @@ public final class Area {
         return cycles;
     }
 
+    /** How many times the area was emptied holding something (a private area: releases that allocated). */
+    public synchronized long allocatingCycles() {
+        return allocatingCycles;
+    }
+
     /** Adds {@code bytes}; returns the bytes held now (more than the size means overflow). */
     synchronized long charge(long bytes) {
         used += bytes;
@@ -189,6 +196,9 @@ public final class Area {
 
     /** Frees everything the area holds (end of a release, of a mission). */
     public synchronized void empty() {
+        if (used > 0) {
+            allocatingCycles++;
+        }
         used = 0;
         cycles++;
     }

@@ -12,6 +12,7 @@ public final class AreaUsage implements Named {
     private final long peakBytes;
     private final long totalBytes;
     private final long cycles;
+    private final long allocatingCycles;
 
     AreaUsage(Area a) {
         this.name = a.name();
@@ -21,6 +22,7 @@ public final class AreaUsage implements Named {
         this.peakBytes = a.peak();
         this.totalBytes = a.total();
         this.cycles = a.cycles();
+        this.allocatingCycles = a.allocatingCycles();
     }
 
     /** The area's stable name, e.g. {@code ImmortalMemory}, {@code MissionMemory}, {@code PrivateMemory:PredictHandler}. */
@@ -58,6 +60,14 @@ public final class AreaUsage implements Named {
         return cycles;
     }
 
+    /**
+     * Cycles in which something was charged (a private area: the releases that allocated). In the
+     * preallocated style on HotSpot a single one can be the JIT's, not the application's (README).
+     */
+    public long allocatingCycles() {
+        return allocatingCycles;
+    }
+
     /** Mean bytes per cycle (per release, for a private area); 0 when never emptied. */
     public double bytesPerCycle() {
         return cycles == 0 ? 0.0 : (double) totalBytes / cycles;
@@ -65,6 +75,6 @@ public final class AreaUsage implements Named {
 
     @Override
     public String toString() {
-        return name + " (" + kind + "): size " + size + ", peak " + peakBytes + ", total " + totalBytes + ", cycles " + cycles;
+        return name + " (" + kind + "): size " + size + ", peak " + peakBytes + ", total " + totalBytes + ", cycles " + cycles + " (" + allocatingCycles + " allocating)";
     }
 }

@@ -12,13 +12,17 @@ import javax.realtime.MemoryArea;
  * {@code BoundAsyncEventHandler} that is RTSJ's rule; an unbound handler gets one too), created
  * when the handler is first attached to an event, so never in a measured window. A throwable
  * escaping the handler is recorded in {@link RtsjRuntime#failure()} and the handler goes on
- * serving. Fire, count and wake-up allocate nothing.
+ * serving. Fire, count and wake-up allocate nothing. The server takes part in the installed
+ * {@link TimeSource} (started, idle while it waits for a fire, ended), so that virtual time
+ * advances only when every handler waits.
  */
 public final class HandlerServer implements Runnable {
     private final Runnable handler;
     private final MemoryArea area;
     private final ScjThread thread;
+    private final TimeSource time = TimeSource.current();
     private int fireCount;
+    private boolean idle;
     private long fires;
     private boolean stopped;
 
@@ -28,6 +32,7 @@ public final class HandlerServer implements Runnable {
         this.area = area;
         this.thread = new ScjThread(this, name, javaPriority);
         RtsjRuntime.register(this);
+        time.threadStarted();
         thread.start();
     }
 
@@ -48,6 +53,15 @@ public final class HandlerServer implements Runnable {
         }
         fireCount++;
         fires++;
+        wake();
+    }
+
+    // Under this monitor: the waiting server is runnable again, before it wakes (TimeSource's protocol).
+    private void wake() {
+        if (idle) {
+            idle = false;
+            time.leaveIdle();
+        }
         notifyAll();
     }
 
@@ -81,26 +95,35 @@ public final class HandlerServer implements Runnable {
     public synchronized int getAndIncrement() {
         int c = fireCount;
         fireCount = c + 1;
+        wake();
         return c;
     }
 
     @Override
     public void run() {
-        while (awaitFire()) {
-            try {
-                if (area != null) {
-                    area.enter(handler);
-                } else {
-                    handler.run();
+        try {
+            while (awaitFire()) {
+                try {
+                    if (area != null) {
+                        area.enter(handler);
+                    } else {
+                        handler.run();
+                    }
+                } catch (Throwable t) {
+                    RtsjRuntime.fail(name(), t);
                 }
-            } catch (Throwable t) {
-                RtsjRuntime.fail(name(), t);
             }
+        } finally {
+            time.threadEnded();
         }
     }
 
     private synchronized boolean awaitFire() {
         while (fireCount == 0 && !stopped) {
+            if (!idle) {
+                idle = true;
+                time.enterIdle();
+            }
             try {
                 wait();
             } catch (InterruptedException e) {
@@ -113,6 +136,6 @@ public final class HandlerServer implements Runnable {
     /** Ends the server once the fires pending now are handled; later fires are ignored. */
     public synchronized void stop() {
         stopped = true;
-        notifyAll();
+        wake();
     }
 }

@@ -106,6 +106,11 @@ public final class ScjLauncher {
         return report.areas().get(a).cycles();
     }
 
+    /** How many releases allocated in area a (a private memory; README: one can be the JIT's). */
+    public long areaAllocatingReleases(int a) {
+        return report.areas().get(a).allocatingCycles();
+    }
+
     /** Mean bytes allocated in area a per release. */
     public double areaBytesPerRelease(int a) {
         return report.areas().get(a).bytesPerCycle();

@@ -84,6 +84,23 @@ class MemoryAreaTest {
     }
 
     @Test
+    void theReleasesThatAllocatedAreCountedApartFromThoseThatDidNot() {
+        int[] n = new int[1];
+        RunReport r = launch(1 << 20, oneHandler(1 << 20, 100_000, 12, () -> {
+            if (n[0] == 3 || n[0] == 7) {
+                sink = new byte[4000];
+            }
+            n[0]++;
+        }));
+        assertTrue(r.succeeded(), () -> String.valueOf(r.failure()));
+        AreaUsage p = r.area("PrivateMemory:H");
+        assertEquals(12, p.cycles());
+        // releases 4 and 8 allocated; the first may also have (loading the classes it touches)
+        assertTrue(p.allocatingCycles() >= 2 && p.allocatingCycles() <= 3, p.toString());
+        assertTrue(p.peakBytes() >= 4000, p.toString());
+    }
+
+    @Test
     void initializeIsChargedToMissionMemoryAndNestedAndOuterAllocationsToTheirAreas() {
         Mission m = Apps.mission("M", 1 << 20, mission -> {
             sink = new byte[50_000];

@@ -1,6 +1,7 @@
 package org.jmclbench.scj;
 
 import org.jmclbench.core.policy.OverrunPolicy;
+import org.jmclbench.core.record.JobRecords;
 
 /**
  * The overrun policy's whole rule and state, shared by the handlers: which event may use the
@@ -30,6 +31,8 @@ public class JobGate {
     // skip: when the periodic task's previous job ended, ns from the mission start; written and
     // read by that task's handler only, so it needs no lock
     private long periodicEndNs = Long.MIN_VALUE;
+    // terminate: where abort requests are recorded (JobRecords.abortNs); null, not recorded
+    private JobRecords records;
 
     public JobGate(OverrunPolicy policy, int events) {
         this.policy = policy;
@@ -41,6 +44,15 @@ public class JobGate {
         return policy;
     }
 
+    /**
+     * Records terminate's abort requests in {@code r}: the job of the event a release supersedes is
+     * asked to abort at that release's wake-up ({@code r.wakeNs}, set before {@link #admit(int)}),
+     * a periodic job at its task's next release ({@link #periodicAbortRequested(int, long)}).
+     */
+    public synchronized void recordAbortsIn(JobRecords r) {
+        records = r;
+    }
+
     /** At k's release: true hands k to its handler, false drops it (skip, the robot busy). */
     public synchronized boolean admit(int k) {
         if (policy == OverrunPolicy.SKIP) {
@@ -49,9 +61,23 @@ public class JobGate {
             }
             owner = k;
         } else if (policy == OverrunPolicy.TERMINATE) {
+            int superseded = latest;
             latest = k; // the job in progress sees this at its next poll and aborts
+            if (superseded != FREE && records != null) {
+                records.requestAbort(superseded, records.wakeNs[k]);
+            }
         }
         return true;
+    }
+
+    /**
+     * The periodic job of k ran past {@code atNs}, its {@link #periodicAbortAtNs(long)}: its abort
+     * was requested then (unless a release asked earlier).
+     */
+    public synchronized void periodicAbortRequested(int k, long atNs) {
+        if (records != null) {
+            records.requestAbort(k, atNs);
+        }
     }
 
     /**

@@ -74,6 +74,9 @@ final class JobRunner implements AbortSignal {
             end = nowNs();
         }
         gate.release(k);
+        if (abortAtNs < end) {
+            gate.periodicAbortRequested(k, abortAtNs);
+        }
         JobRecords r = entry.records;
         r.startNs[k] = start;
         r.endNs[k] = end;

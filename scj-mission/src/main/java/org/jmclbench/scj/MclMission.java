@@ -42,6 +42,7 @@ public class MclMission extends Mission {
         records.setInitialEstimate(localizer.estimateX(), localizer.estimateY(), localizer.estimateTheta());
         Robot robot = config.newRobot(localizer, entry);
         JobGate gate = config.newGate(entry.size());
+        gate.recordAbortsIn(records);
 
         // The sensor stands for an interrupt: above the two tasks, which share one priority.
         int top = PriorityScheduler.instance().getMaxPriority();

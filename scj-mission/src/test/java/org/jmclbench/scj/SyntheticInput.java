@@ -8,7 +8,7 @@ import org.jmclbench.core.mcl.Playground;
  * odometry every 50 ms, and the laser sees the beacons in turn every 110 ms, offset by 25 ms so
  * that no laser event ties with an odometry event.
  */
-final class SyntheticInput extends SizedMissionInput {
+final class SyntheticInput extends PlacedMissionInput {
     static final double PERIOD = 0.050;
     private final double[] odoTime;
     private final double[] odoDx;
@@ -16,10 +16,9 @@ final class SyntheticInput extends SizedMissionInput {
     private final double[] odoDtheta;
     private final double[] laserTime;
     private final double[] laserAngle;
-    private final Playground field = Playground.thesis();
 
     SyntheticInput(double seconds) {
-        super((int) Math.round(seconds / PERIOD), (int) ((seconds - 0.025) / 0.110));
+        super((int) Math.round(seconds / PERIOD), (int) ((seconds - 0.025) / 0.110), Playground.thesis(), 1.5, 0.6, 0.0);
         int odo = odometryCount();
         odoTime = new double[odo];
         odoDx = new double[odo];
@@ -48,7 +47,7 @@ final class SyntheticInput extends SizedMissionInput {
                 th = Angles.wrap2pi(th + odoDtheta[i]);
             }
             int b = j % 3;
-            laserAngle[j] = Angles.bearing(x, y, th, field.beaconX[b], field.beaconY[b]);
+            laserAngle[j] = Angles.bearing(x, y, th, playground().beaconX[b], playground().beaconY[b]);
         }
     }
 
@@ -64,25 +63,5 @@ final class SyntheticInput extends SizedMissionInput {
     public void readLaser(double[] time, double[] angle) {
         System.arraycopy(laserTime, 0, time, 0, laserTime.length);
         System.arraycopy(laserAngle, 0, angle, 0, laserAngle.length);
-    }
-
-    @Override
-    public Playground playground() {
-        return field;
-    }
-
-    @Override
-    public double startX() {
-        return 1.5;
-    }
-
-    @Override
-    public double startY() {
-        return 0.6;
-    }
-
-    @Override
-    public double startTheta() {
-        return 0.0;
     }
 }

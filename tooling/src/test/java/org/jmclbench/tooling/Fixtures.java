@@ -56,6 +56,17 @@ public final class Fixtures {
         return java;
     }
 
+    /**
+     * The fake runtimes of tests that fill a store with runs that succeed and runs that fail, in
+     * folders a, b and crash of {@code dir}: Java 17 and 21 that run, and a Java 11 that crashes.
+     */
+    public record FakeJvms(String java17, String java21, String crashing11) {
+        public static FakeJvms in(Path dir) throws IOException {
+            return new FakeJvms(fakeJava(dir, "a", "ok", 0, null, 17).toString(), fakeJava(dir, "b", "ok", 0, null, 21).toString(),
+                    fakeJava(dir, "crash", "crash", 0, null, 11).toString());
+        }
+    }
+
     /** A sleep length unique to this test folder, so that a test can find a leftover hung process. */
     public static String hangMark(Path dir) {
         return "1000." + Math.abs(dir.toString().hashCode());

@@ -18,6 +18,7 @@ import org.jmclbench.verification.seeded.mission.RobotKept;
 import org.jmclbench.verification.seeded.mission.StrayAllocation;
 import org.jmclbench.verification.seeded.mission.UnguardedRead;
 import org.jmclbench.verification.seeded.mission.WidePoll;
+import org.jmclbench.verification.seeded.rtsj.RtsjSeededChecks;
 import org.jmclbench.verification.toy.ToyChecks;
 
 import java.util.ArrayList;
@@ -81,6 +82,7 @@ public final class SeededCatalog implements CheckCatalog {
                 mission("wide-poll", Property.P4, MissionChecks.intervalRun(), WidePoll.class, WidePoll.class, "predict",
                         "job polling every fourth interval")));
         l.addAll(ToyChecks.all());
+        l.addAll(RtsjSeededChecks.all());
         return l;
     }
 

@@ -28,6 +28,11 @@ public final class JobRecords {
     public final long[] cpuNs;
     /** When the dispatcher woke up to release the event, -1 where there is no dispatcher. */
     public final long[] wakeNs;
+    /**
+     * When an abort of event k's job was first requested (terminate: a later release, the gate's
+     * request or an AIE fired at it), ns from the run start; -1 never. Raw: see {@link #abortFromNs}.
+     */
+    public final long[] abortNs;
     /** One of PENDING, DONE, LATE, SKIPPED, TERMINATED. */
     public final byte[] outcome;
     /** Estimate committed by the job (valid when DONE or LATE). */
@@ -52,6 +57,7 @@ public final class JobRecords {
         deadlineNs = new long[n];
         cpuNs = new long[n];
         wakeNs = new long[n];
+        abortNs = new long[n];
         outcome = new byte[n];
         estX = new double[n];
         estY = new double[n];
@@ -70,6 +76,7 @@ public final class JobRecords {
             deadlineNs[k] = -1;
             cpuNs[k] = -1;
             wakeNs[k] = -1;
+            abortNs[k] = -1;
             outcome[k] = PENDING;
             estX[k] = Double.NaN;
             estY[k] = Double.NaN;
@@ -91,6 +98,30 @@ public final class JobRecords {
     /** Whether event k's job completed (DONE or LATE) and so committed an estimate. */
     public boolean completed(int k) {
         return outcome[k] == DONE || outcome[k] == LATE;
+    }
+
+    /**
+     * When the abort of event k's job took hold, the abort_ns of the job files: the request, or
+     * the job's start when it was requested before the job started; -1 when the job never started
+     * or no abort was requested before its end (a request at or after the end asked nothing of
+     * it). The abort latency is {@code endNs[k] - abortFromNs(k)}, positive where defined.
+     */
+    public long abortFromNs(int k) {
+        long a = abortNs[k];
+        long s = startNs[k];
+        long e = endNs[k];
+        if (a < 0 || s < 0 || e < 0) {
+            return -1;
+        }
+        long from = a > s ? a : s;
+        return from < e ? from : -1;
+    }
+
+    /** Records an abort request of event k's job at {@code ns}, unless an earlier one is recorded. */
+    public void requestAbort(int k, long ns) {
+        if (abortNs[k] < 0 || ns < abortNs[k]) {
+            abortNs[k] = ns;
+        }
     }
 
     /** Records the initialisation's estimate. */

@@ -53,6 +53,22 @@ class AsynchronouslyInterruptedExceptionTest {
     }
 
     @Test
+    void aPendingAieIsClearedWhenTheLogicEndsWithAnotherThrowable() {
+        OnRealtimeThread.run(self -> {
+            AsynchronouslyInterruptedException aie = new AsynchronouslyInterruptedException();
+            IllegalStateException failure = new IllegalStateException("the job failed");
+            IllegalStateException thrown = assertThrows(IllegalStateException.class, () -> aie.doInterruptible(task("t", e -> {
+                assertTrue(e.fire());
+                throw failure; // leaves run(AIE) with the AIE pending
+            })));
+            assertSame(failure, thrown);
+            assertFalse(aie.clear(), "left pending on the thread: delivered in its next doInterruptible");
+            assertTrue(new AsynchronouslyInterruptedException().doInterruptible(task("next", e -> Atc.poll())));
+            assertEquals(Collections.singletonList("next completed"), log);
+        });
+    }
+
+    @Test
     void fireWithoutADoInterruptibleInProgressReturnsFalse() {
         assertFalse(new AsynchronouslyInterruptedException().fire());
     }

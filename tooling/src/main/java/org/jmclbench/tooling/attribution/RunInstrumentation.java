@@ -15,17 +15,10 @@ import org.jmclbench.tooling.load.LoadSettings;
  * capture flags, the load (started here, ended by {@link #close()}), the workload options of
  * the load, and afterwards the run's {@link AttributionData}. One object per run, used with
  * try-with-resources on the thread that waits for the run (see {@link org.jmclbench.tooling.load.CpuLoad}).
+ *
+ * @param jvm whether the runtime under test is a JVM (the native one takes no allocation load)
  */
-public final class RunInstrumentation implements AutoCloseable {
-    private final EventCapture capture;
-    private final LoadSession load;
-    private final boolean jvm;
-
-    private RunInstrumentation(EventCapture capture, LoadSession load, boolean jvm) {
-        this.capture = capture;
-        this.load = load;
-        this.jvm = jvm;
-    }
+public record RunInstrumentation(EventCapture capture, LoadSession load, boolean jvm) implements AutoCloseable {
 
     /**
      * Why a runtime cannot run under a load scenario, or null when it can: the {@code alloc}
@@ -57,11 +50,6 @@ public final class RunInstrumentation implements AutoCloseable {
     /** Workload options: the load scenario's name and, on a JVM, its allocation load. */
     public List<String> workloadArgs() {
         return jvm ? load.workloadArgs() : List.of();
-    }
-
-    /** The load, e.g. for progress lines. */
-    public LoadSession load() {
-        return load;
     }
 
     /** Ends the load's processes. */

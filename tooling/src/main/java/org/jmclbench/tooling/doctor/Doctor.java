@@ -3,7 +3,6 @@ package org.jmclbench.tooling.doctor;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.TreeSet;
@@ -20,16 +19,10 @@ import com.fasterxml.jackson.databind.ObjectMapper;
  * permission for SCHED_FIFO, memlock limit, CPU frequency governor, isolated CPUs, transparent huge
  * pages, clocksource, virtualisation and steal time, cyclictest. Files are read below {@code root}
  * (the real {@code /} normally; tests pass a fake tree).
+ *
+ * @param runCommands whether checks may run commands (systemd-detect-virt, cyclictest, the HVM check) and wait; tests do not
  */
-public final class Doctor {
-
-    private final Path root;
-    private final boolean runCommands;
-
-    public Doctor(Path root, boolean runCommands) {
-        this.root = root;
-        this.runCommands = runCommands;
-    }
+public record Doctor(Path root, boolean runCommands) {
 
     /** This machine. */
     public static Doctor system() {
@@ -37,20 +30,8 @@ public final class Doctor {
     }
 
     public List<DoctorCheck> run() {
-        List<DoctorCheck> c = new ArrayList<>();
-        c.add(preemptRt());
-        c.add(rtThrottling());
-        c.add(fifoPermission());
-        c.add(memlock());
-        c.add(governor());
-        c.add(isolatedCpus());
-        c.add(transparentHugePages());
-        c.add(clocksource());
-        c.add(virtualisation());
-        c.add(stealTime());
-        c.add(cyclictest());
-        c.add(hvm());
-        return c;
+        return List.of(preemptRt(), rtThrottling(), fifoPermission(), memlock(), governor(), isolatedCpus(),
+                transparentHugePages(), clocksource(), virtualisation(), memory(), stealTime(), cyclictest(), hvm());
     }
 
     /** The checks as JSON: {@code [{"check","status","value","advice"}]} (stored in machines.doctor_json). */
@@ -183,6 +164,16 @@ public final class Doctor {
         }
         return DoctorCheck.warn("clocksource", cs,
                 "tsc is the cheapest and most precise clock; " + cs + " makes every timestamp cost more (check available_clocksource)");
+    }
+
+    /** The machine's memory (MemTotal), for the record: an evaluation says what it ran on. */
+    DoctorCheck memory() {
+        String meminfo = read("proc/meminfo");
+        java.util.regex.Matcher m = meminfo == null ? null : java.util.regex.Pattern.compile("(?m)^MemTotal:\\s+(\\d+) kB").matcher(meminfo);
+        if (m == null || !m.find()) {
+            return DoctorCheck.warn("memory", "unknown", "proc/meminfo has no MemTotal: the machine's memory is not recorded with its results");
+        }
+        return DoctorCheck.pass("memory", String.format(java.util.Locale.ROOT, "%.1f GiB", Long.parseLong(m.group(1)) / 1048576.0));
     }
 
     DoctorCheck virtualisation() {

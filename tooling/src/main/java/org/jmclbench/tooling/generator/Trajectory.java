@@ -1,6 +1,7 @@
 package org.jmclbench.tooling.generator;
 
-import java.util.Arrays;
+import java.util.ArrayList;
+import java.util.List;
 
 /**
  * The robot's true, continuous motion: one piece per simulation step, with constant forward
@@ -8,64 +9,37 @@ import java.util.Arrays;
  * any time is exact (closed form), which is what the laser crossing times are solved on.
  */
 public final class Trajectory {
-    private double[] t0 = new double[1024];
-    private double[] t1 = new double[1024];
-    private double[] x0 = new double[1024];
-    private double[] y0 = new double[1024];
-    private double[] th0 = new double[1024];
-    private double[] v = new double[1024];
-    private double[] w = new double[1024];
-    private int size;
+
+    /**
+     * One simulation step, from {@code start} to {@code end} (s): leaving (x, y, theta) at forward
+     * speed {@code speed} (m/s) and turn rate {@code turnRate} (rad/s).
+     */
+    public record Piece(double start, double end, double x, double y, double theta, double speed, double turnRate) {
+        /** The pose at time t within this piece (theta not wrapped). */
+        public Pose poseAt(double t) {
+            return arc(x, y, theta, speed, turnRate, t - start);
+        }
+    }
+
+    private final List<Piece> pieces = new ArrayList<>();
 
     void add(double start, double end, double x, double y, double theta, double speed, double turnRate) {
-        if (size == t0.length) {
-            int n = size * 2;
-            t0 = Arrays.copyOf(t0, n);
-            t1 = Arrays.copyOf(t1, n);
-            x0 = Arrays.copyOf(x0, n);
-            y0 = Arrays.copyOf(y0, n);
-            th0 = Arrays.copyOf(th0, n);
-            v = Arrays.copyOf(v, n);
-            w = Arrays.copyOf(w, n);
-        }
-        t0[size] = start;
-        t1[size] = end;
-        x0[size] = x;
-        y0[size] = y;
-        th0[size] = theta;
-        v[size] = speed;
-        w[size] = turnRate;
-        size++;
+        pieces.add(new Piece(start, end, x, y, theta, speed, turnRate));
     }
 
     /** Number of pieces (simulation steps). */
     public int size() {
-        return size;
+        return pieces.size();
     }
 
-    /** Start time of piece i. */
-    public double start(int i) {
-        return t0[i];
-    }
-
-    /** End time of piece i. */
-    public double end(int i) {
-        return t1[i];
-    }
-
-    /** Forward speed during piece i, m/s. */
-    public double speed(int i) {
-        return v[i];
-    }
-
-    /** Turn rate during piece i, rad/s. */
-    public double turnRate(int i) {
-        return w[i];
+    /** Piece i. */
+    public Piece piece(int i) {
+        return pieces.get(i);
     }
 
     /** The pose at time t within piece i (theta not wrapped). */
     public Pose poseIn(int i, double t) {
-        return arc(x0[i], y0[i], th0[i], v[i], w[i], t - t0[i]);
+        return pieces.get(i).poseAt(t);
     }
 
     /**
@@ -74,10 +48,10 @@ public final class Trajectory {
      */
     public Pose poseAt(double t) {
         int lo = 0;
-        int hi = size - 1;
+        int hi = pieces.size() - 1;
         while (lo < hi) { // the last piece starting at or before t
             int mid = (lo + hi + 1) >>> 1;
-            if (t0[mid] <= t) {
+            if (pieces.get(mid).start() <= t) {
                 lo = mid;
             } else {
                 hi = mid - 1;

@@ -13,17 +13,10 @@ import java.util.List;
  * it, switched on by {@link #workloadArgs()} ({@code --load-alloc}). The scenario's name goes to
  * the workload too ({@code --load-name}), which records it in summary.json's
  * {@code parameters.load}; the runner records it in {@code runs.load}.
+ *
+ * @param cpu the CPU hogs, or null when the scenario has no cpu part
  */
-public final class LoadSession implements AutoCloseable {
-    private final LoadScenario scenario;
-    private final LoadSettings settings;
-    private final CpuLoad cpu;
-
-    private LoadSession(LoadScenario scenario, LoadSettings settings, CpuLoad cpu) {
-        this.scenario = scenario;
-        this.settings = settings;
-        this.cpu = cpu;
-    }
+public record LoadSession(LoadScenario scenario, LoadSettings settings, CpuLoad cpu) implements AutoCloseable {
 
     /**
      * Starts the out-of-process part of {@code scenario}.
@@ -43,11 +36,6 @@ public final class LoadSession implements AutoCloseable {
             args.add(settings.allocMbPerS() + "," + settings.allocLiveMb());
         }
         return args;
-    }
-
-    /** The scenario. */
-    public LoadScenario scenario() {
-        return scenario;
     }
 
     /** A one-line description, e.g. {@code mixed: stress-ng --cpu 2; alloc 100 MB/s, 16 MB live}. */

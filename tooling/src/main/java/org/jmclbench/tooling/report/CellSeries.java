@@ -11,8 +11,8 @@ import org.HdrHistogram.Histogram;
 import org.HdrHistogram.HistogramIterationValue;
 
 /**
- * The series of a cell read from the store: the merged histograms' latency spectrum and jitter
- * CDF, the first repetition's task latencies, pauses and trajectory, the repetitions' deviation.
+ * The series of a cell read from the store: the merged histograms' latency and abort latency
+ * spectra and jitter CDF, the first repetition's task latencies, pauses and trajectory, the repetitions' deviation.
  */
 final class CellSeries {
 
@@ -38,6 +38,10 @@ final class CellSeries {
         if (completion != null) {
             c.responseCompletion.put(task, completion);
         }
+    }
+    Histogram abort = merged(store.histograms(keys, "all", "abortLatencyNs"));
+    if (abort != null) {
+        c.abortSpectrum = spectrum(abort);
     }
     Histogram jitter = merged(store.histograms(keys, "all", "releaseJitterNs"));
     if (jitter != null) {

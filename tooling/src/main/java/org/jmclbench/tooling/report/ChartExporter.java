@@ -107,6 +107,7 @@ final class ChartExporter {
         JFreeChart chart = render(spec);
         ChartUtils.saveChartAsPNG(dir.resolve(spec.stem() + ".png").toFile(), chart, WIDTH, HEIGHT);
         SVGGraphics2D g2 = new SVGGraphics2D(WIDTH, HEIGHT);
+        g2.setDefsKeyPrefix(spec.stem() + "-"); // the default is made from the clock: the same chart must give the same bytes
         g2.setGeomDoubleConverter(ChartExporter::twoDecimals); // a hundredth of a pixel is plenty
         chart.draw(g2, new Rectangle(0, 0, WIDTH, HEIGHT));
         SVGUtils.writeToSVG(dir.resolve(spec.stem() + ".svg").toFile(), g2.getSVGElement());

@@ -109,6 +109,12 @@ final class ChartSpecs {
                     + "its 95% interval cut at 0 and 1. A store run on an idle machine only has one bar per configuration.", true,
                     s -> TaskCharts.conditions(s, "conditions-load", "Miss ratio by load scenario", TaskMetric.MISS_RATIO, "all",
                             c -> c.load)),
+            new Figure("abort-latency", "Abort latency (terminate)", "From the abort request (a later release: the gate\u2019s "
+                    + "request, or the AIE fired at the job) to the aborted job\u2019s end, over every job an abort took hold of "
+                    + "(the abort_ns column of the job files), every repetition merged; x = 1/(1\u2212p) on a log axis, latency "
+                    + "(ms) on a log axis. A cooperative job ends at its next poll; the rtsj thesis design runs the job to its end "
+                    + "(the AIE deferred in the robot\u2019s monitor). The static bound beside it: ./jmclbench abort-bound.",
+                    true, ChartSpecs::abortLatency),
             new Figure("breakdown", "Breakdown load (queue)", "Per runtime, the largest particle count at which every job of "
                     + "both tasks completed by its deadline in every repetition under queue, every smaller count of the store "
                     + "holding too (hover: the smallest count that did not). Only under the queue policy, where no job is dropped: "
@@ -195,7 +201,8 @@ final class ChartSpecs {
                     List<ReportModel.Cell> at = cells.stream().filter(c -> c.particles == particles).toList();
                     if (!at.isEmpty()) {
                         Scope s = new Scope(model, new Setting(dataset, policy, particles), at);
-                        FIGURES.stream().filter(Figure::perSetting).forEach(f -> out.add(f.builder().apply(s)));
+                        FIGURES.stream().filter(Figure::perSetting).map(f -> f.builder().apply(s)).filter(Objects::nonNull)
+                                .forEach(out::add);
                     }
                 }
             }
@@ -219,7 +226,7 @@ final class ChartSpecs {
         return vsParticles(s, "deviation", "Mean deviation vs particles", "deviation xy (m, mean, 95% CI)", Metric.DEVIATION);
     }
 
-    /** Bars per particle count, one per runtime, with the 95% interval cut at zero (a count or a distance is never negative). */
+    /** Bars per particle count, one per runtime, with the 95% bootstrap interval of the mean (within the runs' range: never below zero). */
     private static ChartSpec vsParticles(Scope s, String id, String title, String yLabel, Metric metric) {
         List<Integer> counts = s.cells().stream().map(c -> c.particles).distinct().sorted().toList();
         List<Series> series = new ArrayList<>();
@@ -231,7 +238,7 @@ final class ChartSpecs {
                         .map(c -> c.metrics.get(metric.name())).findFirst().orElse(null);
                 boolean has = a != null && a.mean() != null;
                 values.add(has ? a.mean() : null);
-                errors.add(has && a.half() != null ? new double[] {Math.max(0, a.mean() - a.half()), a.mean() + a.half()} : null);
+                errors.add(has && a.low() != null ? new double[] {a.low(), a.high()} : null);
             }
             if (values.stream().anyMatch(v -> v != null)) {
                 series.add(new Series(config, config, engine, s.color(config), Style.BAR, null, values, errors, null, null));
@@ -298,7 +305,8 @@ final class ChartSpecs {
                 values.add(a == null ? null : value.apply(a));
                 notes.add(a == null ? null : n + ": peak " + ChartFormats.bytes(a.peakBytes())
                         + (a.size() == null ? "" : " of " + ChartFormats.bytes(a.size()))
-                        + (a.bytesPerRelease() == null ? "" : ", " + ChartFormats.bytes(a.bytesPerRelease()) + " per release"));
+                        + (a.bytesPerRelease() == null ? "" : ", " + ChartFormats.bytes(a.bytesPerRelease()) + " per release")
+                        + (a.allocatingReleases() == null ? "" : ", " + a.allocatingReleases() + " of " + a.releases() + " releases allocated"));
             }
             String color = Palette.area(n, Palette.AREA_COLORS.containsKey(n) ? 0 : privateIndex++);
             series.add(new Series(n, null, null, color, Style.BAR, null, values, null, null, notes));
@@ -379,14 +387,28 @@ final class ChartSpecs {
     }
 
     static ChartSpec spectrum(Scope s) {
+        return percentiles(s, "spectrum", "Task latency by percentile, all jobs of all repetitions", "task latency (ms, log)",
+                c -> c.latencySpectrum);
+    }
+
+    /** The abort latency spectrum per runtime; null where no run had an abort take hold (every policy but terminate). */
+    static ChartSpec abortLatency(Scope s) {
+        ChartSpec c = percentiles(s, "abort-latency", "Abort latency by percentile, every aborted job of every repetition",
+                "abort latency (ms, log)", cell -> cell.abortSpectrum);
+        return c.series().isEmpty() ? null : c;
+    }
+
+    /** One line per runtime of [1/(1-p), ms, p] points, both axes log. */
+    private static ChartSpec percentiles(Scope s, String id, String title, String yLabel,
+                                         Function<ReportModel.Cell, List<double[]>> points) {
         List<Series> series = new ArrayList<>();
         for (ReportModel.Cell c : s.ordered()) {
-            List<double[]> pts = c.latencySpectrum.stream().map(p -> new double[] {p[0], Math.max(p[1], 1e-4)}).toList();
+            List<double[]> pts = points.apply(c).stream().map(p -> new double[] {p[0], Math.max(p[1], 1e-4)}).toList();
             addIfAny(series, new Series(c.config, c.config, c.engine, s.color(c.config), Style.line(1.5), pts, null, null, null, null));
         }
-        return s.spec("spectrum", "Task latency by percentile, all jobs of all repetitions", Kind.LINES, false,
+        return s.spec(id, title, Kind.LINES, false,
                 new Axis("percentile (log scale of 1/(1\u2212p))", Scale.LOG, Format.PERCENTILE, 1.0, null),
-                new Axis("task latency (ms, log)", Scale.LOG, Format.NUMBER, null, null), null, series);
+                new Axis(yLabel, Scale.LOG, Format.NUMBER, null, null), null, series);
     }
 
     static ChartSpec jitterCdf(Scope s) {

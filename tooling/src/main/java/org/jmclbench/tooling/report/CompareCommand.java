@@ -20,13 +20,15 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /**
- * Compares two result sets metric by metric, like benchstat: means with 95% CIs, the ratio
- * B/A with a bootstrap interval, and a Mann-Whitney U test per metric.
+ * Compares two result sets metric by metric, like benchstat: means with their 95% bootstrap
+ * intervals, the ratio B/A with its bootstrap interval, and per metric whether {@link Separation}'s
+ * rule tells A and B apart ("not separated" otherwise: never a ranking the data do not carry).
  */
 @Command(name = "compare", mixinStandardHelpOptions = true,
-        description = {"Compares two result sets metric by metric, like benchstat: A and B (95%% CI),",
-                "the ratio B/A with its bootstrap 95%% CI (fixed seed) and whether the difference",
-                "is significant (Mann-Whitney U, alpha 0.05; \"n too small\" below 3 runs a side).",
+        description = {"Compares two result sets metric by metric, like benchstat: A and B (mean [95%% bootstrap",
+                "interval]), the ratio B/A with its bootstrap 95%% CI (fixed seed) and whether one is lower:",
+                "only with at least 10 runs a side, Mann-Whitney U p < 0.05 and the ratio's interval",
+                "excluding 1; else \"not separated\" (\"n too small to separate\" below 10 runs a side).",
                 "",
                 "  compare A.db B.db      the same configurations in two databases (two machines)",
                 "  compare --db X.db --a RUNTIME[/PROFILE][/ENGINE][/MEMORY] --b ...",
@@ -36,8 +38,8 @@ import picocli.CommandLine.Parameters;
 public final class CompareCommand implements Callable<Integer> {
 
     /** The metrics compared, in table order. */
-    static final List<Metric> METRICS = List.of(Metric.MISS_COUNT, Metric.LATENCY_MEAN, Metric.LATENCY_P99,
-            Metric.JITTER_MEAN, Metric.JITTER_P99, Metric.DEVIATION);
+    static final List<Metric> METRICS = List.of(Metric.MISS_COUNT, Metric.DEADLINE_MISSES, Metric.MISS_RATIO_PREDICT,
+            Metric.MISS_RATIO_UPDATE, Metric.LATENCY_MEAN, Metric.LATENCY_P99, Metric.JITTER_MEAN, Metric.JITTER_P99, Metric.DEVIATION);
 
     @Parameters(arity = "0..2", paramLabel = "DB", description = "two databases, A then B")
     List<Path> databases = new ArrayList<>();
@@ -129,8 +131,10 @@ public final class CompareCommand implements Callable<Integer> {
                     + ") has runs in both A and B" + (hasFilter() ? " with the given filters" : ""));
         }
         out.println();
-        out.println("B/A CI: percentile bootstrap, " + Stats.BOOTSTRAP_RESAMPLES + " resamples, seed " + Stats.BOOTSTRAP_SEED
-                + "; p: two-sided Mann-Whitney U, significant when p < " + Stats.ALPHA + "; n = completed runs.");
+        out.println("A, B: mean [95% percentile-bootstrap interval]; B/A CI: percentile bootstrap, " + Stats.BOOTSTRAP_RESAMPLES
+                + " resamples, seed " + Stats.BOOTSTRAP_SEED + "; separated: at least " + Separation.MIN_REPETITIONS
+                + " runs a side, two-sided Mann-Whitney U p < " + Stats.ALPHA + " and the B/A interval excluding 1"
+                + " (docs/REPORT.md); n = completed runs.");
         return 0;
     }
 
@@ -215,8 +219,8 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     private void printTable(List<StoredRun> ra, List<StoredRun> rb) {
-        String fmt = "%-26s %-24s %-24s %8s  %-20s %s%n";
-        out.printf(Locale.ROOT, fmt, "metric", "A", "B", "B/A", "95% CI of B/A", "difference");
+        String fmt = "%-26s %-30s %-30s %8s  %-20s %s%n";
+        out.printf(Locale.ROOT, fmt, "metric", "A", "B", "B/A", "95% CI of B/A", "separation");
         for (Metric m : METRICS) {
             double[] xa = values(ra, m);
             double[] xb = values(rb, m);
@@ -234,27 +238,23 @@ public final class CompareCommand implements Callable<Integer> {
     record Row(String ratio, String ci, String verdict) {
     }
 
-    /** Ratio, its bootstrap CI and the verdict of the test, for two samples. */
+    /** Ratio, its bootstrap CI and {@link Separation}'s wording, for two samples. */
     static Row compare(double[] xa, double[] xb) {
         if (xa.length == 0 || xb.length == 0) {
             return new Row("-", "-", "no data");
         }
-        Stats.RatioCi r = Stats.ratioCi(xa, xb);
+        Separation.Result separation = Separation.of(xa, xb);
+        Stats.RatioCi r = separation.ratio();
         String ratio = Double.isFinite(r.ratio()) ? String.format(Locale.ROOT, "%.3f", r.ratio()) : (Stats.mean(xb) == 0 ? "1 (0/0)" : "inf");
         if (Double.isNaN(r.ratio()) && Stats.mean(xa) == 0 && Stats.mean(xb) == 0) {
             ratio = "1 (0/0)";
         }
-        String ci = Double.isFinite(r.low()) && Double.isFinite(r.high())
-                ? String.format(Locale.ROOT, "[%.3f, %.3f]", r.low(), r.high()) : "-";
-        String verdict;
-        if (xa.length < Stats.MIN_SAMPLES_FOR_TEST || xb.length < Stats.MIN_SAMPLES_FOR_TEST) {
-            verdict = "n too small";
-        } else {
-            double p = Stats.mannWhitneyP(xa, xb);
-            String pv = p < 0.001 ? "p<0.001" : String.format(Locale.ROOT, "p=%.3f", p);
-            verdict = (p < Stats.ALPHA ? "significant (" : "~ not significant (") + pv + ")";
-        }
-        return new Row(ratio, ci, verdict);
+        String ci = !Double.isNaN(r.low()) && !Double.isNaN(r.high()) ? "[" + bound(r.low()) + ", " + bound(r.high()) + "]" : "-";
+        return new Row(ratio, ci, separation.text("A", "B"));
+    }
+
+    private static String bound(double v) {
+        return Double.isInfinite(v) ? "inf" : String.format(Locale.ROOT, "%.3f", v);
     }
 
     private static double[] values(List<StoredRun> runs, Metric m) {
@@ -265,9 +265,9 @@ public final class CompareCommand implements Callable<Integer> {
         if (xs.length == 0) {
             return "-";
         }
-        Stats.MeanCi ci = Stats.meanCi(xs);
-        String half = Double.isFinite(ci.halfWidth()) ? " ±" + num(ci.halfWidth()) : "";
-        return num(ci.mean()) + half + " n=" + xs.length;
+        Stats.Interval ci = Stats.bootstrapMean(xs);
+        String bounds = ci.bounded() ? " [" + num(ci.low()) + ", " + num(ci.high()) + "]" : "";
+        return num(ci.estimate()) + bounds + " n=" + xs.length;
     }
 
     private static String num(double v) {

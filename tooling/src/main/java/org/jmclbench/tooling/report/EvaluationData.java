@@ -67,6 +67,23 @@ final class EvaluationData {
         return order(counts.entrySet().stream().filter(e -> e.getValue() == most).map(Map.Entry::getKey).toList());
     }
 
+    /**
+     * The load the conclusions compare at: the particle count whose cells completed the most
+     * repetitions (the largest such count on a tie); null when nothing completed.
+     */
+    Integer compareCount() {
+        Map<Integer, Integer> most = new java.util.TreeMap<>();
+        cells(c -> c.ok > 0).forEach(c -> most.merge(c.particles, c.ok, Math::max));
+        int best = most.values().stream().max(Integer::compare).orElse(0);
+        Integer out = null;
+        for (Map.Entry<Integer, Integer> e : most.entrySet()) {
+            if (e.getValue() == best) {
+                out = e.getKey();
+            }
+        }
+        return out;
+    }
+
     /** The particle count latency is compared at: the largest of the sweep at which the C baseline missed nothing. */
     Integer referenceCount() {
         List<Integer> counts = sweepCounts();
@@ -178,24 +195,64 @@ final class EvaluationData {
         return d == null ? 0 : d;
     }
 
-    /** {@code mean ± half} with {@code decimals} digits; the half-width is left out with one repetition. */
+    /**
+     * {@code mean [low, high]} with {@code decimals} digits: the mean over repetitions and its 95%
+     * percentile-bootstrap interval (never below zero; the mean alone with one repetition).
+     */
     static String agg(ReportModel.Cell c, Metric m, int decimals) {
         ReportModel.Agg a = c.metrics.get(m.name());
         if (a == null || a.mean() == null) {
             return "n/a";
         }
-        return a.half() == null ? num(a.mean(), decimals) : num(a.mean(), decimals) + " ± " + num(a.half(), decimals);
+        return a.interval().text(decimals);
     }
 
-    /** Whether the 95% intervals of two cells separate them, said in a sentence. */
+    /** {@link Separation}'s rule applied to two cells' per-run values of a metric. */
+    static Separation.Result separate(ReportModel.Cell a, ReportModel.Cell b, Metric m) {
+        return Separation.of(values(a, m), values(b, m));
+    }
+
+    /** The per-run values of a metric in a cell (none when the cell has no such metric). */
+    static double[] values(ReportModel.Cell c, Metric m) {
+        ReportModel.Agg x = c.metrics.get(m.name());
+        return x == null || x.values() == null ? new double[0] : x.values();
+    }
+
+    /**
+     * Whether two cells differ in a metric, said in a sentence with the test behind it, e.g.
+     * "Mann-Whitney U with the bootstrap interval of the ratio (docs/REPORT.md): native lower than
+     * temurin-25 (p &lt; 0.001, n = 10 vs 10)." or "...: not separated (p = 0.412, n = 10 vs 10)."
+     */
     static String separation(ReportModel.Cell a, ReportModel.Cell b, Metric m) {
-        ReportModel.Agg x = a.metrics.get(m.name());
-        ReportModel.Agg y = b.metrics.get(m.name());
-        if (x == null || y == null || x.half() == null || y.half() == null || x.mean() == null || y.mean() == null) {
-            return "With a single repetition the difference has no confidence interval.";
+        return "Mann-Whitney U with the bootstrap interval of the ratio (docs/REPORT.md): "
+                + separate(a, b, m).text(a.config, b.config) + ".";
+    }
+
+    /**
+     * A task's miss ratio in a cell (jobs not completed by their deadline over jobs released,
+     * pooled over the completed repetitions) with its 95% Wilson interval; NaN when nothing was
+     * released. {@code task}: predict, update or all.
+     */
+    static Stats.Interval missRatio(ReportModel.Cell c, String task) {
+        long[] d = c.deadlines.get(task);
+        return d == null ? Stats.wilson(0, 0) : Stats.wilson(d[1], d[0]);
+    }
+
+    /**
+     * A memory area as the evaluation's table gives it: {@code update 248 B (1 of 90 releases
+     * allocated, 3 B/release)}; a private memory says how many releases allocated, so that a JIT
+     * one-off (rtsj-compat/README.md) does not read as a release style that allocates.
+     */
+    static String areaText(ReportModel.MemoryArea a) {
+        StringBuilder t = new StringBuilder(a.name()).append(' ').append(bytes(a.peakBytes()));
+        List<String> notes = new ArrayList<>();
+        if (a.releases() != null && a.allocatingReleases() != null) {
+            notes.add(a.allocatingReleases() + " of " + a.releases() + " releases allocated");
         }
-        boolean apart = x.mean() + x.half() < y.mean() - y.half() || y.mean() + y.half() < x.mean() - x.half();
-        return apart ? "Their 95% confidence intervals do not overlap." : "Their 95% confidence intervals overlap: the store does not separate them.";
+        if (a.bytesPerRelease() != null) {
+            notes.add(bytes(Math.round(a.bytesPerRelease())) + "/release");
+        }
+        return notes.isEmpty() ? t.toString() : t.append(" (").append(String.join(", ", notes)).append(')').toString();
     }
 
     static String ratio(Double a, Double b) {

@@ -15,7 +15,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import static org.jmclbench.tooling.report.EvaluationData.*;
 
 /**
- * The evaluation's sections that explain the results (2.6-2.10): the memory model, the overrun
+ * The evaluation's sections that explain the results (2.6, 2.10-2.13): the memory model, the overrun
  * policies, the collectors, the causes of the misses and what the verification proves. Part of
  * {@link EvaluationDocument}, writing into the same text.
  */
@@ -48,7 +48,7 @@ final class EvaluationExplanations extends EvaluationSections {
     }
 
     void memoryModel() throws IOException {
-        line("### 2.6 The memory-model experiment (Table 6, Figure 4)");
+        line("### 2.10 The memory-model experiment (Table 10, Figure 4)");
         line("");
         // runtimes that ran more than one engine/memory style combination at the same count
         Map<String, List<ReportModel.Cell>> byRuntime = new LinkedHashMap<>();
@@ -78,7 +78,7 @@ final class EvaluationExplanations extends EvaluationSections {
             rows.add(List.of(c.config, String.valueOf(c.particles), agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATENCY_MEAN, 3),
                     agg(c, Metric.LATENCY_P99, 3), areas.isEmpty() ? "not reported" : areas));
         }
-        line("Table 6: heap with GC (javase allocating) against everything preallocated (javase preallocated: heap, no allocation "
+        line("Table 10: heap with GC (javase allocating) against everything preallocated (javase preallocated: heap, no allocation "
                 + "per job; scj preallocated: immortal and mission memory) against per-release scoped memory (scj scoped), same "
                 + "runtime and particle count, policy skip: misses per run, task latency (ms), and per memory area its peak use "
                 + "and bytes allocated per release.");
@@ -100,17 +100,17 @@ final class EvaluationExplanations extends EvaluationSections {
             ReportModel.Cell worst = fig.stream().filter(c -> mean(c, Metric.LATENCY_P99) != null)
                     .max(Comparator.comparingDouble(c -> mean(c, Metric.LATENCY_P99))).orElseThrow();
             line(String.format(Locale.ROOT, "At %d particles the lowest p99 task latency of the memory styles is **%s**'s, %s ms, "
-                    + "with %s misses per run; the highest is **%s**'s, %s ms (Table 6). %s", shown, best.config,
+                    + "with %s misses per run; the highest is **%s**'s, %s ms (Table 10). %s", shown, best.config,
                     agg(best, Metric.LATENCY_P99, 3), agg(best, Metric.MISS_COUNT, 1), worst.config, agg(worst, Metric.LATENCY_P99, 3),
                     separation(best, worst, Metric.LATENCY_P99)));
             line("");
-            findings.add(String.format(Locale.ROOT, "Memory model at %d particles: lowest p99 latency with %s (%s ms) (2.6).", shown,
+            findings.add(String.format(Locale.ROOT, "Memory model at %d particles: lowest p99 latency with %s (%s ms) (2.10).", shown,
                     best.config, num(mean(best, Metric.LATENCY_P99), 3)));
         }
     }
 
     void policies() throws IOException {
-        line("### 2.7 Overrun policies: skip, terminate, queue (Table 7)");
+        line("### 2.6 Overrun policies: skip, terminate, queue (Table 6)");
         line("");
         List<ReportModel.Cell> rowsCells = groupsVarying(data.cells(c -> c.ok > 0), c -> c.config + "@" + c.particles,
                 c -> c.policy, 1);
@@ -119,17 +119,26 @@ final class EvaluationExplanations extends EvaluationSections {
         }
         List<List<String>> rows = new ArrayList<>();
         for (ReportModel.Cell c : data.order(rowsCells)) {
-            rows.add(List.of(c.config, String.valueOf(c.particles), c.policy, agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATE, 1),
-                    agg(c, Metric.LATENCY_MEAN, 3), agg(c, Metric.DEVIATION, 3)));
+            rows.add(List.of(c.config, String.valueOf(c.particles), c.policy, EvaluationQuestions.percent(c, "all"),
+                    agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATE, 1), agg(c, Metric.LATENCY_MEAN, 3), agg(c, Metric.DEVIATION, 3)));
         }
-        line("Table 7: per configuration and particle count, each policy: misses and late jobs per run, task latency (ms) and "
-                + "mean localization deviation (m): what a policy saves in time it may cost in accuracy.");
+        line("Table 6: per configuration and particle count, each policy: the miss ratio over both tasks, the thesis's "
+                + "missCount and the late jobs per run, task latency (ms) and mean localization deviation (m): what a policy "
+                + "saves in time it may cost in accuracy.");
         line("");
-        table(List.of("configuration", "particles", "policy", "misses", "late", "latency mean", "deviation"), rows);
+        table(List.of("configuration", "particles", "policy", "miss ratio", "missCount", "late", "latency mean", "deviation"), rows);
+        Integer n = data.compareCount();
+        List<ReportModel.Cell> at = rowsCells.stream().filter(c -> n != null && c.particles == n).toList();
+        if (!at.isEmpty()) {
+            figure("accuracy-" + n, "Figure 6: skip, terminate and queue as accuracy against timeliness at " + n + " particles: "
+                    + "one point per runtime and policy (circle skip, triangle terminate, square queue), 95% CI both ways.",
+                    () -> charts.write(TaskCharts.accuracyVsTimeliness(new ChartSpecs.Scope(model,
+                            new ChartSpec.Setting(data.dataset, "every policy", n), at)).withStem("accuracy-" + n)));
+        }
     }
 
     void collectors() throws IOException {
-        line("### 2.8 Garbage collectors on one JVM (Table 8)");
+        line("### 2.11 Garbage collectors on one JVM (Table 11)");
         line("");
         List<ReportModel.Cell> gc = groupsVarying(data.sweep().stream().filter(c -> c.ok > 0 && !data.isNative(c)).toList(),
                 c -> data.info(c).runtime() + " " + c.engine + " " + c.memory + "@" + c.particles, c -> data.info(c).profile(), 2);
@@ -141,14 +150,14 @@ final class EvaluationExplanations extends EvaluationSections {
             rows.add(List.of(c.config, String.valueOf(c.particles), agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATENCY_P99, 3),
                     agg(c, Metric.LATENCY_MAX, 3), agg(c, Metric.JITTER_P99, 3)));
         }
-        line("Table 8: one JVM with each collector (profile), policy skip: misses per run, task latency p99 and max, release "
+        line("Table 11: one JVM with each collector (profile), policy skip: misses per run, task latency p99 and max, release "
                 + "jitter p99 (ms).");
         line("");
         table(List.of("configuration", "particles", "misses", "latency p99", "latency max", "jitter p99"), rows);
     }
 
     void attribution() throws IOException {
-        line("### 2.9 Why deadlines were missed (Table 9, Figure 5)");
+        line("### 2.12 Why deadlines were missed (Table 12, Figure 5)");
         line("");
         List<ReportModel.Cell> missed = data.sweep().stream().filter(c -> c.ok > 0 && !c.causes.isEmpty()
                 && c.causes.values().stream().anyMatch(v -> v > 0)).toList();
@@ -167,7 +176,7 @@ final class EvaluationExplanations extends EvaluationSections {
             kinds.forEach(k -> row.add(c.causes.containsKey(k) ? num(c.causes.get(k), 1) : ""));
             rows.add(row);
         }
-        line(String.format(Locale.ROOT, "Table 9: at %d particles (policy skip), the missed or late jobs per run by primary cause, "
+        line(String.format(Locale.ROOT, "Table 12: at %d particles (policy skip), the missed or late jobs per run by primary cause, "
                 + "from the runtime's own events (JFR, GC log) aligned with the job records (docs/RUNNER.md, \"Why a deadline was "
                 + "missed\"); mean over the attributed repetitions.", count));
         line("");
@@ -192,7 +201,7 @@ final class EvaluationExplanations extends EvaluationSections {
             line("");
         }
         lightestCauses(missed, count);
-        findings.add(String.format(Locale.ROOT, "Why deadlines were missed at %d particles, the largest cause per configuration: %s (2.9).",
+        findings.add(String.format(Locale.ROOT, "Why deadlines were missed at %d particles, the largest cause per configuration: %s (2.12).",
                 count, dominant.entrySet().stream().map(e -> e.getKey() + " for " + e.getValue() + " of " + at.size())
                         .collect(Collectors.joining(", "))));
     }
@@ -220,13 +229,13 @@ final class EvaluationExplanations extends EvaluationSections {
     }
 
     void verification() throws IOException {
-        line("### 2.10 What the verification proves (Table 10)");
+        line("### 2.13 What the verification proves (Table 13)");
         line("");
         if (verification == null) {
             line("**No data.** `" + verificationFile + "` does not exist: the model checking (`verification/`, Java PathFinder) "
                     + "was not run before this document was written, so no property is claimed here.");
             line("");
-            findings.add("Verification: no results file (2.10).");
+            findings.add("Verification: no results file (2.13).");
             return;
         }
         // The format ./jmclbench verify writes (verification/VerifyMain): schema 1, one row per check.
@@ -254,7 +263,7 @@ final class EvaluationExplanations extends EvaluationSections {
             rows.add(List.of(c.path("id").asText(), role, first(c, "property"), first(c, "policy"), scope,
                     first(c, "verdict"), first(c, "states").isEmpty() ? "-" : first(c, "states"), first(c, "seconds")));
         }
-        line("Table 10: the checks of `./jmclbench verify` (from `" + verificationFile + "`, finished "
+        line("Table 13: the checks of `./jmclbench verify` (from `" + verificationFile.getFileName() + "`, finished "
                 + first(verification, "finished") + "). *mission*: a property of the real scj-mission on rtsj-compat "
                 + "(Java PathFinder on the inputs in *scope*, or ASM on the bytecode); *seeded bug*: a mutant the "
                 + "same check must report (a check that passes is one that caught it); *toy program*: the properties "
@@ -266,6 +275,6 @@ final class EvaluationExplanations extends EvaluationSections {
                 + "benchmark's datasets.", held, properties, missionStates, caught, seeded));
         line("");
         findings.add(String.format(Locale.ROOT, "Verification: %d of %d mission checks hold over %d states, %d of %d seeded "
-                + "bugs caught (2.10).", held, properties, missionStates, caught, seeded));
+                + "bugs caught (2.13).", held, properties, missionStates, caught, seeded));
     }
 }

@@ -56,7 +56,8 @@ public final class ReportModel {
      * {@link RuntimeKind}) and its colour in every chart ({@link Palette}).
      */
     public record ConfigInfo(String id, String runtime, String profile, String engine, String memory, RuntimeKind kind,
-                             String color, List<String> versions, List<String> flags, List<String> machines, List<String> facts) {
+                             String color, List<String> versions, List<String> flags, List<String> machines, List<String> facts,
+                             Execution execution) {
         /** The C baseline the Java runtimes are compared with. */
         @com.fasterxml.jackson.annotation.JsonProperty("nativeBaseline")
         public boolean nativeBaseline() {
@@ -67,9 +68,12 @@ public final class ReportModel {
     /**
      * A memory area of a configuration over its completed repetitions: the largest size and peak
      * (bytes; for a handler's private memory, the peak of one release), the mean bytes allocated per
-     * release; null where no run told.
+     * release, and the releases measured and those that allocated anything, summed over the runs
+     * (a preallocated release style shows 0 of N, or a JIT one-off such as 1 of N on HotSpot:
+     * rtsj-compat/README.md); null where no run told.
      */
-    public record MemoryArea(String name, Long size, Long peakBytes, Double bytesPerRelease, int runs) {
+    public record MemoryArea(String name, Long size, Long peakBytes, Double bytesPerRelease, int runs,
+                             Long releases, Long allocatingReleases) {
     }
 
     /** Areas in the order of the memory chart: the heap, then SCJ's from the longest-lived, then the handlers' private ones. */
@@ -87,28 +91,36 @@ public final class ReportModel {
     }
 
     /**
-     * Mean over repetitions with its 95% interval half-width (null when it cannot be made). A
-     * value of +infinity in a repetition (a response-time quantile among dropped jobs) makes the
-     * mean and the max +infinity, with no interval.
+     * Mean over repetitions with its 95% percentile-bootstrap interval [low, high] (null when it
+     * cannot be made: one repetition), the range, and the per-run values the separation test needs
+     * ({@link Separation}; not on the page). A value of +infinity in a repetition (a response-time
+     * quantile among dropped jobs) makes the mean and the max +infinity, with no interval.
      */
-    public record Agg(int n, Double mean, Double half, Double min, Double max) {
+    public record Agg(int n, Double mean, Double low, Double high, Double min, Double max,
+                      @JsonIgnore double[] values) {
         static Agg of(List<Double> values) {
             double[] xs = values.stream().mapToDouble(Double::doubleValue).toArray();
             if (xs.length == 0) {
-                return new Agg(0, null, null, null, null);
+                return new Agg(0, null, null, null, null, null, xs);
             }
             if (values.contains(Double.POSITIVE_INFINITY)) {
                 double min = values.stream().mapToDouble(Double::doubleValue).min().orElseThrow();
-                return new Agg(xs.length, Double.POSITIVE_INFINITY, null, min, Double.POSITIVE_INFINITY);
+                return new Agg(xs.length, Double.POSITIVE_INFINITY, null, null, min, Double.POSITIVE_INFINITY, xs);
             }
-            Stats.MeanCi ci = Stats.meanCi(xs);
+            Stats.Interval ci = Stats.bootstrapMean(xs);
             double min = Double.POSITIVE_INFINITY;
             double max = Double.NEGATIVE_INFINITY;
             for (double x : xs) {
                 min = Math.min(min, x);
                 max = Math.max(max, x);
             }
-            return new Agg(xs.length, finite(ci.mean()), finite(ci.halfWidth()), min, max);
+            return new Agg(xs.length, finite(ci.estimate()), finite(ci.low()), finite(ci.high()), min, max, xs);
+        }
+
+        /** The mean and its interval as {@link Stats.Interval} (NaN where null). */
+        public Stats.Interval interval() {
+            return new Stats.Interval(mean == null ? Double.NaN : mean, low == null ? Double.NaN : low,
+                    high == null ? Double.NaN : high);
         }
     }
 
@@ -149,6 +161,9 @@ public final class ReportModel {
         /** [1/(1-p), latency ms, percentile] of every job's task latency, all repetitions merged. */
         @JsonIgnore
         public List<double[]> latencySpectrum = new ArrayList<>();
+        /** [1/(1-p), abort latency ms, percentile] of every job an abort took hold of, all repetitions merged (terminate). */
+        @JsonIgnore
+        public List<double[]> abortSpectrum = new ArrayList<>();
         /** [release jitter ms, cumulative fraction], all repetitions merged. */
         @JsonIgnore
         public List<double[]> jitterCdf = new ArrayList<>();
@@ -183,6 +198,15 @@ public final class ReportModel {
         public List<String> pauseKinds = new ArrayList<>();
         /** The configuration's memory areas (empty when its runs reported none). */
         public List<MemoryArea> memoryAreas = new ArrayList<>();
+        /**
+         * For misses per run, {@link Separation}'s verdict against each other configuration at the
+         * same setting (dataset, policy, particles): A_LOWER when this cell is lower, B_LOWER, NOT_SEPARATED
+         * or TOO_FEW; the page's headline names the lowest only together with what it is not separated from.
+         */
+        public Map<String, String> missSeparation = new LinkedHashMap<>();
+        /** Per task (predict, update, all): {released, deadline misses} summed over the completed runs that report them. */
+        @JsonIgnore
+        public Map<String, long[]> deadlines = new LinkedHashMap<>();
     }
 
     /** Extra per-cell aggregates (not {@link Metric}s): the warm-up split of the attribution, in ms and jobs per run. */
@@ -194,6 +218,8 @@ public final class ReportModel {
         m.put("STEADY_P99", new String[] {"all/taskLatencyNs.steady/p99", "1e-6"});
         m.put("WARM_MISSES", new String[] {"all/missedOrLate.warm/value", "1"});
         m.put("STEADY_MISSES", new String[] {"all/missedOrLate.steady/value", "1"});
+        m.put("WARM_RESPONSE_P99", new String[] {"all/responseTimeNs.warm/p99", "1e-6"});
+        m.put("STEADY_RESPONSE_P99", new String[] {"all/responseTimeNs.steady/p99", "1e-6"});
         return m;
     }
 
@@ -240,6 +266,7 @@ public final class ReportModel {
                 last = System.nanoTime();
             }
         }
+        separateMisses(m.cells);
         m.defaults = defaults(m, runs);
         m.charts = ChartSpecs.all(m);
         return m;
@@ -305,6 +332,7 @@ public final class ReportModel {
             c.metrics.put(e.getKey(), Agg.of(values));
         }
         c.causes = causes(ok);
+        c.deadlines = deadlines(ok);
         c.memoryAreas = memoryAreas(ok);
         if (ok.isEmpty()) {
             return c;
@@ -329,10 +357,69 @@ public final class ReportModel {
             List<Double> perRelease = as.stream().map(MemoryAreaRow::bytesPerRelease).filter(v -> v != null).toList();
             Double mean = perRelease.isEmpty() ? null
                     : SeriesTable.round(perRelease.stream().mapToDouble(Double::doubleValue).average().orElse(0));
-            out.add(new MemoryArea(e.getKey(), size, peak, mean, as.size()));
+            out.add(new MemoryArea(e.getKey(), size, peak, mean, as.size(),
+                    summedAreaField(ok, e.getKey(), "releases"), summedAreaField(ok, e.getKey(), "allocatingReleases")));
         }
         out.sort(Comparator.comparingInt((MemoryArea a) -> areaRank(a.name())));
         return out;
+    }
+
+    /** Fills each cell's {@link Cell#missSeparation} against the other cells of its setting. */
+    static void separateMisses(List<Cell> cells) {
+        Map<String, List<Cell>> bySetting = new LinkedHashMap<>();
+        cells.forEach(c -> bySetting.computeIfAbsent(c.dataset + "\u0000" + c.policy + "\u0000" + c.particles, k -> new ArrayList<>()).add(c));
+        for (List<Cell> setting : bySetting.values()) {
+            for (int i = 0; i < setting.size(); i++) {
+                for (int j = i + 1; j < setting.size(); j++) {
+                    Cell a = setting.get(i);
+                    Cell b = setting.get(j);
+                    Separation.Verdict v = Separation.of(EvaluationData.values(a, Metric.MISS_COUNT),
+                            EvaluationData.values(b, Metric.MISS_COUNT)).verdict();
+                    a.missSeparation.put(b.config, v.name());
+                    b.missSeparation.put(a.config, switch (v) {
+                        case A_LOWER -> Separation.Verdict.B_LOWER.name();
+                        case B_LOWER -> Separation.Verdict.A_LOWER.name();
+                        default -> v.name();
+                    });
+                }
+            }
+        }
+    }
+
+    /**
+     * Per task, released jobs and deadline misses (summary.json tasks.T.released and deadlineMisses,
+     * else late + skipped + terminated) summed over the runs: the counts behind a pooled miss ratio.
+     */
+    static Map<String, long[]> deadlines(List<StoredRun> ok) {
+        Map<String, long[]> out = new LinkedHashMap<>();
+        for (StoredRun r : ok) {
+            JsonNode tasks = r.summary().path("tasks");
+            for (String task : List.of("predict", "update", "all")) {
+                JsonNode t = tasks.path(task);
+                if (!t.path("released").isNumber()) {
+                    continue;
+                }
+                long misses = t.has("deadlineMisses") ? t.path("deadlineMisses").asLong()
+                        : t.path("late").asLong() + t.path("skipped").asLong() + t.path("terminated").asLong();
+                long[] sum = out.computeIfAbsent(task, k -> new long[2]);
+                sum[0] += t.path("released").asLong();
+                sum[1] += misses;
+            }
+        }
+        return out;
+    }
+
+    /** An area's summary.json field summed over the runs that have it (not in the store's columns); null when none has. */
+    static Long summedAreaField(List<StoredRun> ok, String area, String field) {
+        Long sum = null;
+        for (StoredRun r : ok) {
+            for (JsonNode a : r.summary().path("memory").path("areas")) {
+                if (area.equals(a.path("name").asText()) && a.path(field).isNumber()) {
+                    sum = (sum == null ? 0 : sum) + a.path(field).asLong();
+                }
+            }
+        }
+        return sum;
     }
 
     /**
@@ -382,7 +469,11 @@ public final class ReportModel {
             List<String> flags = new ArrayList<>(); // a list: an argument may repeat ("-n 1 ... --seed 1")
             Set<String> machines = new LinkedHashSet<>();
             List<String> facts = new ArrayList<>();
+            Execution execution = null;
             for (StoredRun r : e.getValue()) {
+                if (r.ok() && execution == null) {
+                    execution = Execution.of(kinds.get(e.getKey()), r.engine, r.memory, Metric.summaryOf(r));
+                }
                 if (r.runtimeVersion != null) {
                     versions.add(r.runtimeVersion);
                 }
@@ -401,7 +492,7 @@ public final class ReportModel {
                 }
             }
             out.add(new ConfigInfo(e.getKey(), first.runtime, first.profile, first.engine, first.memory, kinds.get(e.getKey()),
-                    colors.get(e.getKey()), List.copyOf(versions), List.copyOf(flags), List.copyOf(machines), List.copyOf(facts)));
+                    colors.get(e.getKey()), List.copyOf(versions), List.copyOf(flags), List.copyOf(machines), List.copyOf(facts), execution));
         }
         return out;
     }
@@ -415,7 +506,10 @@ public final class ReportModel {
         }
         JsonNode kind = summary.at("/engine/kind");
         if (kind.isTextual()) {
-            out.add("engine " + kind.asText() + (summary.at("/engine/level").isInt() ? " (SCJ level " + summary.at("/engine/level").asInt() + ")" : ""));
+            // the HVM's mode (compiled to C or interpreted) is what its row measures, so the report says it
+            String mode = summary.at("/engine/mode").isTextual() ? ", " + summary.at("/engine/mode").asText() : "";
+            out.add("engine " + kind.asText() + (summary.at("/engine/level").isInt()
+                    ? " (SCJ level " + summary.at("/engine/level").asInt() + mode + ")" : mode.isEmpty() ? "" : " (" + mode.substring(2) + ")"));
         }
         if (params.hasNonNull("memory")) {
             out.add("memory " + params.get("memory").asText());

@@ -1,41 +1,60 @@
 package org.jmclbench.tooling.report;
 
 import java.util.Arrays;
+import java.util.Locale;
 import java.util.SplittableRandom;
 
-import org.apache.commons.math3.distribution.TDistribution;
 import org.apache.commons.math3.stat.inference.MannWhitneyUTest;
 
-/** Statistics over repetitions: mean with a t confidence interval, bootstrap ratio interval, Mann-Whitney U. */
+/**
+ * Statistics over repetitions, with intervals that respect the quantity (docs/REPORT.md): a
+ * percentile-bootstrap interval of a mean (never outside the sample's range, so never below
+ * zero for a count or a latency), a Wilson score interval of a proportion (inside [0, 1]), a
+ * bootstrap interval of a ratio of means, and the Mann-Whitney U test. {@link Separation}
+ * combines them into the one rule that says whether two samples differ.
+ */
 public final class Stats {
 
     /** Confidence level of every interval in the report and in compare. */
     public static final double CONFIDENCE = 0.95;
     /** Significance level of the Mann-Whitney U test. */
     public static final double ALPHA = 0.05;
-    /** Below this many samples on either side, no test is made ("n too small"). */
+    /** Below this many samples on either side, no p-value is computed. */
     public static final int MIN_SAMPLES_FOR_TEST = 3;
     /** Bootstrap resamples; with the fixed seed the interval is the same on every call. */
     public static final int BOOTSTRAP_RESAMPLES = 10_000;
     /** Fixed seed of the bootstrap, so that a report or a compare is reproducible. */
     public static final long BOOTSTRAP_SEED = 20120601L;
+    /** The standard normal quantile of 1 - (1 - CONFIDENCE) / 2 (Wilson's z). */
+    static final double Z = 1.959963984540054;
 
     private Stats() {
     }
 
-    /** A mean with the half-width of its confidence interval (NaN when n < 2). */
-    public record MeanCi(int n, double mean, double halfWidth) {
-        public double low() {
-            return mean - halfWidth;
+    /**
+     * An estimate with its 95% interval [low, high]; NaN bounds where none can be made (one
+     * repetition, no trial). The interval need not be symmetric about the estimate.
+     */
+    public record Interval(double estimate, double low, double high) {
+        /** Whether the interval has finite bounds. */
+        public boolean bounded() {
+            return Double.isFinite(low) && Double.isFinite(high);
         }
 
-        public double high() {
-            return mean + halfWidth;
+        /** {@code estimate [low, high]} with {@code decimals} digits; the estimate alone without bounds. */
+        public String text(int decimals) {
+            String f = "%." + decimals + "f";
+            String e = String.format(Locale.ROOT, f, estimate);
+            return bounded() ? e + " [" + String.format(Locale.ROOT, f, low) + ", " + String.format(Locale.ROOT, f, high) + "]" : e;
         }
     }
 
     /** A ratio B/A with its bootstrap interval (NaN bounds when it cannot be made). */
     public record RatioCi(double ratio, double low, double high) {
+        /** Whether the interval lies wholly on one side of 1 (B and A differ in their means). */
+        public boolean excludesOne() {
+            return !Double.isNaN(low) && !Double.isNaN(high) && (low > 1 || high < 1);
+        }
     }
 
     public static double mean(double[] xs) {
@@ -63,20 +82,53 @@ public final class Stats {
         return Math.sqrt(ss / (n - 1));
     }
 
-    /** Mean and the 95% Student-t interval half-width over repetitions. */
-    public static MeanCi meanCi(double[] xs) {
-        int n = xs.length;
+    /**
+     * The mean over repetitions with its 95% percentile-bootstrap interval: the sample is
+     * resampled with replacement {@link #BOOTSTRAP_RESAMPLES} times (fixed seed) and the interval
+     * is the 2.5th and 97.5th percentiles of the resampled means. It lies within the sample's
+     * range, so a count, a ratio or a latency never gets a negative bound (as a Student-t
+     * interval does: 0, 0, 1 misses gave 0.3 ± 1.4). With fewer than 2 values, NaN bounds.
+     */
+    public static Interval bootstrapMean(double[] xs) {
         double m = mean(xs);
-        if (n < 2) {
-            return new MeanCi(n, m, Double.NaN);
+        if (xs.length < 2) {
+            return new Interval(m, Double.NaN, Double.NaN);
         }
-        double t = new TDistribution(n - 1).inverseCumulativeProbability(1 - (1 - CONFIDENCE) / 2);
-        return new MeanCi(n, m, t * stdev(xs) / Math.sqrt(n));
+        if (allEqual(xs, xs)) {
+            return new Interval(m, xs[0], xs[0]);
+        }
+        SplittableRandom rng = new SplittableRandom(BOOTSTRAP_SEED);
+        double[] means = new double[BOOTSTRAP_RESAMPLES];
+        for (int i = 0; i < BOOTSTRAP_RESAMPLES; i++) {
+            means[i] = resampledMean(xs, rng);
+        }
+        Arrays.sort(means);
+        double tail = (1 - CONFIDENCE) / 2;
+        return new Interval(m, quantile(means, tail), quantile(means, 1 - tail));
+    }
+
+    /**
+     * A proportion k/n (misses over released jobs, pooled over repetitions) with its 95% Wilson
+     * score interval, which stays inside [0, 1] and is not degenerate at 0 or n (0 of 300 gives
+     * [0, 0.0126], not [0, 0]). NaN everywhere when n is 0.
+     */
+    public static Interval wilson(long k, long n) {
+        if (n <= 0 || k < 0 || k > n) {
+            return new Interval(Double.NaN, Double.NaN, Double.NaN);
+        }
+        double p = (double) k / n;
+        double z2 = Z * Z;
+        double centre = (p + z2 / (2.0 * n)) / (1 + z2 / n);
+        double half = Z / (1 + z2 / n) * Math.sqrt(p * (1 - p) / n + z2 / (4.0 * n * n));
+        // at k = 0 (k = n) the bound is exactly 0 (1); the formula leaves a rounding residue
+        return new Interval(p, k == 0 ? 0 : Math.max(0, centre - half), k == n ? 1 : Math.min(1, centre + half));
     }
 
     /**
      * Ratio of means B/A with a percentile-bootstrap interval: A and B are resampled
-     * independently with replacement, {@link #BOOTSTRAP_RESAMPLES} times, with a fixed seed.
+     * independently with replacement, {@link #BOOTSTRAP_RESAMPLES} times, with a fixed seed. A
+     * resample in which both means are 0 (no miss on either side) counts as a ratio of 1, no
+     * difference; one with only A's mean 0 as +infinity.
      */
     public static RatioCi ratioCi(double[] a, double[] b) {
         double ratio = mean(b) / mean(a);
@@ -87,10 +139,9 @@ public final class Stats {
         double[] ratios = new double[BOOTSTRAP_RESAMPLES];
         int k = 0;
         for (int i = 0; i < BOOTSTRAP_RESAMPLES; i++) {
-            double r = resampledMean(b, rng) / resampledMean(a, rng);
-            if (!Double.isNaN(r)) {
-                ratios[k++] = r;
-            }
+            double mb = resampledMean(b, rng);
+            double ma = resampledMean(a, rng);
+            ratios[k++] = ma == 0 && mb == 0 ? 1.0 : mb / ma;
         }
         if (k == 0) {
             return new RatioCi(ratio, Double.NaN, Double.NaN);
@@ -114,6 +165,9 @@ public final class Stats {
         double pos = q * (sorted.length - 1);
         int lo = (int) Math.floor(pos);
         int hi = Math.min(lo + 1, sorted.length - 1);
+        if (pos == lo || sorted[hi] == sorted[lo]) {
+            return sorted[lo]; // also keeps an infinite ratio infinite (inf - inf would be NaN)
+        }
         return sorted[lo] + (pos - lo) * (sorted[hi] - sorted[lo]);
     }
 

@@ -120,11 +120,11 @@ final class TaskCharts {
 
     /** The 95% interval of a mean cut at zero (and at one for a ratio); null without one. */
     static double[] interval(ReportModel.Agg a, boolean ratio) {
-        if (a.mean() == null || a.half() == null) {
+        if (a.mean() == null || a.low() == null || a.high() == null) {
             return null;
         }
-        double hi = a.mean() + a.half();
-        return new double[] {Math.max(0, a.mean() - a.half()), ratio ? Math.min(1, hi) : hi};
+        // the bootstrap interval of a non-negative quantity stays at or above zero; a ratio's also at or below one
+        return new double[] {Math.max(0, a.low()), ratio ? Math.min(1, a.high()) : a.high()};
     }
 
     // ---------------------------------------------------------------- the policies' trade-off

@@ -26,7 +26,11 @@ public enum TaskMetric {
     RESPONSE_P99("response time p99", "ms", 1e-6, "responseTimeReleasedNs", "p99"),
     RESPONSE_MAX("response time max", "ms", 1e-6, "responseTimeReleasedNs", "max"),
     LATENCY_P99("task latency p99", "ms", 1e-6, "taskLatencyNs", "p99"),
-    JITTER_P99("release jitter p99", "ms", 1e-6, "releaseJitterNs", "p99");
+    JITTER_P99("release jitter p99", "ms", 1e-6, "releaseJitterNs", "p99"),
+    /** From the abort request to the aborted job's end, over the jobs an abort took hold of (terminate). */
+    ABORT_P50("abort latency p50", "ms", 1e-6, "abortLatencyNs", "p50"),
+    ABORT_P99("abort latency p99", "ms", 1e-6, "abortLatencyNs", "p99"),
+    ABORT_MAX("abort latency max", "ms", 1e-6, "abortLatencyNs", "max");
 
     /** The tasks a cell aggregates every task metric for. */
     public static final List<String> TASKS = List.of("predict", "update", "all");

@@ -33,7 +33,7 @@ final class VerificationSection {
         }
         StringBuilder sb = new StringBuilder();
         sb.append("<section class=\"verification\" id=\"verification\"><h2>Verification</h2>");
-        sb.append("<p>Java PathFinder and static checks of the SCJ mission (<code>./jmclbench verify</code>, ")
+        sb.append("<p>Java PathFinder and static checks of the SCJ mission and the rtsj engine (<code>./jmclbench verify</code>, ")
                 .append(ReportPage.escapeHtml(doc.path("finished").asText()))
                 .append("): ")
                 .append(doc.path("passed").asBoolean() ? "every property holds and every seeded bug is caught"

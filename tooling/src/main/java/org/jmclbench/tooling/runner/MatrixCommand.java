@@ -1,13 +1,12 @@
 package org.jmclbench.tooling.runner;
 
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.concurrent.Callable;
 
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 
 import picocli.CommandLine.Command;
+import picocli.CommandLine.IModelTransformer;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -23,7 +22,8 @@ import picocli.CommandLine.Spec;
                 "           --particles 100,400,1600 --datasets match-short --repeat 3 --db results/results.db",
                 "Matrix file (--matrix): 'key = value' lines, keys are these long options without dashes, e.g.",
                 "  runtimes = temurin-25, native", "  engines = javase, scj", "  particles = 100, 400, 1600",
-                "Options on the command line replace the file's values."})
+                "Options on the command line replace the file's values."},
+        modelTransformer = MatrixCommand.Settings.class)
 public final class MatrixCommand implements Callable<Integer> {
 
     @Spec
@@ -31,50 +31,19 @@ public final class MatrixCommand implements Callable<Integer> {
 
     @Option(names = "--matrix", paramLabel = "FILE", description = "read settings from a matrix file (see below)")
     Path matrixFile;
-    @Option(names = "--runtimes", paramLabel = "LIST", description = "runtime names from `jvms`, `native`, `hvm`, `jvms` (all JVMs), `all` (default: all found)")
-    List<String> runtimes = new ArrayList<>();
-    @Option(names = "--java", paramLabel = "PATH", description = "a JVM by path (java executable or JDK folder), repeatable")
-    List<String> javas = new ArrayList<>();
-    @Option(names = "--profiles", paramLabel = "LIST", description = "profiles, components joined by '+': default, serial, parallel, g1, zgc, shenandoah, epsilon, int, c1, pretouch, fifo, pinned, aot (default: default)")
-    List<String> profiles = new ArrayList<>();
-    @Option(names = "--policies", paramLabel = "LIST", description = "skip, terminate, queue, ideal (default: skip)")
-    List<String> policies = new ArrayList<>();
-    @Option(names = "--engines", paramLabel = "LIST", description = "engines of the JVM runs: javase, scj (default: javase; native runs are engine native)")
-    List<String> engines = new ArrayList<>();
-    @Option(names = "--memory", paramLabel = "LIST", description = "memory styles: preallocated, allocating (javase, native), scoped (scj); one an engine lacks is recorded unsupported (default: preallocated)")
-    List<String> memory = new ArrayList<>();
-    @Option(names = "--particles", paramLabel = "LIST", description = "particle counts (default: 400)")
-    List<String> particles = new ArrayList<>();
-    @Option(names = "--datasets", paramLabel = "LIST", description = "dataset names under data/ or folders (default: match-short)")
-    List<String> datasets = new ArrayList<>();
-    @Option(names = "--load", paramLabel = "LIST", description = "load scenarios beside each run: none, cpu (stress-ng, else own busy processes), alloc (allocation thread in the JVM under test), mixed (default: none)")
-    List<String> loads = new ArrayList<>();
-    @Option(names = "--load-alloc", paramLabel = "MBPS,LIVEMB", description = "the alloc load: MB/s allocated and MB kept live (default: 100,16)")
-    String loadAlloc;
-    @Option(names = "--repeat", paramLabel = "N", description = "repetitions of each configuration (default: 1)")
-    String repeat;
-    @Option(names = "--shard", paramLabel = "K/N", description = "run only the K-th of N shares of the matrix (merge the databases afterwards)")
-    String shard;
-    @Option(names = "--order-seed", paramLabel = "N", description = "seed of the shuffled run order (default: random, recorded)")
-    String orderSeed;
-    @Option(names = "--seed", paramLabel = "N", description = "workload seed of repetition 1; repetition r uses seed+r-1 (default: 1)")
-    String seed;
-    @Option(names = "--timeout", paramLabel = "S", description = "timeout of one run in seconds (default: replay duration x 3 + 60)")
-    String timeout;
-    @Option(names = "--time-scale", paramLabel = "F", description = "the workload's --time-scale (default: 1.0)")
-    String timeScale;
-    @Option(names = "--pin-cpu", paramLabel = "CPUS", description = "CPU list for the pinned profile (default: last isolated CPU, else the last CPU)")
-    String pinCpu;
-    @Option(names = "--workload-arg", paramLabel = "ARGS", description = "more workload options, split at spaces, e.g. \"--memory allocating\" (repeatable)")
-    List<String> workloadArgs = new ArrayList<>();
-    @Option(names = "--db", paramLabel = "FILE", description = "results database (default: results/results.db)")
-    String db;
-    @Option(names = "--native", paramLabel = "PATH", description = "the native baseline binary (default: native/build/jmclbench-native)")
-    String nativeBinary;
+    // Every matrix setting follows as an option (Settings), then:
     @Option(names = "--retry-failed", description = "also rerun runs recorded as failed or timed out (unsupported ones stay)")
     boolean retryFailed;
     @Option(names = "--dry-run", description = "print the planned runs in order and stop")
     boolean dryRun;
+
+    /** Adds one option per matrix setting, in the settings' order. */
+    static final class Settings implements IModelTransformer {
+        @Override
+        public CommandSpec transform(CommandSpec command) {
+            return SettingOptions.add(command, 1, MatrixOptions.KEYS);
+        }
+    }
 
     @Override
     public Integer call() throws Exception {
@@ -88,41 +57,9 @@ public final class MatrixCommand implements Callable<Integer> {
         if (matrixFile != null) {
             MatrixFile.read(matrixFile, spec);
         }
-        list(spec, "runtimes", runtimes);
-        list(spec, "java", javas);
-        list(spec, "profiles", profiles);
-        list(spec, "policies", policies);
-        list(spec, "engines", engines);
-        list(spec, "memory", memory);
-        list(spec, "particles", particles);
-        list(spec, "datasets", datasets);
-        list(spec, "load", loads);
-        list(spec, "workload-arg", workloadArgs);
-        one(spec, "repeat", repeat);
-        one(spec, "shard", shard);
-        one(spec, "order-seed", orderSeed);
-        one(spec, "seed", seed);
-        one(spec, "timeout", timeout);
-        one(spec, "time-scale", timeScale);
-        one(spec, "load-alloc", loadAlloc);
-        one(spec, "pin-cpu", pinCpu);
-        one(spec, "db", db);
-        one(spec, "native", nativeBinary);
+        SettingOptions.apply(commandSpec, spec);
         spec.retryFailed = retryFailed;
         spec.dryRun = dryRun;
         return spec;
-    }
-
-    static void list(MatrixSpec spec, String key, List<String> values) {
-        if (!values.isEmpty()) {
-            MatrixOptions.clear(spec, key);
-            values.forEach(v -> MatrixOptions.apply(spec, key, v, "--" + key));
-        }
-    }
-
-    static void one(MatrixSpec spec, String key, String value) {
-        if (value != null) {
-            MatrixOptions.apply(spec, key, value, "--" + key);
-        }
     }
 }

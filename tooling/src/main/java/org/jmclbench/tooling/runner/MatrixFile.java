@@ -10,10 +10,7 @@ import org.jmclbench.tooling.cli.BadUsageException;
 
 /**
  * Reads a matrix file: one {@code key = value} a line, the keys being the long options of
- * {@code matrix} without their dashes ({@code runtimes}, {@code java}, {@code profiles}, {@code engines},
- * {@code memory}, {@code policies},
- * {@code particles}, {@code datasets}, {@code repeat}, {@code shard}, {@code order-seed}, {@code seed},
- * {@code timeout}, {@code time-scale}, {@code pin-cpu}, {@code workload-arg}, {@code db}, {@code native});
+ * {@code matrix} without their dashes ({@link MatrixOptions#SETTINGS});
  * list values are comma-separated and a repeated list key adds to the list; {@code #} starts a comment.
  * Errors name {@code file:line}.
  *

@@ -11,9 +11,38 @@ import org.jmclbench.tooling.runtime.CpuList;
 /** Parses one matrix setting, from the command line or a matrix file, into a {@link MatrixSpec}. */
 final class MatrixOptions {
 
+    /**
+     * One matrix setting: its key (a matrix file's key, and with two dashes its option on the command
+     * line), whether it is a list, the label of its value and its help text.
+     */
+    record Setting(String key, boolean list, String label, String description) {
+    }
+
+    /** Every matrix setting, in the order of the help. */
+    static final List<Setting> SETTINGS = List.of(
+            new Setting("runtimes", true, "LIST", "runtime names from `jvms`, `native`, `hvm`, `jvms` (all JVMs), `all` (default: all found)"),
+            new Setting("java", true, "PATH", "a JVM by path (java executable or JDK folder), repeatable"),
+            new Setting("profiles", true, "LIST", "profiles, components joined by '+': default, serial, parallel, g1, zgc, shenandoah, epsilon, int, c1, pretouch, fifo, pinned, aot (default: default)"),
+            new Setting("policies", true, "LIST", "skip, terminate, queue, ideal (default: skip)"),
+            new Setting("engines", true, "LIST", "engines of the JVM runs: javase, scj (default: javase; native runs are engine native)"),
+            new Setting("memory", true, "LIST", "memory styles: preallocated, allocating (javase, native), scoped (scj); one an engine lacks is recorded unsupported (default: preallocated)"),
+            new Setting("particles", true, "LIST", "particle counts (default: 400)"),
+            new Setting("datasets", true, "LIST", "dataset names under data/ or folders (default: match-short)"),
+            new Setting("load", true, "LIST", "load scenarios beside each run: none, cpu (stress-ng, else own busy processes), alloc (allocation thread in the JVM under test), mixed (default: none)"),
+            new Setting("load-alloc", false, "MBPS,LIVEMB", "the alloc load: MB/s allocated and MB kept live (default: 100,16)"),
+            new Setting("repeat", false, "N", "repetitions of each configuration (default: 1)"),
+            new Setting("shard", false, "K/N", "run only the K-th of N shares of the matrix (merge the databases afterwards)"),
+            new Setting("order-seed", false, "N", "seed of the shuffled run order (default: random, recorded)"),
+            new Setting("seed", false, "N", "workload seed of repetition 1; repetition r uses seed+r-1 (default: 1)"),
+            new Setting("timeout", false, "S", "timeout of one run in seconds (default: replay duration x 3 + 60)"),
+            new Setting("time-scale", false, "F", "the workload's --time-scale (default: 1.0)"),
+            new Setting("pin-cpu", false, "CPUS", "CPU list for the pinned profile (default: last isolated CPU, else the last CPU)"),
+            new Setting("workload-arg", true, "ARGS", "more workload options, split at spaces, e.g. \"--memory allocating\" (repeatable)"),
+            new Setting("db", false, "FILE", "results database (default: results/results.db)"),
+            new Setting("native", false, "PATH", "the native baseline binary (default: native/build/jmclbench-native)"));
+
     /** The keys a matrix file accepts (the long options without dashes). */
-    static final List<String> KEYS = List.of("runtimes", "java", "profiles", "policies", "engines", "memory", "particles", "datasets",
-            "load", "load-alloc", "repeat", "shard", "order-seed", "seed", "timeout", "time-scale", "pin-cpu", "workload-arg", "db", "native");
+    static final List<String> KEYS = SETTINGS.stream().map(Setting::key).toList();
 
     private MatrixOptions() {
     }

@@ -20,6 +20,7 @@ import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.runtime.RuntimeInfo;
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.store.MachineInfo;
 
 /**
@@ -105,12 +106,16 @@ public final class MatrixPlanner {
         String pinCpu = spec.pinCpu != null ? spec.pinCpu : LaunchPlan.defaultPinCpu();
         Path db = (spec.db != null ? spec.db : Path.of(MatrixDefaults.DB)).toAbsolutePath().normalize();
 
+        if (runtimes.stream().anyMatch(r -> r.kind() == RuntimeKind.HVM)) {
+            // every HVM executable the profiles ask for is built before the first run, so that no run pays for it
+            HvmRuntime.prepare(home, distinct(profiles.stream().map(p -> p.effectiveFor(RuntimeKind.HVM).hvmMode()).toList()));
+        }
         Map<String, PlannedRun> all = new LinkedHashMap<>();
         for (RuntimeInfo rt : runtimes) {
             // a native program has one engine: one native run per cell, whatever --engines says
             List<String> rtEngines = distinct(engines.stream().map(e -> Engines.of(rt, e)).toList());
             for (Profile prof : profiles) {
-                Profile effective = rt.isJvm() ? prof : prof.forNative();
+                Profile effective = prof.effectiveFor(rt.kind());
                 for (String engine : rtEngines) {
                     for (String mem : memory) {
                         for (String policy : policies) {
@@ -214,7 +219,6 @@ public final class MatrixPlanner {
                 if (!a.buildable()) {
                     throw new BadUsageException(r.where() + ": hvm: the icecap HVM cannot be built here: " + a.detail());
                 }
-                HvmRuntime.prepare(home);
                 out.putIfAbsent(HvmRuntime.NAME, HvmRuntime.runtime());
             } else if (name.equals("native")) {
                 if (nat == null) {
@@ -228,7 +232,6 @@ public final class MatrixPlanner {
                 }
                 // all: the HVM too when the user pointed at its source and it can be built
                 if (name.equals("all") && HvmRuntime.sourceGiven() && HvmRuntime.check(home).buildable()) {
-                    HvmRuntime.prepare(home);
                     out.putIfAbsent(HvmRuntime.NAME, HvmRuntime.runtime());
                 }
             } else {

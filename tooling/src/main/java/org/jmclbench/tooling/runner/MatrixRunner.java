@@ -10,9 +10,12 @@ import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.UUID;
 
 import org.jmclbench.tooling.attribution.AttributionData;
 import org.jmclbench.tooling.attribution.RunInstrumentation;
+import org.jmclbench.tooling.runtime.HvmRuntime;
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.ProfileComponent;
 import org.jmclbench.tooling.runtime.ProfileProbe;
@@ -42,20 +45,34 @@ public final class MatrixRunner {
     private final ResolvedMatrix matrix;
     private final RunRecorder store;
     private final MachineInfo machine;
-    private final String matrixId;
+    private final String matrixId = UUID.randomUUID().toString();
     private final Path home;
     private final Path jar;
-    private final ProfileProbe probe;
+    private final ProfileProbe probe = ProfileProbe.withUserCache();
 
-    public MatrixRunner(ResolvedMatrix matrix, RunRecorder store, MachineInfo machine, String matrixId, Path home,
-                        Path jar, ProfileProbe probe) {
+    private MatrixRunner(ResolvedMatrix matrix, RunRecorder store, MachineInfo machine, Path home, Path jar) {
         this.matrix = matrix;
         this.store = store;
         this.machine = machine;
-        this.matrixId = matrixId;
         this.home = home;
         this.jar = jar;
-        this.probe = probe;
+    }
+
+    /**
+     * Records a new matrix of {@code matrix}'s runs in {@code store} (a fresh id, the command that
+     * asked for it, the order seed and the resolved settings) and gives the runner of its runs.
+     */
+    public static MatrixRunner begin(ResolvedMatrix matrix, RunRecorder store, MachineInfo machine, String command,
+                                     Path home, Path jar) throws SQLException, IOException {
+        MatrixRunner r = new MatrixRunner(matrix, store, machine, home, jar);
+        store.saveMatrix(r.matrixId, machine.machineId(), command, matrix.orderSeed(), Instant.now().toString(),
+                MatrixSession.specJson(matrix));
+        return r;
+    }
+
+    /** The matrix's id in the store. */
+    public String matrixId() {
+        return matrixId;
     }
 
     /** The runs still to do: not in the store, or failed/timed out when {@code retryFailed}. */
@@ -151,7 +168,11 @@ public final class MatrixRunner {
             List<String> workloadArgs = new ArrayList<>(matrix.workloadArgs());
             workloadArgs.addAll(inst.workloadArgs());
             cmd = WorkloadCommand.build(run, plan, jvmFlags, home, jar, folder, matrix.timeScale(), workloadArgs);
-            o = ForkedRun.execute(cmd, folder, folder, matrix.timeoutFor(run), Map.of("JMCLBENCH_HOME", home.toString()));
+            Map<String, String> env = new java.util.HashMap<>(Map.of("JMCLBENCH_HOME", home.toString()));
+            if (run.runtime().kind() == RuntimeKind.HVM) {
+                env.putAll(HvmRuntime.environment(run.profile()));
+            }
+            o = ForkedRun.execute(cmd, folder, folder, matrix.timeoutFor(run), env);
         }
         String status = o.status();
         String failure = o.failure();
@@ -218,6 +239,10 @@ public final class MatrixRunner {
         }
         if (p.hasNonNull("memory") && !p.path("memory").asText().equals(run.memory())) {
             return "memory " + p.path("memory").asText() + ", asked " + run.memory();
+        }
+        String mode = summary.path("engine").path("mode").asText("");
+        if (run.runtime().kind() == RuntimeKind.HVM && !mode.equals(run.profile().hvmMode())) {
+            return "hvm mode " + (mode.isEmpty() ? "missing" : mode) + ", asked " + run.profile().hvmMode();
         }
         return null;
     }

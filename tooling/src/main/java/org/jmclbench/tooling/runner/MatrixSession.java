@@ -4,18 +4,15 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.Instant;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.UUID;
 import java.util.function.Supplier;
 
 import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.doctor.Doctor;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.Profile;
-import org.jmclbench.tooling.runtime.ProfileProbe;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.runtime.RuntimeInfo;
 import org.jmclbench.tooling.store.MachineInfo;
@@ -60,12 +57,9 @@ public final class MatrixSession {
         }
         try (RunRecorder store = RunRecorder.open(m.db(), "--db")) {
             store.saveMachine(machine, Doctor.toJson(Doctor.system().run()));
-            String matrixId = UUID.randomUUID().toString();
-            store.saveMatrix(matrixId, machine.machineId(), commandText, m.orderSeed(), Instant.now().toString(),
-                    specJson(m));
-            MatrixRunner runner = new MatrixRunner(m, store, machine, matrixId, home, jar, ProfileProbe.withUserCache());
+            MatrixRunner runner = MatrixRunner.begin(m, store, machine, commandText, home, jar);
             List<PlannedRun> todo = runner.remaining(spec.retryFailed);
-            out.printf("matrix %s: %d runs%s, %d already in %s, %d to run (order seed %d)%n", matrixId.substring(0, 8),
+            out.printf("matrix %s: %d runs%s, %d already in %s, %d to run (order seed %d)%n", runner.matrixId().substring(0, 8),
                     m.plan().size(), shardText(m), m.plan().size() - todo.size(), m.db(), todo.size(), m.orderSeed());
             out.flush();
             MatrixRunner.Summary s = runner.run(todo, Progress.forConsole(out));

@@ -8,6 +8,7 @@ import java.util.concurrent.Callable;
 import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.report.ReportCommand;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
+import org.jmclbench.tooling.runtime.RuntimeInfo;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -18,7 +19,7 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "quick", mixinStandardHelpOptions = true,
         description = {"Runs every JVM found (with its default GC) with the javase and scj engines, the native",
-                "baseline and, with HVM_SRC set, the icecap HVM, x {skip, terminate} x {100, 1600} particles x 1 repetition",
+                "baseline and, with HVM_SRC set, the icecap HVM (compiled to C), x {skip, terminate} x {100, 1600} particles x 1 repetition",
                 "on dataset " + QuickCommand.DATASET + " (10 s) into results/results.db, then builds the report. It is a matrix:",
                 "rerunning it resumes, and `matrix` can add to the same database. With many runtimes, the replay is sped up",
                 "to stay under 5 minutes (--time-scale, which scales deadlines too); the estimate and the chosen scale are printed."})
@@ -68,10 +69,22 @@ public final class QuickCommand implements Callable<Integer> {
                 MatrixOptions.apply(spec, "time-scale", String.valueOf(scale), "quick");
             }
         }
-        MatrixSession.Result r = MatrixSession.execute(spec, "jmclbench quick" + (timeScale == null ? "" : " --time-scale " + timeScale),
-                System.out, () -> d);
+        String command = "jmclbench quick" + (timeScale == null ? "" : " --time-scale " + timeScale);
+        MatrixSession.Result r = MatrixSession.execute(spec, command, System.out, () -> d);
         if (r.exitCode() != 0) {
             return r.exitCode();
+        }
+        // the thesis's RTSJ program (both designs) under terminate, where its ATC matters, on the newest JVM
+        java.util.Optional<String> newest = newestJvm(d);
+        if (newest.isPresent()) {
+            MatrixSpec rtsj = rtsjSpec(db, newest.get());
+            if (spec.timeScale != null) {
+                MatrixOptions.apply(rtsj, "time-scale", String.valueOf(spec.timeScale), "quick");
+            }
+            r = MatrixSession.execute(rtsj, command + " [rtsj]", System.out, () -> d);
+            if (r.exitCode() != 0) {
+                return r.exitCode();
+            }
         }
         if (noReport) {
             System.out.println("results in " + r.db() + " (report: ./jmclbench report --db " + r.db() + ")");
@@ -102,6 +115,28 @@ public final class QuickCommand implements Callable<Integer> {
         return spec;
     }
 
+    /** The RTSJ engine's designs quick runs, under terminate only (skip does not tell the designs apart). */
+    static final List<String> RTSJ_ENGINES = List.of(Engines.RTSJ, Engines.RTSJ_ATOMIC);
+
+    /** quick's RTSJ matrix: both designs on {@code jvm}, terminate, quick's heavier count only (where aborts take time), into {@code db}. */
+    static MatrixSpec rtsjSpec(String db, String jvm) {
+        MatrixSpec spec = spec(db);
+        MatrixOptions.clear(spec, "runtimes");
+        MatrixOptions.apply(spec, "runtimes", jvm, "quick");
+        MatrixOptions.clear(spec, "engines");
+        MatrixOptions.apply(spec, "engines", String.join(",", RTSJ_ENGINES), "quick");
+        MatrixOptions.clear(spec, "policies");
+        MatrixOptions.apply(spec, "policies", "terminate", "quick");
+        MatrixOptions.clear(spec, "particles");
+        MatrixOptions.apply(spec, "particles", String.valueOf(PARTICLES.get(PARTICLES.size() - 1)), "quick");
+        return spec;
+    }
+
+    /** The JVM of the highest major version found (the first found on a tie). */
+    static java.util.Optional<String> newestJvm(RuntimeDiscovery d) {
+        return d.jvms().stream().max(java.util.Comparator.comparingInt(RuntimeInfo::major)).map(RuntimeInfo::name);
+    }
+
     /**
      * The largest scale in steps of 0.05 (at least 0.25) that keeps the runs within {@link #BUDGET_S};
      * prints the estimate either way.
@@ -126,7 +161,7 @@ public final class QuickCommand implements Callable<Integer> {
      */
     static double fitScale(int jvms, boolean nat, boolean hvm, double durationS, java.io.PrintStream out) {
         int cells = POLICIES.size() * PARTICLES.size();
-        int jvmRuns = jvms * ENGINES.size() * cells + (hvm ? cells : 0);
+        int jvmRuns = jvms * ENGINES.size() * cells + (hvm ? cells : 0) + (jvms > 0 ? RTSJ_ENGINES.size() : 0);
         int nativeRuns = nat ? cells : 0;
         int runs = jvmRuns + nativeRuns;
         if (runs == 0 || durationS <= 0) {
@@ -137,7 +172,8 @@ public final class QuickCommand implements Callable<Integer> {
         if (scale >= 1.0) {
             out.printf(Locale.ROOT, "quick: %d runs (%d JVM x %d engines x %d settings%s) of %.0f s: about %.0f s in real time"
                             + REPORT_NOTE + "%n",
-                    runs, jvms, ENGINES.size(), cells, (nat ? " + native" : "") + (hvm ? " + hvm" : ""), durationS, runs * durationS + overhead);
+                    runs, jvms, ENGINES.size(), cells, (nat ? " + native" : "") + (hvm ? " + hvm" : "") + (jvms > 0 ? " + rtsj" : ""),
+                    durationS, runs * durationS + overhead);
             return 1.0;
         }
         double chosen = Math.max(0.25, scale);

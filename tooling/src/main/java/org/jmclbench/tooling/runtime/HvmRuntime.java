@@ -15,7 +15,9 @@ public final class HvmRuntime {
     /** The runtime's name in results, matrices and the report. */
     public static final String NAME = "hvm";
     /** The icecap source the scripts pin (hvm/build-hvm.sh). */
-    static final String VERSION = "hvm-scj 4d31e23 + jmclbench patches (interpreter)";
+    static final String VERSION = "hvm-scj 4d31e23 + jmclbench patches";
+    /** The variable hvm/build-mission.sh (and so the hvm engine) reads the mode from: compiled or interpreted. */
+    public static final String MODE_VARIABLE = "JMCLBENCH_HVM_MODE";
     /** Building the tool chain and the mission takes about 70 s on a quiet machine. */
     static final long BUILD_TIMEOUT_MS = 15 * 60 * 1000L;
 
@@ -46,14 +48,24 @@ public final class HvmRuntime {
         return new Availability(r.ok(), detail.isEmpty() ? "exit status " + r.exitCode() : detail);
     }
 
-    /** Builds (or finds cached) the mission's executable, so that no run pays for it; throws when it cannot. */
-    public static void prepare(Path home) {
-        ProcessRunner.Result r = ProcessRunner.run(List.of(home.resolve("hvm/build-mission.sh").toString()),
-                BUILD_TIMEOUT_MS);
-        if (!r.ok()) {
-            throw new BadUsageException("hvm: the HVM executable cannot be built: " + lastLine(r.output())
-                    + " (./jmclbench doctor; docs/HVM.md)");
+    /**
+     * Builds (or finds cached) the mission's executable in each mode ({@link Profile#hvmMode}), so
+     * that no run pays for it; throws when it cannot.
+     */
+    public static void prepare(Path home, List<String> modes) {
+        for (String mode : modes) {
+            ProcessRunner.Result r = ProcessRunner.run(List.of(home.resolve("hvm/build-mission.sh").toString(),
+                    "--mode", mode), BUILD_TIMEOUT_MS);
+            if (!r.ok()) {
+                throw new BadUsageException("hvm: the HVM executable (" + mode + ") cannot be built: "
+                        + lastLine(r.output()) + " (./jmclbench doctor; docs/HVM.md)");
+            }
         }
+    }
+
+    /** The environment of an hvm run of {@code profile}: the mode its executable is built in. */
+    public static java.util.Map<String, String> environment(Profile profile) {
+        return java.util.Map.of(MODE_VARIABLE, profile.hvmMode());
     }
 
     /** The runtime: its program is the tool's own JVM, which runs the workload that drives the executable. */

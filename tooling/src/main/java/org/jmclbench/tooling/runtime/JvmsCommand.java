@@ -48,7 +48,7 @@ public final class JvmsCommand implements Callable<Integer> {
             if (!noProbe) {
                 supported.add(Profile.DEFAULT);
                 for (ProfileComponent c : ProfileComponent.values()) {
-                    if (!r.isJvm() && !c.appliesToNative()) {
+                    if (!c.appliesTo(r.kind())) {
                         continue;
                     }
                     ProfileProbe.Support s = probe.check(r, Profile.parse(c.id(), "jvms"), pin);
@@ -94,7 +94,8 @@ public final class JvmsCommand implements Callable<Integer> {
             System.out.println("hvm (the icecap HVM): cannot be built here: " + hvm.detail());
         }
         System.out.println();
-        System.out.println("Profiles compose with '+', e.g. g1+pretouch+fifo+pinned; the native runtime takes only fifo and pinned.");
+        System.out.println("Profiles compose with '+', e.g. g1+pretouch+fifo+pinned; the native runtime takes only fifo and pinned,"
+                + " the hvm runtime those and int (its interpreter; compiled to C otherwise).");
         return 0;
     }
 

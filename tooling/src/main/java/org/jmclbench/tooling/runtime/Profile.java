@@ -53,13 +53,21 @@ public record Profile(String name, List<ProfileComponent> components) {
         return new Profile(comps.stream().map(ProfileComponent::id).collect(Collectors.joining("+")), List.copyOf(comps));
     }
 
-    /** What a native run keeps of this profile: only the OS components; {@code default} when none is left. */
-    public Profile forNative() {
-        List<ProfileComponent> os = components.stream().filter(ProfileComponent::appliesToNative).toList();
-        if (os.isEmpty()) {
+    /**
+     * What a run of that kind keeps of this profile ({@link ProfileComponent#appliesTo}): a native
+     * run only the OS components, the HVM those and {@code int}; {@code default} when none is left.
+     */
+    public Profile effectiveFor(RuntimeKind kind) {
+        List<ProfileComponent> kept = components.stream().filter(c -> c.appliesTo(kind)).toList();
+        if (kept.isEmpty()) {
             return defaultProfile();
         }
-        return new Profile(os.stream().map(ProfileComponent::id).collect(Collectors.joining("+")), os);
+        return new Profile(kept.stream().map(ProfileComponent::id).collect(Collectors.joining("+")), kept);
+    }
+
+    /** The icecap HVM's mode of this profile: {@code interpreted} with {@code int}, else {@code compiled} (docs/HVM.md). */
+    public String hvmMode() {
+        return has(ProfileComponent.INT) ? "interpreted" : "compiled";
     }
 
     public boolean has(ProfileComponent c) {

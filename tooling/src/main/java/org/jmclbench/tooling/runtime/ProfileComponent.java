@@ -5,7 +5,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 
-/** One named building block of a runtime profile: a GC, a JIT mode, heap pre-touch, OS scheduling, AOT. */
+/**
+ * One named building block of a runtime profile: a GC, a JIT mode, heap pre-touch, OS scheduling, AOT.
+ * {@link #appliesTo} says which runtime kinds take it: the others drop it from their profile.
+ */
 public enum ProfileComponent {
     SERIAL(Category.GC, "Serial GC", "-XX:+UseSerialGC"),
     PARALLEL(Category.GC, "Parallel GC", "-XX:+UseParallelGC"),
@@ -15,6 +18,7 @@ public enum ProfileComponent {
     /** Allocates, never collects: needs a heap big enough for the whole run. */
     EPSILON(Category.GC, "Epsilon (no-op) GC, " + ProfileComponent.EPSILON_HEAP_MB + " MB heap",
             "-XX:+UnlockExperimentalVMOptions", "-XX:+UseEpsilonGC"),
+    /** A JVM's -Xint; on the icecap HVM, its interpreter instead of the mission compiled to C. */
     INT(Category.JIT, "interpreter only", "-Xint"),
     C1(Category.JIT, "C1 only", "-XX:TieredStopAtLevel=1"),
     /** Commits and touches the whole heap at start, so that no page fault happens while measuring. */
@@ -56,9 +60,17 @@ public enum ProfileComponent {
         return flags;
     }
 
-    /** Only scheduling and pinning mean something to a native program. */
-    public boolean appliesToNative() {
-        return category == Category.OS;
+    /**
+     * Whether a runtime of this kind takes the component: a JVM every one; a native program only
+     * scheduling and pinning; the icecap HVM those and {@code int}, its interpreter (compiled to C is
+     * its default, docs/HVM.md).
+     */
+    public boolean appliesTo(RuntimeKind kind) {
+        return switch (kind) {
+            case JVM -> true;
+            case NATIVE -> category == Category.OS;
+            case HVM -> category == Category.OS || this == INT;
+        };
     }
 
     public String id() {

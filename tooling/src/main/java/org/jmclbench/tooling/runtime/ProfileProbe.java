@@ -51,7 +51,7 @@ public final class ProfileProbe {
 
     /** Whether {@code runtime} can run {@code profile} with the CPU list {@code pinCpu} for {@code pinned}. */
     public Support check(RuntimeInfo runtime, Profile profile, String pinCpu) {
-        Profile effective = runtime.isJvm() ? profile : profile.forNative();
+        Profile effective = profile.effectiveFor(runtime.kind());
         LaunchPlan plan = LaunchPlan.of(runtime, effective, pinCpu);
         if (runtime.isJvm() && effective.has(ProfileComponent.AOT) && runtime.major() < 13) {
             return Support.no("aot: AppCDS dynamic archives need JDK 13 or newer, AOT caches JDK 25");

@@ -32,16 +32,16 @@ public final class RunFolderIngest {
 
     private static final ObjectMapper JSON = new ObjectMapper();
     private static final String[] COUNTS = {"released", "completed", "done", "late", "skipped", "terminated", "missCount",
-        "deadlineMisses", "missRatio"};
+        "deadlineMisses", "missRatio", "abortsCompleted"};
     /** Their numeric stats; responseTimeReleasedNs' "inf" quantiles stay in the summary, where the report reads them. */
-    private static final String[] TIMINGS = {"releaseJitterNs", "taskLatencyNs", "responseTimeNs", "cpuNs", "responseTimeReleasedNs"};
+    private static final String[] TIMINGS = {"releaseJitterNs", "taskLatencyNs", "responseTimeNs", "cpuNs", "responseTimeReleasedNs", "abortLatencyNs"};
     private static final String[] STATS = {"count", "mean", "stdev", "min", "p50", "p90", "p99", "p999", "max"};
 
     private RunFolderIngest() {
     }
 
-    /** One job line of odoData.txt / laserData.txt. */
-    record Job(long index, long release, long start, long end, long deadline, String outcome, long cpu) {
+    /** One job line of odoData.txt / laserData.txt; {@code abort} is -1 in run folders from before its column. */
+    record Job(long index, long release, long start, long end, long deadline, String outcome, long cpu, long abort) {
         boolean completed() {
             return outcome.equals("done") || outcome.equals("late");
         }
@@ -67,7 +67,11 @@ public final class RunFolderIngest {
             Histogram jitter = new Histogram(3);
             Histogram latency = new Histogram(3);
             Histogram response = new Histogram(3);
+            Histogram abort = new Histogram(3);
             for (Job j : e.getValue()) {
+                if (j.abort() >= 0 && j.end() >= j.abort()) {
+                    abort.recordValue(j.end() - j.abort());
+                }
                 if (j.start() >= 0) {
                     jitter.recordValue(Math.max(0, j.start() - j.release()));
                 }
@@ -79,6 +83,9 @@ public final class RunFolderIngest {
             d.histograms.add(new RunDetails.Hdr(e.getKey(), "releaseJitterNs", encode(jitter)));
             d.histograms.add(new RunDetails.Hdr(e.getKey(), "taskLatencyNs", encode(latency)));
             d.histograms.add(new RunDetails.Hdr(e.getKey(), "responseTimeNs", encode(response)));
+            if (abort.getTotalCount() > 0) {
+                d.histograms.add(new RunDetails.Hdr(e.getKey(), "abortLatencyNs", encode(abort)));
+            }
         }
         Path dispatcher = dir.resolve("dispatcherData.txt");
         if (Files.isRegularFile(dispatcher)) {
@@ -185,7 +192,8 @@ public final class RunFolderIngest {
 
     static List<Job> readJobs(Path file) throws IOException {
         return readRows(file, 7, f -> new Job(Long.parseLong(f[0]), Long.parseLong(f[1]), Long.parseLong(f[2]),
-                Long.parseLong(f[3]), Long.parseLong(f[4]), f[5], Long.parseLong(f[6])));
+                Long.parseLong(f[3]), Long.parseLong(f[4]), f[5], Long.parseLong(f[6]),
+                f.length > 7 ? Long.parseLong(f[7]) : -1));
     }
 
     /** dispatcherData.txt (when a workload writes one): {@code index requested_ns woke_ns} lines. */

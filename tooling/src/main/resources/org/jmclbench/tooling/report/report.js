@@ -40,7 +40,7 @@
   }
   function fmtCi(agg, digits) {
     if (!agg || agg.mean === null) { return '\u2013'; }
-    return agg.half === null ? fmt(agg.mean, digits) : fmt(agg.mean, digits) + ' \u00b1 ' + fmt(agg.half, digits);
+    return agg.low === null ? fmt(agg.mean, digits) : fmt(agg.mean, digits) + ' [' + fmt(agg.low, digits) + ', ' + fmt(agg.high, digits) + ']';
   }
 
   function cellsWhere(pred) { return DATA.cells.filter(pred); }
@@ -114,7 +114,8 @@
     var winners = withMiss.filter(function (c) { return c.metrics.MISS_COUNT.mean === best; });
     h.appendChild(el('p', { 'class': 'big', id: 'headline-best' }, 'Fewest deadline misses at ' + where + ': ' +
       winners.map(function (c) { return c.config; }).join(', ') + ' (' + fmtCi(winners[0].metrics.MISS_COUNT) +
-      ' misses per run, ' + winners[0].metrics.MISS_COUNT.n + (winners[0].metrics.MISS_COUNT.n === 1 ? ' run).' : ' runs).')));
+      ' misses per run, ' + winners[0].metrics.MISS_COUNT.n + (winners[0].metrics.MISS_COUNT.n === 1 ? ' run)' : ' runs)') +
+      separationNote(winners, withMiss)));
     var javas = withMiss.filter(function (c) { return !isNative(c); });
     var nat = withMiss.filter(isNative)[0];
     var p = el('p', { id: 'headline-ratio' });
@@ -131,11 +132,25 @@
       nat = nativeFor(j.config, withMiss);
       var lr = ratio(j.metrics.LATENCY_MEAN.mean, nat.metrics.LATENCY_MEAN.mean);
       var mr = ratio(j.metrics.MISS_COUNT.mean, nat.metrics.MISS_COUNT.mean);
-      p.textContent = 'Java vs C: the best Java runtime, ' + j.config + ', has a mean task latency ' + lr + ' that of ' +
+      p.textContent = 'Java vs C: ' + j.config + ', the chosen Java runtime with the lowest mean misses, has a mean task latency ' + lr + ' that of ' +
         nat.config + ' (' + fmt(j.metrics.LATENCY_MEAN.mean) + ' vs ' + fmt(nat.metrics.LATENCY_MEAN.mean) + ' ms) and ' +
         fmt(j.metrics.MISS_COUNT.mean) + ' vs ' + fmt(nat.metrics.MISS_COUNT.mean) + ' misses per run (' + mr + ').';
     }
     h.appendChild(p);
+  }
+  /**
+   * Which of the others the lowest is not separated from (docs/REPORT.md: at least 10 runs a side,
+   * Mann-Whitney U and the bootstrap interval of the ratio): a lowest mean is not a ranking.
+   */
+  function separationNote(winners, cells) {
+    var others = cells.filter(function (c) { return winners.indexOf(c) < 0; });
+    if (others.length === 0) { return '.'; }
+    var sep = winners[0].missSeparation || {};
+    var not = others.filter(function (c) { return sep[c.config] !== 'A_LOWER'; });
+    if (not.length === 0) { return '; lower than every other chosen runtime (separated: docs/REPORT.md).'; }
+    var few = not.some(function (c) { return sep[c.config] === 'TOO_FEW'; });
+    return '; not separated from ' + not.map(function (c) { return c.config; }).join(', ') +
+      (few ? ' (fewer than 10 runs a side: no ranking)' : '') + ' (docs/REPORT.md).';
   }
   /** The native baseline to compare a runtime with: on the same machine when the store has several. */
   function isNative(c) { return configById[c.config] && configById[c.config].kind === 'NATIVE'; }
@@ -190,7 +205,7 @@
       row.texts.memory = c.memory; row.values.memory = c.memory;
       COLUMNS.forEach(function (col) {
         if (!col.metric) { return; }
-        var agg = c.metrics[col.metric] || { mean: null, max: null, half: null };
+        var agg = c.metrics[col.metric] || { mean: null, max: null, low: null, high: null };
         var v = col.stat === 'max' ? agg.max : agg.mean;
         if (v === 'Infinity') { v = Infinity; } // JSON has no infinity: the model writes it as a string
         row.values[col.key] = v;

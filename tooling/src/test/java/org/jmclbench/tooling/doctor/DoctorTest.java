@@ -37,7 +37,10 @@ class DoctorTest {
         write("sys/devices/system/clocksource/clocksource0/current_clocksource", "tsc\n");
         write("proc/cpuinfo", "processor : 0\nflags : fpu vme sse\n");
         write("proc/stat", "cpu  100 0 100 1000 0 0 0 0 0 0\n");
-        Map<String, String> s = statuses(new Doctor(root, false).run());
+        write("proc/meminfo", "MemTotal:       24596796 kB\nMemFree:        1000 kB\n");
+        List<DoctorCheck> all = new Doctor(root, false).run();
+        Map<String, String> s = statuses(all);
+        assertEquals("23.5 GiB", all.stream().filter(c -> c.check().equals("memory")).findFirst().orElseThrow().value());
         for (String c : List.of("preempt-rt", "rt-throttling", "memlock", "cpu-governor", "isolated-cpus",
                 "transparent-hugepages", "clocksource", "virtualisation", "steal-time")) {
             assertEquals("PASS", s.get(c), c + " in " + s);

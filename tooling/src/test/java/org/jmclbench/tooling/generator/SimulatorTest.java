@@ -198,23 +198,25 @@ class SimulatorTest {
             Trajectory tr = r.trajectory();
             double kidnapAt = s.kidnap() == null ? Double.NaN : s.kidnap().time();
             for (int i = 0; i < tr.size(); i++) {
-                for (double t : new double[] {tr.start(i), 0.5 * (tr.start(i) + tr.end(i)), tr.end(i)}) {
+                Trajectory.Piece piece = tr.piece(i);
+                for (double t : new double[] {piece.start(), 0.5 * (piece.start() + piece.end()), piece.end()}) {
                     Pose p = tr.poseIn(i, t);
                     double margin = Math.min(Math.min(p.x(), 3 - p.x()), Math.min(p.y(), 2 - p.y()));
                     assertTrue(margin >= 0.15, s.name() + " at t=" + t + ": " + p);
                 }
-                assertTrue(Math.abs(tr.speed(i)) <= RouteFollower.V_MAX + 1e-12);
-                assertTrue(Math.abs(tr.turnRate(i)) <= RouteFollower.W_MAX + 1e-12);
-                if (i > 0 && !(Math.abs(tr.start(i) - kidnapAt) < 1e-9)) {
-                    double dt = tr.end(i) - tr.start(i);
-                    assertTrue(Math.abs(tr.speed(i) - tr.speed(i - 1)) <= RouteFollower.ACCEL * dt + 1e-12);
-                    assertTrue(Math.abs(tr.turnRate(i) - tr.turnRate(i - 1)) <= RouteFollower.ANGULAR_ACCEL * dt + 1e-12);
+                assertTrue(Math.abs(piece.speed()) <= RouteFollower.V_MAX + 1e-12);
+                assertTrue(Math.abs(piece.turnRate()) <= RouteFollower.W_MAX + 1e-12);
+                if (i > 0 && !(Math.abs(piece.start() - kidnapAt) < 1e-9)) {
+                    Trajectory.Piece before = tr.piece(i - 1);
+                    double dt = piece.end() - piece.start();
+                    assertTrue(Math.abs(piece.speed() - before.speed()) <= RouteFollower.ACCEL * dt + 1e-12);
+                    assertTrue(Math.abs(piece.turnRate() - before.turnRate()) <= RouteFollower.ANGULAR_ACCEL * dt + 1e-12);
                 }
             }
             if (!s.name().equals("stay")) {
                 double travelled = 0;
                 for (int i = 0; i < tr.size(); i++) {
-                    travelled += Math.abs(tr.speed(i)) * (tr.end(i) - tr.start(i));
+                    travelled += Math.abs(tr.piece(i).speed()) * (tr.piece(i).end() - tr.piece(i).start());
                 }
                 assertTrue(travelled > 0.1 * s.defaultDuration(), s.name() + " travels " + travelled + " m");
             }

@@ -20,7 +20,7 @@ class BreakdownLoadTest {
         c.runs = ok + failed;
         c.ok = ok;
         c.failed = failed;
-        c.metrics.put(Metric.MISS_COUNT.name(), new ReportModel.Agg(ok, maxLate / 2, null, 0.0, maxLate));
+        c.metrics.put(Metric.MISS_COUNT.name(), new ReportModel.Agg(ok, maxLate / 2, null, null, 0.0, maxLate, new double[0]));
         return c;
     }
 

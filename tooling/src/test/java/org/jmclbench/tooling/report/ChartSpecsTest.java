@@ -55,14 +55,32 @@ class ChartSpecsTest {
 
     @Test
     void everyFigureIsBuiltAtEverySettingWithItsFileName() {
-        // 2 policies x (7 sweep charts + 3 counts x 12 charts at one count)
-        assertEquals(2 * (7 + 3 * 12), model.charts.size());
+        // 2 policies x (7 sweep charts + 3 counts x 12 charts at one count), and abort latency at terminate's 3 counts
+        assertEquals(2 * (7 + 3 * 12) + 3, model.charts.size());
         assertEquals(model.charts.size(), model.charts.stream().map(ChartSpec::stem).distinct().count(), "one file per chart");
         assertEquals("match-short-skip-misses", chart("misses", "skip", null).stem());
         assertEquals("match-short-terminate-1600-spectrum", chart("spectrum", "terminate", 1600).stem());
         assertEquals("a_b_c", ChartSpecs.safe("a/b c"));
         assertEquals("_.x", ChartSpecs.safe(".x"), "never a hidden file");
         assertTrue(chart("latency-index", "skip", 400).title().endsWith("(match-short, skip, 400 particles)"));
+    }
+
+    @Test
+    void abortLatencyIsDrawnWhereAbortsTookHoldFromTheMergedHistograms() {
+        assertTrue(model.charts.stream().noneMatch(c -> c.id().equals("abort-latency") && c.setting().policy().equals("skip")),
+                "skip aborts nothing: no chart");
+        ChartSpec c = chart("abort-latency", "terminate", 1600);
+        assertEquals("match-short-terminate-1600-abort-latency", c.stem());
+        assertEquals(ChartSpec.Scale.LOG, c.y().scale());
+        assertFalse(c.series().isEmpty());
+        for (ChartSpec.Series s : c.series()) {
+            ReportModel.Cell cell = cell(s.config(), "terminate", 1600);
+            assertEquals(cell.abortSpectrum.size(), s.points().size(), s.name());
+            // the fixture's aborts end a quarter of a job's latency after the request: below the task latency
+            double abortMax = s.points().get(s.points().size() - 1)[1];
+            double latencyMax = cell.latencySpectrum.get(cell.latencySpectrum.size() - 1)[1];
+            assertTrue(abortMax > 0 && abortMax < latencyMax, s.name() + ": " + abortMax + " vs " + latencyMax);
+        }
     }
 
     @Test
@@ -75,8 +93,9 @@ class ChartSpecsTest {
                 ReportModel.Agg a = cell(s.config(), "skip", List.of(100, 400, 1600).get(i)).metrics.get("MISS_COUNT");
                 assertEquals(a.mean(), s.values().get(i));
                 double[] e = s.errors().get(i);
-                assertEquals(Math.max(0, a.mean() - a.half()), e[0], 1e-12);
-                assertEquals(a.mean() + a.half(), e[1], 1e-12);
+                assertEquals(a.low(), e[0], 1e-12);
+                assertEquals(a.high(), e[1], 1e-12);
+                assertTrue(e[0] >= a.min() && e[1] <= a.max(), "a bootstrap interval stays in the runs' range");
             }
         }
         assertEquals(0.0, misses.y().min());

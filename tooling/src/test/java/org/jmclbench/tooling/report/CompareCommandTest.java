@@ -25,12 +25,12 @@ class CompareCommandTest {
         FixtureDb fa = new FixtureDb();
         fa.policies = List.of("skip");
         fa.particles = List.of(400);
-        fa.repetitions = 6;
+        fa.repetitions = 10;
         a = ReportFixtures.write(fa, dir, "a.db");
         FixtureDb fb = new FixtureDb();
         fb.policies = List.of("skip");
         fb.particles = List.of(400);
-        fb.repetitions = 6;
+        fb.repetitions = 10;
         fb.seed = 2;
         // Machine B is twice as slow for every runtime.
         fb.configs = new ArrayList<>(fa.configs.stream()
@@ -68,12 +68,12 @@ class CompareCommandTest {
         assertTrue(out.contains("== match-short  skip  400 particles  native =="), out);
         assertTrue(out.contains("== match-short  skip  400 particles  temurin-25/zgc =="), out);
         String latency = line(out.substring(out.indexOf("native ==")), "task latency mean");
-        // Twice as slow: the ratio is about 2, its interval excludes 1 and six runs against six are significant.
+        // Twice as slow: the ratio is about 2, its interval excludes 1 and ten runs against ten separate.
         String[] cols = latency.split("\\s{2,}");
         double ratio = Double.parseDouble(cols[3].trim());
         assertEquals(2.0, ratio, 0.15, latency);
-        assertTrue(latency.contains("significant (p=0.00"), latency);
-        assertTrue(!latency.contains("not significant"), latency);
+        assertTrue(latency.endsWith("A lower than B (p < 0.001, n = 10 vs 10)"), latency);
+        assertTrue(latency.matches(".* \\d\\.\\d{3} \\[\\d\\.\\d{3}, \\d\\.\\d{3}\\] n=10 .*"), "a bootstrap interval per side: " + latency);
     }
 
     @Test
@@ -90,14 +90,19 @@ class CompareCommandTest {
     }
 
     @Test
-    void tooFewRepetitionsSaySo() throws Exception {
+    void tooFewRepetitionsSaySoAndRankNothing() throws Exception {
         FixtureDb f = new FixtureDb();
         f.policies = List.of("skip");
         f.particles = List.of(100);
-        f.repetitions = 2;
+        f.repetitions = 6;
         Path small = ReportFixtures.write(f, dir, "small.db");
         String out = run(0, "compare", "--db", small.toString(), "--a", "native", "--b", "temurin-25/zgc")[0];
-        assertTrue(line(out, "missCount").endsWith("n too small"), out);
+        for (Metric m : CompareCommand.METRICS) {
+            String row = line(out, m.label);
+            // six runs a side of a runtime 1.3 times slower would have been "significant" before
+            assertTrue(row.contains("not separated: n too small to separate (") && row.endsWith("n = 6 vs 6; 10 a side needed)"), row);
+        }
+        assertTrue(!out.contains("lower than"), out);
     }
 
     @Test

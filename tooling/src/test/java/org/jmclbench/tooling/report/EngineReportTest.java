@@ -37,6 +37,17 @@ class EngineReportTest {
     }
 
     @Test
+    void anHvmRowSaysWhetherTheMissionRanCompiledOrInterpreted() throws Exception {
+        com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
+        assertTrue(ReportModel.facts(json.readTree("{\"engine\": {\"kind\": \"hvm\", \"level\": 1, \"mode\": \"compiled\"}}"))
+                .contains("engine hvm (SCJ level 1, compiled)"));
+        assertTrue(ReportModel.facts(json.readTree("{\"engine\": {\"kind\": \"hvm\", \"level\": 1, \"mode\": \"interpreted\"}}"))
+                .contains("engine hvm (SCJ level 1, interpreted)"));
+        assertTrue(ReportModel.facts(json.readTree("{\"engine\": {\"kind\": \"scj\", \"level\": 1}}"))
+                .contains("engine scj (SCJ level 1)"), "no mode, none said");
+    }
+
+    @Test
     void eachEngineAndMemoryStyleIsARowWithItsAreas() throws Exception {
         Path db = ReportFixtures.write(ReportFixtures.engines(), dir, "results.db");
         ReportModel m = model(db);
@@ -59,6 +70,20 @@ class EngineReportTest {
         assertEquals(List.of("heap"), cell(m, ReportFixtures.JAVASE, 100).memoryAreas.stream().map(ReportModel.MemoryArea::name).toList());
         assertTrue(cell(m, ReportFixtures.NATIVE, 100).memoryAreas.isEmpty());
         assertEquals("native", cell(m, ReportFixtures.NATIVE, 100).engine);
+    }
+
+    @Test
+    void theReleasesThatAllocatedAreSummedOverTheRunsFromTheirSummaries() {
+        java.util.List<org.jmclbench.tooling.store.StoredRun> runs = new java.util.ArrayList<>();
+        for (int allocating : new int[] {1, 0, 2}) {
+            org.jmclbench.tooling.store.StoredRun r = new org.jmclbench.tooling.store.StoredRun();
+            r.summaryJson = "{\"memory\": {\"areas\": [{\"name\": \"update\", \"releases\": 90, \"allocatingReleases\": "
+                    + allocating + "}, {\"name\": \"mission\", \"releases\": null}]}}";
+            runs.add(r);
+        }
+        assertEquals(270L, ReportModel.summedAreaField(runs, "update", "releases"));
+        assertEquals(3L, ReportModel.summedAreaField(runs, "update", "allocatingReleases"));
+        assertEquals(null, ReportModel.summedAreaField(runs, "mission", "releases"), "no run told");
     }
 
     @Test

@@ -327,6 +327,9 @@ public final class FixtureDb {
             if (responseHistograms) {
                 addHistogram(hist, key, t, "responseTimeNs", jobs, j -> j.latencyNs + j.jitterNs); // completed jobs only
             }
+            if (policy.equals("terminate")) {
+                addAbortHistogram(hist, key, t, jobs);
+            }
         }
 
         // Columns as the runner's ingest writes them (the outcome column is text there; a number here).
@@ -426,7 +429,8 @@ public final class FixtureDb {
 
     private static void task(ObjectNode t, Job[] jobs, int missed, boolean deadlineAccounting) {
         t.put("released", jobs.length + missed).put("completed", jobs.length).put("done", jobs.length).put("late", 0)
-                .put("skipped", missed).put("terminated", 0).put("missCount", missed);
+                .put("skipped", missed).put("terminated", 0).put("missCount", missed).put("deadlineMisses", missed)
+                .put("missRatio", (double) missed / (jobs.length + missed));
         double[] lat = Arrays.stream(jobs).mapToDouble(Job::latencyNs).toArray();
         double[] jit = Arrays.stream(jobs).mapToDouble(Job::jitterNs).toArray();
         stats(t.putObject("releaseJitterNs"), jit);
@@ -501,6 +505,19 @@ public final class FixtureDb {
         ps.setString(1, key);
         ps.setString(2, task);
         ps.setString(3, metric);
+        ps.setString(4, encode(h));
+        ps.addBatch();
+    }
+
+    /** Under terminate: every fourth job was asked to abort and ended a quarter of its latency later. */
+    private static void addAbortHistogram(PreparedStatement ps, String key, String task, Job[] jobs) throws SQLException {
+        Histogram h = new Histogram(3);
+        for (int i = 0; i < jobs.length; i += 4) {
+            h.recordValue((long) (jobs[i].latencyNs / 4));
+        }
+        ps.setString(1, key);
+        ps.setString(2, task);
+        ps.setString(3, "abortLatencyNs");
         ps.setString(4, encode(h));
         ps.addBatch();
     }

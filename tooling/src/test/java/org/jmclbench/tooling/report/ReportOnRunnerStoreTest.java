@@ -30,12 +30,10 @@ class ReportOnRunnerStoreTest {
     @Test
     void reportAndCompareReadWhatTheMatrixWrote() throws Exception {
         Fixtures.home(dir);
-        String a = Fixtures.fakeJava(dir, "a", "ok", 0, null, 17).toString();
-        String b = Fixtures.fakeJava(dir, "b", "ok", 0, null, 21).toString();
-        String crash = Fixtures.fakeJava(dir, "crash", "crash", 0, null, 11).toString();
+        Fixtures.FakeJvms jvms = Fixtures.FakeJvms.in(dir);
         Path db = dir.resolve("results/results.db");
         Fixtures.CliResult m = Fixtures.cli("matrix", "--datasets", "tiny", "--particles", "100,200", "--policies", "skip",
-                "--repeat", "3", "--java", a, "--java", b, "--java", crash, "--db", db.toString());
+                "--repeat", "3", "--java", jvms.java17(), "--java", jvms.java21(), "--java", jvms.crashing11(), "--db", db.toString());
         assertEquals(0, m.exitCode(), m.out() + m.err());
 
         Fixtures.CliResult r = Fixtures.cli("report", "--db", db.toString(), "--out", dir.resolve("report").toString());
@@ -102,6 +100,7 @@ class ReportOnRunnerStoreTest {
         assertTrue(cmp.out().contains("== tiny  skip  100 particles =="), cmp.out());
         // The fake runtimes measure identical values: ratio 1, every rank tied, no difference.
         String latency = cmp.out().lines().filter(l -> l.startsWith("task latency mean")).findFirst().orElseThrow();
-        assertTrue(latency.contains("1.000") && latency.contains("not significant (p=1.000)"), latency);
+        assertTrue(latency.contains("1.000") && latency.endsWith("not separated: n too small to separate (p = 1.000, n = 3 vs 3; 10 a side needed)"),
+                latency);
     }
 }

@@ -98,7 +98,7 @@ class TaskChartsTest {
                 ReportModel.Agg p99 = c.metrics.get(TaskMetric.RESPONSE_P99.key(task));
                 if (anyInf) {
                     assertEquals(Double.POSITIVE_INFINITY, p99.mean(), "a p99 among the dropped jobs is +inf, not left out");
-                    assertNull(p99.half());
+                    assertNull(p99.low());
                 } else {
                     double mean = mine.stream().mapToDouble(r -> r.summary().at("/tasks/" + task + "/responseTimeReleasedNs/p99")
                             .asDouble() / 1e6).average().orElseThrow();
@@ -185,8 +185,8 @@ class TaskChartsTest {
                 ReportModel.Agg a = cell(s.config(), "skip", (int) s.points().get(i)[0]).metrics.get("update.MISS_RATIO");
                 assertEquals(a.mean(), s.points().get(i)[1]);
                 double[] e = s.errors().get(i);
-                assertEquals(Math.max(0, a.mean() - a.half()), e[0], 1e-12);
-                assertEquals(Math.min(1, a.mean() + a.half()), e[1], 1e-12);
+                assertEquals(Math.max(0, a.low()), e[0], 1e-12);
+                assertEquals(Math.min(1, a.high()), e[1], 1e-12);
             }
         }
         assertTrue(spec.series().stream().anyMatch(s -> s.errors().stream().anyMatch(e -> e[0] == 0)),
@@ -245,7 +245,7 @@ class TaskChartsTest {
                 ReportModel.Agg a = cell(cond.name().equals("none") ? label : label + " [load " + cond.name() + "]", "queue", 1600)
                         .metrics.get("MISS_COUNT");
                 assertEquals(a.mean(), cond.values().get(i));
-                assertEquals(Math.max(0, a.mean() - a.half()), cond.errors().get(i)[0], 1e-12);
+                assertEquals(Math.max(0, a.low()), cond.errors().get(i)[0], 1e-12);
             }
         }
         assertTrue(load.series().stream().noneMatch(x -> Palette.RUNTIME_COLORS.contains(x.color())),

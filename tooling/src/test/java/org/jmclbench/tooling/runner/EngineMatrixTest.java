@@ -20,9 +20,11 @@ import java.util.Map;
 import org.jmclbench.tooling.Fixtures;
 import org.jmclbench.tooling.load.LoadScenario;
 import org.jmclbench.tooling.load.LoadSettings;
+import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.runtime.RuntimeInfo;
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.store.MachineInfo;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -191,6 +193,29 @@ class EngineMatrixTest extends FakeJvmHome {
                 read(json, base, ", \"engine\": \"scj\", \"memory\": \"preallocated\"", ""), run));
         assertNull(MatrixRunner.describesAnotherRun(read(json, base, ", \"memory\": \"scoped\"", ", \"engine\": {\"kind\": \"scj\"}"), run),
                 "engine.kind stands in for parameters.engine");
+    }
+
+    @Test
+    void anHvmRunIsGarbageUnlessItsExecutableRanInTheProfilesMode() {
+        com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
+        RuntimeInfo hvm = new RuntimeInfo("hvm",
+                RuntimeKind.HVM, "icecap", "1", 0, Path.of("/j"), Path.of("/j"));
+        String base = "{\"parameters\": {\"particles\": 400, \"ideal\": false, \"policy\": \"skip\", \"seed\": 1,"
+                + " \"engine\": \"hvm\"}, \"engine\": {\"kind\": \"hvm\"%s}%s}";
+        for (String profile : List.of("default", "int")) {
+            Profile p = Profile.parse(profile, "t")
+                    .effectiveFor(RuntimeKind.HVM);
+            PlannedRun run = new PlannedRun(hvm, p, "hvm", "preallocated", "skip", 400,
+                    new Dataset("tiny", Path.of("/d"), 10, "x"), 1, 1, LoadScenario.NONE, "k");
+            String asked = profile.equals("int") ? "interpreted" : "compiled";
+            String other = profile.equals("int") ? "compiled" : "interpreted";
+            assertNull(MatrixRunner.describesAnotherRun(read(json, base, ", \"mode\": \"" + asked + "\"", ""), run));
+            assertEquals("hvm mode " + other + ", asked " + asked,
+                    MatrixRunner.describesAnotherRun(read(json, base, ", \"mode\": \"" + other + "\"", ""), run));
+            assertEquals("hvm mode missing, asked " + asked, MatrixRunner.describesAnotherRun(read(json, base, "", ""), run));
+            assertEquals(Map.of("JMCLBENCH_HVM_MODE", asked),
+                    HvmRuntime.environment(p), "what the executable is built in");
+        }
     }
 
     private static com.fasterxml.jackson.databind.JsonNode read(com.fasterxml.jackson.databind.ObjectMapper json, String format,

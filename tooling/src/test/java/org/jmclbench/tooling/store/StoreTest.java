@@ -39,13 +39,11 @@ class StoreTest {
     @Test
     void mergeKeepsEveryRunOnceAndCopiesFolders() throws Exception {
         Fixtures.home(dir);
-        String a = Fixtures.fakeJava(dir, "a", "ok", 0, null, 17).toString();
-        String b = Fixtures.fakeJava(dir, "b", "ok", 0, null, 21).toString();
-        String bad = Fixtures.fakeJava(dir, "bad", "crash", 0, null, 11).toString();
+        Fixtures.FakeJvms jvms = Fixtures.FakeJvms.in(dir);
         Path dbA = dir.resolve("A/results.db");
         Path dbB = dir.resolve("B/results.db");
-        matrix(dbA, "100,200", a, bad);        // fake-17 x2, fake-11 x2 (failed)
-        matrix(dbB, "200,300", a, b);          // fake-17 200 overlaps A's; fake-21 x2
+        matrix(dbA, "100,200", jvms.java17(), jvms.crashing11()); // fake-17 x2, fake-11 x2 (failed)
+        matrix(dbB, "200,300", jvms.java17(), jvms.java21());     // fake-17 200 overlaps A's; fake-21 x2
         Path dbC = dir.resolve("C/results.db");
         Fixtures.CliResult r = Fixtures.cli("merge", dbA.toString(), dbB.toString(), "--into", dbC.toString());
         assertEquals(0, r.exitCode(), r.err());
@@ -98,7 +96,7 @@ class StoreTest {
         for (int i = 0; i < 5000; i++) {
             long lat = i == 3333 ? 99_000_000 : 1_000_000 + i;
             jobs.add(new RunFolderIngest.Job(i, i * 50_000_000L, i * 50_000_000L + 1000, i * 50_000_000L + 1000 + lat,
-                    i * 50_000_000L + 50_000_000L, "done", lat));
+                    i * 50_000_000L + 50_000_000L, "done", lat, -1));
         }
         JsonNode s = new ObjectMapper().readTree(RunFolderIngest.latencySeries(jobs));
         assertTrue(s.get("rows").size() <= RunFolderIngest.MAX_SERIES_ROWS);
@@ -114,6 +112,25 @@ class StoreTest {
         List<double[]> kept = RunFolderIngest.strided(rows);
         assertTrue(kept.size() <= RunFolderIngest.MAX_SERIES_ROWS, "" + kept.size());
         assertEquals(4500, kept.get(kept.size() - 1)[0]);
+    }
+
+    @Test
+    void abortLatencyIsIngestedFromTheAbortColumnAndOldJobFilesStillRead() throws Exception {
+        Files.writeString(dir.resolve("odoData.txt"), "# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns\n"
+                + "0 0 100 900 50000000 terminated -1 400\n1 50000000 50000100 50000900 100000000 done -1 -1\n");
+        // laserData.txt as written before the abort column
+        Files.writeString(dir.resolve("laserData.txt"), "# index release_ns start_ns end_ns deadline_ns outcome cpu_ns\n"
+                + "0 70000000 70000100 70000900 120000000 done -1\n");
+        JsonNode summary = new ObjectMapper().readTree("{\"tasks\": {\"predict\": {\"abortsCompleted\": 0, "
+                + "\"abortLatencyNs\": {\"count\": 1, \"p50\": 500, \"max\": 500}}}}");
+        RunDetails d = RunFolderIngest.ingest(dir, summary, null);
+        List<RunDetails.Hdr> aborts = d.histograms.stream().filter(h -> h.metric().equals("abortLatencyNs")).toList();
+        assertEquals(List.of("predict", "all"), aborts.stream().map(RunDetails.Hdr::task).toList(), "no abort in update");
+        Histogram h = RunFolderIngest.decode(aborts.get(0).base64());
+        assertEquals(1, h.getTotalCount());
+        assertEquals(500, h.getMaxValue(), 1, "end 900 - abort 400");
+        assertTrue(d.metrics.contains(new RunDetails.Metric("predict", "abortLatencyNs", "p50", 500)), d.metrics.toString());
+        assertTrue(d.metrics.contains(new RunDetails.Metric("predict", "abortsCompleted", "value", 0)), d.metrics.toString());
     }
 
     @Test

@@ -16,9 +16,12 @@ import org.objectweb.asm.tree.VarInsnNode;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.BitSet;
+import java.util.Collection;
 import java.util.Deque;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.function.Predicate;
 
@@ -49,15 +52,34 @@ import java.util.function.Predicate;
  * starts at a multiple of the stride) and at least every interval after, so the particle steps
  * between two polls are at most the interval within a loop, and at most the tail of one loop
  * plus the head of the next across two (code between loops is a constant number of steps).
+ *
+ * <p>The same walk gives each particle loop's gap ({@link #gaps}): the most particle steps it
+ * runs between two polls, which {@link AbortBound} turns into a bound on abort latency. Which
+ * calls count as polls and which enum values are known (branches on them followed one way) can
+ * be set, so that a delivery point of RTSJ's ATC, or a design chosen by an enum, is analysed alike.
  */
 public final class AbortPollCheck {
-    /** The stride of a poll whose guard the rule cannot evaluate. */
-    static final long UNKNOWN = Long.MAX_VALUE;
+    /** The stride of a poll whose guard the rule cannot evaluate; also the gap of a loop that does not poll. */
+    public static final long UNKNOWN = Long.MAX_VALUE;
 
     private final ClassPool pool;
     private final Predicate<String> follow;
     private final int interval;
     private final String signalSimpleName;
+    private Predicate<MethodInsnNode> pollCall = c -> c.name.equals("abortRequested") && c.desc.equals("()Z");
+    private Map<String, String> known = Map.of();
+
+    /**
+     * One particle loop of terminable job code: where it is, the most particle steps it may run
+     * between two polls ({@link #UNKNOWN}: it may run whole without one) and, when that is more
+     * than the interval, why.
+     */
+    public record LoopGap(ClassPool.Owned method, int from, int to, int line, long steps, String problem) {
+        /** {@code Class.method:line}. */
+        public String where() {
+            return method.owner().name.replace('/', '.') + "." + method.method().name + ":" + line;
+        }
+    }
 
     /** Every class of the pool, interval 64, signal type {@code AbortSignal}. */
     public AbortPollCheck(ClassPool pool) {
@@ -75,19 +97,49 @@ public final class AbortPollCheck {
         this.signalSimpleName = "AbortSignal";
     }
 
+    /** Which calls are polls (default: {@code abortRequested()Z}). */
+    public AbortPollCheck polls(Predicate<MethodInsnNode> isPoll) {
+        this.pollCall = isPoll;
+        return this;
+    }
+
+    /** Enum values known for the analysis (enum internal name to constant): a comparison with one goes one way. */
+    public AbortPollCheck known(Map<String, String> values) {
+        this.known = values;
+        return this;
+    }
+
     /** Every particle loop of terminable job code that does not poll within the interval. */
     public List<Violation> check() {
-        List<Violation> out = new ArrayList<>();
-        Set<String> seen = new HashSet<>();
-        Deque<Reached> work = new ArrayDeque<>();
+        List<ClassPool.Owned> entries = new ArrayList<>();
         for (ClassNode c : pool.all()) {
             if (!follow.test(c.name)) {
                 continue;
             }
             for (MethodNode m : c.methods) {
-                if (terminable(m) && m.instructions.size() > 0 && seen.add(key(c, m, false))) {
-                    work.add(new Reached(new ClassPool.Owned(c, m), false));
+                if (terminable(m) && m.instructions.size() > 0) {
+                    entries.add(new ClassPool.Owned(c, m));
                 }
+            }
+        }
+        List<Violation> out = new ArrayList<>();
+        for (LoopGap g : gaps(entries)) {
+            if (g.problem() != null) {
+                out.add(new Violation(g.method().owner().name.replace('/', '.'), g.method().method().name, g.line(),
+                        g.problem()));
+            }
+        }
+        return out;
+    }
+
+    /** The gap of every particle loop of the job code reached from {@code entries} (not of loops inside a step). */
+    public List<LoopGap> gaps(Collection<ClassPool.Owned> entries) {
+        List<LoopGap> out = new ArrayList<>();
+        Set<String> seen = new HashSet<>();
+        Deque<Reached> work = new ArrayDeque<>();
+        for (ClassPool.Owned e : entries) {
+            if (seen.add(key(e.owner(), e.method(), false))) {
+                work.add(new Reached(e, false));
             }
         }
         while (!work.isEmpty()) {
@@ -114,20 +166,22 @@ public final class AbortPollCheck {
         return c.name + "." + m.name + m.desc + (inStep ? "#step" : "");
     }
 
-    private void checkMethod(Reached r, List<Violation> out, Set<String> seen, Deque<Reached> work) {
-        ClassNode c = r.m().owner();
+    private void checkMethod(Reached r, List<LoopGap> out, Set<String> seen, Deque<Reached> work) {
         MethodNode m = r.m().method();
         AbstractInsnNode[] insns = m.instructions.toArray();
+        BitSet reachable = Reachable.of(m, known);
         List<int[]> loops = new ArrayList<>();
         List<Poll> polls = new ArrayList<>();
         for (int i = 0; i < insns.length; i++) {
+            if (!reachable.get(i)) {
+                continue;
+            }
             if (insns[i] instanceof JumpInsnNode j) {
                 int target = m.instructions.indexOf(j.label);
                 if (target <= i) {
                     loops.add(new int[] {target, i});
                 }
-            } else if (insns[i] instanceof MethodInsnNode call && call.name.equals("abortRequested")
-                    && call.desc.equals("()Z")) {
+            } else if (insns[i] instanceof MethodInsnNode call && pollCall.test(call)) {
                 polls.add(new Poll(i, stride(m, insns, i)));
             }
         }
@@ -139,14 +193,12 @@ public final class AbortPollCheck {
         }
         if (!r.inStep()) {
             for (int[] loop : particleLoops) {
-                String problem = problem(m, insns, loop, loops, polls);
-                if (problem != null) {
-                    out.add(new Violation(c.name.replace('/', '.'), m.name, Lines.of(insns[loop[0]]), problem));
-                }
+                Gap g = gap(m, insns, loop, loops, polls);
+                out.add(new LoopGap(r.m(), loop[0], loop[1], Lines.of(insns[loop[0]]), g.steps(), g.problem()));
             }
         }
         for (int i = 0; i < insns.length; i++) {
-            if (!(insns[i] instanceof MethodInsnNode call) || call.name.equals("abortRequested")) {
+            if (!reachable.get(i) || !(insns[i] instanceof MethodInsnNode call) || pollCall.test(call)) {
                 continue;
             }
             boolean inStep = r.inStep();
@@ -166,8 +218,8 @@ public final class AbortPollCheck {
         }
     }
 
-    /** Why the particle loop may run past the interval without a poll, or null when it cannot. */
-    private String problem(MethodNode m, AbstractInsnNode[] insns, int[] loop, List<int[]> loops, List<Poll> polls) {
+    /** The loop's gap and why it may run past the interval without a poll (null when it cannot). */
+    private Gap gap(MethodNode m, AbstractInsnNode[] insns, int[] loop, List<int[]> loops, List<Poll> polls) {
         long best = UNKNOWN;
         boolean any = false;
         for (Poll p : polls) {
@@ -181,11 +233,11 @@ public final class AbortPollCheck {
         }
         if (any) {
             if (best == UNKNOWN) {
-                return "loop polls abortRequested() behind a guard whose stride cannot be read";
+                return new Gap(UNKNOWN, "loop polls abortRequested() behind a guard whose stride cannot be read");
             }
-            return best <= interval ? null
+            return new Gap(best, best <= interval ? null
                     : "loop polls abortRequested() every " + best + " particle steps, more than the poll interval "
-                            + interval;
+                            + interval);
         }
         // A block loop around it that polls outside its other nested loops, one block per iteration.
         for (int[] outer : loops) {
@@ -195,14 +247,14 @@ public final class AbortPollCheck {
             for (Poll p : polls) {
                 if (inside(p.at(), outer) && directlyIn(p.at(), outer, loops)) {
                     long block = counterStep(insns, outer);
-                    return block <= interval ? null
+                    return new Gap(block, block <= interval ? null
                             : "loop runs a block of " + (block == UNKNOWN ? "an unknown number of" : block)
                                     + " particle steps between its block loop's polls, more than the poll interval "
-                                    + interval;
+                                    + interval);
                 }
             }
         }
-        return "loop does not poll abortRequested() (terminable job code)";
+        return new Gap(UNKNOWN, "loop does not poll abortRequested() (terminable job code)");
     }
 
     /** True when the instruction is in the loop's body and in no loop nested in it. */
@@ -421,6 +473,9 @@ public final class AbortPollCheck {
     }
 
     private record Poll(int at, long stride) {
+    }
+
+    private record Gap(long steps, String problem) {
     }
 
     private record Reached(ClassPool.Owned m, boolean inStep) {

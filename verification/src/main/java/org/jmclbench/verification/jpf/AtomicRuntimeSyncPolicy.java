@@ -20,13 +20,21 @@ import gov.nasa.jpf.vm.ThreadInfo;
  *
  * <p>A frame belongs to the layer when the innermost frame that is not the JDK's is of a class
  * under {@code jmclbench.atomic.packages} (default: rtsj-compat's packages).
+ *
+ * <p>With {@code jmclbench.timeout.last=true}, a thread in a timed wait (a join or wait with a
+ * timeout) times out only when no other thread can run: JPF has no clock, and would otherwise let
+ * it time out at any scheduling point. A program whose timeout is a hang budget far beyond what it
+ * does in virtual time (the rtsj engine joins its dispatcher for the replay's length plus two
+ * minutes) then times out exactly when it is stuck, as it would on a real clock.
  */
 public class AtomicRuntimeSyncPolicy extends AllRunnablesSyncPolicy {
     private static final String[] JDK = {"java.", "javax.management.", "jdk.", "sun.", "gov.nasa.jpf."};
     private final String[] atomic;
+    private final boolean timeoutLast;
 
     public AtomicRuntimeSyncPolicy(Config config) {
         super(config);
+        this.timeoutLast = config.getBoolean("jmclbench.timeout.last", false);
         this.atomic = config.getStringArray("jmclbench.atomic.packages",
                 new String[] {"org.jmclbench.rtsjcompat.", "javax.realtime.", "javax.safetycritical."});
     }
@@ -37,6 +45,31 @@ public class AtomicRuntimeSyncPolicy extends AllRunnablesSyncPolicy {
             return false;
         }
         return super.setNonBlockingCG(id, tiCurrent);
+    }
+
+    @Override
+    protected ThreadInfo[] getTimeoutRunnables(gov.nasa.jpf.vm.ApplicationContext appCtx) {
+        ThreadInfo[] all = super.getTimeoutRunnables(appCtx);
+        return timeoutLast ? timeoutLast(all) : all;
+    }
+
+    /** The threads of {@code all} that are not in a timed wait, or all of them when every one is. */
+    static ThreadInfo[] timeoutLast(ThreadInfo[] all) {
+        int running = 0;
+        for (ThreadInfo t : all) {
+            running += t.isTimeoutWaiting() ? 0 : 1;
+        }
+        if (running == 0 || running == all.length) {
+            return all;
+        }
+        ThreadInfo[] r = new ThreadInfo[running];
+        int i = 0;
+        for (ThreadInfo t : all) {
+            if (!t.isTimeoutWaiting()) {
+                r[i++] = t;
+            }
+        }
+        return r;
     }
 
     private boolean inLayer(ThreadInfo ti) {

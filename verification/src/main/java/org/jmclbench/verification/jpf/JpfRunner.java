@@ -28,6 +28,9 @@ public final class JpfRunner {
             "--add-opens", "java.base/java.lang=ALL-UNNAMED",
             "--add-opens", "java.base/java.util=ALL-UNNAMED");
 
+    /** A check's setting naming class folders put before the project's classes on the target's class path. */
+    public static final String PREPEND = "jmclbench.classpath.prepend";
+
     private final JpfHome jpf;
     private final List<String> hostClassPath;
     private final List<String> targetClassPath;
@@ -119,7 +122,9 @@ public final class JpfRunner {
         }
         cmd.add("+listener=" + listeners);
         cmd.add("+jmclbench.verdict=" + verdict.toAbsolutePath());
-        cmd.add("+classpath=" + String.join(",", targetClassPath));
+        // A seeded bug that is an edit of a shipped class puts the edited class first.
+        String prepend = config.remove(PREPEND);
+        cmd.add("+classpath=" + (prepend == null ? "" : prepend + ",") + String.join(",", targetClassPath));
         for (Map.Entry<String, String> e : config.entrySet()) {
             cmd.add("+" + e.getKey() + "=" + e.getValue());
         }

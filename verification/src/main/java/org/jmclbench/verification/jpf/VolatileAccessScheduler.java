@@ -25,8 +25,10 @@ import gov.nasa.jpf.vm.choice.ThreadChoiceFromSet;
  */
 public final class VolatileAccessScheduler extends ListenerAdapter {
     private final String[] classes;
+    private final boolean timeoutLast;
 
     public VolatileAccessScheduler(Config config, JPF jpf) {
+        this.timeoutLast = config.getBoolean("jmclbench.timeout.last", false);
         this.classes = config.getStringArray("jmclbench.volatile.classes", new String[] {"org.jmclbench.scj.", "org.jmclbench.core."});
     }
 
@@ -43,6 +45,9 @@ public final class VolatileAccessScheduler extends ListenerAdapter {
             return;
         }
         ThreadInfo[] runnable = vm.getThreadList().getProcessTimeoutRunnables(ti.getApplicationContext());
+        if (timeoutLast) {
+            runnable = AtomicRuntimeSyncPolicy.timeoutLast(runnable); // as the scheduling policy does
+        }
         if (runnable.length < 2) {
             return;
         }

@@ -1,5 +1,6 @@
 package org.jmclbench.verification.mission;
 
+import org.jmclbench.core.mcl.DelegatingLocalizer;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.mcl.Playground;

@@ -129,7 +129,7 @@ public class CheckedRobot extends Robot {
     }
 
     /** A hash of every bit of a localizer's visible state; {@code pose} and {@code cov} are scratch. */
-    static long fingerprint(Localizer localizer, double[] pose, double[] cov) {
+    public static long fingerprint(Localizer localizer, double[] pose, double[] cov) {
         long h = Double.doubleToRawLongBits(localizer.estimateX());
         h = h * 31 + Double.doubleToRawLongBits(localizer.estimateY());
         h = h * 31 + Double.doubleToRawLongBits(localizer.estimateTheta());

@@ -17,11 +17,23 @@ public final class HorizonTimeSource extends TimeSource {
     private final PropertyFailure hang = new PropertyFailure(Property.P5,
             "the mission still runs at the virtual-time horizon: an event never ended");
     private final CheckedConfiguration mission;
+    private final Object culprit;
+    private final String method;
 
     /** {@code mission}: the configuration whose gate (made when the mission starts) is blamed. */
     public HorizonTimeSource(long horizonNs, CheckedConfiguration mission) {
         this.horizonNs = horizonNs;
         this.mission = mission;
+        this.culprit = null;
+        this.method = "ended";
+    }
+
+    /** A horizon that blames {@code culprit}'s {@code method} (what counts the ended events). */
+    public HorizonTimeSource(long horizonNs, Object culprit, String method) {
+        this.horizonNs = horizonNs;
+        this.mission = null;
+        this.culprit = culprit;
+        this.method = method;
     }
 
     @Override
@@ -36,7 +48,7 @@ public final class HorizonTimeSource extends TimeSource {
 
     @Override
     public boolean sleepUntil(ScjThread self, long deadline) {
-        hang.unless(deadline <= horizonNs, mission.gate(), "ended");
+        hang.unless(deadline <= horizonNs, mission != null ? mission.gate() : culprit, method);
         return time.sleepUntil(self, deadline);
     }
 

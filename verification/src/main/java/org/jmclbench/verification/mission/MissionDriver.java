@@ -11,7 +11,7 @@ import org.jmclbench.rtsjcompat.ScjRuntime;
 import org.jmclbench.rtsjcompat.TimeSource;
 import org.jmclbench.scj.MclSafelet;
 import org.jmclbench.scj.MissionOutput;
-import org.jmclbench.scj.SizedMissionInput;
+import org.jmclbench.scj.PlacedMissionInput;
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.verification.Property;
 import org.jmclbench.verification.jpf.Coverage;
@@ -35,7 +35,7 @@ import org.jmclbench.verification.jpf.Coverage;
  * <p>Usage: {@code MissionDriver POLICY MEMORY ODOMETRY_EVENTS LASER_EVENTS PARTICLES POLL_INTERVAL
  * COVARIANCE [FAULT_CLASS]}; the fault ({@link CheckedConfiguration}) is the seam seeded bugs come in by.
  */
-public final class MissionDriver extends SizedMissionInput implements MissionOutput {
+public final class MissionDriver extends PlacedMissionInput implements MissionOutput {
     /** Virtual time after which the mission must have ended: far beyond the last event's deadline. */
     static final long HORIZON_NS = 1_000_000_000L;
     /** The outcome names reported per task ({@link Timeline#PREDICT}, {@link Timeline#UPDATE}) and outcome. */
@@ -46,7 +46,7 @@ public final class MissionDriver extends SizedMissionInput implements MissionOut
     private JobRecords records;
 
     MissionDriver(int odometry, int laser) {
-        super(odometry, laser);
+        super(odometry, laser, Playground.thesis(), 1.5, 1.0, 0.0);
     }
 
     public static void main(String[] args) throws ReflectiveOperationException {
@@ -95,32 +95,9 @@ public final class MissionDriver extends SizedMissionInput implements MissionOut
         }
     }
 
-    /**
-     * P7: skip drops an event only while an admitted job holds the robot (one released at or before
-     * it that ended at or after its release), and terminate aborts a job only when another event
-     * was released at or after it and before its end. In virtual time a job takes no time, so
-     * "busy" is exact: a drop or abort with no such event is the policy's gate deciding wrongly.
-     */
+    /** P7, on the records ({@link PolicyOracle}); a wrong decision is the gate's. */
     private void checkPolicy(CheckedConfiguration config) {
-        PropertyFailure p7 = new PropertyFailure(Property.P7, "an event was dropped or aborted against its policy");
-        JobRecords r = records;
-        for (int k = 0; k < r.size(); k++) {
-            if (r.outcome[k] == JobRecords.SKIPPED) {
-                boolean busy = false;
-                for (int j = 0; j < r.size(); j++) {
-                    busy |= j != k && r.outcome[j] != JobRecords.SKIPPED && r.releaseNs[j] <= r.releaseNs[k]
-                            && r.endNs[j] >= r.releaseNs[k];
-                }
-                p7.unless(busy, config.gate(), "admit");
-            } else if (r.outcome[k] == JobRecords.TERMINATED) {
-                long end = r.startNs[k] < 0 ? Long.MAX_VALUE : r.endNs[k];
-                boolean superseded = false;
-                for (int j = 0; j < r.size(); j++) {
-                    superseded |= j != k && r.releaseNs[j] >= r.releaseNs[k] && r.releaseNs[j] <= end;
-                }
-                p7.unless(superseded, config.gate(), "abortRequested");
-            }
-        }
+        PolicyOracle.check(records, config.gate(), "admit", "abortRequested");
     }
 
     /** P3's oracle: the completed jobs replayed on a fresh localizer equal what the mission recorded. */
@@ -207,26 +184,6 @@ public final class MissionDriver extends SizedMissionInput implements MissionOut
             time[k] = 0.05 * k;
             angle[k] = 1.0 + 0.5 * k;
         }
-    }
-
-    @Override
-    public Playground playground() {
-        return Playground.thesis();
-    }
-
-    @Override
-    public double startX() {
-        return 1.5;
-    }
-
-    @Override
-    public double startY() {
-        return 1.0;
-    }
-
-    @Override
-    public double startTheta() {
-        return 0.0;
     }
 
     @Override

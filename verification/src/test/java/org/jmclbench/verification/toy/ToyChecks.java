@@ -24,8 +24,11 @@ public final class ToyChecks {
     static final int POLL = 2;
     private static final String MAIN = ToyMission.class.getName();
     private static final String SCOPE = EVENTS + " events, " + PARTICLES + " particles, poll " + POLL;
-    /** What a toy search checks: the program asserts P3 (terminate), P4 and P5; JPF and listeners the rest. */
-    private static final Set<Property> ALL = EnumSet.allOf(Property.class);
+    /**
+     * What a toy search checks: the program asserts P3 (terminate), P4 and P5; JPF and listeners the
+     * rest of the SCJ properties (P8 and P9 are the rtsj engine's: the toy has no lock or ATC of RTSJ).
+     */
+    private static final Set<Property> ALL = EnumSet.range(Property.P1, Property.P7);
 
     private ToyChecks() {}
 

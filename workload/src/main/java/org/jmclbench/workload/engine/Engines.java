@@ -9,14 +9,14 @@ import org.jmclbench.workload.IdealEngine;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.release.JavaSeEngine;
 import org.jmclbench.workload.rtsj.RtsjEngine;
-import org.jmclbench.workload.scj.ScjEngine;
 
 /**
  * The engines of {@code --engine}: the one place an engine of this jar is registered. An engine
  * that lives outside the workload jar, because it is a host of a runtime of its own (the HVM's
  * launcher starts the HVM executable), registers through {@link ServiceLoader}
  * ({@code META-INF/services/org.jmclbench.workload.engine.Engine}) and is found when its jar is
- * on the class path.
+ * on the class path. The scj engine is made by name: the build of the rtsj engine for an RTSJ VM
+ * ({@code ant rtsj-engine}) leaves the SCJ variant out.
  */
 public final class Engines {
     private static final List<Engine> ALL = all();
@@ -25,7 +25,10 @@ public final class Engines {
     private static List<Engine> all() {
         List<Engine> engines = new ArrayList<>();
         engines.add(new JavaSeEngine());
-        engines.add(new ScjEngine());
+        Engine scj = optional("org.jmclbench.workload.scj.ScjEngine");
+        if (scj != null) {
+            engines.add(scj);
+        }
         engines.add(new RtsjEngine());
         for (Engine e : ServiceLoader.load(Engine.class)) {
             engines.add(e);
@@ -34,6 +37,17 @@ public final class Engines {
     }
 
     private Engines() {
+    }
+
+    /** The engine of that class, or null when this build does not have it. */
+    private static Engine optional(String className) {
+        try {
+            return (Engine) Class.forName(className).getDeclaredConstructor().newInstance();
+        } catch (ClassNotFoundException | NoClassDefFoundError e) {
+            return null;
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalStateException("cannot create the engine " + className, e);
+        }
     }
 
     /** The engine of an {@code --engine} value, or a {@link BadInputException} naming {@code option}. */

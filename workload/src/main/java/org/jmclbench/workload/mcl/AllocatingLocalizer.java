@@ -99,15 +99,24 @@ final class AllocatingLocalizer implements Localizer {
         }
         double total = 0.0;
         for (int i = 0; i < n; i++) {
+            if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+                return false;
+            }
             total += w[i];
         }
         if (total == 0.0 || Double.isNaN(total) || Double.isInfinite(total)) {
             double uniform = 1.0 / n;
             for (int i = 0; i < n; i++) {
+                if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+                    return false;
+                }
                 w[i] = uniform;
             }
         } else {
             for (int i = 0; i < n; i++) {
+                if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+                    return false;
+                }
                 w[i] = w[i] / total;
             }
         }
@@ -121,6 +130,9 @@ final class AllocatingLocalizer implements Localizer {
             double ss = 0.0;
             double sc = 0.0;
             for (int i = 0; i < n; i++) {
+                if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+                    return false;
+                }
                 Particle p = ps[i];
                 sx += w[i] * p.x;
                 sy += w[i] * p.y;
@@ -133,6 +145,9 @@ final class AllocatingLocalizer implements Localizer {
         } else {
             int best = 0;
             for (int i = 1; i < n; i++) {
+                if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+                    return false;
+                }
                 if (w[i] > w[best]) {
                     best = i;
                 }
@@ -145,6 +160,9 @@ final class AllocatingLocalizer implements Localizer {
         double[] c = new double[6];
         if (config.covariance) {
             for (int i = 0; i < n; i++) {
+                if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+                    return false;
+                }
                 Particle p = ps[i];
                 double ux = p.x - ex;
                 double uy = p.y - ey;

@@ -14,28 +14,20 @@ public final class Json {
 
     /** Opens an object (as a value). */
     public Json beginObject() {
-        beforeValue();
-        out.append('{');
-        push();
-        return this;
+        return open('{');
     }
 
     public Json endObject() {
-        pop('}');
-        return this;
+        return close('}');
     }
 
     /** Opens an array (as a value). */
     public Json beginArray() {
-        beforeValue();
-        out.append('[');
-        push();
-        return this;
+        return open('[');
     }
 
     public Json endArray() {
-        pop(']');
-        return this;
+        return close(']');
     }
 
     /** The name of the next member of the current object. */
@@ -58,25 +50,16 @@ public final class Json {
     }
 
     public Json value(long v) {
-        beforeValue();
-        out.append(v);
-        return this;
+        return literal(Long.toString(v));
     }
 
+    /** A finite number as Java prints it; NaN and the infinities, which JSON lacks, as null. */
     public Json value(double v) {
-        beforeValue();
-        if (Double.isNaN(v) || Double.isInfinite(v)) {
-            out.append("null");
-        } else {
-            out.append(v);
-        }
-        return this;
+        return literal(Double.isNaN(v) || Double.isInfinite(v) ? "null" : Double.toString(v));
     }
 
     public Json value(boolean v) {
-        beforeValue();
-        out.append(v);
-        return this;
+        return literal(Boolean.toString(v));
     }
 
     /**
@@ -116,8 +99,13 @@ public final class Json {
 
     /** A null value. */
     public Json nullValue() {
+        return literal("null");
+    }
+
+    /** A value written as {@code text}: a number, true, false or null. */
+    private Json literal(String text) {
         beforeValue();
-        out.append("null");
+        out.append(text);
         return this;
     }
 
@@ -146,19 +134,25 @@ public final class Json {
         newline();
     }
 
-    private void push() {
+    /** Opens a container, as a value, with {@code bracket}. */
+    private Json open(char bracket) {
+        beforeValue();
+        out.append(bracket);
         if (depth == empty.length) {
             empty = java.util.Arrays.copyOf(empty, depth * 2);
         }
         empty[depth++] = true;
+        return this;
     }
 
-    private void pop(char close) {
+    /** Closes the innermost container with {@code bracket}, on a line of its own unless it is empty. */
+    private Json close(char bracket) {
         boolean wasEmpty = empty[--depth];
         if (!wasEmpty) {
             newline();
         }
-        out.append(close);
+        out.append(bracket);
+        return this;
     }
 
     private void newline() {

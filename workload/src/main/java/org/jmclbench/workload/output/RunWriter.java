@@ -72,7 +72,7 @@ public final class RunWriter {
 
     private void writeJobs(File f, int task) throws IOException {
         StringBuilder b = new StringBuilder(64 * (timeline.count(task) + 1));
-        b.append("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns\n");
+        b.append("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns\n");
         for (int k = 0; k < timeline.size(); k++) {
             if (timeline.task(k) != task) {
                 continue;
@@ -80,7 +80,7 @@ public final class RunWriter {
             b.append(timeline.taskIndex(k)).append(' ').append(records.releaseNs[k]).append(' ')
                     .append(records.startNs[k]).append(' ').append(records.endNs[k]).append(' ')
                     .append(records.deadlineNs[k]).append(' ').append(JobRecords.outcomeName(records.outcome[k]))
-                    .append(' ').append(records.cpuNs[k]).append('\n');
+                    .append(' ').append(records.cpuNs[k]).append(' ').append(records.abortFromNs(k)).append('\n');
         }
         writeText(f, b.toString());
     }
@@ -186,17 +186,11 @@ public final class RunWriter {
             j.beginObject();
             j.name("name").value(a.name);
             j.name("size").value(a.size);
-            j.name("peakBytes");
-            if (a.peakBytes == null) {
-                j.nullValue();
-            } else {
-                j.value(a.peakBytes.longValue());
-            }
-            j.name("bytesPerRelease");
-            if (a.bytesPerRelease == null) {
-                j.nullValue();
-            } else {
-                j.value(a.bytesPerRelease.longValue());
+            nullableLong(j, "peakBytes", a.peakBytes);
+            nullableLong(j, "bytesPerRelease", a.bytesPerRelease);
+            if (a.releases != null) {
+                nullableLong(j, "releases", a.releases);
+                nullableLong(j, "allocatingReleases", a.allocatingReleases);
             }
             j.endObject();
         }
@@ -210,6 +204,15 @@ public final class RunWriter {
         j.endObject();
         j.endObject();
         return j.toString();
+    }
+
+    private static void nullableLong(Json j, String name, Long value) {
+        j.name(name);
+        if (value == null) {
+            j.nullValue();
+        } else {
+            j.value(value.longValue());
+        }
     }
 
     private static void meanMax(Json j, String name, double mean, double max) {

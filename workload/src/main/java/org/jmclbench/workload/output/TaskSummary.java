@@ -30,6 +30,9 @@ public final class TaskSummary {
     Stats taskLatency;
     Stats responseTime;
     Stats cpu;
+    /** Abort latency (end - abort_ns) of the jobs an abort took hold of; of those, how many completed anyway. */
+    Stats abortLatency;
+    int abortsCompleted;
     /** Response time at {@link #RELEASED_QUANTILES} over every release; {@link Stats#NOT_COMPLETED} = +infinity. */
     final long[] releasedResponse = new long[RELEASED_QUANTILES.length];
 
@@ -56,6 +59,8 @@ public final class TaskSummary {
         long[] latency = new long[n];
         long[] response = new long[n];
         long[] cpu = new long[n];
+        long[] abort = new long[n];
+        int na = 0;
         int nj = 0;
         int nl = 0;
         int nr = 0;
@@ -97,12 +102,20 @@ public final class TaskSummary {
             if (r.cpuNs[k] >= 0) {
                 cpu[nc++] = r.cpuNs[k];
             }
+            long from = r.abortFromNs(k);
+            if (from >= 0) {
+                abort[na++] = r.endNs[k] - from;
+                if (r.completed(k)) {
+                    s.abortsCompleted++;
+                }
+            }
         }
         s.completed = s.done + s.late;
         s.releaseJitter = Stats.of(jitter, nj);
         s.taskLatency = Stats.of(latency, nl);
         s.responseTime = Stats.of(response, nr);
         s.cpu = Stats.of(cpu, nc);
+        s.abortLatency = Stats.of(abort, na);
         Arrays.sort(response, 0, nr);
         for (int q = 0; q < RELEASED_QUANTILES.length && s.released > 0; q++) {
             s.releasedResponse[q] = Stats.rankOfReleases(response, nr, s.released, RELEASED_QUANTILES[q]);
@@ -128,6 +141,16 @@ public final class TaskSummary {
 
     public int terminated() {
         return terminated;
+    }
+
+    /** Abort latency, ns from when an abort took hold of a job to its end, over the jobs it took hold of. */
+    public Stats abortLatency() {
+        return abortLatency;
+    }
+
+    /** Jobs an abort took hold of that completed all the same (the request came too late, or was deferred). */
+    public int abortsCompleted() {
+        return abortsCompleted;
     }
 
     /** Releases whose job did not complete by its deadline: late + skipped + terminated, under every policy. */
@@ -162,6 +185,9 @@ public final class TaskSummary {
         RunWriter.writeStats(j, responseTime);
         j.name("cpuNs");
         RunWriter.writeStats(j, cpu);
+        j.name("abortLatencyNs");
+        RunWriter.writeStats(j, abortLatency);
+        j.name("abortsCompleted").value(abortsCompleted);
         j.name("deadlineMisses").value(deadlineMisses());
         j.name("missRatio").value(missRatio());
         j.name("responseTimeReleasedNs").beginObject();

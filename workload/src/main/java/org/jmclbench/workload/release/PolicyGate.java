@@ -28,6 +28,14 @@ public abstract class PolicyGate {
     /** Called by the dispatcher at k's release; true hands k to its handler. */
     public abstract boolean admit(int k);
 
+    /**
+     * After {@link #admit(int)}: the event whose job that release asked to abort (terminate: the
+     * previous latest, running, about to run or already ended), or FREE; dispatcher thread only.
+     */
+    public int superseded() {
+        return FREE;
+    }
+
     /** Called by k's handler before starting; false means k must not start (terminated). */
     public abstract boolean acquire(int k);
 

@@ -7,8 +7,8 @@ import java.io.OutputStreamWriter;
 import java.io.PrintStream;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import org.jmclbench.rtsjcompat.ScjLauncher;
 import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.shim.RuntimeShim;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.workload.load.AllocationNoise;
@@ -42,7 +42,7 @@ public final class RealTimeRun {
         JavaSeFacts facts = new JavaSeFacts();
         // one rule for both engines: the SCJ layer's (HotSpot ignores priorities on Linux without
         // -XX:ThreadPriorityPolicy=1, and under chrt every thread inherits one priority anyway)
-        facts.prioritiesApplied = ScjLauncher.prioritiesApplied();
+        facts.prioritiesApplied = RuntimeShim.get().prioritiesApplied();
         GcLog gcLog = options.gcLog ? GcLog.start(new File(runDir, "gc.log")) : null;
         AllocationNoise noise = null;
         try {

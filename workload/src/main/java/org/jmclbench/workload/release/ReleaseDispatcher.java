@@ -69,6 +69,10 @@ public final class ReleaseDispatcher implements Runnable {
                 } else {
                     r.outcome[k] = JobRecords.SKIPPED;
                 }
+                int aborted = policy.superseded();
+                if (aborted >= 0) {
+                    r.requestAbort(aborted, wake - t0); // the request is the admit just made
+                }
             }
         } finally {
             for (TaskHandler h : handlers) {

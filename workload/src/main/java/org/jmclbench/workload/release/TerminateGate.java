@@ -12,11 +12,19 @@ import java.util.concurrent.atomic.AtomicInteger;
 public final class TerminateGate extends PolicyGate {
     private final AtomicInteger owner = new AtomicInteger(FREE);
     private volatile int latest = FREE;
+    // the event the last admit superseded; dispatcher thread only
+    private int superseded = FREE;
 
     @Override
     public boolean admit(int k) {
+        superseded = latest;
         latest = k; // the running job sees this through abortRequested and stops
         return true;
+    }
+
+    @Override
+    public int superseded() {
+        return superseded;
     }
 
     @Override

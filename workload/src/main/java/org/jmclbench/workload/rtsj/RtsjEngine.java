@@ -9,7 +9,6 @@ import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
-import org.jmclbench.rtsjcompat.ScjLauncher;
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.RunOptions;
@@ -19,10 +18,10 @@ import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
 import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.workload.output.HeapUse;
-import org.jmclbench.workload.record.Stats;
 import org.jmclbench.workload.release.JavaSeEngine;
 import org.jmclbench.workload.release.LocalizerJob;
 import org.jmclbench.workload.release.ReleaseSchedule;
+import org.jmclbench.workload.shim.RuntimeShim;
 
 /**
  * {@code --engine rtsj}: the thesis's RTSJ program on rtsj-compat's RTSJ layer ({@link RtsjReplay}),
@@ -62,7 +61,7 @@ public final class RtsjEngine implements Engine {
         facts.design = o.rtsjDesign;
         facts.dispatcherPriority = PriorityScheduler.instance().getMaxPriority();
         facts.handlerPriority = facts.dispatcherPriority - 1;
-        facts.prioritiesApplied = ScjLauncher.prioritiesApplied();
+        facts.prioritiesApplied = RuntimeShim.get().prioritiesApplied();
         int warmup = o.warmupS > 0 ? schedule.countBefore(o.warmupS, o.timeScale) : 0;
         facts.warmupEvents = warmup;
         try {
@@ -84,8 +83,7 @@ public final class RtsjEngine implements Engine {
             RtsjReplay replay = new RtsjReplay(schedule, o.policy, o.rtsjDesign,
                     new LocalizerJob(d, timeline, localizer, records), records);
             replay.run(hangNs(schedule));
-            records.durationNs = System.nanoTime() - replay.runStartNanoTime();
-            abortLatency(replay, records, facts);
+            records.durationNs = replay.elapsedNs();
             return new EngineResult(records, Collections.singletonList(heap.end(null, records)), facts);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -105,22 +103,5 @@ public final class RtsjEngine implements Engine {
 
     private static long hangNs(ReleaseSchedule schedule) {
         return (schedule.size() == 0 ? 0 : schedule.releaseNs(schedule.size() - 1)) + HANG_MARGIN_NS;
-    }
-
-    /** Abort latency of every job an AIE was fired at: from the fire to the job's end (its remaining time, when deferred). */
-    private static void abortLatency(RtsjReplay replay, JobRecords records, RtsjFacts facts) {
-        int n = records.outcome.length;
-        long[] latency = new long[n];
-        int count = 0;
-        for (int k = 0; k < n; k++) {
-            if (replay.abortRequestNs[k] >= 0 && replay.abortEndNs[k] >= 0) {
-                latency[count++] = Math.max(0, replay.abortEndNs[k] - replay.abortRequestNs[k]);
-                if (records.outcome[k] != JobRecords.TERMINATED) {
-                    facts.abortsDeferredToCompletion++;
-                }
-            }
-        }
-        facts.abortsRequested = count;
-        facts.abortLatency = Stats.of(latency, count);
     }
 }

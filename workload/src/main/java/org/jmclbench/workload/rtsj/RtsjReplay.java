@@ -7,6 +7,7 @@ import javax.realtime.AbsoluteTime;
 import javax.realtime.AsyncEvent;
 import javax.realtime.AsynchronouslyInterruptedException;
 import javax.realtime.BoundAsyncEventHandler;
+import javax.realtime.Clock;
 import javax.realtime.Interruptible;
 import javax.realtime.PriorityParameters;
 import javax.realtime.PriorityScheduler;
@@ -15,11 +16,10 @@ import javax.realtime.RealtimeThread;
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
-import org.jmclbench.rtsjcompat.MissionFailure;
-import org.jmclbench.rtsjcompat.RtsjRuntime;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.release.EventJob;
 import org.jmclbench.workload.release.ReleaseSchedule;
+import org.jmclbench.workload.shim.RuntimeShim;
 
 /**
  * One replay of the timeline in the thesis's RTSJ structure (section 4.2.5). A dispatcher
@@ -32,11 +32,13 @@ import org.jmclbench.workload.release.ReleaseSchedule;
  * {@link AsynchronouslyInterruptedException} of the job in progress, and a job superseded before
  * it started never starts. Every event ends once: done, late, skipped or terminated.
  *
- * <p>Times in the records are ns from the release of time 0. Per event it also keeps when an
- * abort was requested (the AIE fired), so that abort latency (request to the job's end) is
- * measured, for the thesis design the job's remaining time.
+ * <p>Times in the records are ns from the release of time 0, read from RTSJ's real-time clock
+ * (so that Java PathFinder runs this class on virtual time). A job's abort request
+ * ({@link JobRecords#abortNs}) is when its AIE was fired, so that abort latency (request to the
+ * job's end) is measured: for the thesis design, the job's remaining time. Only RTSJ 1.0.2 API and the
+ * {@link RuntimeShim} are used: {@code ant rtsj-engine} builds it for an RTSJ VM.
  */
-final class RtsjReplay {
+public final class RtsjReplay {
     /** The handlers are started this long before the release of time 0. */
     private static final long LEAD_NS = 20_000_000L;
     private static final String[] TASK_NAMES = {"predict", "update"};
@@ -51,69 +53,72 @@ final class RtsjReplay {
     /** Held by the job in progress: the thesis's test of whether a task is running. */
     private final ReentrantLock busy = new ReentrantLock();
     private final Task[] tasks = new Task[TASK_NAMES.length];
-    /** Per event: when its abort was requested (its AIE fired at it), System.nanoTime; -1 never. */
-    final long[] abortRequestNs;
-    /** Per event: when the job it was asked to abort ended; -1 never asked. */
-    final long[] abortEndNs;
     /** terminate: the latest released event, the only one that may run. */
     private volatile int latest = -1;
     /** The event whose job is in its doInterruptible (terminate), or -1. */
     private volatile int running = -1;
     private volatile int ended;
+    /** The first failure of a job or handler ("predict: ..."), or null. */
+    private String failure;
     private long t0;
+    // The main thread's clock reading (each thread reads into its own AbsoluteTime: no allocation).
+    private final AbsoluteTime mainClock = new AbsoluteTime();
 
-    RtsjReplay(ReleaseSchedule schedule, OverrunPolicy policy, RtsjDesign design, EventJob job, JobRecords records) {
+    /** A replay of {@code schedule} under {@code policy}: each released event runs {@code job} on the robot. */
+    public RtsjReplay(ReleaseSchedule schedule, OverrunPolicy policy, RtsjDesign design, EventJob job, JobRecords records) {
         this.schedule = schedule;
         this.policy = policy;
         this.design = design;
         this.job = job;
         this.records = records;
-        this.abortRequestNs = new long[schedule.size()];
-        this.abortEndNs = new long[schedule.size()];
     }
 
-    /** The System.nanoTime of the release of time 0. */
-    long runStartNanoTime() {
-        return t0;
+    /** ns from the release of time 0 to now, on the real-time clock (the run's duration, after {@link #run}). */
+    public long elapsedNs() {
+        return now(mainClock) - t0;
+    }
+
+    /** The real-time clock in ns, read into the calling thread's {@code dest}. */
+    private static long now(AbsoluteTime dest) {
+        Clock.getRealtimeClock().getTime(dest);
+        return dest.getMilliseconds() * 1_000_000L + dest.getNanoseconds();
     }
 
     /**
      * Runs the replay to its end, then stops the handlers. A job that throws, a handler that does
      * not end, an event never accounted for or the robot's lock left held is the run's failure.
      */
-    void run(long hangNs) throws RunFailure, InterruptedException {
+    public void run(long hangNs) throws RunFailure, InterruptedException {
         int n = schedule.size();
         for (int k = 0; k < n; k++) {
             records.releaseNs[k] = schedule.releaseNs(k);
             records.deadlineNs[k] = schedule.deadlineNs(k);
-            abortRequestNs[k] = -1;
-            abortEndNs[k] = -1;
+            records.abortNs[k] = -1;
         }
-        RtsjRuntime.reset();
+        RuntimeShim.get().beforeReplay();
         int max = PriorityScheduler.instance().getMaxPriority();
         int[] count = new int[tasks.length];
         for (int k = 0; k < n; k++) {
             count[schedule.task(k)]++;
         }
         for (int t = 0; t < tasks.length; t++) {
-            tasks[t] = new Task(count[t], max - 1);
+            tasks[t] = new Task(TASK_NAMES[t], count[t], max - 1);
         }
-        Dispatcher dispatcher = new Dispatcher(max);
-        t0 = System.nanoTime() + LEAD_NS;
-        dispatcher.start();
-        dispatcher.join(Math.max(1, (hangNs + LEAD_NS) / 1_000_000L));
-        List<String> alive = RtsjRuntime.stopHandlers(10_000);
-        if (dispatcher.isAlive()) {
-            dispatcher.interrupt();
+        Dispatcher dispatcher = new Dispatcher();
+        RealtimeThread thread = new RealtimeThread(new PriorityParameters(max), null, null, null, null, dispatcher);
+        thread.setDaemon(true);
+        t0 = now(mainClock) + LEAD_NS;
+        thread.start();
+        thread.join(Math.max(1, (hangNs + LEAD_NS) / 1_000_000L));
+        List<String> alive = RuntimeShim.get().endHandlers(10_000);
+        if (thread.isAlive()) {
+            thread.interrupt();
             throw new RunFailure("the rtsj replay did not end within " + hangNs / 1_000_000_000L + " s: " + ended
                     + " of " + n + " events ended" + (alive.isEmpty() ? "" : "; handlers still running: " + alive));
         }
-        MissionFailure failure = RtsjRuntime.failure();
-        if (failure != null) {
-            throw new RunFailure("a job failed in the rtsj engine: " + failure.getMessage());
-        }
-        if (dispatcher.failure != null) {
-            throw new RunFailure("the rtsj dispatcher failed: " + dispatcher.failure);
+        String failed = failure();
+        if (failed != null) {
+            throw new RunFailure("a job failed in the rtsj engine: " + failed);
         }
         if (!alive.isEmpty()) {
             throw new RunFailure("rtsj handlers did not end: " + alive);
@@ -126,6 +131,26 @@ final class RtsjReplay {
                 throw new RunFailure("event " + k + " was never accounted for by the rtsj engine");
             }
         }
+    }
+
+    private synchronized void failed(String where, Throwable e) {
+        if (failure == null) {
+            failure = where + ": " + e;
+        }
+    }
+
+    private synchronized String failure() {
+        return failure;
+    }
+
+    /** Whether an abort of event k's job was requested (its AIE fired at it while it ran). */
+    public boolean abortRequested(int k) {
+        return records.abortNs[k] >= 0;
+    }
+
+    /** How many events have ended (each must end once: after {@link #run}, the schedule's size). */
+    public synchronized int endedCount() {
+        return ended;
     }
 
     private synchronized void ended() {
@@ -141,15 +166,10 @@ final class RtsjReplay {
         }
     }
 
-    /** The thesis's control thread: sleeps to each release and fires the event. */
-    private final class Dispatcher extends RealtimeThread {
+    /** The thesis's control thread's logic: sleeps to each release and fires the event. */
+    private final class Dispatcher implements Runnable {
         private final AbsoluteTime next = new AbsoluteTime();
-        volatile Throwable failure;
-
-        Dispatcher(int priority) {
-            super(new PriorityParameters(priority));
-            setDaemon(true);
-        }
+        private final AbsoluteTime clock = new AbsoluteTime();
 
         @Override
         public void run() {
@@ -159,7 +179,7 @@ final class RtsjReplay {
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             } catch (Throwable e) {
-                failure = e;
+                failed("dispatcher", e);
             }
         }
 
@@ -180,9 +200,9 @@ final class RtsjReplay {
                     latest = k; // a job not started yet sees this and never starts
                     int r = running;
                     if (r >= 0) {
-                        abortRequestNs[r] = System.nanoTime();
-                        if (!tasks[schedule.task(r)].aie.fire()) {
-                            abortRequestNs[r] = -1; // it ended meanwhile: nothing was asked of it
+                        long fired = now(clock) - t0;
+                        if (tasks[schedule.task(r)].aie.fire()) { // false: it ended meanwhile, nothing was asked of it
+                            records.requestAbort(r, fired);
                         }
                     }
                 }
@@ -201,6 +221,8 @@ final class RtsjReplay {
     private final class Task implements Runnable, Interruptible {
         final AsyncEvent event = new AsyncEvent();
         final AsynchronouslyInterruptedException aie = new AsynchronouslyInterruptedException();
+        private final String name;
+        private final AbsoluteTime clock = new AbsoluteTime();
         private final int[] fifo;
         private volatile int head;
         private volatile int tail;
@@ -210,7 +232,8 @@ final class RtsjReplay {
         private long end;
         private boolean committed;
 
-        Task(int capacity, int priority) {
+        Task(String name, int capacity, int priority) {
+            this.name = name;
             fifo = new int[Math.max(1, capacity)];
             event.addHandler(new BoundAsyncEventHandler(new PriorityParameters(priority), null, null, null, null,
                     false, this));
@@ -222,20 +245,28 @@ final class RtsjReplay {
             tail = tail + 1; // volatile write publishes the slot before the fire
         }
 
-        /** One release: the oldest event released to this task. */
+        /**
+         * One release: the oldest event released to this task. A throwable out of the job (an AIE
+         * that escaped its doInterruptible included) is the run's failure, naming the task; the
+         * event still ends.
+         */
         @Override
         public void run() {
             int h = head;
             k = fifo[h % fifo.length];
             head = h + 1;
-            records.wakeNs[k] = System.nanoTime() - t0;
+            records.wakeNs[k] = now(clock) - t0;
             start = -1;
             end = -1;
             committed = false;
-            if (policy == OverrunPolicy.TERMINATE) {
-                aie.doInterruptible(this);
-            } else {
-                lockAndRun(AbortSignal.NEVER); // no ATC outside terminate: no delivery point runs
+            try {
+                if (policy == OverrunPolicy.TERMINATE) {
+                    aie.doInterruptible(this);
+                } else {
+                    lockAndRun(AbortSignal.NEVER); // no ATC outside terminate: no delivery point runs
+                }
+            } catch (Throwable e) {
+                failed(name, e);
             }
             finish();
         }
@@ -268,7 +299,7 @@ final class RtsjReplay {
         private void lockAndRun(AbortSignal signal) {
             try {
                 busy.lock();
-                start = System.nanoTime();
+                start = now(clock);
                 if (design == RtsjDesign.THESIS) {
                     synchronized (robot) {
                         runJob(signal);
@@ -277,6 +308,11 @@ final class RtsjReplay {
                     runJob(signal);
                 }
             } finally {
+                if (!committed && start >= 0) {
+                    // an aborted job ends here, before the robot is handed on (the next job's
+                    // thread may take the CPU at the unlock), as the other engines take its end
+                    end = now(clock);
+                }
                 running = -1;
                 if (busy.isHeldByCurrentThread()) {
                     busy.unlock();
@@ -287,14 +323,14 @@ final class RtsjReplay {
         /** The job on the robot; a completed job's end is taken before anything else can happen. */
         private void runJob(AbortSignal signal) {
             if (job.run(k, signal)) {
-                end = System.nanoTime();
+                end = now(clock);
                 committed = true;
             }
         }
 
         /** The event's record, from what the job did (an AIE may have cut it short anywhere). */
         private void finish() {
-            long now = System.nanoTime();
+            long now = now(clock);
             JobRecords r = records;
             r.cpuNs[k] = -1;
             if (start < 0) {
@@ -302,16 +338,13 @@ final class RtsjReplay {
                 r.endNs[k] = -1;
                 r.outcome[k] = JobRecords.TERMINATED; // superseded before it started
             } else {
-                long jobEnd = committed ? end : now;
+                long jobEnd = end >= 0 ? end : now;
                 r.startNs[k] = start - t0;
                 r.endNs[k] = jobEnd - t0;
                 if (!committed) {
                     r.outcome[k] = JobRecords.TERMINATED;
                 } else {
                     r.outcome[k] = jobEnd - t0 <= r.deadlineNs[k] ? JobRecords.DONE : JobRecords.LATE;
-                }
-                if (abortRequestNs[k] >= 0) {
-                    abortEndNs[k] = jobEnd;
                 }
             }
             ended();

@@ -1,14 +1,13 @@
 package org.jmclbench.workload.scj;
 
-import org.jmclbench.core.mcl.Playground;
-import org.jmclbench.scj.SizedMissionInput;
+import org.jmclbench.scj.PlacedMissionInput;
 import org.jmclbench.workload.data.Dataset;
 
 /**
  * The mission's input on Java SE: a dataset read by the workload, or its first events (a
  * warm-up or class-loading prefix). Copies into the mission's arrays; allocates nothing.
  */
-public final class DatasetInput extends SizedMissionInput {
+public final class DatasetInput extends PlacedMissionInput {
     private final Dataset dataset;
 
     /** The whole dataset. */
@@ -18,7 +17,7 @@ public final class DatasetInput extends SizedMissionInput {
 
     /** The first {@code odometry} odometry and {@code laser} laser events of the dataset. */
     public DatasetInput(Dataset dataset, int odometry, int laser) {
-        super(odometry, laser);
+        super(odometry, laser, dataset.playground, dataset.startX, dataset.startY, dataset.startTheta);
         this.dataset = dataset;
     }
 
@@ -49,25 +48,5 @@ public final class DatasetInput extends SizedMissionInput {
         int n = laserCount();
         System.arraycopy(dataset.laserTime, 0, time, 0, n);
         System.arraycopy(dataset.laserAngle, 0, angle, 0, n);
-    }
-
-    @Override
-    public Playground playground() {
-        return dataset.playground;
-    }
-
-    @Override
-    public double startX() {
-        return dataset.startX;
-    }
-
-    @Override
-    public double startY() {
-        return dataset.startY;
-    }
-
-    @Override
-    public double startTheta() {
-        return dataset.startTheta;
     }
 }

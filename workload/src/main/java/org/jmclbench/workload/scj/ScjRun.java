@@ -158,9 +158,10 @@ public final class ScjRun {
     static List<MemoryArea> areas(ScjLauncher mission) {
         List<MemoryArea> out = new ArrayList<>();
         for (int a = 0; a < mission.areaCount(); a++) {
-            Long perRelease = mission.areaIsPrivate(a) && mission.areaReleases(a) > 0
-                    ? Math.round(mission.areaBytesPerRelease(a)) : null;
-            out.add(new MemoryArea(areaName(mission.areaName(a)), mission.areaSize(a), mission.areaPeakBytes(a), perRelease));
+            boolean released = mission.areaIsPrivate(a) && mission.areaReleases(a) > 0;
+            Long perRelease = released ? Math.round(mission.areaBytesPerRelease(a)) : null;
+            out.add(new MemoryArea(areaName(mission.areaName(a)), mission.areaSize(a), mission.areaPeakBytes(a), perRelease,
+                    released ? mission.areaReleases(a) : null, released ? mission.areaAllocatingReleases(a) : null));
         }
         return out;
     }

@@ -15,8 +15,8 @@ import org.jmclbench.workload.record.Stats;
 import org.junit.jupiter.api.Test;
 
 /**
- * summary.json's deadline accounting and response time over every release (FORMATS.md section 4)
- * against conformance/deadlines.txt, which the C baseline checks too: the same job records give
+ * summary.json's deadline accounting, response time over every release and abort latency
+ * (FORMATS.md section 4) against conformance/deadlines.txt, which the C baseline checks too: the same job records give
  * the same numbers in both languages.
  */
 class DeadlineVectorsTest {
@@ -49,6 +49,15 @@ class DeadlineVectorsTest {
                     } else {
                         assertEquals(l.hexDouble(8), s.missRatio(), 0.0, l.where + ": missRatio, bit for bit");
                     }
+                } else if (l.kind().equals("abort")) {
+                    Stats a = s.abortLatency();
+                    assertEquals(l.integer(2), a.count, l.where + ": count");
+                    assertEquals(l.integer(3), s.abortsCompleted(), l.where + ": completed");
+                    long[] got = {a.min, a.p50, a.p90, a.p99, a.p999, a.max};
+                    for (int q = 0; q < 6; q++) {
+                        String want = l.tokens[4 + q];
+                        assertEquals(want, a.count == 0 ? "null" : Long.toString(got[q]), l.where + ": quantile " + q);
+                    }
                 } else {
                     assertEquals("response", l.kind(), l.where);
                     assertEquals(l.integer(2), s.released(), l.where + ": count");
@@ -67,7 +76,7 @@ class DeadlineVectorsTest {
             }
             cases++;
         }
-        assertTrue(cases >= 7 && checks == 6 * cases, cases + " cases, " + checks + " checks");
+        assertTrue(cases >= 7 && checks == 9 * cases, cases + " cases, " + checks + " checks");
     }
 
     /**
@@ -90,6 +99,7 @@ class DeadlineVectorsTest {
             r.releaseNs[k] = Long.parseLong(l.tokens[3]);
             r.startNs[k] = Long.parseLong(l.tokens[4]);
             r.endNs[k] = Long.parseLong(l.tokens[5]);
+            r.abortNs[k] = Long.parseLong(l.tokens[6]);
         }
         return r;
     }

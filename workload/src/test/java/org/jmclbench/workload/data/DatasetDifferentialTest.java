@@ -43,29 +43,36 @@ class DatasetDifferentialTest {
     @Test
     void generatedAndMutatedEventFilesReadAlike() throws IOException {
         DataMutator m = new DataMutator(20);
-        int accepted = 0;
-        int cases = 6000;
-        for (int i = 0; i < cases; i++) {
+        assertBothOutcomesCommon(6000, i -> {
             int columns = i % 3 == 2 ? 2 : 4;
             byte[] file = m.eventFile(columns);
             String java = DatasetDump.series(file, columns);
             assertEquals(c.series(file, columns), java, "case " + i + ", " + columns + " columns:\n" + show(file));
-            accepted += java.startsWith("ok") ? 1 : 0;
-        }
-        // both outcomes well represented, or the comparison proves little
-        assertTrue(accepted > cases / 5 && accepted < cases * 4 / 5, accepted + " of " + cases + " accepted");
+            return java;
+        });
     }
 
     @Test
     void generatedAndMutatedPropertiesReadAlike() throws IOException {
         DataMutator m = new DataMutator(21);
-        int accepted = 0;
-        int cases = 4000;
-        for (int i = 0; i < cases; i++) {
+        assertBothOutcomesCommon(4000, i -> {
             byte[] file = m.propertiesFile();
             String java = DatasetDump.properties(file);
             assertEquals(c.properties(file), java, "case " + i + ":\n" + show(file));
-            accepted += java.startsWith("ok") ? 1 : 0;
+            return java;
+        });
+    }
+
+    /** Generated case i: asserts that both readers read its file alike and gives the Java reader's answer. */
+    private interface GeneratedCase {
+        String readAlike(int i) throws IOException;
+    }
+
+    /** Runs {@code cases} generated cases: both outcomes, accept and reject, well represented, or the comparison proves little. */
+    private static void assertBothOutcomesCommon(int cases, GeneratedCase generated) throws IOException {
+        int accepted = 0;
+        for (int i = 0; i < cases; i++) {
+            accepted += generated.readAlike(i).startsWith("ok") ? 1 : 0;
         }
         assertTrue(accepted > cases / 5 && accepted < cases * 4 / 5, accepted + " of " + cases + " accepted");
     }

@@ -1,6 +1,7 @@
 package org.jmclbench.workload.release;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
@@ -133,12 +134,18 @@ class RealTimeRunTest {
             int jobs = 0;
             for (String f : new String[] {"odoData.txt", "laserData.txt"}) {
                 List<String> lines = Files.readAllLines(new File(dir, f).toPath(), StandardCharsets.UTF_8);
-                assertEquals("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns", lines.get(0));
+                assertEquals("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns", lines.get(0));
                 for (String line : lines.subList(1, lines.size())) {
                     String[] c = line.split(" ");
-                    assertEquals(7, c.length, f + ": " + line);
+                    assertEquals(8, c.length, f + ": " + line);
                     assertTrue(c[5].matches("done|late|skipped|terminated"), f + ": " + line);
                     assertTrue(Long.parseLong(c[4]) > Long.parseLong(c[1]), "deadline after release: " + line);
+                    long start = Long.parseLong(c[2]);
+                    long abort = Long.parseLong(c[7]);
+                    // abort_ns: where an abort took hold, within the job; asked only under terminate
+                    assertTrue(abort == -1 || p[0].equals("TermTest") && start <= abort && abort < Long.parseLong(c[3]),
+                            f + ": " + line);
+                    assertFalse(c[5].equals("terminated") && start >= 0 && abort < 0, "an aborted job was asked: " + line);
                     jobs++;
                 }
             }

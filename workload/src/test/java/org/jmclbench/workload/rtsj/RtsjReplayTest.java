@@ -18,7 +18,9 @@ import org.junit.jupiter.api.Test;
  * The rtsj engine's asynchronous transfer of control on the woven classes: a long predict job
  * (polling its abort signal as the MCL loops do) is overtaken by an update release 50 ms later.
  * Under terminate, design atomic throws the AIE at the job's next poll, before its commit; design
- * thesis defers it until the job has run to its end. Times are generous: this is a 2-core VM.
+ * thesis defers it until the job has run to its end. Times are generous: this is a 2-core VM. A
+ * replay whose first job did not start before the second release (a loaded machine) tests
+ * nothing about ATC and is run again ({@link #firstJobStarted}).
  */
 class RtsjReplayTest {
     private static final long JOB_NS = 400_000_000L;
@@ -53,36 +55,53 @@ class RtsjReplayTest {
         return new RtsjReplay(schedule, policy, design, job, records);
     }
 
+    /** A terminate replay in which the first job started before the second release (at most five tries). */
+    private static RtsjReplay firstJobStarted(RtsjDesign design, LongFirstJob[] job, JobRecords[] r) throws Exception {
+        for (int attempt = 0; ; attempt++) {
+            job[0] = new LongFirstJob();
+            r[0] = records();
+            RtsjReplay replay = replay(design, OverrunPolicy.TERMINATE, job[0], r[0]);
+            replay.run(60_000_000_000L);
+            if (r[0].startNs[0] >= 0 && r[0].startNs[0] < SECOND_RELEASE_NS || attempt == 4) {
+                return replay;
+            }
+        }
+    }
+
     private static JobRecords records() {
         return new JobRecords(Timeline.merge(new double[] {0.0}, new double[] {0.05}), false);
     }
 
     @Test
     void atomicDeliversTheAieAtTheNextPollBeforeTheCommit() throws Exception {
-        LongFirstJob job = new LongFirstJob();
-        JobRecords r = records();
-        RtsjReplay replay = replay(RtsjDesign.ATOMIC, OverrunPolicy.TERMINATE, job, r);
-        replay.run(60_000_000_000L);
+        LongFirstJob[] jobs = new LongFirstJob[1];
+        JobRecords[] records = new JobRecords[1];
+        RtsjReplay replay = firstJobStarted(RtsjDesign.ATOMIC, jobs, records);
+        LongFirstJob job = jobs[0];
+        JobRecords r = records[0];
         assertEquals(JobRecords.TERMINATED, r.outcome[0]);
         assertEquals(JobRecords.DONE, r.outcome[1]);
         assertEquals(1, job.commits.get(), "only the second job committed");
-        assertTrue(replay.abortRequestNs[0] >= 0, "an AIE was fired at the first job");
-        long latency = replay.abortEndNs[0] - replay.abortRequestNs[0];
+        assertEquals(-1, r.abortFromNs(1), "nothing asked the last job to abort");
+        assertTrue(r.abortFromNs(0) >= 0, "an AIE was fired at the first job");
+        long latency = r.endNs[0] - r.abortFromNs(0);
         assertTrue(latency < JOB_NS / 2, "aborted at a poll, not at the job's end: " + latency + " ns");
     }
 
     @Test
     void thesisDefersTheAieUntilTheJobHasRunToItsEnd() throws Exception {
-        LongFirstJob job = new LongFirstJob();
-        JobRecords r = records();
-        RtsjReplay replay = replay(RtsjDesign.THESIS, OverrunPolicy.TERMINATE, job, r);
-        replay.run(60_000_000_000L);
+        LongFirstJob[] jobs = new LongFirstJob[1];
+        JobRecords[] records = new JobRecords[1];
+        RtsjReplay replay = firstJobStarted(RtsjDesign.THESIS, jobs, records);
+        LongFirstJob job = jobs[0];
+        JobRecords r = records[0];
         assertNotEquals(JobRecords.TERMINATED, r.outcome[0], "the robot's monitor defers the AIE");
         assertEquals(2, job.commits.get());
-        assertTrue(replay.abortRequestNs[0] >= 0, "an AIE was fired at the first job");
-        long latency = replay.abortEndNs[0] - replay.abortRequestNs[0];
-        assertTrue(latency >= JOB_NS - SECOND_RELEASE_NS - 20_000_000L,
-                "the abort took the job's remaining time: " + latency + " ns");
+        assertTrue(r.abortFromNs(0) >= 0, "an AIE was fired at the first job");
+        // The abort took the job's remaining time: from the fire, the job ran on to the end of its
+        // 400 ms (not timed against the release: a late dispatcher fires later, leaving less).
+        assertTrue(r.endNs[0] - r.startNs[0] >= JOB_NS, "the job ran whole: " + (r.endNs[0] - r.startNs[0]) + " ns");
+        assertTrue(r.abortFromNs(0) < r.startNs[0] + JOB_NS, "fired while it ran");
     }
 
     @Test

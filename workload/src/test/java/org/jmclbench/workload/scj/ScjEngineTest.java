@@ -49,6 +49,13 @@ class ScjEngineTest {
             for (String area : new String[] {"immortal", "mission", "predict", "update", "sensor"}) {
                 assertTrue(s.contains("\"name\": \"" + area + "\""), area + " in " + s);
             }
+            // each private memory says how many of its releases allocated: a scoped release always does
+            java.util.regex.Matcher update = java.util.regex.Pattern.compile(
+                    "\"name\": \"update\"[^}]*\"releases\": (\\d+),\\s*\"allocatingReleases\": (\\d+)").matcher(s);
+            assertTrue(update.find(), s);
+            if (memory.equals("scoped")) {
+                assertEquals(update.group(1), update.group(2), "every scoped release allocates");
+            }
             List<String> odo = Files.readAllLines(new File(dir, "odoData.txt").toPath());
             assertEquals(60 + 1, odo.size(), "a line per odometry event and the header");
             assertFalse(odo.get(1).contains("pending"));

@@ -36,7 +36,7 @@ final class HvmFacts implements EngineFacts {
         return mode(executable);
     }
 
-    /** The executable's mode, from the MODE file build-mission.sh writes beside it (interpreted when absent). */
+    /** The executable's mode, from the MODE file build-mission.sh writes beside it (interpreted when absent: built before modes). */
     static String mode(File executable) {
         File f = new File(executable.getParentFile(), "MODE");
         try {

@@ -17,7 +17,7 @@ import org.jmclbench.workload.RunFailure;
  * behind is recorded as a valid run. Anything but exactly the layout of
  * {@link MissionRunFile} for the run's events is a {@link RunFailure} with one line naming the
  * file: a wrong magic or version, another event count or covariance flag, an outcome that is not
- * a code of an ended job, a time below -1, a completed job without a start or ending before it, a
+ * a code of an ended job, a missing abort section code, a time below -1, a completed job without a start or ending before it, a
  * negative duration, an area use below -1, a file cut short or one with bytes after its end.
  */
 final class HvmResultFile {
@@ -62,6 +62,13 @@ final class HvmResultFile {
             for (int k = 0; k < n; k++) {
                 r.outcome[k] = outcome(k, r);
                 r.cpuNs[k] = -1; // SCJ has no per-thread CPU clock
+            }
+            long section = word();
+            if (section != MissionRunFile.ABORT_SECTION) {
+                throw fail("word " + Long.toHexString(section) + " where the abort section's code belongs");
+            }
+            for (int k = 0; k < n; k++) {
+                r.abortNs[k] = time(k);
             }
             for (double[] a : new double[][] {r.estX, r.estY, r.estTheta}) {
                 for (int k = 0; k < n; k++) {

@@ -51,7 +51,7 @@ class HvmResultFileFuzzTest {
         }
         for (int k = 0; k < r.size(); k++) {
             assertTrue(r.outcome[k] >= JobRecords.DONE && r.outcome[k] <= JobRecords.TERMINATED, "outcome " + r.outcome[k]);
-            assertTrue(r.releaseNs[k] >= -1 && r.startNs[k] >= -1 && r.endNs[k] >= -1);
+            assertTrue(r.releaseNs[k] >= -1 && r.startNs[k] >= -1 && r.endNs[k] >= -1 && r.abortNs[k] >= -1);
             if (r.completed(k)) {
                 assertTrue(r.startNs[k] >= 0 && r.endNs[k] >= r.startNs[k]);
             }
@@ -69,6 +69,8 @@ class HvmResultFileFuzzTest {
         assertEquals(JobRecords.DONE, r.outcome[0]);
         assertEquals(JobRecords.SKIPPED, r.outcome[4]);
         assertEquals(1_000_000L, r.durationNs);
+        assertEquals(50_500_000L, r.abortNs[1]);
+        assertEquals(-1, r.abortNs[0]);
         assertEquals(-1, peaks[MissionSizes.PREDICT]);
     }
 
@@ -88,6 +90,12 @@ class HvmResultFileFuzzTest {
         putWord(time, 4, -7); // event 0's release
         assertRefused("event 0: time -7 (ns are >= 0, -1 for none)", time);
         assertRefused("covariance flag 0, expected 1", good, true);
+        byte[] section = good.clone();
+        putWord(section, 4 + 5 * 6, 7); // the abort section's code
+        assertRefused("word 7 where the abort section's code belongs", section);
+        byte[] abort = good.clone();
+        putWord(abort, 4 + 5 * 6 + 1 + 3, -2); // event 3's abort request
+        assertRefused("event 3: time -2 (ns are >= 0, -1 for none)", abort);
     }
 
     /** Keeps a valid file among the kept inputs (run once by hand after a layout change). */
@@ -121,7 +129,7 @@ class HvmResultFileFuzzTest {
         }
     }
 
-    /** A result file as HvmOutput writes it for {@link #TIMELINE}: four jobs done, the last one skipped. */
+    /** A result file as HvmOutput writes it for {@link #TIMELINE}: four jobs done (job 1 asked to abort), the last one skipped. */
     static byte[] valid(boolean covariance) throws IOException {
         ByteArrayOutputStream b = new ByteArrayOutputStream();
         int n = TIMELINE.size();
@@ -139,6 +147,10 @@ class HvmResultFileFuzzTest {
         }
         for (int k = 0; k < n; k++) {
             word(b, k < n - 1 ? JobRecords.DONE : JobRecords.SKIPPED);
+        }
+        word(b, MissionRunFile.ABORT_SECTION);
+        for (int k = 0; k < n; k++) {
+            word(b, k == 1 ? 50_000_000L * k + 500_000 : -1); // job 1 asked to abort mid-way
         }
         for (int i = 0; i < 3 * n + (covariance ? 6 * n : 0) + 3; i++) {
             word(b, Double.doubleToRawLongBits(0.25 * i));

@@ -2,7 +2,7 @@ package org.jmclbench.verification.seeded.mission;
 
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
-import org.jmclbench.verification.mission.DelegatingLocalizer;
+import org.jmclbench.core.mcl.DelegatingLocalizer;
 
 /**
  * Seeded P6 bug (scoped style): the update job caches a scratch array made in its private memory

@@ -2,7 +2,7 @@ package org.jmclbench.verification.seeded.mission;
 
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
-import org.jmclbench.verification.mission.DelegatingLocalizer;
+import org.jmclbench.core.mcl.DelegatingLocalizer;
 
 /**
  * Seeded P3 bug: commit before the abort poll. The predict job applies its step to the particles

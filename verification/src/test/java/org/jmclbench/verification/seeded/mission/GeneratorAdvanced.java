@@ -3,7 +3,7 @@ package org.jmclbench.verification.seeded.mission;
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.mcl.Rng;
-import org.jmclbench.verification.mission.DelegatingLocalizer;
+import org.jmclbench.core.mcl.DelegatingLocalizer;
 
 import java.lang.reflect.Field;
 

@@ -2,7 +2,7 @@ package org.jmclbench.verification.seeded.mission;
 
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
-import org.jmclbench.verification.mission.DelegatingLocalizer;
+import org.jmclbench.core.mcl.DelegatingLocalizer;
 
 /**
  * Seeded P6 bug (scoped style): the predict job keeps an array of its private memory in the

@@ -2,7 +2,7 @@ package org.jmclbench.verification.seeded.mission;
 
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
-import org.jmclbench.verification.mission.DelegatingLocalizer;
+import org.jmclbench.core.mcl.DelegatingLocalizer;
 
 /** Seeded P6 bug (preallocated style): the predict job allocates a scratch array in its release. */
 public final class StrayAllocation extends DelegatingLocalizer {

@@ -2,7 +2,7 @@ package org.jmclbench.verification.seeded.mission;
 
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
-import org.jmclbench.verification.mission.DelegatingLocalizer;
+import org.jmclbench.core.mcl.DelegatingLocalizer;
 
 /**
  * Seeded P4 bug: the predict job polls every fourth poll interval (as a loop whose poll mask is

@@ -1,11 +1,8 @@
-package org.jmclbench.verification.mission;
-
-import org.jmclbench.core.mcl.AbortSignal;
-import org.jmclbench.core.mcl.Localizer;
+package org.jmclbench.core.mcl;
 
 /**
- * A localizer that forwards everything to the mission's: a seeded bug in a job overrides the job
- * it breaks, and is plugged in by its class ({@link CheckedConfiguration}).
+ * A localizer that forwards everything to another: a subclass overrides only the jobs it changes
+ * (verification's seeded bugs, tests that slow a job down). Allocates nothing of its own.
  */
 public abstract class DelegatingLocalizer implements Localizer {
     protected final Localizer inner;

@@ -1,0 +1,250 @@
+package org.jmclbench.tooling.report;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Objects;
+
+import org.jmclbench.tooling.store.StoredRun;
+
+import static org.jmclbench.tooling.report.EvaluationData.*;
+
+/**
+ * The evaluation's sections that answer the real-time question per task and the thesis's open
+ * questions: deadline accounting and response time at the comparison load, generic vs real-time
+ * scheduling, an idle vs a loaded machine, and steady state vs warm-up. Part of
+ * {@link EvaluationDocument}, writing into the same text.
+ */
+final class EvaluationQuestions extends EvaluationSections {
+
+    EvaluationQuestions(EvaluationSections document) {
+        super(document);
+    }
+
+    /** Per configuration and policy at the comparison load: each task's miss ratio and response time over released jobs. */
+    void deadlineAccounting() throws IOException {
+        line("### 2.2 Deadline accounting per task (Table 2)");
+        line("");
+        Integer n = data.compareCount();
+        List<ReportModel.Cell> at = n == null ? List.of() : data.order(data.cells(c -> c.particles == n && c.ok > 0 && EvaluationDocument.idle(c)));
+        if (at.isEmpty()) {
+            line("No completed run is in the store.");
+            line("");
+            return;
+        }
+        line(String.format(Locale.ROOT, "Table 2: at %d particles (the load with the most repetitions), per configuration and "
+                + "policy: each task's miss ratio (late + dropped + aborted over released, pooled over the repetitions, "
+                + "with its 95%% Wilson interval) and its response time p99 over every released job (∞ where a dropped or aborted job falls in the "
+                + "top 1%%: such a run did not complete 99%% of its jobs, however fast the others were).", n));
+        line("");
+        List<List<String>> rows = new ArrayList<>();
+        for (ReportModel.Cell c : at) {
+            rows.add(List.of(c.config, c.policy, String.valueOf(c.ok), percent(c, "predict"), percent(c, "update"),
+                    response(c, "predict"), response(c, "update"), agg(c, Metric.MISS_COUNT, 1)));
+        }
+        table(List.of("configuration", "policy", "runs", "predict miss ratio", "update miss ratio", "predict response p99 (ms)",
+                "update response p99 (ms)", "thesis missCount"), rows);
+        for (String policy : List.of("skip", "queue")) {
+            List<ReportModel.Cell> cs = at.stream().filter(c -> c.policy.equals(policy)).toList();
+            if (cs.isEmpty()) {
+                continue;
+            }
+            for (String task : List.of("predict", "update")) {
+                String stem = "completion-" + task + "-" + policy + "-" + n;
+                figure(stem, String.format(Locale.ROOT, "Figure 2%s: %s, policy %s, %d particles: the fraction of released jobs "
+                                + "completed within a response time (every repetition merged); a curve that ends below 1 dropped or "
+                                + "aborted jobs.", task.equals("predict") ? (policy.equals("skip") ? "a" : "c") : (policy.equals("skip") ? "b" : "d"),
+                        task, policy, n),
+                        () -> charts.write(TaskCharts.responseCompletion(scope(policy, n, cs), task).withStem(stem)));
+            }
+        }
+        findings.add(String.format(Locale.ROOT, "Per-task deadline accounting at %d particles: Table 2 (2.2).", n));
+    }
+
+    /** The thesis's section 5.3: the same runtime under the default scheduler and under SCHED_FIFO pinned to one CPU. */
+    void scheduling() throws IOException {
+        line("### 2.7 Generic vs real-time scheduling (Table 7)");
+        line("");
+        List<ReportModel.Cell> fifo = data.cells(c -> c.ok > 0 && data.info(c).profile() != null && data.info(c).profile().contains("fifo"));
+        if (fifo.isEmpty()) {
+            line("The store has no run with a `fifo` profile, so generic and real-time scheduling are not compared here.");
+            line("");
+            return;
+        }
+        List<List<String>> rows = new ArrayList<>();
+        for (ReportModel.Cell f : data.order(fifo)) {
+            ReportModel.ConfigInfo fi = data.info(f);
+            ReportModel.Cell plain = data.cells(c -> c.ok > 0 && c.particles == f.particles && c.policy.equals(f.policy)
+                    && Objects.equals(c.engine, f.engine) && Objects.equals(c.memory, f.memory) && EvaluationDocument.idle(c)
+                    && data.info(c).runtime().equals(fi.runtime()) && !Objects.equals(data.info(c).profile(), fi.profile())
+                    && (data.info(c).profile() == null || !data.info(c).profile().contains("fifo"))).stream().findFirst().orElse(null);
+            if (plain == null) {
+                continue;
+            }
+            for (ReportModel.Cell c : List.of(plain, f)) {
+                rows.add(List.of(c.config, String.valueOf(c.particles), c.policy, String.valueOf(c.ok), percent(c, "all"),
+                        agg(c, Metric.JITTER_P99, 3), agg(c, Metric.LATENCY_P99, 3), data.info(c).execution() == null ? "?"
+                                : data.info(c).execution().scheduling() + ", priorities " + data.info(c).execution().priorities()));
+            }
+            line(pairSentence(plain, f, Metric.JITTER_P99, "release jitter p99"));
+            line("");
+        }
+        line("Table 7: each runtime under its default profile and under `fifo` (SCHED_FIFO priority 80) with `pinned` where "
+                + "given; scheduling as the runs recorded it.");
+        line("");
+        table(List.of("configuration", "particles", "policy", "runs", "miss ratio", "jitter p99 (ms)", "latency p99 (ms)", "scheduling"), rows);
+        ReportModel.Cell first = fifo.get(0);
+        List<ReportModel.Cell> compared = data.cells(c -> c.ok > 0 && c.particles == first.particles && c.policy.equals(first.policy)
+                && EvaluationDocument.idle(c) && fifo.stream().anyMatch(f -> data.info(f).runtime().equals(data.info(c).runtime())
+                || data.isNative(c)));
+        figure("scheduling", "Figure 7: release jitter p99 under the default scheduler and under SCHED_FIFO pinned, per runtime "
+                + "(mean, 95% CI cut at zero).", () -> charts.write(TaskCharts.conditions(scope(first.policy, first.particles, compared),
+                "scheduling", "Generic vs real-time scheduling", Metric.JITTER_P99, c -> data.info(c).profile()).withStem("scheduling")));
+    }
+
+    /**
+     * The termination policies' measured side: per configuration under terminate at the comparison
+     * load, the aborts and the abort latency, and its percentile spectrum.
+     */
+    void termination() throws IOException {
+        line("### 2.6b Termination: how long an abort takes (Table 6b, Figure 6b)");
+        line("");
+        Integer n = data.compareCount();
+        List<ReportModel.Cell> at = n == null ? List.of() : data.order(data.cells(c -> c.particles == n && c.ok > 0
+                && c.policy.equals("terminate") && EvaluationDocument.idle(c)));
+        if (at.isEmpty()) {
+            line("The store has no run under terminate at the comparison load, so abort latency is not reported.");
+            line("");
+            return;
+        }
+        List<List<String>> rows = new ArrayList<>();
+        for (ReportModel.Cell c : at) {
+            rows.add(List.of(c.config, String.valueOf(c.ok), task(c, TaskMetric.ABORTED, 1), task(c, TaskMetric.ABORT_P50, 3),
+                    task(c, TaskMetric.ABORT_P99, 3), task(c, TaskMetric.ABORT_MAX, 3)));
+        }
+        line(String.format(Locale.ROOT, "Table 6b: under terminate at %d particles, per configuration: the jobs aborted per run and "
+                + "the abort latency, from the abort request (the gate's request, or the AIE fired at the job) to the aborted job's "
+                + "end (ms; mean over repetitions of each run's percentile, with its 95%% bootstrap interval). A cooperative job "
+                + "ends at its next poll (every 64 particle steps); the RTSJ thesis design defers the AIE inside the robot's "
+                + "monitor, so its job runs to its end (`./jmclbench abort-bound` gives the static bound of each).", n));
+        line("");
+        table(List.of("configuration", "runs", "aborted per run", "abort latency p50", "abort latency p99", "abort latency max"), rows);
+        figure("abort-latency-" + n, "Figure 6b: abort latency by percentile under terminate, " + n + " particles (every aborted "
+                + "job of every repetition merged, log scales).", () -> charts.write(ChartSpecs.abortLatency(scope("terminate", n, at))
+                .withStem("abort-latency-" + n)));
+    }
+
+    /** A per-task metric of both tasks ({@code all}) with its interval. */
+    private static String task(ReportModel.Cell c, TaskMetric m, int decimals) {
+        ReportModel.Agg a = c.metrics.get(m.key("all"));
+        return a == null || a.mean() == null ? "n/a" : a.interval().text(decimals);
+    }
+
+    /** An idle machine against the same runs beside a CPU or allocation load (the thesis's further work). */
+    void load() throws IOException {
+        line("### 2.8 An idle vs a loaded machine (Table 8)");
+        line("");
+        List<ReportModel.Cell> loaded = data.cells(c -> c.ok > 0 && !EvaluationDocument.idle(c));
+        if (loaded.isEmpty()) {
+            line("The store has no run under a load scenario, so an idle and a loaded machine are not compared here.");
+            line("");
+            return;
+        }
+        List<List<String>> rows = new ArrayList<>();
+        List<String> bases = data.order(loaded.stream().map(c -> c.config.replace(StoredRun.loadLabel(c.load), "")).distinct().toList());
+        for (String base : bases) {
+            for (ReportModel.Cell l : data.order(loaded.stream().filter(c -> c.config.equals(base + StoredRun.loadLabel(c.load))).toList())) {
+                ReportModel.Cell idle = data.cells(c -> c.ok > 0 && c.config.equals(base) && c.particles == l.particles
+                        && c.policy.equals(l.policy)).stream().findFirst().orElse(null);
+                if (idle != null && rows.stream().noneMatch(r -> r.get(0).equals(idle.config) && r.get(1).equals(String.valueOf(idle.particles)))) {
+                    rows.add(loadRow(idle));
+                }
+                rows.add(loadRow(l));
+                if (idle != null) {
+                    line(pairSentence(idle, l, Metric.LATENCY_P99, "task latency p99"));
+                    line("");
+                }
+            }
+        }
+        line("Table 8: the same configuration idle and beside a load scenario (docs/RUNNER.md: cpu keeps every CPU busy, "
+                + "alloc allocates in another JVM).");
+        line("");
+        table(List.of("configuration", "particles", "policy", "runs", "miss ratio", "latency p99 (ms)", "jitter p99 (ms)"), rows);
+        ReportModel.Cell first = loaded.get(0);
+        List<ReportModel.Cell> compared = data.cells(c -> c.ok > 0 && c.particles == first.particles && c.policy.equals(first.policy)
+                && bases.contains(c.config.replace(StoredRun.loadLabel(c.load), "")));
+        figure("load", "Figure 8: task latency p99 on an idle machine and beside each load scenario, per configuration (mean, "
+                + "95% CI cut at zero).", () -> charts.write(TaskCharts.conditions(scope(first.policy, first.particles, compared), "load",
+                "Idle vs loaded machine", Metric.LATENCY_P99, c -> c.load).withStem("load")));
+    }
+
+    private static List<String> loadRow(ReportModel.Cell c) {
+        return List.of(c.config, String.valueOf(c.particles), c.policy, String.valueOf(c.ok), percent(c, "all"),
+                agg(c, Metric.LATENCY_P99, 3), agg(c, Metric.JITTER_P99, 3));
+    }
+
+    /** Steady state: a long replay, its first seconds (warm-up) apart from the rest. */
+    void steadyState() {
+        line("### 2.9 Steady state and warm-up (Table 9)");
+        line("");
+        List<ReportModel.Cell> cells = data.order(data.model.cells.stream().filter(c -> c.ok > 0 && !c.dataset.equals(data.dataset)
+                && c.metrics.containsKey("STEADY_RESPONSE_P99") && c.metrics.get("STEADY_RESPONSE_P99").mean() != null).toList());
+        if (cells.isEmpty()) {
+            line("The store has no run of a longer replay with its warm-up split recorded, so steady state is not reported apart.");
+            line("");
+            return;
+        }
+        List<List<String>> rows = new ArrayList<>();
+        for (ReportModel.Cell c : cells) {
+            rows.add(List.of(c.config, c.dataset, String.valueOf(c.particles), String.valueOf(c.ok), key(c, "WARM_RESPONSE_P99", 3),
+                    key(c, "STEADY_RESPONSE_P99", 3), key(c, "WARM_MISSES", 1), key(c, "STEADY_MISSES", 1)));
+        }
+        line("Table 9: the response time p99 (completed jobs, ms) and the jobs missed or late in the warm-up window (jobs "
+                + "released in the run's first 2 s) and after it, per run (mean over repetitions).");
+        line("");
+        table(List.of("configuration", "dataset", "particles", "runs", "warm-up response p99", "steady response p99",
+                "warm-up missed or late", "steady missed or late"), rows);
+    }
+
+    /** The cells of one policy and particle count as a figure's scope. */
+    private ChartSpecs.Scope scope(String policy, int particles, List<ReportModel.Cell> cells) {
+        return new ChartSpecs.Scope(model, new ChartSpec.Setting(data.dataset, policy, particles), cells);
+    }
+
+    /** A metric of {@link ReportModel#WARMUP_METRICS}, as {@link EvaluationData#agg} writes a Metric. */
+    private static String key(ReportModel.Cell c, String name, int decimals) {
+        ReportModel.Agg a = c.metrics.get(name);
+        if (a == null || a.mean() == null) {
+            return "n/a";
+        }
+        return a.interval().text(decimals);
+    }
+
+    /** A task's miss ratio, pooled over the repetitions, as a percentage with its 95% Wilson interval. */
+    static String percent(ReportModel.Cell c, String task) {
+        Stats.Interval i = EvaluationData.missRatio(c, task);
+        if (Double.isNaN(i.estimate())) {
+            return "n/a";
+        }
+        return new Stats.Interval(100 * i.estimate(), 100 * i.low(), 100 * i.high()).text(2) + " %";
+    }
+
+    /** A task's response time p99 over released jobs, infinite when a dropped or aborted job is in some run's top 1%. */
+    static String response(ReportModel.Cell c, String task) {
+        ReportModel.Agg a = c.metrics.get(TaskMetric.RESPONSE_P99.key(task));
+        if (a == null || a.n() == 0 || a.mean() == null) {
+            return "n/a";
+        }
+        if (a.max() != null && a.max().isInfinite()) {
+            return "∞ (in at least one of " + a.n() + " runs)";
+        }
+        return a.interval().text(3);
+    }
+
+    /** "A's x is ... against B's ...", with whether the intervals separate them. */
+    private static String pairSentence(ReportModel.Cell a, ReportModel.Cell b, Metric m, String what) {
+        return String.format(Locale.ROOT, "%s: %s %s ms against %s %s ms. %s", what.substring(0, 1).toUpperCase(Locale.ROOT) + what.substring(1),
+                a.config, agg(a, m, 3), b.config, agg(b, m, 3), separation(a, b, m));
+    }
+}

@@ -1,0 +1,225 @@
+package org.jmclbench.verification;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+import org.jmclbench.core.mcl.MotionModel;
+import org.jmclbench.verification.bytecode.AbortBound;
+import org.jmclbench.verification.bytecode.AbortPollCheck;
+import org.jmclbench.verification.bytecode.ClassPool;
+import org.objectweb.asm.tree.ClassNode;
+import org.objectweb.asm.tree.MethodNode;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+/**
+ * {@code ./jmclbench abort-bound}: the static bound on abort latency of an engine's terminable
+ * job ({@link AbortBound}) and, with a run folder, the bound in time beside the measured
+ * distribution: a particle step costs at most the run's task latency divided by its particles
+ * (a job's loops together cost that per particle), so a gap of G steps takes at most G times it.
+ */
+public final class AbortBoundMain {
+    private static final String USAGE = "usage: jmclbench abort-bound --engine javase|scj|hvm|rtsj [--rtsj-design thesis|atomic] "
+            + "[--memory preallocated|allocating|scoped] --classes JAR_OR_DIR[:...] [--run RUN_FOLDER]";
+    /** The localizer of each memory style: the job runs one, so the others' loops are not its code. */
+    private static final Map<String, String> LOCALIZERS = Map.of("preallocated", "org/jmclbench/core/mcl/PreallocatedLocalizer",
+            "scoped", "org/jmclbench/core/mcl/ScopedLocalizer", "allocating", "org/jmclbench/workload/mcl/AllocatingLocalizer");
+
+    /** An engine's job: where it starts and how an abort takes effect. */
+    private record Job(String[][] entries, AbortBound.Mode mode) {
+    }
+
+    private AbortBoundMain() {
+    }
+
+    public static void main(String[] args) {
+        System.exit(run(args, System.out, System.err));
+    }
+
+    /** Runs the command; 0, or 2 with one line on {@code err} for bad input. */
+    static int run(String[] args, PrintStream out, PrintStream err) {
+        String engine = null;
+        String design = "thesis";
+        String memory = "preallocated";
+        String classes = null;
+        Path runDir = null;
+        for (int i = 0; i < args.length; i++) {
+            String a = args[i];
+            if (a.equals("-h") || a.equals("--help")) {
+                out.println(USAGE);
+                return 0;
+            }
+            if (i + 1 >= args.length) {
+                return bad(err, a + ": needs a value (" + USAGE + ")");
+            }
+            String v = args[++i];
+            switch (a) {
+                case "--engine" -> engine = v;
+                case "--rtsj-design" -> design = v;
+                case "--memory" -> memory = v;
+                case "--classes" -> classes = v;
+                case "--run" -> runDir = Paths.get(v);
+                default -> {
+                    return bad(err, a + ": unknown option (" + USAGE + ")");
+                }
+            }
+        }
+        if (engine == null) {
+            return bad(err, "--engine: required (" + USAGE + ")");
+        }
+        if (!design.equals("thesis") && !design.equals("atomic")) {
+            return bad(err, "--rtsj-design: '" + design + "' is not one of thesis|atomic");
+        }
+        if (!LOCALIZERS.containsKey(memory)) {
+            return bad(err, "--memory: '" + memory + "' is not one of preallocated|allocating|scoped");
+        }
+        String localizer = LOCALIZERS.get(memory);
+        Job job = job(engine);
+        if (job == null) {
+            return bad(err, "--engine: '" + engine + "' is not one of javase|scj|hvm|rtsj"
+                    + (engine.equals("native") ? " (the C baseline has no bytecode to analyse)" : ""));
+        }
+        if (classes == null) {
+            return bad(err, "--classes: required (the workload jar)");
+        }
+        JsonNode summary = null;
+        if (runDir != null) {
+            Path s = runDir.resolve("summary.json");
+            try {
+                summary = new ObjectMapper().readTree(Files.readString(s));
+            } catch (IOException e) {
+                return bad(err, "--run: cannot read " + s + ": " + e.getMessage());
+            }
+        }
+        try {
+            List<Path> paths = new ArrayList<>();
+            for (String p : classes.split(":")) {
+                if (!Files.exists(Paths.get(p))) {
+                    return bad(err, "--classes: no such file or folder: " + p);
+                }
+                paths.add(Paths.get(p));
+            }
+            ClassPool pool = ClassPool.of(paths);
+            List<ClassPool.Owned> entries = new ArrayList<>();
+            for (String[] e : job.entries()) {
+                ClassPool.Owned m = method(pool, e[0], e[1], e[2]);
+                if (m == null) {
+                    return bad(err, "--classes: " + classes + " has no " + e[0].replace('/', '.') + "." + e[1]
+                            + " (not the workload jar?)");
+                }
+                entries.add(m);
+            }
+            Map<String, String> known = Map.of("org/jmclbench/workload/rtsj/RtsjDesign", design.toUpperCase(Locale.ROOT));
+            AbortBound.Result r = new AbortBound(pool, n -> n.startsWith("org/jmclbench/") && !n.startsWith("org/jmclbench/rtsjcompat/")
+                    && (n.equals(localizer) || !LOCALIZERS.containsValue(n)), MotionModel.ABORT_BLOCK, job.mode(), known)
+                    .analyse(entries);
+            report(out, engine + (engine.equals("rtsj") ? " " + design : "") + ", memory " + memory, job, entries, r, summary);
+            return 0;
+        } catch (IOException e) {
+            return bad(err, "--classes: cannot read " + classes + ": " + e.getMessage());
+        }
+    }
+
+    private static Job job(String engine) {
+        return switch (engine) {
+            case "javase" -> new Job(new String[][] {{"org/jmclbench/workload/release/LocalizerJob", "run", "AbortSignal;)Z"}},
+                    AbortBound.Mode.COOPERATIVE);
+            case "scj", "hvm" -> new Job(new String[][] {{"org/jmclbench/scj/Robot", "predict", "AbortSignal;)Z"},
+                    {"org/jmclbench/scj/Robot", "update", "AbortSignal;)Z"}}, AbortBound.Mode.COOPERATIVE);
+            case "rtsj" -> new Job(new String[][] {{"org/jmclbench/workload/rtsj/RtsjReplay$Task", "run",
+                    "AsynchronouslyInterruptedException;)V"}}, AbortBound.Mode.ATC);
+            default -> null;
+        };
+    }
+
+    private static ClassPool.Owned method(ClassPool pool, String owner, String name, String descEnd) {
+        ClassNode c = pool.get(owner);
+        if (c != null) {
+            for (MethodNode m : c.methods) {
+                if (m.name.equals(name) && m.desc.endsWith(descEnd)) {
+                    return new ClassPool.Owned(c, m);
+                }
+            }
+        }
+        return null;
+    }
+
+    private static void report(PrintStream out, String what, Job job, List<ClassPool.Owned> entries, AbortBound.Result r,
+                               JsonNode summary) {
+        out.println("abort-bound: " + what + ", job from " + String.join(", ", entries.stream()
+                .map(e -> e.owner().name.replace('/', '.') + "." + e.method().name).toList()) + " (" + r.jobMethods() + " methods)");
+        out.println("abort points: " + (job.mode() == AbortBound.Mode.COOPERATIVE
+                ? "the job's polls of its abort signal (it returns at the first that sees the request)"
+                : "delivery points reached through the job's signal " + String.join(", ", r.signals().stream()
+                        .map(s -> s.replace('/', '.')).toList()) + (r.signalDelivers() ? "" : ": none (it calls no Atc.poll)")));
+        out.println("particle loops (gap: particle steps between two abort points; bytecodes of one step):");
+        for (AbortPollCheck.LoopGap l : r.loops()) {
+            out.printf("  %-62s %-16s %6d bytecodes%n", l.where(), l.steps() == AbortPollCheck.UNKNOWN ? "whole loop"
+                    : "every " + l.steps(), r.stepBytecodes().get(l));
+        }
+        AbortPollCheck.LoopGap longest = r.longest();
+        if (r.wholeJob()) {
+            out.println("longest path between two abort points: the whole job (no abort point between its start and its end)");
+        } else if (longest != null) {
+            out.println("longest path between two abort points: " + (longest.steps() == AbortPollCheck.UNKNOWN ? "a whole loop"
+                    : longest.steps() + " particle steps (at most " + r.longestBytecodes() + " bytecodes)") + ", at " + longest.where());
+        }
+        out.println("deferral regions:" + (r.deferrals().isEmpty() ? " none" : ""));
+        r.deferrals().forEach(d -> out.println("  " + d));
+        if (summary != null) {
+            withRun(out, r, summary);
+        }
+    }
+
+    /** The bound in time from the run's task latency per particle, beside the run's measured abort latency. */
+    private static void withRun(PrintStream out, AbortBound.Result r, JsonNode s) {
+        int particles = s.path("parameters").path("particles").asInt();
+        JsonNode abort = s.path("tasks").path("all").path("abortLatencyNs");
+        // the costlier task's latency per particle: a step of any loop of either job costs no more
+        double p50 = 0;
+        double max = 0;
+        for (String task : List.of("predict", "update")) {
+            JsonNode lat = s.path("tasks").path(task).path("taskLatencyNs");
+            p50 = Math.max(p50, lat.path("p50").asDouble(0));
+            max = Math.max(max, lat.path("max").asDouble(0));
+        }
+        if (particles <= 0 || max <= 0) {
+            out.println("run: no completed job to take a particle step's cost from");
+            return;
+        }
+        out.printf(Locale.ROOT, "run: %d particles, the costlier task's latency p50 %s max %s: a particle step %.3f us (from the max: %.3f us)%n",
+                particles, ms(p50), ms(max), p50 / particles / 1e3, max / particles / 1e3);
+        long steps = r.longestSteps();
+        if (r.wholeJob() || steps == AbortPollCheck.UNKNOWN) {
+            out.printf(Locale.ROOT, "bound on abort latency: the whole job, its remaining time: up to a job's latency (p50 %s, max %s)%n",
+                    ms(p50), ms(max));
+        } else {
+            out.printf(Locale.ROOT, "bound on abort latency: %d steps x step = %s (from the max: %s), plus the code between loops "
+                    + "and the unwinding%n", steps, ms(steps * p50 / particles), ms(steps * max / particles));
+        }
+        if (abort.path("count").asInt() == 0) {
+            out.println("measured abort latency: no abort took hold in this run");
+        } else {
+            out.printf(Locale.ROOT, "measured abort latency: %d jobs (%d completed all the same), p50 %s p99 %s max %s%n",
+                    abort.path("count").asInt(), s.path("tasks").path("all").path("abortsCompleted").asInt(),
+                    ms(abort.path("p50").asDouble()), ms(abort.path("p99").asDouble()), ms(abort.path("max").asDouble()));
+        }
+    }
+
+    private static String ms(double ns) {
+        return String.format(Locale.ROOT, "%.3f ms", ns / 1e6);
+    }
+
+    private static int bad(PrintStream err, String message) {
+        err.println("jmclbench: abort-bound: " + message);
+        return 2;
+    }
+}

@@ -1,0 +1,114 @@
+package org.jmclbench.verification;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.net.URISyntaxException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.util.List;
+import java.util.Map;
+
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.rtsjcompat.Atc;
+import org.jmclbench.verification.bytecode.AbortBound;
+import org.jmclbench.verification.bytecode.AbortPollCheck;
+import org.jmclbench.verification.bytecode.ClassPool;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.objectweb.asm.tree.ClassNode;
+import org.objectweb.asm.tree.MethodNode;
+
+/**
+ * The abort-bound analysis on seeded jobs whose bounds are known: polls every 16 then 32 steps
+ * (32), a loop without a poll (whole loop, named), an RTSJ job whose signal delivers (64) and the
+ * same job deferred in a synchronized block (the whole job, the block named).
+ */
+class AbortBoundTest {
+    private static final String SEEDED = "org/jmclbench/verification/seeded/bound/";
+    private static ClassPool pool;
+
+    @BeforeAll
+    static void load() throws Exception {
+        pool = ClassPool.of(List.of(Paths.get("target", "test-classes"), codeOf(AbortSignal.class), codeOf(Atc.class)));
+    }
+
+    private static Path codeOf(Class<?> c) throws URISyntaxException {
+        return Paths.get(c.getProtectionDomain().getCodeSource().getLocation().toURI());
+    }
+
+    private static ClassPool.Owned method(String cls, String name) {
+        ClassNode c = pool.get(SEEDED + cls);
+        for (MethodNode m : c.methods) {
+            if (m.name.equals(name)) {
+                return new ClassPool.Owned(c, m);
+            }
+        }
+        throw new AssertionError(cls + "." + name);
+    }
+
+    private static AbortBound bound(AbortBound.Mode mode, String design) {
+        return new AbortBound(pool, n -> n.startsWith("org/jmclbench/") && !n.startsWith("org/jmclbench/rtsjcompat/"), 64, mode,
+                Map.of(SEEDED + "AtcJob$Design", design));
+    }
+
+    @Test
+    void theLongestGapIsTheWidestPollStride() {
+        AbortBound.Result r = bound(AbortBound.Mode.COOPERATIVE, "DELIVERED").analyse(List.of(method("BoundJob", "run")));
+        assertEquals(2, r.loops().size());
+        assertEquals(32, r.longestSteps());
+        assertEquals(r.loops().get(1), r.longest(), "the second loop");
+        assertTrue(r.longestBytecodes() >= 32 * 8, "a step is at least a handful of bytecodes: " + r.longestBytecodes());
+        assertTrue(r.deferrals().isEmpty(), r.deferrals().toString());
+        assertFalse(r.wholeJob());
+    }
+
+    @Test
+    void aLoopWithoutAPollRunsWholeAndIsNamed() {
+        AbortBound.Result r = bound(AbortBound.Mode.COOPERATIVE, "DELIVERED").analyse(List.of(method("BoundJob", "unpolledTail")));
+        assertEquals(AbortPollCheck.UNKNOWN, r.longestSteps());
+        assertFalse(r.wholeJob(), "the first loop polls");
+        int line = r.longest().line();
+        assertEquals(List.of("org.jmclbench.verification.seeded.bound.BoundJob.unpolledTail:" + line
+                + ": particle loop with no abort point (runs whole after a request)"), r.deferrals());
+    }
+
+    @Test
+    void anAtcJobWhoseSignalDeliversIsBoundByItsStride() {
+        AbortBound.Result r = bound(AbortBound.Mode.ATC, "DELIVERED").analyse(List.of(method("AtcJob", "run")));
+        assertEquals(List.of(SEEDED + "AtcJob$Points"), r.signals(), "the design's branch only");
+        assertTrue(r.signalDelivers());
+        assertEquals(64, r.longestSteps());
+        assertTrue(r.deferrals().isEmpty(), "the synchronized branch is the other design's: " + r.deferrals());
+    }
+
+    @Test
+    void theDeferredDesignIsTheWholeJobAndItsMonitorIsNamed() {
+        AbortBound.Result r = bound(AbortBound.Mode.ATC, "DEFERRED").analyse(List.of(method("AtcJob", "run")));
+        assertEquals(List.of("org/jmclbench/core/mcl/AbortSignal$1"), r.signals(), "AbortSignal.NEVER's class");
+        assertFalse(r.signalDelivers());
+        assertTrue(r.wholeJob());
+        assertTrue(r.deferrals().get(0).startsWith("org.jmclbench.verification.seeded.bound.AtcJob.job:"), r.deferrals().toString());
+        assertTrue(r.deferrals().get(0).contains("synchronized block"), r.deferrals().get(0));
+        assertTrue(r.deferrals().get(1).startsWith("non-AI code"), r.deferrals().toString());
+    }
+
+    @Test
+    void badInputIsOneLineAndExitTwo() {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream e = new PrintStream(err, true, StandardCharsets.UTF_8);
+        PrintStream o = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+        assertEquals(2, AbortBoundMain.run(new String[] {"--engine", "native", "--classes", "x"}, o, e));
+        assertEquals(2, AbortBoundMain.run(new String[] {"--engine", "rtsj", "--rtsj-design", "fast", "--classes", "x"}, o, e));
+        assertEquals(2, AbortBoundMain.run(new String[] {"--engine", "javase", "--classes", "/no/such.jar"}, o, e));
+        String[] lines = err.toString(StandardCharsets.UTF_8).split("\n");
+        assertEquals(3, lines.length);
+        assertTrue(lines[0].startsWith("jmclbench: abort-bound: --engine: 'native' is not one of"), lines[0]);
+        assertTrue(lines[1].startsWith("jmclbench: abort-bound: --rtsj-design: 'fast'"), lines[1]);
+        assertTrue(lines[2].startsWith("jmclbench: abort-bound: --classes: no such file or folder"), lines[2]);
+    }
+}

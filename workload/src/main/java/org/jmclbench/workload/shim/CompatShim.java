@@ -1,0 +1,27 @@
+package org.jmclbench.workload.shim;
+
+import java.util.List;
+
+import org.jmclbench.rtsjcompat.RtsjRuntime;
+import org.jmclbench.rtsjcompat.ScjLauncher;
+
+/**
+ * The shim on a JVM: rtsj-compat's runtime (the one class of the engines that names it, left
+ * out of {@code ant rtsj-engine}'s build for an RTSJ VM). Created by name from {@link RuntimeShim}.
+ */
+public final class CompatShim extends RuntimeShim {
+    @Override
+    public boolean prioritiesApplied() {
+        return ScjLauncher.prioritiesApplied();
+    }
+
+    @Override
+    public void beforeReplay() {
+        RtsjRuntime.reset();
+    }
+
+    @Override
+    public List<String> endHandlers(long timeoutMs) {
+        return RtsjRuntime.stopHandlers(timeoutMs);
+    }
+}

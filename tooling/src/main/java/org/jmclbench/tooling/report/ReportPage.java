@@ -38,6 +38,7 @@ final class ReportPage {
                 "GENERATED", escapeHtml(model.generatedAt),
                 "DATA", json(model),
                 "CHARTJS", inlineScript(chartJs()),
+                "PLUGINS", inlineScript(resource("report-plugins.js")),
                 "APP", inlineScript(resource("report.js")));
         Files.writeString(file, fill(resource("report.html"), parts), StandardCharsets.UTF_8);
     }

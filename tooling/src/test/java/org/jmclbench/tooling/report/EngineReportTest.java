@@ -81,9 +81,9 @@ class EngineReportTest {
                     + allocating + "}, {\"name\": \"mission\", \"releases\": null}]}}";
             runs.add(r);
         }
-        assertEquals(270L, ReportModel.summedAreaField(runs, "update", "releases"));
-        assertEquals(3L, ReportModel.summedAreaField(runs, "update", "allocatingReleases"));
-        assertEquals(null, ReportModel.summedAreaField(runs, "mission", "releases"), "no run told");
+        assertEquals(270L, CellAggregates.summedAreaField(runs, "update", "releases"));
+        assertEquals(3L, CellAggregates.summedAreaField(runs, "update", "allocatingReleases"));
+        assertEquals(null, CellAggregates.summedAreaField(runs, "mission", "releases"), "no run told");
     }
 
     @Test

@@ -58,7 +58,7 @@ class EvaluationDataTest {
             c.policy = "skip";
             c.particles = c == elsewhere ? 800 : 100;
         }
-        ReportModel.separateMisses(List.of(none, some, three, elsewhere));
+        CellAggregates.separateMisses(List.of(none, some, three, elsewhere));
         assertEquals("A_LOWER", none.missSeparation.get("temurin-25"));
         assertEquals("B_LOWER", some.missSeparation.get("native"), "the same verdict seen from the other side");
         assertEquals("TOO_FEW", none.missSeparation.get("hvm"));
@@ -83,7 +83,7 @@ class EvaluationDataTest {
             runs.add(r);
         }
         ReportModel.Cell c = new ReportModel.Cell();
-        c.deadlines = ReportModel.deadlines(runs);
+        c.deadlines = CellAggregates.deadlines(runs);
         Stats.Interval update = EvaluationData.missRatio(c, "update");
         assertEquals(Stats.wilson(5, 300), update);
         assertEquals(5.0 / 300, update.estimate(), 1e-12);

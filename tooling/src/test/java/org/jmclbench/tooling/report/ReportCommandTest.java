@@ -56,8 +56,8 @@ class ReportCommandTest {
         assertFalse(html.contains(ReportFixtures.XSS_RUNTIME), "the runtime name appears raw");
         assertFalse(html.contains("<img src=x"), "a version string appears raw");
         assertFalse(html.contains("<b>bold</b>"), "a failure message appears raw");
-        // There are exactly three script elements: the data, Chart.js and the page's own.
-        assertEquals(3, Pattern.compile("<script").matcher(html).results().count());
+        // There are exactly four script elements: the data, Chart.js, the page's plugins and the page's own.
+        assertEquals(4, Pattern.compile("<script").matcher(html).results().count());
     }
 
     @Test

@@ -1,0 +1,87 @@
+/*
+ * jmclbench report page: the Chart.js plugins the charts of report.js use, registered once before
+ * report.js runs: intervals as error bars, the playground's frame, GC and safepoint pause bands,
+ * and a "0" where a log axis cannot draw a bar.
+ */
+(function () {
+  'use strict';
+  /** A value's pixel on a scale; on a log scale a value at or below zero is the scale's low end. */
+  function pixel(scale, v) { return scale.type === 'logarithmic' && v <= 0 ? scale.getPixelForValue(scale.min) : scale.getPixelForValue(v); }
+  // Intervals [low, high] per bar or point: errorBars of y (vertical), xErrorBars of x (horizontal, points only).
+  var errorBars = {
+    id: 'jmclbenchErrorBars',
+    afterDatasetsDraw: function (chart) {
+      if (chart.options.indexAxis === 'y') { return; }
+      var ctx = chart.ctx;
+      chart.data.datasets.forEach(function (ds, i) {
+        if (!ds.errorBars && !ds.xErrorBars) { return; }
+        var meta = chart.getDatasetMeta(i);
+        if (meta.hidden) { return; }
+        var y = chart.scales[meta.yAxisID || 'y'], x = chart.scales[meta.xAxisID || 'x'];
+        ctx.save(); ctx.strokeStyle = ds.errorBarColor || '#222'; ctx.lineWidth = 1.2;
+        meta.data.forEach(function (item, j) {
+          var e = ds.errorBars ? ds.errorBars[j] : null, w = Math.min(8, (item.width || 10) / 3);
+          if (e && e[0] !== null && e[1] !== null) {
+            var top = pixel(y, e[1]), bottom = pixel(y, e[0]);
+            ctx.beginPath(); ctx.moveTo(item.x, top); ctx.lineTo(item.x, bottom);
+            ctx.moveTo(item.x - w, top); ctx.lineTo(item.x + w, top); ctx.moveTo(item.x - w, bottom); ctx.lineTo(item.x + w, bottom);
+            ctx.stroke();
+          }
+          var h = ds.xErrorBars ? ds.xErrorBars[j] : null;
+          if (h && h[0] !== null && h[1] !== null) {
+            var left = pixel(x, h[0]), right = pixel(x, h[1]);
+            ctx.beginPath(); ctx.moveTo(left, item.y); ctx.lineTo(right, item.y);
+            ctx.moveTo(left, item.y - w); ctx.lineTo(left, item.y + w); ctx.moveTo(right, item.y - w); ctx.lineTo(right, item.y + w);
+            ctx.stroke();
+          }
+        });
+        ctx.restore();
+      });
+    }
+  };
+  var frame = {
+    id: 'jmclbenchFrame',
+    beforeDatasetsDraw: function (chart) {
+      var f = chart.options.plugins.jmclbenchFrame;
+      if (!f || !f.width) { return; }
+      var x = chart.scales.x, y = chart.scales.y, ctx = chart.ctx;
+      ctx.save(); ctx.strokeStyle = '#888'; ctx.setLineDash([4, 3]);
+      ctx.strokeRect(x.getPixelForValue(0), y.getPixelForValue(f.height), x.getPixelForValue(f.width) - x.getPixelForValue(0),
+        y.getPixelForValue(0) - y.getPixelForValue(f.height));
+      ctx.restore();
+    }
+  };
+  var bands = {
+    id: 'jmclbenchPauses',
+    beforeDatasetsDraw: function (chart) {
+      var list = chart.options.plugins.jmclbenchPauses;
+      if (!list || !list.length) { return; }
+      var x = chart.scales.x, area = chart.chartArea, ctx = chart.ctx;
+      ctx.save();
+      list.forEach(function (b) {
+        var a = Math.max(area.left, x.getPixelForValue(b.from)), e = Math.min(area.right, x.getPixelForValue(b.to));
+        if (e < area.left || a > area.right) { return; }
+        ctx.fillStyle = b.color;
+        ctx.fillRect(a, area.top, Math.max(1, e - a), area.bottom - area.top); // a pause shorter than a pixel still shows
+      });
+      ctx.restore();
+    }
+  };
+  // A value of 0 has no bar on a log axis: a "0" marks it at the axis.
+  var zeroMarks = {
+    id: 'jmclbenchZeroMarks',
+    afterDatasetsDraw: function (chart) {
+      var ctx = chart.ctx, area = chart.chartArea;
+      ctx.save(); ctx.fillStyle = '#333'; ctx.font = '10px sans-serif'; ctx.textAlign = 'center';
+      chart.data.datasets.forEach(function (ds, i) {
+        var meta = chart.getDatasetMeta(i);
+        if (meta.hidden || !ds.zeros) { return; }
+        ds.zeros.forEach(function (zero, j) { if (zero && meta.data[j]) { ctx.fillText('0', meta.data[j].x, area.bottom - 3); } });
+      });
+      ctx.restore();
+    }
+  };
+  Chart.register(errorBars, frame, bands, zeroMarks);
+  Chart.defaults.animation = false;
+  Chart.defaults.font.size = 12;
+})();

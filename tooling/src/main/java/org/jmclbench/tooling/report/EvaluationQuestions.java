@@ -130,9 +130,14 @@ final class EvaluationQuestions extends EvaluationSections {
                 + "monitor, so its job runs to its end (`./jmclbench abort-bound` gives the static bound of each).", n));
         line("");
         table(List.of("configuration", "runs", "aborted per run", "abort latency p50", "abort latency p99", "abort latency max"), rows);
+        ChartSpec spectrum = ChartSpecs.abortLatency(scope("terminate", n, at));
+        if (spectrum == null) {
+            line("No abort took hold in these runs (every job ended before a later release asked it to), so there is no spectrum.");
+            line("");
+            return;
+        }
         figure("abort-latency-" + n, "Figure 6b: abort latency by percentile under terminate, " + n + " particles (every aborted "
-                + "job of every repetition merged, log scales).", () -> charts.write(ChartSpecs.abortLatency(scope("terminate", n, at))
-                .withStem("abort-latency-" + n)));
+                + "job of every repetition merged, log scales).", () -> charts.write(spectrum.withStem("abort-latency-" + n)));
     }
 
     /** A per-task metric of both tasks ({@code all}) with its interval. */

@@ -25,16 +25,6 @@ final class EvaluationExplanations extends EvaluationSections {
         super(document);
     }
 
-    /** True, having written {@code why} as the section's whole text, when the store has none of the {@code cells} it needs. */
-    private boolean absent(List<ReportModel.Cell> cells, String why) {
-        if (!cells.isEmpty()) {
-            return false;
-        }
-        line(why);
-        line("");
-        return true;
-    }
-
     /**
      * The cells of every group (cells of one {@code group} key, in first-seen order) in which
      * {@code varied} takes more than {@code moreThan} values: the groups that compare something.

@@ -28,9 +28,7 @@ final class EvaluationQuestions extends EvaluationSections {
         line("");
         Integer n = data.compareCount();
         List<ReportModel.Cell> at = n == null ? List.of() : data.order(data.cells(c -> c.particles == n && c.ok > 0 && EvaluationDocument.idle(c)));
-        if (at.isEmpty()) {
-            line("No completed run is in the store.");
-            line("");
+        if (absent(at, "No completed run is in the store.")) {
             return;
         }
         line(String.format(Locale.ROOT, "Table 2: at %d particles (the load with the most repetitions), per configuration and "
@@ -67,9 +65,7 @@ final class EvaluationQuestions extends EvaluationSections {
         line("### 2.7 Generic vs real-time scheduling (Table 7)");
         line("");
         List<ReportModel.Cell> fifo = data.cells(c -> c.ok > 0 && data.info(c).profile() != null && data.info(c).profile().contains("fifo"));
-        if (fifo.isEmpty()) {
-            line("The store has no run with a `fifo` profile, so generic and real-time scheduling are not compared here.");
-            line("");
+        if (absent(fifo, "The store has no run with a `fifo` profile, so generic and real-time scheduling are not compared here.")) {
             return;
         }
         List<List<String>> rows = new ArrayList<>();
@@ -113,9 +109,7 @@ final class EvaluationQuestions extends EvaluationSections {
         Integer n = data.compareCount();
         List<ReportModel.Cell> at = n == null ? List.of() : data.order(data.cells(c -> c.particles == n && c.ok > 0
                 && c.policy.equals("terminate") && EvaluationDocument.idle(c)));
-        if (at.isEmpty()) {
-            line("The store has no run under terminate at the comparison load, so abort latency is not reported.");
-            line("");
+        if (absent(at, "The store has no run under terminate at the comparison load, so abort latency is not reported.")) {
             return;
         }
         List<List<String>> rows = new ArrayList<>();
@@ -151,9 +145,7 @@ final class EvaluationQuestions extends EvaluationSections {
         line("### 2.8 An idle vs a loaded machine (Table 8)");
         line("");
         List<ReportModel.Cell> loaded = data.cells(c -> c.ok > 0 && !EvaluationDocument.idle(c));
-        if (loaded.isEmpty()) {
-            line("The store has no run under a load scenario, so an idle and a loaded machine are not compared here.");
-            line("");
+        if (absent(loaded, "The store has no run under a load scenario, so an idle and a loaded machine are not compared here.")) {
             return;
         }
         List<List<String>> rows = new ArrayList<>();
@@ -195,9 +187,7 @@ final class EvaluationQuestions extends EvaluationSections {
         line("");
         List<ReportModel.Cell> cells = data.order(data.model.cells.stream().filter(c -> c.ok > 0 && !c.dataset.equals(data.dataset)
                 && c.metrics.containsKey("STEADY_RESPONSE_P99") && c.metrics.get("STEADY_RESPONSE_P99").mean() != null).toList());
-        if (cells.isEmpty()) {
-            line("The store has no run of a longer replay with its warm-up split recorded, so steady state is not reported apart.");
-            line("");
+        if (absent(cells, "The store has no run of a longer replay with its warm-up split recorded, so steady state is not reported apart.")) {
             return;
         }
         List<List<String>> rows = new ArrayList<>();

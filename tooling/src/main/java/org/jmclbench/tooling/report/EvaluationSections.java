@@ -87,6 +87,16 @@ abstract class EvaluationSections {
         return v.replace("\\", "\\\\").replace("|", "\\|").replace("<", "&lt;").replace(">", "&gt;").replace("\n", " ");
     }
 
+    /** True, having written {@code why} as the section's whole text, when the store has none of the {@code cells} it needs. */
+    boolean absent(List<ReportModel.Cell> cells, String why) {
+        if (!cells.isEmpty()) {
+            return false;
+        }
+        line(why);
+        line("");
+        return true;
+    }
+
     void line(String s) {
         md.append(s).append('\n');
     }

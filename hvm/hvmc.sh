@@ -80,9 +80,10 @@ fi
 # -fno-strict-aliasing: the VM and the generated C write int32 stack words and read them as
 # doubles (without it gcc reorders the two at -O2 and the mission hangs); -fwrapv: Java's int and
 # long arithmetic wraps, C's signed overflow is undefined; -ffp-contract=off: no fused multiply-add
-# (Java rounds each operation).
+# (Java rounds each operation). -O3, not the C baseline's -O2: measured, the compiled mission's
+# jobs are 10% faster (docs/HVM.md).
 cd "$work/c"
-if ! gcc -O2 -w -fno-strict-aliasing -fwrapv -ffp-contract=off -DPC64 -DPRINTFSUPPORT -DREF_OFFSET -DSUPPORTGC -DJAVA_HEAP_SIZE="$heap" \
+if ! gcc -O3 -w -fno-strict-aliasing -fwrapv -ffp-contract=off -DPC64 -DPRINTFSUPPORT -DREF_OFFSET -DSUPPORTGC -DJAVA_HEAP_SIZE="$heap" \
         -mincoming-stack-boundary=3 -mstackrealign -I. -o "$work/a.out" \
         classes.c icecapvm.c methodinterpreter.c methods.c gc.c natives_allOS.c natives_i86.c \
         rom_heap.c allocation_point.c rom_access.c print.c x86_64_interrupt.s "${natives[@]}" \

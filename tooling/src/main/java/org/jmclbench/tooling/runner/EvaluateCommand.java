@@ -14,8 +14,10 @@ import org.jmclbench.tooling.report.EvaluationDocument;
 import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.JdkInstaller;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
+import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.store.StoreArchive;
+import org.jmclbench.tooling.runtime.RuntimeKind;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -259,11 +261,13 @@ public final class EvaluateCommand implements Callable<Integer> {
             for (Sourced<String> r : spec.runtimes) {
                 String name = r.value();
                 if (name.equals("native")) {
-                    long nativeProfiles = profiles.stream().map(EvaluateCommand::nativePart).distinct().count();
+                    long nativeProfiles = distinctFor(profiles, RuntimeKind.NATIVE);
                     nativeCells += (int) nativeProfiles * (int) memory.stream().filter(x -> Engines.memoryStyles(Engines.NATIVE).contains(x)).count();
                 } else if (name.equals(HVM)) {
                     // its own engine; a run starts the tool's JVM around the executable (docs/HVM.md), so it costs what a JVM run does
-                    jvmCells += profiles.size() * (int) memory.stream().filter(x -> Engines.memoryStyles(HVM).contains(x)).count();
+                    // once per profile it keeps (default compiled, int interpreted, fifo, pinned)
+                    jvmCells += (int) distinctFor(profiles, RuntimeKind.HVM)
+                            * (int) memory.stream().filter(x -> Engines.memoryStyles(HVM).contains(x)).count();
                 } else {
                     for (String e : engines) {
                         jvmCells += profiles.size() * (int) memory.stream().filter(x -> Engines.memoryStyles(e).contains(x)).count();
@@ -289,14 +293,8 @@ public final class EvaluateCommand implements Callable<Integer> {
         return l.isEmpty() ? dflt : (int) l.stream().map(x -> ((Sourced<?>) x).value()).distinct().count();
     }
 
-    /** What of a profile a native run keeps (docs/RUNNER.md: fifo and pinned only). */
-    private static String nativePart(String profile) {
-        List<String> keep = new ArrayList<>();
-        for (String c : profile.split("\\+")) {
-            if (c.equals("fifo") || c.equals("pinned")) {
-                keep.add(c);
-            }
-        }
-        return String.join("+", keep);
+    /** How many distinct profiles a runtime of that kind runs of these (docs/RUNNER.md: what each kind keeps). */
+    private static long distinctFor(List<String> profiles, RuntimeKind kind) {
+        return profiles.stream().map(p -> Profile.parse(p, "profiles").effectiveFor(kind).name()).distinct().count();
     }
 }

@@ -1,5 +1,7 @@
 package org.jmclbench.verification.jpf;
 
+import java.util.List;
+
 import gov.nasa.jpf.Config;
 import gov.nasa.jpf.JPF;
 import gov.nasa.jpf.jvm.bytecode.AASTORE;
@@ -106,10 +108,9 @@ public final class AreaReferenceListener extends MemoryRuleListener {
         for (ElementInfo ei : vm.getHeap().liveObjects()) {
             AreaTag t = ei.getObjectAttr(AreaTag.class);
             if (t != null && t.area == area.getObjectRef()) {
-                location = LocatedProperty.of(t.allocator);
-                violation = "an object of " + ei.getClassInfo().getName() + " allocated by " + location + " in "
-                        + name(vm, t.area) + " is still reachable when the release ends";
-                ti.breakTransition("areaNotEmpty");
+                String location = LocatedProperty.of(t.allocator);
+                violated(ti, "an object of " + ei.getClassInfo().getName() + " allocated by " + location + " in "
+                        + name(vm, t.area) + " is still reachable when the release ends", List.of(location));
                 return;
             }
         }
@@ -181,11 +182,10 @@ public final class AreaReferenceListener extends MemoryRuleListener {
         }
         String target = isStatic ? "static field " + field
                 : (field == null ? "an array " : "field " + field + " of an object ") + "in " + name(vm, holderArea);
-        location = LocatedProperty.of(insn.getMethodInfo());
-        violation = location + ":" + insn.getLineNumber() + " stores a reference to an object of "
+        String location = LocatedProperty.of(insn.getMethodInfo());
+        violated(ti, location + ":" + insn.getLineNumber() + " stores a reference to an object of "
                 + vm.getHeap().get(value).getClassInfo().getName() + " in " + name(vm, valueArea)
-                + " (shorter-lived) into " + target;
-        ti.breakTransition("areaReference");
+                + " (shorter-lived) into " + target, List.of(location));
     }
 
     /** Whether the field holds a reference; JPF's isReferenceField is false for primitive arrays. */

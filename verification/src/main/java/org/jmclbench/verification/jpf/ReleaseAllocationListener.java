@@ -1,5 +1,7 @@
 package org.jmclbench.verification.jpf;
 
+import java.util.List;
+
 import gov.nasa.jpf.Config;
 import gov.nasa.jpf.JPF;
 import gov.nasa.jpf.jvm.bytecode.LDC;
@@ -57,10 +59,9 @@ public final class ReleaseAllocationListener extends MemoryRuleListener {
             return;
         }
         StackFrame top = ti.getTopFrame();
-        location = top == null ? "?" : LocatedProperty.of(top.getMethodInfo());
-        String where = top == null ? "?" : location + ":" + top.getLine();
-        violation = "release of " + release + " allocated a " + ei.getClassInfo().getName() + " at " + where;
-        ti.breakTransition("releaseAllocation");
+        String location = top == null ? "?" : LocatedProperty.of(top.getMethodInfo());
+        String at = top == null ? "?" : location + ":" + top.getLine();
+        violated(ti, "release of " + release + " allocated a " + ei.getClassInfo().getName() + " at " + at, List.of(location));
     }
 
     private boolean matches(String cls) {

@@ -200,7 +200,12 @@ final class EvaluationData {
      * percentile-bootstrap interval (never below zero; the mean alone with one repetition).
      */
     static String agg(ReportModel.Cell c, Metric m, int decimals) {
-        ReportModel.Agg a = c.metrics.get(m.name());
+        return agg(c, m.name(), decimals);
+    }
+
+    /** {@link #agg(ReportModel.Cell, Metric, int)} of the cell's aggregate under {@code key} (a task metric's, a warm-up split's). */
+    static String agg(ReportModel.Cell c, String key, int decimals) {
+        ReportModel.Agg a = c.metrics.get(key);
         if (a == null || a.mean() == null) {
             return "n/a";
         }

@@ -12,8 +12,8 @@ import static org.jmclbench.tooling.report.EvaluationData.*;
 
 /**
  * The evaluation's sections that answer the real-time question per task and the thesis's open
- * questions: deadline accounting and response time at the comparison load, generic vs real-time
- * scheduling, an idle vs a loaded machine, and steady state vs warm-up. Part of
+ * questions: deadline accounting and response time at the comparison load, abort latency under
+ * terminate, generic vs real-time scheduling, an idle vs a loaded machine, and steady state vs warm-up. Part of
  * {@link EvaluationDocument}, writing into the same text.
  */
 final class EvaluationQuestions extends EvaluationSections {
@@ -114,8 +114,9 @@ final class EvaluationQuestions extends EvaluationSections {
         }
         List<List<String>> rows = new ArrayList<>();
         for (ReportModel.Cell c : at) {
-            rows.add(List.of(c.config, String.valueOf(c.ok), task(c, TaskMetric.ABORTED, 1), task(c, TaskMetric.ABORT_P50, 3),
-                    task(c, TaskMetric.ABORT_P99, 3), task(c, TaskMetric.ABORT_MAX, 3)));
+            rows.add(List.of(c.config, String.valueOf(c.ok), agg(c, TaskMetric.ABORTED.key("all"), 1),
+                    agg(c, TaskMetric.ABORT_P50.key("all"), 3), agg(c, TaskMetric.ABORT_P99.key("all"), 3),
+                    agg(c, TaskMetric.ABORT_MAX.key("all"), 3)));
         }
         line(String.format(Locale.ROOT, "Table 6b: under terminate at %d particles, per configuration: the jobs aborted per run and "
                 + "the abort latency, from the abort request (the gate's request, or the AIE fired at the job) to the aborted job's "
@@ -132,12 +133,6 @@ final class EvaluationQuestions extends EvaluationSections {
         }
         figure("abort-latency-" + n, "Figure 6b: abort latency by percentile under terminate, " + n + " particles (every aborted "
                 + "job of every repetition merged, log scales).", () -> charts.write(spectrum.withStem("abort-latency-" + n)));
-    }
-
-    /** A per-task metric of both tasks ({@code all}) with its interval. */
-    private static String task(ReportModel.Cell c, TaskMetric m, int decimals) {
-        ReportModel.Agg a = c.metrics.get(m.key("all"));
-        return a == null || a.mean() == null ? "n/a" : a.interval().text(decimals);
     }
 
     /** An idle machine against the same runs beside a CPU or allocation load (the thesis's further work). */
@@ -192,8 +187,8 @@ final class EvaluationQuestions extends EvaluationSections {
         }
         List<List<String>> rows = new ArrayList<>();
         for (ReportModel.Cell c : cells) {
-            rows.add(List.of(c.config, c.dataset, String.valueOf(c.particles), String.valueOf(c.ok), key(c, "WARM_RESPONSE_P99", 3),
-                    key(c, "STEADY_RESPONSE_P99", 3), key(c, "WARM_MISSES", 1), key(c, "STEADY_MISSES", 1)));
+            rows.add(List.of(c.config, c.dataset, String.valueOf(c.particles), String.valueOf(c.ok), agg(c, "WARM_RESPONSE_P99", 3),
+                    agg(c, "STEADY_RESPONSE_P99", 3), agg(c, "WARM_MISSES", 1), agg(c, "STEADY_MISSES", 1)));
         }
         line("Table 9: the response time p99 (completed jobs, ms) and the jobs missed or late in the warm-up window (jobs "
                 + "released in the run's first 2 s) and after it, per run (mean over repetitions).");
@@ -205,15 +200,6 @@ final class EvaluationQuestions extends EvaluationSections {
     /** The cells of one policy and particle count as a figure's scope. */
     private ChartSpecs.Scope scope(String policy, int particles, List<ReportModel.Cell> cells) {
         return new ChartSpecs.Scope(model, new ChartSpec.Setting(data.dataset, policy, particles), cells);
-    }
-
-    /** A metric of {@link ReportModel#WARMUP_METRICS}, as {@link EvaluationData#agg} writes a Metric. */
-    private static String key(ReportModel.Cell c, String name, int decimals) {
-        ReportModel.Agg a = c.metrics.get(name);
-        if (a == null || a.mean() == null) {
-            return "n/a";
-        }
-        return a.interval().text(decimals);
     }
 
     /** A task's miss ratio, pooled over the repetitions, as a percentage with its 95% Wilson interval. */

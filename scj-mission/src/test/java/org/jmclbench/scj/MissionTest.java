@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import org.jmclbench.core.mcl.AbortSignal;
@@ -241,18 +242,29 @@ class MissionTest {
 
     @Test
     void preallocatedReleasesAllocateNothing() {
-        // a first mission takes the JVM's one-offs (class initialisation, a JIT compile request that
-        // resolves a class's string literals on the requesting thread), as the scj engine's
-        // class-loading mission does before the measured one; the second must allocate nothing
-        launch(config(500, MclConfig.Memory.PREALLOCATED, OverrunPolicy.QUEUE, 1.0), new SyntheticInput(1.0));
-        Launch l = launch(config(500, MclConfig.Memory.PREALLOCATED, OverrunPolicy.QUEUE, 1.0), new SyntheticInput(1.0));
-        assertTrue(l.report.succeeded(), () -> String.valueOf(l.report.failure()));
-        assumeTrue(l.report.allocationMeasured(), "this JVM does not count allocated bytes");
-        for (String handler : new String[] {"predict", "update", "sensor"}) {
-            AreaUsage a = privateArea(l.report, handler);
-            assertTrue(a.cycles() > 0, handler + ": no release measured");
-            assertEquals(0, a.totalBytes(), handler + ": releases allocated " + a);
+        // HotSpot's one-offs allocate on whichever thread meets them: class initialisation, and a C2
+        // compile request, which resolves the compiled class's string constants on the requesting
+        // thread (48 B: one String). They can land in any mission, but never twice in the same
+        // place; an allocation in our code repeats in every mission. So: some mission of three
+        // allocates nothing in any handler's private memory.
+        String allocated = null;
+        for (int attempt = 0; attempt < 3; attempt++) {
+            Launch l = launch(config(500, MclConfig.Memory.PREALLOCATED, OverrunPolicy.QUEUE, 1.0), new SyntheticInput(1.0));
+            assertTrue(l.report.succeeded(), () -> String.valueOf(l.report.failure()));
+            assumeTrue(l.report.allocationMeasured(), "this JVM does not count allocated bytes");
+            allocated = null;
+            for (String handler : new String[] {"predict", "update", "sensor"}) {
+                AreaUsage a = privateArea(l.report, handler);
+                assertTrue(a.cycles() > 0, handler + ": no release measured");
+                if (a.totalBytes() != 0 && allocated == null) {
+                    allocated = handler + ": releases allocated " + a;
+                }
+            }
+            if (allocated == null) {
+                return;
+            }
         }
+        fail("three missions in a row allocated; the last: " + allocated);
     }
 
     @Test

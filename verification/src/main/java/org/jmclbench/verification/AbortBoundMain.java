@@ -6,9 +6,12 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.TreeMap;
 
 import org.jmclbench.core.mcl.MotionModel;
 import org.jmclbench.verification.bytecode.AbortBound;
@@ -108,19 +111,12 @@ public final class AbortBoundMain {
                 paths.add(Paths.get(p));
             }
             ClassPool pool = ClassPool.of(paths);
-            List<ClassPool.Owned> entries = new ArrayList<>();
-            for (String[] e : job.entries()) {
-                ClassPool.Owned m = method(pool, e[0], e[1], e[2]);
-                if (m == null) {
-                    return bad(err, "--classes: " + classes + " has no " + e[0].replace('/', '.') + "." + e[1]
-                            + " (not the workload jar?)");
-                }
-                entries.add(m);
+            List<ClassPool.Owned> entries = entries(pool, job);
+            if (entries == null) {
+                return bad(err, "--classes: " + classes + " has no " + String.join(" or ", Arrays.stream(job.entries())
+                        .map(e -> e[0].replace('/', '.') + "." + e[1]).toList()) + " (not the workload jar?)");
             }
-            Map<String, String> known = Map.of("org/jmclbench/workload/rtsj/RtsjDesign", design.toUpperCase(Locale.ROOT));
-            AbortBound.Result r = new AbortBound(pool, n -> n.startsWith("org/jmclbench/") && !n.startsWith("org/jmclbench/rtsjcompat/")
-                    && (n.equals(localizer) || !LOCALIZERS.containsValue(n)), MotionModel.ABORT_BLOCK, job.mode(), known)
-                    .analyse(entries);
+            AbortBound.Result r = analyse(pool, job, entries, design, localizer);
             report(out, engine + (engine.equals("rtsj") ? " " + design : "") + ", memory " + memory, job, entries, r, summary);
             return 0;
         } catch (IOException e) {
@@ -138,6 +134,63 @@ public final class AbortBoundMain {
                     "AsynchronouslyInterruptedException;)V"}}, AbortBound.Mode.ATC);
             default -> null;
         };
+    }
+
+    /** The job's entry methods in the pool, or null when one is missing. */
+    private static List<ClassPool.Owned> entries(ClassPool pool, Job job) {
+        List<ClassPool.Owned> entries = new ArrayList<>();
+        for (String[] e : job.entries()) {
+            ClassPool.Owned m = method(pool, e[0], e[1], e[2]);
+            if (m == null) {
+                return null;
+            }
+            entries.add(m);
+        }
+        return entries;
+    }
+
+    private static AbortBound.Result analyse(ClassPool pool, Job job, List<ClassPool.Owned> entries, String design, String localizer) {
+        Map<String, String> known = Map.of("org/jmclbench/workload/rtsj/RtsjDesign", design.toUpperCase(Locale.ROOT));
+        return new AbortBound(pool, n -> n.startsWith("org/jmclbench/") && !n.startsWith("org/jmclbench/rtsjcompat/")
+                && (n.equals(localizer) || !LOCALIZERS.containsValue(n)), MotionModel.ABORT_BLOCK, job.mode(), known)
+                .analyse(entries);
+    }
+
+    /**
+     * The static bound of every engine's job in every memory style, as the store names engines
+     * ({@code rtsj} is the thesis design, {@code rtsj-atomic} the atomic one; the hvm compiles the
+     * scj engine's job, loops and polls as they are): what {@code verify} writes into
+     * verification.json for the report to draw beside the measured abort latency. Jobs whose
+     * classes the pool lacks are left out.
+     */
+    static List<Map<String, Object>> allBounds(ClassPool pool) {
+        List<Map<String, Object>> bounds = new ArrayList<>();
+        for (String engine : List.of("javase", "scj", "hvm", "rtsj", "rtsj-atomic")) {
+            Job job = job(engine.startsWith("rtsj") ? "rtsj" : engine);
+            List<ClassPool.Owned> entries = entries(pool, job);
+            if (entries == null) {
+                continue;
+            }
+            for (Map.Entry<String, String> style : new TreeMap<>(LOCALIZERS).entrySet()) {
+                if (pool.get(style.getValue()) == null) {
+                    continue;
+                }
+                AbortBound.Result r = analyse(pool, job, entries, engine.equals("rtsj-atomic") ? "atomic" : "thesis", style.getValue());
+                Map<String, Object> b = new LinkedHashMap<>();
+                b.put("engine", engine);
+                b.put("memory", style.getKey());
+                long steps = r.longestSteps();
+                boolean whole = r.wholeJob() || steps == AbortPollCheck.UNKNOWN;
+                // null: no abort point bounds the gap, so an abort waits for the job's end
+                b.put("steps", whole ? null : steps);
+                b.put("bytecodes", whole ? null : r.longestBytecodes());
+                b.put("wholeJob", r.wholeJob());
+                b.put("at", r.longest() == null ? null : r.longest().where());
+                b.put("deferrals", r.deferrals());
+                bounds.add(b);
+            }
+        }
+        return bounds;
     }
 
     private static ClassPool.Owned method(ClassPool pool, String owner, String name, String descEnd) {

@@ -182,6 +182,15 @@ public final class VerifyMain {
         doc.put("seconds", Math.round(total * 10) / 10.0);
         doc.put("budget", Map.of("checkSeconds", timeout, "heapMegabytes", heap));
         doc.put("checks", rows);
+        // The static side of termination (issue 19), for the report to draw beside the measured abort latency.
+        List<Map<String, Object>> bounds = AbortBoundMain.allBounds(pool);
+        doc.put("abortBounds", bounds);
+        for (Map<String, Object> b : bounds) {
+            if ("preallocated".equals(b.get("memory"))) {
+                System.out.printf("abort bound: %-12s %s%n", b.get("engine"), b.get("steps") == null
+                        ? "the whole job (no abort point bounds it)" : b.get("steps") + " particle steps, at " + b.get("at"));
+            }
+        }
         if (out != null) {
             if (only != null) {
                 doc.put("only", only);

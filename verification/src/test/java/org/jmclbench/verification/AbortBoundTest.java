@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Map;
 
 import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.mcl.MotionModel;
 import org.jmclbench.rtsjcompat.Atc;
 import org.jmclbench.verification.bytecode.AbortBound;
 import org.jmclbench.verification.bytecode.AbortPollCheck;
@@ -95,6 +96,26 @@ class AbortBoundTest {
         assertTrue(r.deferrals().get(0).startsWith("org.jmclbench.verification.seeded.bound.AtcJob.job:"), r.deferrals().toString());
         assertTrue(r.deferrals().get(0).contains("synchronized block"), r.deferrals().get(0));
         assertTrue(r.deferrals().get(1).startsWith("non-AI code"), r.deferrals().toString());
+    }
+
+    @Test
+    void verifyRecordsEachShippedEnginesBoundForTheReport() throws Exception {
+        ClassPool shipped = ClassPool.of(List.of(codeOf(Class.forName("org.jmclbench.workload.rtsj.RtsjReplay")),
+                codeOf(Class.forName("org.jmclbench.scj.Robot")), codeOf(AbortSignal.class), codeOf(Atc.class)));
+        Map<String, Map<String, Object>> preallocated = new java.util.TreeMap<>();
+        for (Map<String, Object> b : AbortBoundMain.allBounds(shipped)) {
+            if (b.get("memory").equals("preallocated")) {
+                preallocated.put((String) b.get("engine"), b);
+            }
+        }
+        assertEquals(List.of("hvm", "javase", "rtsj", "rtsj-atomic", "scj"), List.copyOf(preallocated.keySet()));
+        for (String polling : List.of("javase", "scj", "hvm", "rtsj-atomic")) {
+            assertEquals((long) MotionModel.ABORT_BLOCK, preallocated.get(polling).get("steps"), polling);
+        }
+        Map<String, Object> thesis = preallocated.get("rtsj");
+        assertEquals(null, thesis.get("steps"), "the thesis design defers the AIE for the whole job");
+        assertEquals(true, thesis.get("wholeJob"));
+        assertTrue(thesis.get("deferrals").toString().contains("synchronized"), thesis.get("deferrals").toString());
     }
 
     @Test

@@ -113,7 +113,9 @@ final class ChartSpecs {
                     + "request, or the AIE fired at the job) to the aborted job\u2019s end, over every job an abort took hold of "
                     + "(the abort_ns column of the job files), every repetition merged; x = 1/(1\u2212p) on a log axis, latency "
                     + "(ms) on a log axis. A cooperative job ends at its next poll; the rtsj thesis design runs the job to its end "
-                    + "(the AIE deferred in the robot\u2019s monitor). The static bound beside it: ./jmclbench abort-bound.",
+                    + "(the AIE deferred in the robot\u2019s monitor). Dashed, in the runtime\u2019s colour: the static bound of "
+                    + "./jmclbench verify, the longest gap between two abort points in particle steps times the runs\u2019 costliest "
+                    + "particle step (the slowest job over its particles), or the slowest job where nothing bounds the gap.",
                     true, ChartSpecs::abortLatency),
             new Figure("breakdown", "Breakdown load (queue)", "Per runtime, the largest particle count at which every job of "
                     + "both tasks completed by its deadline in every repetition under queue, every smaller count of the store "
@@ -395,7 +397,23 @@ final class ChartSpecs {
     static ChartSpec abortLatency(Scope s) {
         ChartSpec c = percentiles(s, "abort-latency", "Abort latency by percentile, every aborted job of every repetition",
                 "abort latency (ms, log)", cell -> cell.abortSpectrum);
-        return c.series().isEmpty() ? null : c;
+        if (c.series().isEmpty()) {
+            return null;
+        }
+        // verify's static bound beside each measured spectrum: a dashed line in the runtime's colour
+        List<Series> series = new ArrayList<>(c.series());
+        for (ReportModel.Cell cell : s.ordered()) {
+            AbortBounds.Bound b = s.model().abortBounds.of(cell, s.model());
+            Double ms = b == null || cell.abortSpectrum.isEmpty() ? null : b.millis(cell);
+            if (ms != null) {
+                double right = cell.abortSpectrum.get(cell.abortSpectrum.size() - 1)[0];
+                series.add(new Series(cell.config + " static bound (" + b.span() + ")", cell.config, cell.engine,
+                        s.color(cell.config), Style.line(1.2).dashed(6, 4), List.of(new double[] {1, ms}, new double[] {right, ms}),
+                        null, null, null, null));
+            }
+        }
+        return new ChartSpec(c.id(), c.stem(), c.setting(), c.title(), c.kind(), c.horizontal(), c.x(), c.y(), c.categories(), series,
+                c.bands(), c.frame(), c.valueLabels());
     }
 
     /** One line per runtime of [1/(1-p), ms, p] points, both axes log. */

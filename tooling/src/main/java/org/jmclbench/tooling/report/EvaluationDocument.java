@@ -49,7 +49,7 @@ public final class EvaluationDocument extends EvaluationSections {
         ReportModel model;
         String period;
         try (StoredRuns store = StoredRuns.open(db, "--db")) {
-            model = ReportModel.build(store, s -> { });
+            model = ReportModel.build(store, AbortBounds.read(verificationFile), s -> { });
             List<String> starts = store.runs().stream().map(r -> r.startedAt).filter(Objects::nonNull).sorted().toList();
             period = starts.isEmpty() ? "no runs" : "runs started " + starts.get(0) + " to " + starts.get(starts.size() - 1);
         }

@@ -116,15 +116,19 @@ final class EvaluationQuestions extends EvaluationSections {
         for (ReportModel.Cell c : at) {
             rows.add(List.of(c.config, String.valueOf(c.ok), agg(c, TaskMetric.ABORTED.key("all"), 1),
                     agg(c, TaskMetric.ABORT_P50.key("all"), 3), agg(c, TaskMetric.ABORT_P99.key("all"), 3),
-                    agg(c, TaskMetric.ABORT_MAX.key("all"), 3)));
+                    agg(c, TaskMetric.ABORT_MAX.key("all"), 3), staticBound(c), withinBound(c)));
         }
         line(String.format(Locale.ROOT, "Table 6b: under terminate at %d particles, per configuration: the jobs aborted per run and "
                 + "the abort latency, from the abort request (the gate's request, or the AIE fired at the job) to the aborted job's "
                 + "end (ms; mean over repetitions of each run's percentile, with its 95%% bootstrap interval). A cooperative job "
                 + "ends at its next poll (every 64 particle steps); the RTSJ thesis design defers the AIE inside the robot's "
-                + "monitor, so its job runs to its end (`./jmclbench abort-bound` gives the static bound of each).", n));
+                + "monitor, so its job runs to its end. The static bound is `./jmclbench verify`'s: the longest gap between two "
+                + "abort points in the job's bytecode (particle steps; the whole job where nothing bounds it) times the costliest "
+                + "particle step of these runs (the slowest job of either task over its particles), in ms; the C baseline has no "
+                + "bytecode to analyse. The last column: whether the largest abort latency of any run is within it.", n));
         line("");
-        table(List.of("configuration", "runs", "aborted per run", "abort latency p50", "abort latency p99", "abort latency max"), rows);
+        table(List.of("configuration", "runs", "aborted per run", "abort latency p50", "abort latency p99", "abort latency max",
+                "static bound", "max within it"), rows);
         ChartSpec spectrum = ChartSpecs.abortLatency(scope("terminate", n, at));
         if (spectrum == null) {
             line("No abort took hold in these runs (every job ended before a later release asked it to), so there is no spectrum.");
@@ -133,6 +137,24 @@ final class EvaluationQuestions extends EvaluationSections {
         }
         figure("abort-latency-" + n, "Figure 6b: abort latency by percentile under terminate, " + n + " particles (every aborted "
                 + "job of every repetition merged, log scales).", () -> charts.write(spectrum.withStem("abort-latency-" + n)));
+    }
+
+    /** The cell's static abort bound, "64 particle steps: 0.087 ms", or "-" where none is known. */
+    private String staticBound(ReportModel.Cell c) {
+        AbortBounds.Bound b = data.model.abortBounds.of(c, data.model);
+        Double ms = b == null ? null : b.millis(c);
+        return ms == null ? "-" : String.format(Locale.ROOT, "%s: %.3f ms", b.span(), ms);
+    }
+
+    /** "yes" when the largest abort latency of the cell's runs is within its static bound, "no" when not, "-" without either. */
+    private String withinBound(ReportModel.Cell c) {
+        AbortBounds.Bound b = data.model.abortBounds.of(c, data.model);
+        Double ms = b == null ? null : b.millis(c);
+        ReportModel.Agg max = c.metrics.get(TaskMetric.ABORT_MAX.key("all"));
+        if (ms == null || max == null || max.max() == null) {
+            return "-";
+        }
+        return max.max() <= ms ? "yes" : "no";
     }
 
     /** An idle machine against the same runs beside a CPU or allocation load (the thesis's further work). */

@@ -50,13 +50,13 @@ public final class ReportCommand implements Callable<Integer> {
         if (Files.exists(out) && !Files.isDirectory(out)) {
             throw new BadUsageException("--out: " + out + ": not a folder");
         }
+        Path resultsDir = db.toAbsolutePath().getParent();
         ReportModel model;
         try (StoredRuns store = StoredRuns.open(db, "--db")) {
-            model = ReportModel.build(store, ReportCommand::progress);
+            model = ReportModel.build(store, AbortBounds.read(resultsDir.resolve(VerificationSection.FILE)), ReportCommand::progress);
         }
         Files.createDirectories(out);
         Path index = out.resolve("index.html");
-        Path resultsDir = db.toAbsolutePath().getParent();
         ReportPage.write(model, index, resultsDir);
         progress("wrote " + index);
         if (export) {

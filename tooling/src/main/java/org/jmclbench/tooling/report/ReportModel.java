@@ -49,6 +49,9 @@ public final class ReportModel {
     public List<ChartSpecs.Figure> figures = ChartSpecs.FIGURES;
     /** Every chart of every setting: the page draws them and the export writes them. */
     public List<ChartSpec> charts = new ArrayList<>();
+    /** The static bounds on abort latency, from verify (drawn beside the measured abort latency). */
+    @JsonIgnore
+    public AbortBounds abortBounds = AbortBounds.NONE;
 
     /**
      * A runtime/profile as shown in the legend and the tables, with its kind (decided once,
@@ -222,9 +225,15 @@ public final class ReportModel {
         return m;
     }
 
-    /** Builds the model, reporting progress through {@code progress} (one line a step). */
+    /** Builds the model, reporting progress through {@code progress} (one line a step), without abort bounds. */
     public static ReportModel build(StoredRuns store, Consumer<String> progress) {
+        return build(store, AbortBounds.NONE, progress);
+    }
+
+    /** Builds the model with verify's static abort bounds, reporting progress through {@code progress}. */
+    public static ReportModel build(StoredRuns store, AbortBounds bounds, Consumer<String> progress) {
         ReportModel m = new ReportModel();
+        m.abortBounds = bounds;
         m.generatedAt = java.time.Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS).toString();
         m.database = store.file().getFileName().toString();
         List<StoredRun> runs = store.runs();

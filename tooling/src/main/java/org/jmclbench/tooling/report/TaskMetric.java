@@ -26,6 +26,8 @@ public enum TaskMetric {
     RESPONSE_P99("response time p99", "ms", 1e-6, "responseTimeReleasedNs", "p99"),
     RESPONSE_MAX("response time max", "ms", 1e-6, "responseTimeReleasedNs", "max"),
     LATENCY_P99("task latency p99", "ms", 1e-6, "taskLatencyNs", "p99"),
+    /** The slowest job: with the particle count, the cost of a particle step that bounds an abort. */
+    LATENCY_MAX("task latency max", "ms", 1e-6, "taskLatencyNs", "max"),
     JITTER_P99("release jitter p99", "ms", 1e-6, "releaseJitterNs", "p99"),
     /** From the abort request to the aborted job's end, over the jobs an abort took hold of (terminate). */
     ABORT_P50("abort latency p50", "ms", 1e-6, "abortLatencyNs", "p50"),

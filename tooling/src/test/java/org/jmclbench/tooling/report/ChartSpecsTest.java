@@ -84,6 +84,52 @@ class ChartSpecsTest {
     }
 
     @Test
+    void verifysStaticBoundIsDrawnBesideEachBytecodeRuntimesAbortLatency() throws Exception {
+        // every engine and memory style of the fixture: 64 steps
+        StringBuilder bounds = new StringBuilder();
+        for (ReportModel.Cell c : model.cells) {
+            bounds.append(bounds.length() == 0 ? "" : ",").append(String.format("{\"engine\": \"%s\", \"memory\": \"%s\", "
+                    + "\"steps\": %s, \"at\": \"X.y:1\"}", c.engine, c.memory, "64"));
+        }
+        Path verification = dir.resolve("verification.json");
+        Files.writeString(verification, "{\"checks\": [], \"abortBounds\": [" + bounds + "]}");
+        ReportModel bounded;
+        try (StoredRuns store = StoredRuns.open(dir.resolve("results.db"), "--db")) {
+            bounded = ReportModel.build(store, AbortBounds.read(verification), line -> { });
+        }
+        ChartSpec c = bounded.charts.stream().filter(x -> x.id().equals("abort-latency") && x.setting().policy().equals("terminate")
+                && x.setting().particles() == 1600).findFirst().orElseThrow();
+        int lines = 0;
+        for (ReportModel.Cell cell : bounded.cells) {
+            if (!cell.policy.equals("terminate") || cell.particles != 1600 || cell.abortSpectrum.isEmpty()) {
+                continue;
+            }
+            boolean nativeRuntime = bounded.configs.stream().anyMatch(i -> i.id().equals(cell.config) && i.kind() == RuntimeKind.NATIVE);
+            List<ChartSpec.Series> bound = c.series().stream().filter(s -> s.config().equals(cell.config)
+                    && s.name().contains("static bound")).toList();
+            if (nativeRuntime) {
+                assertTrue(bound.isEmpty(), "C has no bytecode to bound: " + bound);
+                continue;
+            }
+            assertEquals(1, bound.size(), cell.config);
+            ChartSpec.Series s = bound.get(0);
+            assertTrue(s.style().dash() != null, "dashed");
+            double slowest = Math.max(cell.metrics.get("predict.LATENCY_MAX").max(), cell.metrics.get("update.LATENCY_MAX").max());
+            assertEquals(64 * slowest / 1600, s.points().get(0)[1], 1e-12, s.name());
+            assertEquals(s.points().get(0)[1], s.points().get(1)[1], "flat");
+            assertTrue(s.name().endsWith("(64 particle steps)"), s.name());
+            // where nothing bounds the gap (the thesis design), the bound is the slowest job itself
+            AbortBounds.Bound whole = new AbortBounds.Bound(cell.engine, cell.memory, null, "X.y:1");
+            assertEquals(slowest, whole.millis(cell), 1e-12);
+            assertEquals("the whole job", whole.span());
+            lines++;
+        }
+        assertTrue(lines > 0, "some bytecode runtime aborted a job in the fixture");
+        assertTrue(model.charts.stream().flatMap(x -> x.series().stream()).noneMatch(s -> s.name().contains("static bound")),
+                "no verification file, no bound");
+    }
+
+    @Test
     void missesAreTheCellsMeansWithTheirIntervalCutAtZero() {
         ChartSpec misses = chart("misses", "skip", null);
         assertEquals(List.of("100", "400", "1600"), misses.categories().stream().map(ChartSpec.Category::label).toList());

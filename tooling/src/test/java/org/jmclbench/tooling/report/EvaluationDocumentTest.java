@@ -69,6 +69,9 @@ class EvaluationDocumentTest {
                   {"catalog": "seeded", "id": "mission-seeded-lock-inversion", "property": "P1 no deadlock",
                    "policy": "queue", "kind": "jpf", "seeded": true, "verdict": "caught", "passed": true,
                    "seconds": 3.0, "scope": "1 odometry + 1 laser events", "states": 967}
+                ], "abortBounds": [
+                  {"engine": "javase", "memory": "preallocated", "steps": 64, "at": "A.b:1"},
+                  {"engine": "scj", "memory": "preallocated", "steps": null, "at": "C.d:2"}
                 ]}""");
         EvaluationDocument.write(db, "evaluation.db", dir.resolve("docs/EVALUATION.md"), dir.resolve("docs/evaluation"),
                 List.of("only match-quick"), verification);
@@ -213,6 +216,22 @@ class EvaluationDocumentTest {
             java.util.OptionalDouble p50 = cell.stream().map(r -> TaskMetric.ABORT_P50.of(r, "all")).filter(v -> v != null)
                     .mapToDouble(Double::doubleValue).average();
             assertEquals(p50.isPresent() ? num(p50.getAsDouble(), 3) : "n/a", row.get(3).split(" ")[0], row.toString());
+            // verify's bound: 64 steps for javase, the whole job for scj (this file's), none for C or other styles
+            String engine = row.get(0).contains("/ javase preallocated") ? "javase"
+                    : row.get(0).contains("/ scj preallocated") || row.get(0).startsWith("hvm") ? "scj" : null;
+            if (engine == null || row.get(0).startsWith("native")) {
+                assertEquals("-", row.get(6), row.toString());
+                continue;
+            }
+            double slowest = cell.stream().flatMap(r -> java.util.stream.Stream.of(TaskMetric.LATENCY_MAX.of(r, "predict"),
+                    TaskMetric.LATENCY_MAX.of(r, "update"))).mapToDouble(Double::doubleValue).max().orElseThrow();
+            double bound = engine.equals("javase") ? 64 * slowest / 1600 : slowest;
+            assertEquals((engine.equals("javase") ? "64 particle steps: " : "the whole job: ") + num(bound, 3) + " ms", row.get(6));
+            double abortMax = cell.stream().map(r -> TaskMetric.ABORT_MAX.of(r, "all")).filter(v -> v != null)
+                    .mapToDouble(Double::doubleValue).max().orElse(Double.NaN);
+            if (!Double.isNaN(abortMax)) {
+                assertEquals(abortMax <= bound ? "yes" : "no", row.get(7), row.toString());
+            }
         }
         assertTrue(doc.contains("(evaluation/abort-latency-1600.svg)") || rows.stream().allMatch(r -> r.get(3).equals("n/a")));
     }

@@ -133,7 +133,7 @@ public final class EvaluationDocument extends EvaluationSections {
         line("");
         table(List.of("host", "kernel", "CPU", "processors", "memory", "virtualisation", "PREEMPT_RT"), model.machines.stream()
                 .map(m -> List.of(s(m.hostname()), s(m.kernel()), s(m.cpu()), m.processors() == null ? "?" : m.processors().toString(),
-                        check(m, "memory"), check(m, "virtualisation"), check(m, "preempt-rt")))
+                        check(m, "memory"), check(m, "virtualisation"), preemptRt(m)))
                 .toList());
         List<String> loads = model.cells.stream().map(c -> c.load).filter(l -> l != null && !l.equals("none")).distinct().sorted().toList();
         line("Load during the runs: " + (loads.isEmpty()
@@ -179,6 +179,15 @@ public final class EvaluationDocument extends EvaluationSections {
     /** A run on the idle machine (no load scenario beside it). */
     static boolean idle(ReportModel.Cell c) {
         return c.load == null || c.load.equals("none");
+    }
+
+    /** Whether the kernel is PREEMPT_RT, by the doctor's verdict: its value alone is the kernel's version string. */
+    private static String preemptRt(ReportModel.MachineInfo m) {
+        if (m.checks() == null) {
+            return "?";
+        }
+        return m.checks().stream().filter(c -> "preempt-rt".equals(c.get("check")))
+                .map(c -> ("OK".equals(s(c.get("status"))) ? "yes (" : "no (") + s(c.get("value")) + ")").findFirst().orElse("?");
     }
 
     /** The machine's doctor check {@code name}, as stored with the runs ("?" when it was not recorded). */
@@ -337,8 +346,8 @@ public final class EvaluationDocument extends EvaluationSections {
                     + "%s ms, with a mean release jitter of %s ms (Table 3, Figure 2). %s %s", ref, best.config,
                     agg(best, Metric.LATENCY_P99, 3), agg(best, Metric.JITTER_MEAN, 3), runnerUp, vsC));
             line("");
-            findings.add(String.format(Locale.ROOT, "Lowest mean p99 latency of a JVM at %d particles: %s, %s ms; against the next "
-                    + "lowest: %s (2.3).", ref, best.config, num(mean(best, Metric.LATENCY_P99), 3), jvms.size() < 2 ? "no other JVM"
+            findings.add(String.format(Locale.ROOT, "Lowest mean p99 latency of a Java configuration (a JVM or the HVM) at %d particles: %s, %s ms; against the next "
+                    + "lowest: %s (2.3).", ref, best.config, num(mean(best, Metric.LATENCY_P99), 3), jvms.size() < 2 ? "no other Java configuration"
                     : separate(best, jvms.get(1), Metric.LATENCY_P99).text(best.config, jvms.get(1).config)));
         }
     }

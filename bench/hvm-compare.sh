@@ -3,11 +3,11 @@
 # Java SE engine) and the native C baseline: one run each at each particle count, same data and
 # policy, all under SCHED_OTHER. Prints release jitter (mean, p99), task latency per particle
 # (mean; p50 and min, which the machine's other work disturbs least) and misses per runtime.
-# The HVM runs in each mode of --hvm-modes (JMCLBENCH_HVM_MODE; runtime names hvm-compiled,
-# hvm-interpreted); --only-hvm skips HotSpot and C.
+# The HVM runs in each mode of --hvm-modes (JMCLBENCH_HVM_MODE: compiled, interpreted, hot; runtime
+# names hvm-compiled, ...); --only-hvm skips HotSpot and C.
 #
 #   bench/hvm-compare.sh [--particles 100,400,1600] [--policy skip] [--dataset match-short] [-O DIR]
-#                        [--hvm-modes compiled,interpreted] [--only-hvm]
+#                        [--hvm-modes compiled,interpreted,hot] [--only-hvm]
 #
 # Needs HVM_SRC (docs/HVM.md). A benchmark, not a test: figures depend on the machine and its load.
 set -euo pipefail
@@ -17,7 +17,7 @@ particles=100,400,1600
 policy=skip
 dataset=match-short
 out=
-hvm_modes=compiled,interpreted
+hvm_modes=compiled,interpreted,hot
 only_hvm=0
 while [ $# -gt 0 ]; do
     case "$1" in

@@ -4,12 +4,14 @@
 # and natives of hvm/mission) and prints its path. Cached beside the tool chain, keyed by the
 # sources, the natives, the heap size and the mode.
 #
-#   hvm/build-mission.sh [--heap BYTES] [--mode compiled|interpreted]
+#   hvm/build-mission.sh [--heap BYTES] [--mode compiled|interpreted|hot]
 #
 # --mode (default: $JMCLBENCH_HVM_MODE, else compiled): compiled translates every method but main
 # to C (icecap -aot, with our patches 13-21; a method that handles floats stays interpreted);
-# interpreted runs every method in icecap's interpreter (the hvm runtime's profile int). The mode
-# is part of the cache key and is written to MODE beside the executable (summary.json's engine.mode).
+# interpreted runs every method in icecap's interpreter (the hvm runtime's profile int); hot
+# compiles only the methods hvm/mission/hot-methods.txt lists and interprets the rest (patch 22;
+# the profile hot). The mode (and hot's list) is part of the cache key and is written to MODE
+# beside the executable (summary.json's engine.mode).
 # Needs what build-hvm.sh needs (HVM_SRC, ...).
 set -euo pipefail
 
@@ -23,19 +25,22 @@ while [ $# -gt 0 ]; do
     case "$1" in
         --heap) heap=$2; shift 2 ;;
         --mode) mode=$2; shift 2 ;;
-        -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "build-mission: unknown option: $1" >&2; exit 2 ;;
     esac
 done
 case "$mode" in
-    interpreted|compiled) ;;
-    *) echo "build-mission: the mode (--mode or JMCLBENCH_HVM_MODE) must be interpreted or compiled: $mode" >&2; exit 2 ;;
+    interpreted|compiled|hot) ;;
+    *) echo "build-mission: the mode (--mode or JMCLBENCH_HVM_MODE) must be interpreted, compiled or hot: $mode" >&2; exit 2 ;;
 esac
+hot_list=$HERE/mission/hot-methods.txt
+list=()
+[ "$mode" != hot ] || list=(--methods "$hot_list")
 
 tc=$("$HERE/build-hvm.sh")
 srcs=("$ROOT/core-immortal/src/main/java" "$ROOT/scj-mission/src/main/java" "$HERE/mission/src")
 key=$( { find "${srcs[@]}" -name '*.java' -print0 | sort -z | xargs -0 sha256sum | sed "s|$ROOT/||";
-         sha256sum "$HERE/mission/natives.c" "$HERE/hvmc.sh" | sed "s|$ROOT/||"; echo "heap $heap"; echo "mode $mode"; } \
+         sha256sum "$HERE/mission/natives.c" "$HERE/hvmc.sh" "$hot_list" | sed "s|$ROOT/||"; echo "heap $heap"; echo "mode $mode"; } \
        | sha256sum | cut -c1-16)
 out=$tc/mission-$key
 exe=$out/jmclbench-hvm
@@ -57,7 +62,7 @@ if ! javac -nowarn -source 8 -target 8 -encoding UTF-8 -bootclasspath "$tc/rt.ja
 fi
 mkdir -p "$work/out"
 "$HERE/hvmc.sh" --toolchain "$tc" --classes "$work/classes" --main org.jmclbench.hvm.HvmMain \
-    --natives "$HERE/mission/natives.c" --heap "$heap" --mode "$mode" --log "$work/hvmc.log" -o "$work/out/jmclbench-hvm" \
+    --natives "$HERE/mission/natives.c" --heap "$heap" --mode "$mode" "${list[@]}" --log "$work/hvmc.log" -o "$work/out/jmclbench-hvm" \
     || { tail -20 "$work/hvmc.log" >&2; exit 1; }
 cp "$work/hvmc.log" "$work/out/build.log"
 echo "$mode" > "$work/out/MODE"

@@ -2,14 +2,17 @@
 # Compiles a Java program into an icecap HVM executable with a tool chain built by build-hvm.sh.
 #
 #   hvm/hvmc.sh --toolchain DIR --classes CP --main pkg.Class [--natives FILE.c]...
-#               [--mode interpreted|compiled] [--heap BYTES] [--log FILE] [--keep-c DIR]
-#               -o EXECUTABLE
+#               [--mode interpreted|compiled|hot [--methods LIST]] [--heap BYTES] [--log FILE]
+#               [--keep-c DIR] -o EXECUTABLE
 #
 # --mode: interpreted (the default) translates no method (the VM interprets the bytecode);
 # compiled translates every method to C except those named main (icecap's -aot), and except
 # methods that handle floats (patch 18; they stay interpreted). With patches 13-21 compiled code
-# follows Java for int, long and double, array bounds included (issue 18). The mission's default
-# (build-mission.sh) is compiled; this script's stays interpreted, and its callers say which.
+# follows Java for int, long and double, array bounds included (issue 18). hot translates only the
+# methods LIST names (patch 22: lines pkg.Class.method, pkg.Class.method(descriptor) or
+# pkg.Class.*; '#' comments) and interprets the rest; an entry that names no method of the program
+# is an error. The mission's default (build-mission.sh) is compiled; this script's stays
+# interpreted, and its callers say which.
 # CP: the program's class folders (':'-separated), compiled for Java 8 against DIR/rt.jar
 # (-bootclasspath) and DIR/sdk. FILE.c: C natives of the program (functions named
 # n_<package>_<Class>_<method>(int32 *sp)); they are compiled with the generated VM, with its
@@ -20,7 +23,7 @@
 # temporary folder; gcc links it with the flags below.
 set -euo pipefail
 
-tc= classes= main= heap=16000000 out= log= mode=interpreted keep=
+tc= classes= main= heap=16000000 out= log= mode=interpreted keep= methods=
 natives=()
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -32,8 +35,9 @@ while [ $# -gt 0 ]; do
         --log) log=$2; shift 2 ;;
         --mode) mode=$2; shift 2 ;;
         --keep-c) keep=$2; shift 2 ;;
+        --methods) methods=$2; shift 2 ;;
         -o) out=$2; shift 2 ;;
-        -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "hvmc: unknown option: $1" >&2; exit 2 ;;
     esac
 done
@@ -46,8 +50,11 @@ out=$(readlink -f "$out")
 [ -f "$tc/KEY" ] || { echo "hvmc: $tc is not a tool chain built by build-hvm.sh" >&2; exit 2; }
 case "$heap" in ''|*[!0-9]*) echo "hvmc: --heap must be a number of bytes: $heap" >&2; exit 2 ;; esac
 case "$mode" in
-    compiled|interpreted) ;;
-    *) echo "hvmc: --mode must be interpreted or compiled: $mode" >&2; exit 2 ;;
+    compiled|interpreted) [ -z "$methods" ] || { echo "hvmc: --methods: only with --mode hot" >&2; exit 2; } ;;
+    hot) [ -n "$methods" ] || { echo "hvmc: --mode hot needs --methods LIST" >&2; exit 2; }
+         [ -f "$methods" ] || { echo "hvmc: --methods: no such file: $methods" >&2; exit 2; }
+         methods=$(readlink -f "$methods") ;;
+    *) echo "hvmc: --mode must be interpreted, compiled or hot: $mode" >&2; exit 2 ;;
 esac
 
 pkg=${main%.*}
@@ -65,7 +72,10 @@ trap 'rm -rf "$work"' EXIT
 # The compiler reads hvm.properties from its working folder for the VM sources to copy.
 echo "vmSourceFolder=$tc/src/icecapvm/src" > "$work/hvm.properties"
 aot=()
-[ "$mode" = interpreted ] || aot=(-aot)
+case "$mode" in
+    compiled) aot=(-aot) ;;
+    hot) aot=("-aot=$methods") ;;
+esac
 mkdir "$work/c"
 if ! (cd "$work" && java -cp "$tc/tools:$tc/lib/bcel-6.0.jar" main.CompilationManager \
         "$abs_cp$tc/sdk:$tc/rt.jar" "$pkg" "$cls" "$work/c/" "${aot[@]}") >> "$log" 2>&1 \
@@ -73,6 +83,20 @@ if ! (cd "$work" && java -cp "$tc/tools:$tc/lib/bcel-6.0.jar" main.CompilationMa
     echo "hvmc: the icecap compiler failed for $main (log: $log):" >&2
     grep -m1 -A4 "Couldn't find\|Exception in thread" "$log" >&2 || tail -5 "$log" >&2
     exit 1
+fi
+
+# A hot build: the compiler names each listed method it met ("aot list: ..."), and each entry no
+# method matched; a tool chain without patch 22 names none (it ignored the list).
+if [ "$mode" = hot ]; then
+    if ! grep -q "^aot list: " "$log"; then
+        echo "hvmc: --methods $methods: the compiler did not read the list (a tool chain without patch 22?)" | tee -a "$log" >&2
+        exit 1
+    fi
+    if grep -q "^aot list: not in the program: " "$log"; then
+        echo "hvmc: --methods $methods: $(grep -m1 "^aot list: not in the program: " "$log" | sed 's/^aot list: not in the program: //')" \
+            "names no method of $main" | tee -a "$log" >&2
+        exit 2
+    fi
 fi
 
 # -mincoming-stack-boundary=3 -mstackrealign: the VM's threads start on stacks it allocates

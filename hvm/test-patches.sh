@@ -4,9 +4,11 @@
 # status not 0, or a hang stopped by the timeout): the proof that each test can fail.
 # Each program runs in the modes its row names: interpreted (every method interpreted) and/or
 # compiled (hvmc.sh --mode compiled: icecap -aot translates every method but main to C, so these
-# programs keep their logic outside main). Upstream, a compiled program may also fail by not
-# compiling (the code generator refuses a bytecode it lacks, or crashes): that counts as failing
-# there; any other build failure is a broken test.
+# programs keep their logic outside main) and/or hot (--mode hot: only the methods NAME.methods
+# lists are compiled; the compiler's log must name exactly those). Upstream, a compiled program
+# may also fail by not compiling (the code generator refuses a bytecode it lacks, or crashes), and
+# a hot one by the compiler ignoring its list: that counts as failing there; any other build
+# failure is a broken test.
 #
 #   hvm/test-patches.sh [--unpatched] [--only=NAME]
 #
@@ -42,6 +44,7 @@ tests=(
     "FloatOps 18-float-interpreted interpreted,compiled"
     "ArrayBounds 19-array-bounds interpreted,compiled"
     "FloorCeil 21-strictmath-floor-ceil interpreted,compiled"
+    "HotMethods 22-aot-listed-methods hot"
 )
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-patches.XXXXXX")
@@ -60,9 +63,13 @@ for variant in "${variants[@]}"; do
         for mode in ${modes//,/ }; do
             exe=$work/$variant/$name-$mode
             rc=0
+            list=()
+            [ "$mode" != hot ] || list=(--methods "$HERE/tests/hvmtest/$name.methods")
             if ! "$HERE/hvmc.sh" --toolchain "$tc" --classes "$work/$variant/classes" --main "hvmtest.$name" \
-                    "${nat[@]}" --mode "$mode" --heap 4000000 --log "$exe.log" -o "$exe" 2>/dev/null; then
-                if [ "$mode" = compiled ] && grep -q "unsupported byte code" "$exe.log"; then
+                    "${nat[@]}" --mode "$mode" "${list[@]}" --heap 4000000 --log "$exe.log" -o "$exe" 2>/dev/null; then
+                if [ "$mode" = hot ] && grep -q "the compiler did not read the list" "$exe.log"; then
+                    result="fail (the compiler ignores the list)"; rc=-2
+                elif [ "$mode" = compiled ] && grep -q "unsupported byte code" "$exe.log"; then
                     result="fail (the compiler refuses a bytecode)"; rc=-2
                 elif [ "$mode" = compiled ] && grep -q "^Exception in thread \"main\"" "$exe.log"; then
                     result="fail (the compiler crashes)"; rc=-2
@@ -73,6 +80,13 @@ for variant in "${variants[@]}"; do
             else
                 timeout "$TIMEOUT" "$exe" > "$exe.out" 2>&1 || rc=$?
                 case $rc in 0) result=pass ;; 124) result="fail (hung, stopped after ${TIMEOUT}s)" ;; *) result="fail (exit $rc)" ;; esac
+                if [ "$mode" = hot ] && [ $rc = 0 ]; then
+                    # each entry of the list matched one method (no overloads here), and nothing else was compiled
+                    entries=$(sed 's/#.*//' "$HERE/tests/hvmtest/$name.methods" | awk 'NF' | wc -l)
+                    if [ "$(grep -c '^aot list: ' "$exe.log")" != "$entries" ]; then
+                        result="fail (the log does not name the $entries listed methods)"; rc=-3
+                    fi
+                fi
             fi
             if [ "$variant" = patched ]; then expect=pass; else expect=fail; fi
             verdict=ok

@@ -43,6 +43,7 @@ public record Execution(String execution, String scheduling, String priorities, 
         return switch (mode) {
             case "compiled" -> "Java compiled to C ahead of time";
             case "interpreted" -> "interpreter";
+            case "hot" -> "hot methods compiled to C, the rest interpreted";
             case "" -> "mode not recorded";
             default -> mode;
         };

@@ -55,7 +55,7 @@ public record Profile(String name, List<ProfileComponent> components) {
 
     /**
      * What a run of that kind keeps of this profile ({@link ProfileComponent#appliesTo}): a native
-     * run only the OS components, the HVM those and {@code int}; {@code default} when none is left.
+     * run only the OS components, the HVM those, {@code int} and {@code hot}; {@code default} when none is left.
      */
     public Profile effectiveFor(RuntimeKind kind) {
         List<ProfileComponent> kept = components.stream().filter(c -> c.appliesTo(kind)).toList();
@@ -65,9 +65,12 @@ public record Profile(String name, List<ProfileComponent> components) {
         return new Profile(kept.stream().map(ProfileComponent::id).collect(Collectors.joining("+")), kept);
     }
 
-    /** The icecap HVM's mode of this profile: {@code interpreted} with {@code int}, else {@code compiled} (docs/HVM.md). */
+    /**
+     * The icecap HVM's mode of this profile: {@code interpreted} with {@code int}, {@code hot} with
+     * {@code hot}, else {@code compiled} (docs/HVM.md).
+     */
     public String hvmMode() {
-        return has(ProfileComponent.INT) ? "interpreted" : "compiled";
+        return has(ProfileComponent.INT) ? "interpreted" : has(ProfileComponent.HOT) ? "hot" : "compiled";
     }
 
     public boolean has(ProfileComponent c) {

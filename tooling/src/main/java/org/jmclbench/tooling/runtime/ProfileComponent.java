@@ -21,6 +21,8 @@ public enum ProfileComponent {
     /** A JVM's -Xint; on the icecap HVM, its interpreter instead of the mission compiled to C. */
     INT(Category.JIT, "interpreter only", "-Xint"),
     C1(Category.JIT, "C1 only", "-XX:TieredStopAtLevel=1"),
+    /** The icecap HVM only: the hot methods compiled to C (hvm/mission/hot-methods.txt), the rest interpreted. */
+    HOT(Category.JIT, "hot methods compiled to C, the rest interpreted (icecap HVM only)"),
     /** Commits and touches the whole heap at start, so that no page fault happens while measuring. */
     PRETOUCH(Category.HEAP, "pre-touched fixed heap (-Xms=-Xmx)", "-XX:+AlwaysPreTouch"),
     FIFO(Category.OS, "SCHED_FIFO priority " + ProfileComponent.FIFO_PRIORITY + " via chrt"),
@@ -62,14 +64,14 @@ public enum ProfileComponent {
 
     /**
      * Whether a runtime of this kind takes the component: a JVM every one; a native program only
-     * scheduling and pinning; the icecap HVM those and {@code int}, its interpreter (compiled to C is
-     * its default, docs/HVM.md).
+     * scheduling and pinning; the icecap HVM those, {@code int} (its interpreter) and {@code hot} (only
+     * the hot methods compiled; compiled to C is its default, docs/HVM.md), which no JVM takes.
      */
     public boolean appliesTo(RuntimeKind kind) {
         return switch (kind) {
-            case JVM -> true;
+            case JVM -> this != HOT;
             case NATIVE -> category == Category.OS;
-            case HVM -> category == Category.OS || this == INT;
+            case HVM -> category == Category.OS || this == INT || this == HOT;
         };
     }
 

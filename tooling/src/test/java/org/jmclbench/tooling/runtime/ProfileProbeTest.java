@@ -88,6 +88,13 @@ class ProfileProbeTest {
         assertEquals("compiled", Profile.parse("g1+c1+pinned", "t").effectiveFor(RuntimeKind.HVM).hvmMode());
         assertEquals("pinned", Profile.parse("g1+c1+pinned", "t").effectiveFor(RuntimeKind.HVM).name());
         assertEquals("g1+int+fifo", g1IntFifo.effectiveFor(RuntimeKind.JVM).name());
+        // hot (the hot methods compiled, the rest interpreted) is the HVM's alone: a JVM drops it
+        Profile hot = Profile.parse("hot+pinned", "t");
+        assertEquals("hot", hot.effectiveFor(RuntimeKind.HVM).hvmMode());
+        assertEquals("hot+pinned", hot.effectiveFor(RuntimeKind.HVM).name());
+        assertEquals("pinned", hot.effectiveFor(RuntimeKind.JVM).name());
+        assertEquals("pinned", hot.effectiveFor(RuntimeKind.NATIVE).name());
+        assertThrows(BadUsageException.class, () -> Profile.parse("int+hot", "t"), "two modes of the one JIT category");
         RuntimeInfo hvm = new RuntimeInfo("hvm", RuntimeKind.HVM, "icecap", "1", 0, Path.of("/j"), Path.of("/j"));
         assertEquals(List.of(), LaunchPlan.of(hvm, g1IntFifo.effectiveFor(RuntimeKind.HVM), "0").jvmFlags());
         assertThrows(BadUsageException.class, () -> Profile.parse("int+c1", "t"));

@@ -18,7 +18,8 @@ final class HvmFacts implements EngineFacts {
     @Override
     public void writeTo(Json j) {
         String mode = mode(executable);
-        j.name("vm").value("icecap HVM (" + ("compiled".equals(mode) ? "compiled to C, icecap -aot" : "interpreter")
+        j.name("vm").value("icecap HVM (" + ("compiled".equals(mode) ? "compiled to C, icecap -aot"
+                : "hot".equals(mode) ? "hot methods compiled to C, hvm/mission/hot-methods.txt" : "interpreter")
                 + "), github.com/scj-devel/hvm-scj, with jmclbench's patches (hvm/patches)");
         j.name("mode").value(mode);
         j.name("level").value(1);
@@ -31,7 +32,7 @@ final class HvmFacts implements EngineFacts {
         j.name("processWallNs").value(processWallNs);
     }
 
-    /** interpreted or compiled. */
+    /** interpreted, compiled or hot. */
     String mode() {
         return mode(executable);
     }

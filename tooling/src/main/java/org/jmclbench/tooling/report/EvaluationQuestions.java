@@ -142,6 +142,14 @@ final class EvaluationQuestions extends EvaluationSections {
         line("");
         table(List.of("configuration", "runs", "aborted per run", "abort latency p50", "abort latency p99", "abort latency max",
                 "static bound", "max within it"), rows);
+        if (rows.stream().anyMatch(r -> r.get(7).equals("no"))) {
+            line("The bound counts the job's own computing after a request. A measured latency also holds what is not the "
+                    + "job's computing: the time until the job's thread runs its next instruction (the request comes from another "
+                    + "thread; the job's thread may be preempted), and the delivery itself (a poll's return, or the AIE thrown "
+                    + "and caught, a rarely taken path that a JIT may first run in its interpreter). The bound does not cover "
+                    + "these: it needs the platform's scheduling and delivery costs, which no bytecode analysis gives.");
+            line("");
+        }
         ChartSpec spectrum = ChartSpecs.abortLatency(scope("terminate", n, at));
         if (spectrum == null) {
             line("No abort took hold in these runs (every job ended before a later release asked it to), so there is no spectrum.");

@@ -238,8 +238,20 @@ class EvaluateCommandTest {
         Path data = repo.resolve("evaluation/evaluation.db.gz");
         org.junit.jupiter.api.Assumptions.assumeTrue(Files.isRegularFile(data), "no evaluation data committed yet");
         Path out = dir.resolve("docs/evaluation");
-        Fixtures.CliResult r = Fixtures.cli("evaluate", "--no-run", "--matrix", repo.resolve("evaluation/matrix.txt").toString(),
-                "--data", data.toString(), "--out", out.toString());
+        // the document names its data relative to the project, as ./jmclbench evaluate (which sets the home) writes it
+        String home = System.getProperty("jmclbench.home");
+        Fixtures.CliResult r;
+        try {
+            System.setProperty("jmclbench.home", repo.toString());
+            r = Fixtures.cli("evaluate", "--no-run", "--matrix", repo.resolve("evaluation/matrix.txt").toString(),
+                    "--data", data.toString(), "--out", out.toString());
+        } finally {
+            if (home == null) {
+                System.clearProperty("jmclbench.home");
+            } else {
+                System.setProperty("jmclbench.home", home);
+            }
+        }
         assertEquals(0, r.exitCode(), r.err());
         assertEquals(Files.readString(repo.resolve("docs/EVALUATION.md")), Files.readString(dir.resolve("docs/EVALUATION.md")));
         try (var figures = Files.list(repo.resolve("docs/evaluation"))) {

@@ -171,7 +171,7 @@ final class EvaluationExplanations extends EvaluationSections {
         if (all == 0) {
             return;
         }
-        line(String.format(Locale.ROOT, "At %d particles, below every breakdown load of 2.1, queue completed every job by its "
+        line(String.format(Locale.ROOT, "At %d particles queue completed every job by its "
                 + "deadline with a mean deviation separated below both skip's and terminate's (Mann-Whitney U with the ratio's "
                 + "bootstrap interval) in %d of the %d configurations that ran all three: where the runtime keeps up, dropping "
                 + "or aborting work buys no deadline and can cost accuracy. The thesis found terminate more accurate than skip; "

@@ -133,6 +133,11 @@ public record ChartSpec(String id, String stem, Setting setting, String title, K
         return new ChartSpec(id, stem, setting, title, kind, horizontal, x, y, categories, series, newBands, newFrame, valueLabels);
     }
 
+    /** The same chart with other series (a reference line added, say). */
+    ChartSpec withSeries(List<Series> newSeries) {
+        return new ChartSpec(id, stem, setting, title, kind, horizontal, x, y, categories, newSeries, bands, frame, valueLabels);
+    }
+
     /** The same chart under another file name (the evaluation's figures). */
     public ChartSpec withStem(String newStem) {
         return new ChartSpec(id, newStem, setting, title, kind, horizontal, x, y, categories, series, bands, frame, valueLabels);

@@ -412,8 +412,7 @@ final class ChartSpecs {
                         null, null, null, null));
             }
         }
-        return new ChartSpec(c.id(), c.stem(), c.setting(), c.title(), c.kind(), c.horizontal(), c.x(), c.y(), c.categories(), series,
-                c.bands(), c.frame(), c.valueLabels());
+        return c.withSeries(series);
     }
 
     /** One line per runtime of [1/(1-p), ms, p] points, both axes log. */

@@ -12,6 +12,8 @@ import com.fasterxml.jackson.databind.JsonNode;
  * from the engine and runtime kind, as docs/RUNNER.md and docs/HVM.md describe them.
  */
 public record Execution(String execution, String scheduling, String priorities, String memory, String release) {
+    /** {@link #priorities} of a run that asked for thread priorities the OS did not apply. */
+    private static final String IGNORED = "not applied (the OS ignored them)";
 
     /** The configuration's facts from one completed run's summary (a missing field reads "not recorded"). */
     static Execution of(RuntimeKind kind, String engine, String memoryStyle, JsonNode summary) {
@@ -21,7 +23,7 @@ public record Execution(String execution, String scheduling, String priorities, 
                 ? sched.get("policy").asText() + (sched.hasNonNull("priority") ? " " + sched.get("priority").asText() : "")
                 : "not recorded";
         JsonNode applied = summary.at("/engine/prioritiesApplied");
-        String priorities = applied.isBoolean() ? (applied.asBoolean() ? "applied" : "not applied (the OS ignored them)")
+        String priorities = applied.isBoolean() ? (applied.asBoolean() ? "applied" : IGNORED)
                 : kind == RuntimeKind.HVM ? "the HVM's own scheduler (green threads)" : "not recorded";
         String clock = env.hasNonNull("clocksource") ? ", clocksource " + env.get("clocksource").asText() : "";
         return switch (kind) {
@@ -36,6 +38,11 @@ public record Execution(String execution, String scheduling, String priorities, 
             case JVM -> new Execution(jvm(env), scheduling, priorities, jvmMemory(engine, memoryStyle),
                     jvmRelease(engine) + clock);
         };
+    }
+
+    /** Whether the run asked for thread priorities and the OS did not apply them (every thread at one priority). */
+    boolean prioritiesIgnored() {
+        return IGNORED.equals(priorities);
     }
 
     private static String hvmMode(JsonNode summary) {

@@ -30,6 +30,7 @@ final class HvmOutput implements MissionOutput {
         }
         HvmData.put(MissionRunFile.ABORT_SECTION);
         putLongs(r.abortNs, n);
+        putLongs(r.abortSeenNs, n);
         putReals(r.estX, n);
         putReals(r.estY, n);
         putReals(r.estTheta, n);

@@ -31,12 +31,28 @@ final class JobRunner implements AbortSignal {
         this.mission = mission;
     }
 
+    // when a poll of this job first answered true, ns from the mission start; -1 not yet
+    private long seenNs = -1;
+
     @Override
     public boolean abortRequested() {
         if (gate.abortRequested(event)) {
+            if (seenNs < 0) {
+                seenNs = clock.nowNs(pollTime);
+            }
             return true;
         }
-        return abortAtNs != Long.MAX_VALUE && clock.nowNs(pollTime) >= abortAtNs;
+        if (abortAtNs == Long.MAX_VALUE) {
+            return false;
+        }
+        long now = clock.nowNs(pollTime);
+        if (now < abortAtNs) {
+            return false;
+        }
+        if (seenNs < 0) {
+            seenNs = now;
+        }
+        return true;
     }
 
     /** Now, ns from the mission start. */
@@ -65,6 +81,7 @@ final class JobRunner implements AbortSignal {
     long run(int k, boolean update, long abortAtNs) {
         event = k;
         this.abortAtNs = abortAtNs;
+        seenNs = -1;
         long start;
         long end;
         boolean completed;
@@ -81,6 +98,9 @@ final class JobRunner implements AbortSignal {
         r.startNs[k] = start;
         r.endNs[k] = end;
         r.cpuNs[k] = -1; // SCJ has no per-thread CPU clock
+        if (seenNs >= 0) {
+            r.abortSeen(k, seenNs);
+        }
         if (!completed) {
             r.outcome[k] = JobRecords.TERMINATED;
         } else {

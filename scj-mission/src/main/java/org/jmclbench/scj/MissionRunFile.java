@@ -13,11 +13,15 @@ public final class MissionRunFile {
     /** "JMCLHVI1" and "JMCLHVO1" read as little-endian longs. */
     public static final long INPUT_MAGIC = 0x314956484C434D4AL;
     public static final long OUTPUT_MAGIC = 0x314F56484C434D4AL;
-    /** The layout's version, in both files; a change of layout changes it (2: the result file's abort section). */
-    public static final long VERSION = 2;
+    /**
+     * The layout's version, in both files; a change of layout changes it (2: the result file's abort
+     * section; 3: when each job saw its abort request, in that section).
+     */
+    public static final long VERSION = 3;
     /**
      * The result file's code ("ABORTNS" read as a little-endian long) that opens its abort section:
-     * each event's abort request (JobRecords.abortNs), after the outcomes.
+     * each event's abort request (JobRecords.abortNs), then when its job saw it (JobRecords.abortSeenNs),
+     * after the outcomes.
      */
     public static final long ABORT_SECTION = 0x00534E54524F4241L;
 

@@ -131,6 +131,8 @@ class MissionTest {
                     assertEquals(-1, r.abortNs[k], policy + ": event " + k + " asked to abort");
                 } else if (r.outcome[k] == JobRecords.TERMINATED && r.startNs[k] >= 0) {
                     assertTrue(r.abortFromNs(k) >= r.startNs[k], "event " + k + " aborted unasked");
+                    long seen = r.abortSeenFromNs(k);
+                    assertTrue(seen >= r.abortFromNs(k) && seen <= r.endNs[k], "event " + k + ": its poll saw the abort at " + seen);
                 }
             }
             int dropped = 0;
@@ -181,6 +183,7 @@ class MissionTest {
         assertTrue(r.endNs[0] < r.releaseNs[0] + 250_000_000L, "stopped long before its 300 ms: " + r.endNs[0]);
         // its abort was requested at the next release (the timed request; no other event came)
         assertEquals(Math.max(r.releaseNs[1], r.startNs[0]), r.abortFromNs(0), "abort requested at the task's next release");
+        assertTrue(r.abortSeenFromNs(0) >= r.abortFromNs(0), "the first poll past that release saw it: " + r.abortSeenFromNs(0));
     }
 
     /** Ten odometry events 50 ms apart, one laser event after the last but one. */

@@ -33,6 +33,12 @@ public final class JobRecords {
      * request or an AIE fired at it), ns from the run start; -1 never. Raw: see {@link #abortFromNs}.
      */
     public final long[] abortNs;
+    /**
+     * When event k's job saw the abort request: its poll answered true, or its delivery point
+     * threw the AIE; ns from the run start; -1 never, or an engine that does not record it.
+     * Splits the abort latency into noticing (bounded by the gap between two polls) and stopping.
+     */
+    public final long[] abortSeenNs;
     /** One of PENDING, DONE, LATE, SKIPPED, TERMINATED. */
     public final byte[] outcome;
     /** Estimate committed by the job (valid when DONE or LATE). */
@@ -58,6 +64,7 @@ public final class JobRecords {
         cpuNs = new long[n];
         wakeNs = new long[n];
         abortNs = new long[n];
+        abortSeenNs = new long[n];
         outcome = new byte[n];
         estX = new double[n];
         estY = new double[n];
@@ -77,6 +84,7 @@ public final class JobRecords {
             cpuNs[k] = -1;
             wakeNs[k] = -1;
             abortNs[k] = -1;
+            abortSeenNs[k] = -1;
             outcome[k] = PENDING;
             estX[k] = Double.NaN;
             estY[k] = Double.NaN;
@@ -115,6 +123,24 @@ public final class JobRecords {
         }
         long from = a > s ? a : s;
         return from < e ? from : -1;
+    }
+
+    /**
+     * When event k's job saw the abort that took hold of it (the seen_ns of the job files), or -1:
+     * no abort took hold ({@link #abortFromNs}), or the engine did not record it. Noticing takes
+     * {@code abortSeenFromNs(k) - abortFromNs(k)}, stopping {@code endNs[k] - abortSeenFromNs(k)}.
+     */
+    public long abortSeenFromNs(int k) {
+        long from = abortFromNs(k);
+        long seen = abortSeenNs[k];
+        return from >= 0 && seen >= from && seen <= endNs[k] ? seen : -1;
+    }
+
+    /** Records that event k's job saw its abort request at {@code ns}, unless it saw it earlier. */
+    public void abortSeen(int k, long ns) {
+        if (abortSeenNs[k] < 0) {
+            abortSeenNs[k] = ns;
+        }
     }
 
     /** Records an abort request of event k's job at {@code ns}, unless an earlier one is recorded. */

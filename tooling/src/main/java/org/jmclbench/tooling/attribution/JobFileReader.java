@@ -31,8 +31,8 @@ public final class JobFileReader {
                     continue;
                 }
                 String[] f = t.split("\\s+");
-                if (f.length != 7 && f.length != 8) {
-                    throw BadUsageException.atLine(file.toString(), n, "expected 7 or 8 columns (index release_ns start_ns end_ns deadline_ns outcome cpu_ns [abort_ns]), found " + f.length);
+                if (f.length < 7 || f.length > 9) {
+                    throw BadUsageException.atLine(file.toString(), n, "expected 7 to 9 columns (index release_ns start_ns end_ns deadline_ns outcome cpu_ns [abort_ns [seen_ns]]), found " + f.length);
                 }
                 if (!OUTCOMES.contains(f[5])) {
                     throw BadUsageException.atLine(file.toString(), n, "unknown outcome '" + f[5] + "'");

@@ -32,7 +32,15 @@ public enum TaskMetric {
     /** From the abort request to the aborted job's end, over the jobs an abort took hold of (terminate). */
     ABORT_P50("abort latency p50", "ms", 1e-6, "abortLatencyNs", "p50"),
     ABORT_P99("abort latency p99", "ms", 1e-6, "abortLatencyNs", "p99"),
-    ABORT_MAX("abort latency max", "ms", 1e-6, "abortLatencyNs", "max");
+    ABORT_MAX("abort latency max", "ms", 1e-6, "abortLatencyNs", "max"),
+    /**
+     * The abort latency's first part: from the request to the poll (or delivery point) that saw
+     * it, what the static bound bounds; over the aborts whose engine recorded it.
+     */
+    ABORT_NOTICE_P50("abort noticed p50", "ms", 1e-6, "abortNoticeNs", "p50"),
+    ABORT_NOTICE_MAX("abort noticed max", "ms", 1e-6, "abortNoticeNs", "max"),
+    /** Its second part: from that poll to the job's end (returning, or the AIE thrown and unwound). */
+    ABORT_STOP_MAX("abort stopping max", "ms", 1e-6, "abortStopNs", "max");
 
     /** The tasks a cell aggregates every task metric for. */
     public static final List<String> TASKS = List.of("predict", "update", "all");

@@ -34,7 +34,8 @@ public final class RunFolderIngest {
     private static final String[] COUNTS = {"released", "completed", "done", "late", "skipped", "terminated", "missCount",
         "deadlineMisses", "missRatio", "abortsCompleted"};
     /** Their numeric stats; responseTimeReleasedNs' "inf" quantiles stay in the summary, where the report reads them. */
-    private static final String[] TIMINGS = {"releaseJitterNs", "taskLatencyNs", "responseTimeNs", "cpuNs", "responseTimeReleasedNs", "abortLatencyNs"};
+    private static final String[] TIMINGS = {"releaseJitterNs", "taskLatencyNs", "responseTimeNs", "cpuNs", "responseTimeReleasedNs", "abortLatencyNs",
+        "abortNoticeNs", "abortStopNs"};
     private static final String[] STATS = {"count", "mean", "stdev", "min", "p50", "p90", "p99", "p999", "max"};
 
     private RunFolderIngest() {

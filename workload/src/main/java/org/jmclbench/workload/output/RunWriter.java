@@ -72,7 +72,7 @@ public final class RunWriter {
 
     private void writeJobs(File f, int task) throws IOException {
         StringBuilder b = new StringBuilder(64 * (timeline.count(task) + 1));
-        b.append("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns\n");
+        b.append("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns seen_ns\n");
         for (int k = 0; k < timeline.size(); k++) {
             if (timeline.task(k) != task) {
                 continue;
@@ -80,7 +80,8 @@ public final class RunWriter {
             b.append(timeline.taskIndex(k)).append(' ').append(records.releaseNs[k]).append(' ')
                     .append(records.startNs[k]).append(' ').append(records.endNs[k]).append(' ')
                     .append(records.deadlineNs[k]).append(' ').append(JobRecords.outcomeName(records.outcome[k]))
-                    .append(' ').append(records.cpuNs[k]).append(' ').append(records.abortFromNs(k)).append('\n');
+                    .append(' ').append(records.cpuNs[k]).append(' ').append(records.abortFromNs(k))
+                    .append(' ').append(records.abortSeenFromNs(k)).append('\n');
         }
         writeText(f, b.toString());
     }

@@ -32,6 +32,9 @@ public final class TaskSummary {
     Stats cpu;
     /** Abort latency (end - abort_ns) of the jobs an abort took hold of; of those, how many completed anyway. */
     Stats abortLatency;
+    /** The abort latency's two parts, over the aborts whose job recorded when it saw the request: request to seen, seen to end. */
+    Stats abortNotice;
+    Stats abortStop;
     int abortsCompleted;
     /** Response time at {@link #RELEASED_QUANTILES} over every release; {@link Stats#NOT_COMPLETED} = +infinity. */
     final long[] releasedResponse = new long[RELEASED_QUANTILES.length];
@@ -60,7 +63,10 @@ public final class TaskSummary {
         long[] response = new long[n];
         long[] cpu = new long[n];
         long[] abort = new long[n];
+        long[] notice = new long[n];
+        long[] stop = new long[n];
         int na = 0;
+        int ns = 0;
         int nj = 0;
         int nl = 0;
         int nr = 0;
@@ -105,6 +111,11 @@ public final class TaskSummary {
             long from = r.abortFromNs(k);
             if (from >= 0) {
                 abort[na++] = r.endNs[k] - from;
+                long seen = r.abortSeenFromNs(k);
+                if (seen >= 0) {
+                    notice[ns] = seen - from;
+                    stop[ns++] = r.endNs[k] - seen;
+                }
                 if (r.completed(k)) {
                     s.abortsCompleted++;
                 }
@@ -116,6 +127,8 @@ public final class TaskSummary {
         s.responseTime = Stats.of(response, nr);
         s.cpu = Stats.of(cpu, nc);
         s.abortLatency = Stats.of(abort, na);
+        s.abortNotice = Stats.of(notice, ns);
+        s.abortStop = Stats.of(stop, ns);
         Arrays.sort(response, 0, nr);
         for (int q = 0; q < RELEASED_QUANTILES.length && s.released > 0; q++) {
             s.releasedResponse[q] = Stats.rankOfReleases(response, nr, s.released, RELEASED_QUANTILES[q]);
@@ -146,6 +159,16 @@ public final class TaskSummary {
     /** Abort latency, ns from when an abort took hold of a job to its end, over the jobs it took hold of. */
     public Stats abortLatency() {
         return abortLatency;
+    }
+
+    /** Noticing: ns from the abort request to the poll that saw it, over the aborts whose job recorded it. */
+    public Stats abortNotice() {
+        return abortNotice;
+    }
+
+    /** Stopping: ns from the poll that saw the abort request to the job's end, over the same aborts. */
+    public Stats abortStop() {
+        return abortStop;
     }
 
     /** Jobs an abort took hold of that completed all the same (the request came too late, or was deferred). */
@@ -187,6 +210,10 @@ public final class TaskSummary {
         RunWriter.writeStats(j, cpu);
         j.name("abortLatencyNs");
         RunWriter.writeStats(j, abortLatency);
+        j.name("abortNoticeNs");
+        RunWriter.writeStats(j, abortNotice);
+        j.name("abortStopNs");
+        RunWriter.writeStats(j, abortStop);
         j.name("abortsCompleted").value(abortsCompleted);
         j.name("deadlineMisses").value(deadlineMisses());
         j.name("missRatio").value(missRatio());

@@ -113,7 +113,7 @@ public final class TaskHandler implements Runnable {
                 r.outcome[k] = JobRecords.TERMINATED; // superseded before it could start
                 continue;
             }
-            abortSignal.event = k;
+            abortSignal.begin(k);
             long cpu0 = cpuClock.now();
             long start = System.nanoTime();
             boolean completed;
@@ -134,6 +134,9 @@ public final class TaskHandler implements Runnable {
             r.startNs[k] = start - t0;
             r.endNs[k] = end - t0;
             r.cpuNs[k] = cpu0 < 0 ? -1 : cpu1 - cpu0;
+            if (abortSignal.seenNs >= 0) {
+                r.abortSeen(k, abortSignal.seenNs - t0);
+            }
             if (!completed) {
                 r.outcome[k] = JobRecords.TERMINATED;
             } else {
@@ -142,13 +145,26 @@ public final class TaskHandler implements Runnable {
         }
     }
 
-    /** The abort request of the job in progress, as the MCL loops poll it. */
+    /** The abort request of the job in progress, as the MCL loops poll it; remembers when a poll first saw it. */
     private final class JobAbortSignal implements AbortSignal {
-        int event;
+        private int event;
+        /** System.nanoTime of the first poll that answered true in this job, or -1. */
+        long seenNs = -1;
+
+        void begin(int k) {
+            event = k;
+            seenNs = -1;
+        }
 
         @Override
         public boolean abortRequested() {
-            return policy.abortRequested(event);
+            if (!policy.abortRequested(event)) {
+                return false;
+            }
+            if (seenNs < 0) {
+                seenNs = System.nanoTime();
+            }
+            return true;
         }
     }
 }

@@ -218,7 +218,7 @@ public final class RtsjReplay {
      * {@code doInterruptible}, where {@link #run(AsynchronouslyInterruptedException)} is the
      * AI-enabled part (woven with delivery points) and the robot work happens in non-AI methods.
      */
-    private final class Task implements Runnable, Interruptible {
+    private final class Task implements Runnable, Interruptible, DeliveryPoints.Witness {
         final AsyncEvent event = new AsyncEvent();
         final AsynchronouslyInterruptedException aie = new AsynchronouslyInterruptedException();
         private final String name;
@@ -231,6 +231,9 @@ public final class RtsjReplay {
         private long start;
         private long end;
         private boolean committed;
+        // when a delivery point threw the AIE at the job in progress (real-time clock ns), or -1
+        private long seen;
+        private final DeliveryPoints deliveryPoints = new DeliveryPoints(this);
 
         Task(String name, int capacity, int priority) {
             this.name = name;
@@ -258,6 +261,7 @@ public final class RtsjReplay {
             records.wakeNs[k] = now(clock) - t0;
             start = -1;
             end = -1;
+            seen = -1;
             committed = false;
             try {
                 if (policy == OverrunPolicy.TERMINATE) {
@@ -283,7 +287,14 @@ public final class RtsjReplay {
                 running = -1;
                 return; // superseded before it started: never starts
             }
-            lockAndRun(design == RtsjDesign.ATOMIC ? DeliveryPoints.INSTANCE : AbortSignal.NEVER);
+            lockAndRun(design == RtsjDesign.ATOMIC ? deliveryPoints : AbortSignal.NEVER);
+        }
+
+        @Override
+        public void delivered() {
+            if (seen < 0) {
+                seen = now(clock);
+            }
         }
 
         @Override
@@ -341,6 +352,9 @@ public final class RtsjReplay {
                 long jobEnd = end >= 0 ? end : now;
                 r.startNs[k] = start - t0;
                 r.endNs[k] = jobEnd - t0;
+                if (seen >= 0) {
+                    r.abortSeen(k, seen - t0);
+                }
                 if (!committed) {
                     r.outcome[k] = JobRecords.TERMINATED;
                 } else {

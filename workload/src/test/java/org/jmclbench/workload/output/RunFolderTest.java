@@ -62,15 +62,16 @@ class RunFolderTest {
         Timeline t = d.timeline();
 
         List<String[]> odo = rows(new File(dir, "odoData.txt"));
-        assertEquals("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns",
+        assertEquals("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns seen_ns",
                 Files.readAllLines(new File(dir, "odoData.txt").toPath()).get(0));
         assertEquals(t.predictCount(), odo.size());
         long previousEnd = -1;
         for (int i = 0; i < odo.size(); i++) {
             String[] r = odo.get(i);
-            assertEquals(8, r.length);
+            assertEquals(9, r.length);
             assertEquals(Integer.toString(i), r[0]);
             assertEquals("-1", r[7], "no abort in an ideal run");
+            assertEquals("-1", r[8], "nothing to see in an ideal run");
             assertEquals("done", r[5]);
             assertEquals("-1", r[4]);
             long start = Long.parseLong(r[2]);
@@ -80,7 +81,7 @@ class RunFolderTest {
         }
         List<String[]> laser = rows(new File(dir, "laserData.txt"));
         assertEquals(t.updateCount(), laser.size());
-        assertEquals(8, laser.get(0).length);
+        assertEquals(9, laser.get(0).length);
 
         List<String[]> pos = rows(new File(dir, "position.txt"));
         assertEquals(d.realCount(), pos.size());

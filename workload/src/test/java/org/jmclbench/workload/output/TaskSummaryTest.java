@@ -51,6 +51,40 @@ class TaskSummaryTest {
     }
 
     @Test
+    void theAbortLatencySplitsAtTheMomentTheJobSawTheRequest() {
+        JobRecords r = records();
+        // job 1 (started at 100 ms) asked to abort at 110 ms, saw it at 110.02 ms, ended at 110.05 ms
+        r.outcome[1] = JobRecords.TERMINATED;
+        r.endNs[1] = 110_050_000;
+        r.requestAbort(1, 110_000_000);
+        r.abortSeen(1, 110_020_000);
+        r.abortSeen(1, 110_040_000); // a later poll changes nothing
+        // job 0 asked after its end: nothing took hold, so its seen time does not count
+        r.requestAbort(0, 3_000_000);
+        r.abortSeen(0, 3_000_000);
+        TaskSummary s = TaskSummary.count(r, Timeline.PREDICT);
+        assertEquals(1, s.abortLatency().count);
+        assertEquals(50_000, s.abortLatency().max);
+        assertEquals(1, s.abortNotice().count);
+        assertEquals(20_000, s.abortNotice().max);
+        assertEquals(30_000, s.abortStop().max);
+        assertEquals(110_020_000, r.abortSeenFromNs(1));
+        assertEquals(-1, r.abortSeenFromNs(0));
+    }
+
+    @Test
+    void anEngineThatDoesNotRecordWhenTheJobSawItHasNoSplit() {
+        JobRecords r = records();
+        r.outcome[1] = JobRecords.TERMINATED;
+        r.endNs[1] = 110_050_000;
+        r.requestAbort(1, 110_000_000);
+        TaskSummary s = TaskSummary.count(r, Timeline.PREDICT);
+        assertEquals(1, s.abortLatency().count);
+        assertEquals(0, s.abortNotice().count);
+        assertTrue(json(s).contains("\"abortNoticeNs\": {\n    \"count\": 0"), json(s));
+    }
+
+    @Test
     void underQueueMissCountIsTheLateJobsAndTheAccountingIsUnchanged() {
         RunOptions queue = new RunOptions();
         queue.policy = OverrunPolicy.QUEUE;

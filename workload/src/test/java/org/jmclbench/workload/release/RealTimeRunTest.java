@@ -134,10 +134,10 @@ class RealTimeRunTest {
             int jobs = 0;
             for (String f : new String[] {"odoData.txt", "laserData.txt"}) {
                 List<String> lines = Files.readAllLines(new File(dir, f).toPath(), StandardCharsets.UTF_8);
-                assertEquals("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns", lines.get(0));
+                assertEquals("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns seen_ns", lines.get(0));
                 for (String line : lines.subList(1, lines.size())) {
                     String[] c = line.split(" ");
-                    assertEquals(8, c.length, f + ": " + line);
+                    assertEquals(9, c.length, f + ": " + line);
                     assertTrue(c[5].matches("done|late|skipped|terminated"), f + ": " + line);
                     assertTrue(Long.parseLong(c[4]) > Long.parseLong(c[1]), "deadline after release: " + line);
                     long start = Long.parseLong(c[2]);
@@ -146,6 +146,9 @@ class RealTimeRunTest {
                     assertTrue(abort == -1 || p[0].equals("TermTest") && start <= abort && abort < Long.parseLong(c[3]),
                             f + ": " + line);
                     assertFalse(c[5].equals("terminated") && start >= 0 && abort < 0, "an aborted job was asked: " + line);
+                    long seen = Long.parseLong(c[8]);
+                    // seen_ns: when the job's poll saw that abort, between it and the job's end
+                    assertTrue(seen == -1 || abort >= 0 && abort <= seen && seen <= Long.parseLong(c[3]), f + ": " + line);
                     jobs++;
                 }
             }

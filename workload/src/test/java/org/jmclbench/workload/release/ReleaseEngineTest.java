@@ -155,6 +155,12 @@ class ReleaseEngineTest {
         JobRecords r = run("terminate", 20, 10 * MS, job);
         assertTrue(job.aborted >= 5, "aborted " + job.aborted);
         assertEquals(0, count(r, JobRecords.SKIPPED));
+        for (int k = 0; k < 20; k++) {
+            if (r.outcome[k] == JobRecords.TERMINATED && r.abortFromNs(k) >= 0) {
+                long seen = r.abortSeenFromNs(k);
+                assertTrue(seen >= r.abortFromNs(k) && seen <= r.endNs[k], "job " + k + " saw its abort between request and end: " + seen);
+            }
+        }
         assertEquals(20, count(r, JobRecords.TERMINATED) + job.completed);
         // nothing supersedes the last event: it always completes
         assertTrue(r.outcome[19] == JobRecords.DONE || r.outcome[19] == JobRecords.LATE);

@@ -86,6 +86,9 @@ class RtsjReplayTest {
         assertTrue(r.abortFromNs(0) >= 0, "an AIE was fired at the first job");
         long latency = r.endNs[0] - r.abortFromNs(0);
         assertTrue(latency < JOB_NS / 2, "aborted at a poll, not at the job's end: " + latency + " ns");
+        long seen = r.abortSeenFromNs(0);
+        assertTrue(seen >= r.abortFromNs(0) && seen <= r.endNs[0], "the delivery point that threw is recorded: " + seen);
+        assertEquals(-1, r.abortSeenFromNs(1));
     }
 
     @Test
@@ -102,6 +105,7 @@ class RtsjReplayTest {
         // 400 ms (not timed against the release: a late dispatcher fires later, leaving less).
         assertTrue(r.endNs[0] - r.startNs[0] >= JOB_NS, "the job ran whole: " + (r.endNs[0] - r.startNs[0]) + " ns");
         assertTrue(r.abortFromNs(0) < r.startNs[0] + JOB_NS, "fired while it ran");
+        assertEquals(-1, r.abortSeenNs[0], "no delivery point in the job: it never saw the AIE");
     }
 
     @Test

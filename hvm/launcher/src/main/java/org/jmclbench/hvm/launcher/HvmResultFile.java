@@ -67,8 +67,10 @@ final class HvmResultFile {
             if (section != MissionRunFile.ABORT_SECTION) {
                 throw fail("word " + Long.toHexString(section) + " where the abort section's code belongs");
             }
-            for (int k = 0; k < n; k++) {
-                r.abortNs[k] = time(k);
+            for (long[] a : new long[][] {r.abortNs, r.abortSeenNs}) {
+                for (int k = 0; k < n; k++) {
+                    a[k] = time(k);
+                }
             }
             for (double[] a : new double[][] {r.estX, r.estY, r.estTheta}) {
                 for (int k = 0; k < n; k++) {

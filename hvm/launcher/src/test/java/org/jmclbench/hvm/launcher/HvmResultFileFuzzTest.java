@@ -71,6 +71,8 @@ class HvmResultFileFuzzTest {
         assertEquals(1_000_000L, r.durationNs);
         assertEquals(50_500_000L, r.abortNs[1]);
         assertEquals(-1, r.abortNs[0]);
+        assertEquals(50_520_000L, r.abortSeenNs[1]);
+        assertEquals(-1, r.abortSeenNs[0]);
         assertEquals(-1, peaks[MissionSizes.PREDICT]);
     }
 
@@ -151,6 +153,9 @@ class HvmResultFileFuzzTest {
         word(b, MissionRunFile.ABORT_SECTION);
         for (int k = 0; k < n; k++) {
             word(b, k == 1 ? 50_000_000L * k + 500_000 : -1); // job 1 asked to abort mid-way
+        }
+        for (int k = 0; k < n; k++) {
+            word(b, k == 1 ? 50_000_000L * k + 520_000 : -1); // and saw it 20 us later
         }
         for (int i = 0; i < 3 * n + (covariance ? 6 * n : 0) + 3; i++) {
             word(b, Double.doubleToRawLongBits(0.25 * i));

@@ -16,6 +16,7 @@ public abstract class HandlerRuntime implements Runnable {
 
     private final AsyncEventHandler handler;
     private final String name;
+    private final String kind;
     private final int priority;
     private final Area privateArea;
     private final long deadline;
@@ -36,20 +37,16 @@ public abstract class HandlerRuntime implements Runnable {
     private long deadlineMisses;
     private long lateReleases;
 
-    /**
-     * The runtime of {@code handler}; {@code deadline} in ns ({@link #NO_DEADLINE}: none),
-     * {@code backingStore}: bytes for nested private memories, {@code stackSize}: the
-     * thread's stack (0: the JVM's default).
-     */
-    protected HandlerRuntime(AsyncEventHandler handler, String name, int priority, Area privateArea, long deadline,
-            long backingStore, long stackSize) {
-        this.handler = handler;
-        this.name = name;
-        this.priority = priority;
-        this.privateArea = privateArea;
-        this.deadline = deadline;
-        this.backingStore = backingStore;
-        this.stackSize = stackSize;
+    /** The runtime of the handler {@code setup} describes; {@code kind}: periodic, aperiodic or oneshot. */
+    protected HandlerRuntime(HandlerSetup setup, String kind) {
+        this.handler = setup.handler;
+        this.name = setup.name;
+        this.kind = kind;
+        this.priority = setup.priority;
+        this.privateArea = setup.privateArea;
+        this.deadline = setup.deadline;
+        this.backingStore = setup.backingStore;
+        this.stackSize = setup.stackSize;
         this.time = RunState.current().time();
         RunState.current().addHandler(this);
     }
@@ -70,7 +67,9 @@ public abstract class HandlerRuntime implements Runnable {
     }
 
     /** periodic, aperiodic or oneshot. */
-    public abstract String kind();
+    public final String kind() {
+        return kind;
+    }
 
     /** The release loop; returns when the mission terminates. */
     protected abstract void releaseLoop() throws Throwable;

@@ -72,6 +72,7 @@ final class Preload {
             "org.jmclbench.rtsjcompat.AtcState",
             "org.jmclbench.rtsjcompat.HandlerRuntime",
             "org.jmclbench.rtsjcompat.HandlerServer",
+            "org.jmclbench.rtsjcompat.HandlerSetup",
             "org.jmclbench.rtsjcompat.HandlerStats",
             "org.jmclbench.rtsjcompat.Installed",
             "org.jmclbench.rtsjcompat.MissionControl",

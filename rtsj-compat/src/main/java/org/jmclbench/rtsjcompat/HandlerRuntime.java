@@ -10,7 +10,7 @@ import javax.realtime.AsyncEventHandler;
  * time plus the relative deadline. Counters are guarded by this object's monitor, which is
  * also what an idle handler waits on; nothing here allocates once the thread runs.
  */
-public abstract class HandlerRuntime implements Runnable {
+public abstract class HandlerRuntime extends IdleParticipant implements Runnable {
     /** No deadline. */
     public static final long NO_DEADLINE = Long.MAX_VALUE;
 
@@ -23,14 +23,10 @@ public abstract class HandlerRuntime implements Runnable {
     private final long backingStore;
     private final long stackSize;
 
-    /** The time source of the launch. */
-    protected final TimeSource time;
     /** This handler's thread (set at mission start; read by the threads that wake it). */
     protected volatile ScjThread thread;
     /** The mission it belongs to (set at mission start). */
     protected volatile MissionControl mission;
-    /** Whether this handler waits with no deadline (guarded by this). */
-    protected boolean idle;
 
     private long releases;
     private long completed;
@@ -39,6 +35,7 @@ public abstract class HandlerRuntime implements Runnable {
 
     /** The runtime of the handler {@code setup} describes; {@code kind}: periodic, aperiodic or oneshot. */
     protected HandlerRuntime(HandlerSetup setup, String kind) {
+        super(RunState.current().time());
         this.handler = setup.handler;
         this.name = setup.name;
         this.kind = kind;
@@ -47,7 +44,6 @@ public abstract class HandlerRuntime implements Runnable {
         this.deadline = setup.deadline;
         this.backingStore = setup.backingStore;
         this.stackSize = setup.stackSize;
-        this.time = RunState.current().time();
         RunState.current().addHandler(this);
     }
 
@@ -98,38 +94,12 @@ public abstract class HandlerRuntime implements Runnable {
     /** Wakes the handler so that it sees the termination request. */
     protected void wakeForTermination() {
         synchronized (this) {
-            if (idle) {
-                idle = false;
-                time.leaveIdle();
-            }
-            notifyAll();
+            leaveIdle();
         }
         ScjThread t = thread;
         if (t != null && t != Thread.currentThread()) {
             time.wake(t);
         }
-    }
-
-    /** Waits (on this monitor, held by the caller) as an idle participant of the time source. */
-    protected final void idleWait() {
-        if (!idle) {
-            idle = true;
-            time.enterIdle();
-        }
-        try {
-            wait();
-        } catch (InterruptedException e) {
-            // Re-checked by the caller's loop; termination uses its own flag.
-        }
-    }
-
-    /** Makes an idle handler runnable (caller holds this monitor). */
-    protected final void leaveIdle() {
-        if (idle) {
-            idle = false;
-            time.leaveIdle();
-        }
-        notifyAll();
     }
 
     @Override
@@ -141,10 +111,7 @@ public abstract class HandlerRuntime implements Runnable {
             mission.requestTermination();
         } finally {
             synchronized (this) {
-                if (idle) {
-                    idle = false;
-                    time.leaveIdle();
-                }
+                endIdle();
             }
             mission.handlerEnded();
             time.threadEnded();

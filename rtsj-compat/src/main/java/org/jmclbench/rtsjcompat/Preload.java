@@ -74,6 +74,7 @@ final class Preload {
             "org.jmclbench.rtsjcompat.HandlerServer",
             "org.jmclbench.rtsjcompat.HandlerSetup",
             "org.jmclbench.rtsjcompat.HandlerStats",
+            "org.jmclbench.rtsjcompat.IdleParticipant",
             "org.jmclbench.rtsjcompat.Installed",
             "org.jmclbench.rtsjcompat.MissionControl",
             "org.jmclbench.rtsjcompat.MissionFailure",

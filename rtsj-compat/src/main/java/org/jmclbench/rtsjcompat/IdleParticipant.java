@@ -1,10 +1,12 @@
 package org.jmclbench.rtsjcompat;
 
 /**
- * The owner of a thread that takes part in the {@link TimeSource}'s idle protocol: the thread
- * waits on this object's monitor with no deadline as an idle participant, and whoever makes it
- * runnable again ends the idleness under the same monitor, before it wakes. The idle flag is
- * guarded by this monitor, which every method's caller holds. Allocation-free.
+ * What a thread waits on when it takes part in the {@link TimeSource}'s idle protocol (a
+ * handler's {@link HandlerRuntime}, an RTSJ handler's {@link HandlerServer}, the sequencer's
+ * {@link MissionControl}): the thread waits on this object's monitor with no deadline as an idle
+ * participant, and whoever makes it runnable again ends the idleness under the same monitor,
+ * before it wakes. The idle flag is guarded by this monitor, which every method's caller holds.
+ * Allocation-free.
  */
 abstract class IdleParticipant {
     /** The time source of the launch. */

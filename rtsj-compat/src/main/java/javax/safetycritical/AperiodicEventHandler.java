@@ -33,8 +33,7 @@ public abstract class AperiodicEventHandler extends ManagedEventHandler {
         super(priority, checked(release), storage, config, name);
         ScjThread.pauseAccounting();
         try {
-            this.aperiodic = new AperiodicRuntime(this, getName(), priority.getPriority(), privateMemory.bookkeeping(),
-                    deadlineOf(release), storage.getMaxBackingStore(), 0);
+            this.aperiodic = new AperiodicRuntime(runtimeSetup());
             this.runtime = aperiodic;
         } finally {
             ScjThread.resumeAccounting();

@@ -12,6 +12,7 @@ import javax.safetycritical.annotate.SCJAllowed;
 import javax.safetycritical.annotate.SCJPhase;
 import org.jmclbench.rtsjcompat.Area;
 import org.jmclbench.rtsjcompat.HandlerRuntime;
+import org.jmclbench.rtsjcompat.HandlerSetup;
 import org.jmclbench.rtsjcompat.RunState;
 import org.jmclbench.rtsjcompat.ScjThread;
 
@@ -69,6 +70,16 @@ public abstract class ManagedEventHandler extends BoundAsyncEventHandler impleme
     private static String defaultName(Class<?> c) {
         String s = c.getSimpleName();
         return s.isEmpty() ? c.getName() : s;
+    }
+
+    /**
+     * What this handler's release machinery is made from: its name, priority, private memory,
+     * the deadline of its release parameters and the backing store of its storage parameters
+     * (the thread's stack: the JVM's default). Called by the subclass constructors.
+     */
+    final HandlerSetup runtimeSetup() {
+        return new HandlerSetup(this, name, priority.getPriority(), privateMemory.bookkeeping(), deadlineOf(release),
+                storage.getMaxBackingStore(), 0);
     }
 
     /** The deadline of {@code release} in ns, or {@link HandlerRuntime#NO_DEADLINE}. */

@@ -35,8 +35,7 @@ public abstract class OneShotEventHandler extends ManagedEventHandler {
         super(priority, release, storage, config, name);
         ScjThread.pauseAccounting();
         try {
-            this.oneShot = new OneShotRuntime(this, getName(), priority.getPriority(), privateMemory.bookkeeping(),
-                    deadlineOf(release), storage.getMaxBackingStore(), 0);
+            this.oneShot = new OneShotRuntime(runtimeSetup());
             this.runtime = oneShot;
         } finally {
             ScjThread.resumeAccounting();

@@ -33,9 +33,7 @@ public abstract class PeriodicEventHandler extends ManagedEventHandler {
         this.releaseParameters = release;
         ScjThread.pauseAccounting();
         try {
-            this.periodic = new PeriodicRuntime(this, getName(), priority.getPriority(), privateMemory.bookkeeping(),
-                    deadlineOf(release), storage.getMaxBackingStore(), 0, nanos(release.getStart()),
-                    nanos(release.getPeriod()));
+            this.periodic = new PeriodicRuntime(runtimeSetup(), nanos(release.getStart()), nanos(release.getPeriod()));
             this.runtime = periodic;
         } finally {
             ScjThread.resumeAccounting();

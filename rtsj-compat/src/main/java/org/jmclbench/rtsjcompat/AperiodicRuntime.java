@@ -1,7 +1,5 @@
 package org.jmclbench.rtsjcompat;
 
-import javax.realtime.AsyncEventHandler;
-
 /**
  * Releases on demand: each {@link #release()} is counted as pending, including while the
  * handler runs, and each pending release later runs handleAsyncEvent once, in release
@@ -20,14 +18,8 @@ public final class AperiodicRuntime extends HandlerRuntime {
     private long lastTaken;
 
     /** An aperiodic handler. */
-    public AperiodicRuntime(AsyncEventHandler handler, String name, int priority, Area privateArea, long deadline,
-            long backingStore, long stackSize) {
-        super(handler, name, priority, privateArea, deadline, backingStore, stackSize);
-    }
-
-    @Override
-    public String kind() {
-        return "aperiodic";
+    public AperiodicRuntime(HandlerSetup setup) {
+        super(setup, "aperiodic");
     }
 
     /** Releases the handler once (ignored once its mission is terminating). */

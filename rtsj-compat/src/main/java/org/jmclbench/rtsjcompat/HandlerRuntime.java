@@ -10,47 +10,40 @@ import javax.realtime.AsyncEventHandler;
  * time plus the relative deadline. Counters are guarded by this object's monitor, which is
  * also what an idle handler waits on; nothing here allocates once the thread runs.
  */
-public abstract class HandlerRuntime implements Runnable {
+public abstract class HandlerRuntime extends IdleParticipant implements Runnable {
     /** No deadline. */
     public static final long NO_DEADLINE = Long.MAX_VALUE;
 
     private final AsyncEventHandler handler;
     private final String name;
+    private final String kind;
     private final int priority;
     private final Area privateArea;
     private final long deadline;
     private final long backingStore;
     private final long stackSize;
 
-    /** The time source of the launch. */
-    protected final TimeSource time;
     /** This handler's thread (set at mission start; read by the threads that wake it). */
     protected volatile ScjThread thread;
     /** The mission it belongs to (set at mission start). */
     protected volatile MissionControl mission;
-    /** Whether this handler waits with no deadline (guarded by this). */
-    protected boolean idle;
 
     private long releases;
     private long completed;
     private long deadlineMisses;
     private long lateReleases;
 
-    /**
-     * The runtime of {@code handler}; {@code deadline} in ns ({@link #NO_DEADLINE}: none),
-     * {@code backingStore}: bytes for nested private memories, {@code stackSize}: the
-     * thread's stack (0: the JVM's default).
-     */
-    protected HandlerRuntime(AsyncEventHandler handler, String name, int priority, Area privateArea, long deadline,
-            long backingStore, long stackSize) {
-        this.handler = handler;
-        this.name = name;
-        this.priority = priority;
-        this.privateArea = privateArea;
-        this.deadline = deadline;
-        this.backingStore = backingStore;
-        this.stackSize = stackSize;
-        this.time = RunState.current().time();
+    /** The runtime of the handler {@code setup} describes; {@code kind}: periodic, aperiodic or oneshot. */
+    protected HandlerRuntime(HandlerSetup setup, String kind) {
+        super(RunState.current().time());
+        this.handler = setup.handler;
+        this.name = setup.name;
+        this.kind = kind;
+        this.priority = setup.priority;
+        this.privateArea = setup.privateArea;
+        this.deadline = setup.deadline;
+        this.backingStore = setup.backingStore;
+        this.stackSize = setup.stackSize;
         RunState.current().addHandler(this);
     }
 
@@ -70,7 +63,9 @@ public abstract class HandlerRuntime implements Runnable {
     }
 
     /** periodic, aperiodic or oneshot. */
-    public abstract String kind();
+    public final String kind() {
+        return kind;
+    }
 
     /** The release loop; returns when the mission terminates. */
     protected abstract void releaseLoop() throws Throwable;
@@ -99,38 +94,12 @@ public abstract class HandlerRuntime implements Runnable {
     /** Wakes the handler so that it sees the termination request. */
     protected void wakeForTermination() {
         synchronized (this) {
-            if (idle) {
-                idle = false;
-                time.leaveIdle();
-            }
-            notifyAll();
+            leaveIdle();
         }
         ScjThread t = thread;
         if (t != null && t != Thread.currentThread()) {
             time.wake(t);
         }
-    }
-
-    /** Waits (on this monitor, held by the caller) as an idle participant of the time source. */
-    protected final void idleWait() {
-        if (!idle) {
-            idle = true;
-            time.enterIdle();
-        }
-        try {
-            wait();
-        } catch (InterruptedException e) {
-            // Re-checked by the caller's loop; termination uses its own flag.
-        }
-    }
-
-    /** Makes an idle handler runnable (caller holds this monitor). */
-    protected final void leaveIdle() {
-        if (idle) {
-            idle = false;
-            time.leaveIdle();
-        }
-        notifyAll();
     }
 
     @Override
@@ -142,10 +111,7 @@ public abstract class HandlerRuntime implements Runnable {
             mission.requestTermination();
         } finally {
             synchronized (this) {
-                if (idle) {
-                    idle = false;
-                    time.leaveIdle();
-                }
+                endIdle();
             }
             mission.handlerEnded();
             time.threadEnded();

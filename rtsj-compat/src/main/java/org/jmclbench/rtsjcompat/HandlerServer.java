@@ -16,18 +16,17 @@ import javax.realtime.MemoryArea;
  * {@link TimeSource} (started, idle while it waits for a fire, ended), so that virtual time
  * advances only when every handler waits.
  */
-public final class HandlerServer implements Runnable {
+public final class HandlerServer extends IdleParticipant implements Runnable {
     private final Runnable handler;
     private final MemoryArea area;
     private final ScjThread thread;
-    private final TimeSource time = TimeSource.current();
     private int fireCount;
-    private boolean idle;
     private long fires;
     private boolean stopped;
 
     /** Starts the server of {@code handler} (its {@code run()} handles the pending fires) at the given Java priority. */
     public HandlerServer(Runnable handler, String name, int javaPriority, MemoryArea area) {
+        super(TimeSource.current());
         this.handler = handler;
         this.area = area;
         this.thread = new ScjThread(this, name, javaPriority);
@@ -53,16 +52,7 @@ public final class HandlerServer implements Runnable {
         }
         fireCount++;
         fires++;
-        wake();
-    }
-
-    // Under this monitor: the waiting server is runnable again, before it wakes (TimeSource's protocol).
-    private void wake() {
-        if (idle) {
-            idle = false;
-            time.leaveIdle();
-        }
-        notifyAll();
+        leaveIdle();
     }
 
     /** All fires so far. */
@@ -95,7 +85,7 @@ public final class HandlerServer implements Runnable {
     public synchronized int getAndIncrement() {
         int c = fireCount;
         fireCount = c + 1;
-        wake();
+        leaveIdle();
         return c;
     }
 
@@ -119,16 +109,9 @@ public final class HandlerServer implements Runnable {
     }
 
     private synchronized boolean awaitFire() {
+        // An interrupt is for the handler's code, not for the server: it keeps waiting.
         while (fireCount == 0 && !stopped) {
-            if (!idle) {
-                idle = true;
-                time.enterIdle();
-            }
-            try {
-                wait();
-            } catch (InterruptedException e) {
-                // an interrupt is for the handler's code, not for the server: keep waiting
-            }
+            idleWait();
         }
         return fireCount > 0 || !stopped;
     }
@@ -136,6 +119,6 @@ public final class HandlerServer implements Runnable {
     /** Ends the server once the fires pending now are handled; later fires are ignored. */
     public synchronized void stop() {
         stopped = true;
-        wake();
+        leaveIdle();
     }
 }

@@ -6,15 +6,15 @@ package org.jmclbench.rtsjcompat;
  * the sequencer wait until all have ended. A handler ends after its release in progress
  * completes (SCJ has no asynchronous transfer of control).
  */
-public final class MissionControl {
+public final class MissionControl extends IdleParticipant {
     private final HandlerRuntime[] handlers;
     private volatile boolean terminating;
     private int running;
-    private boolean sequencerIdle;
     private long start = -1;
 
     /** The execute phase of a mission with these handlers. */
     public MissionControl(HandlerRuntime[] handlers) {
+        super(RunState.current().time());
         this.handlers = handlers.clone();
     }
 
@@ -70,33 +70,18 @@ public final class MissionControl {
         }
     }
 
+    // The sequencer waits as an idle participant of the time source; only the handlers' ends matter here.
     private synchronized void awaitHandlersEnded() {
-        TimeSource time = RunState.current().time();
         while (running > 0) {
-            if (!sequencerIdle) {
-                sequencerIdle = true;
-                time.enterIdle();
-            }
-            try {
-                wait();
-            } catch (InterruptedException e) {
-                // Only the handlers' ends matter here.
-            }
+            idleWait();
         }
-        if (sequencerIdle) {
-            sequencerIdle = false;
-            time.leaveIdle();
-        }
+        endIdle();
     }
 
     synchronized void handlerEnded() {
         running--;
         if (running == 0) {
-            if (sequencerIdle) {
-                sequencerIdle = false;
-                RunState.current().time().leaveIdle();
-            }
-            notifyAll();
+            leaveIdle();
         }
     }
 }

@@ -1,7 +1,5 @@
 package org.jmclbench.rtsjcompat;
 
-import javax.realtime.AsyncEventHandler;
-
 /**
  * One release at a scheduled absolute time, rearmed by {@link #schedule(long)} (also from
  * within its own release) and cancelled by {@link #deschedule()}. Rescheduling a sleeping
@@ -14,14 +12,8 @@ public final class OneShotRuntime extends HandlerRuntime {
     private long initialOffset;
 
     /** A one-shot handler with no release scheduled. */
-    public OneShotRuntime(AsyncEventHandler handler, String name, int priority, Area privateArea, long deadline,
-            long backingStore, long stackSize) {
-        super(handler, name, priority, privateArea, deadline, backingStore, stackSize);
-    }
-
-    @Override
-    public String kind() {
-        return "oneshot";
+    public OneShotRuntime(HandlerSetup setup) {
+        super(setup, "oneshot");
     }
 
     /** Schedules the first release {@code offset} ns after the mission start. */

@@ -1,7 +1,5 @@
 package org.jmclbench.rtsjcompat;
 
-import javax.realtime.AsyncEventHandler;
-
 /**
  * Periodic releases at the absolute times {@code missionStart + start + k * period}: the
  * thread sleeps to each absolute time (never to a relative one, so lateness does not
@@ -16,19 +14,13 @@ public final class PeriodicRuntime extends HandlerRuntime {
     private long lastRelease = -1;
 
     /** A periodic handler: first release {@code start} ns after the mission start, then every {@code period} ns. */
-    public PeriodicRuntime(AsyncEventHandler handler, String name, int priority, Area privateArea, long deadline,
-            long backingStore, long stackSize, long start, long period) {
-        super(handler, name, priority, privateArea, deadline, backingStore, stackSize);
+    public PeriodicRuntime(HandlerSetup setup, long start, long period) {
+        super(setup, "periodic");
         if (period <= 0) {
             throw new IllegalArgumentException("a PeriodicEventHandler needs a positive period");
         }
         this.start = start;
         this.period = period;
-    }
-
-    @Override
-    public String kind() {
-        return "periodic";
     }
 
     @Override

@@ -118,19 +118,6 @@ final class Apps {
         return h;
     }
 
-    /** A periodic handler with an explicit deadline. */
-    static PeriodicEventHandler periodic(String name, long periodMs, long deadlineMs, long privateSize, Runnable body) {
-        PeriodicEventHandler h = new PeriodicEventHandler(prio(60),
-                new PeriodicParameters(null, ms(periodMs), ms(deadlineMs), null), scope(privateSize), null, name) {
-            @Override
-            public void handleAsyncEvent() {
-                body.run();
-            }
-        };
-        h.register();
-        return h;
-    }
-
     /** An aperiodic handler running {@code body} at each release. */
     static AperiodicEventHandler aperiodic(String name, long privateSize, Runnable body) {
         AperiodicEventHandler h = new AperiodicEventHandler(prio(55), new AperiodicParameters(), scope(privateSize),

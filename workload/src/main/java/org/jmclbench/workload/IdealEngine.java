@@ -11,7 +11,6 @@ import org.jmclbench.workload.engine.Engine;
 import org.jmclbench.workload.engine.EngineFacts;
 import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
-import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.workload.output.HeapUse;
 import org.jmclbench.workload.release.GcLog;
 
@@ -38,9 +37,9 @@ public final class IdealEngine implements Engine {
         Timeline timeline = dataset.timeline();
         JobRecords records = new JobRecords(timeline, options.covariance);
         if (options.warmupS > 0) {
-            IdealRun.warmup(dataset, timeline, newLocalizer(options, dataset), options.warmupS);
+            IdealRun.warmup(dataset, timeline, in.newLocalizer(), options.warmupS);
         }
-        Localizer localizer = newLocalizer(options, dataset);
+        Localizer localizer = in.newLocalizer();
         HeapUse heap = HeapUse.begin();
         // The GC log covers the measured replay only, as in real-time runs.
         GcLog gcLog = options.gcLog ? GcLog.start(new File(in.folder, "gc.log")) : null;
@@ -55,9 +54,5 @@ public final class IdealEngine implements Engine {
             }
         }
         return new EngineResult(records, Collections.singletonList(heap.end(null, records)), EngineFacts.NONE);
-    }
-
-    private static Localizer newLocalizer(RunOptions o, Dataset d) {
-        return Localizers.create(o.mclConfig(), d.playground, d.startX, d.startY, d.startTheta);
     }
 }

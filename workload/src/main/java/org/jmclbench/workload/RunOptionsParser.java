@@ -56,97 +56,73 @@ public final class RunOptionsParser {
     /** Parses args; a leading {@code run} is accepted and ignored. */
     public static RunOptions parse(String[] args) throws BadInputException {
         RunOptions o = new RunOptions();
-        int i = 0;
-        if (args.length > 0 && "run".equals(args[0])) {
-            i = 1;
-        }
+        Line line = new Line(args, args.length > 0 && "run".equals(args[0]) ? 1 : 0);
         boolean terminateFlag = false;
         boolean policyGiven = false;
         boolean designGiven = false;
-        while (i < args.length) {
-            String arg = args[i++];
-            String name = arg;
-            String inline = null;
-            if (arg.startsWith("--")) {
-                int eq = arg.indexOf('=');
-                if (eq > 0) {
-                    name = arg.substring(0, eq);
-                    inline = arg.substring(eq + 1);
-                }
-            }
+        while (line.hasNext()) {
+            String name = line.option();
             switch (name) {
                 case "-h":
                 case "--help":
-                    noValue(name, inline);
+                    line.noValue(name);
                     o.help = true;
                     break;
                 case "-p":
                 case "--particles":
-                    o.particles = intIn(name, value(name, inline, args, i), 1, 100_000_000);
-                    i += inline == null ? 1 : 0;
+                    o.particles = intIn(name, line.value(name), 1, 100_000_000);
                     break;
                 case "-n":
                 case "--number":
-                    o.number = intIn(name, value(name, inline, args, i), 0, Integer.MAX_VALUE);
-                    i += inline == null ? 1 : 0;
+                    o.number = intIn(name, line.value(name), 0, Integer.MAX_VALUE);
                     break;
                 case "-j":
                 case "--runtime-name":
-                    o.runtimeName = pathComponent(name, value(name, inline, args, i));
-                    i += inline == null ? 1 : 0;
+                    o.runtimeName = pathComponent(name, line.value(name));
                     break;
                 case "-O":
                 case "--out":
-                    o.out = nonEmpty(name, value(name, inline, args, i));
-                    i += inline == null ? 1 : 0;
+                    o.out = nonEmpty(name, line.value(name));
                     break;
                 case "-odo":
                 case "--odo":
-                    o.odo = nonEmpty(name, value(name, inline, args, i));
-                    i += inline == null ? 1 : 0;
+                    o.odo = nonEmpty(name, line.value(name));
                     break;
                 case "-laser":
                 case "--laser":
-                    o.laser = nonEmpty(name, value(name, inline, args, i));
-                    i += inline == null ? 1 : 0;
+                    o.laser = nonEmpty(name, line.value(name));
                     break;
                 case "-real":
                 case "--real":
-                    o.real = nonEmpty(name, value(name, inline, args, i));
-                    i += inline == null ? 1 : 0;
+                    o.real = nonEmpty(name, line.value(name));
                     break;
                 case "--dataset":
-                    o.dataset = nonEmpty(name, value(name, inline, args, i));
-                    i += inline == null ? 1 : 0;
+                    o.dataset = nonEmpty(name, line.value(name));
                     break;
                 case "-T":
                     terminateFlag = true;
                     break;
                 case "--policy":
-                    o.policy = policy(name, value(name, inline, args, i));
+                    o.policy = policy(name, line.value(name));
                     policyGiven = true;
-                    i += inline == null ? 1 : 0;
                     break;
                 case "--ideal":
-                    noValue(name, inline);
+                    line.noValue(name);
                     o.ideal = true;
                     break;
                 case "-c":
                 case "--covariance":
-                    noValue(name, inline);
+                    line.noValue(name);
                     o.covariance = true;
                     break;
                 case "--memory":
-                    o.memory = choice(name, value(name, inline, args, i), MclConfig.Memory.class);
-                    i += inline == null ? 1 : 0;
+                    o.memory = choice(name, line.value(name), MclConfig.Memory.class);
                     break;
                 case "--engine":
-                    o.engine = Engines.named(name, value(name, inline, args, i)).name();
-                    i += inline == null ? 1 : 0;
+                    o.engine = Engines.named(name, line.value(name)).name();
                     break;
                 case "--rtsj-design": {
-                    String v = value(name, inline, args, i);
-                    i += inline == null ? 1 : 0;
+                    String v = line.value(name);
                     o.rtsjDesign = RtsjDesign.of(v);
                     if (o.rtsjDesign == null) {
                         throw BadInputException.ofOption(name, "'" + v + "' is not one of thesis|atomic");
@@ -155,8 +131,7 @@ public final class RunOptionsParser {
                     break;
                 }
                 case "--area-size": {
-                    String v = value(name, inline, args, i);
-                    i += inline == null ? 1 : 0;
+                    String v = line.value(name);
                     int eq = v.indexOf('=');
                     if (eq <= 0) {
                         throw BadInputException.ofOption(name, "'" + v + "' must be AREA=BYTES (e.g. mission=200000)");
@@ -171,40 +146,32 @@ public final class RunOptionsParser {
                     break;
                 }
                 case "--estimate":
-                    o.estimate = choice(name, value(name, inline, args, i), MclConfig.Estimate.class);
-                    i += inline == null ? 1 : 0;
+                    o.estimate = choice(name, line.value(name), MclConfig.Estimate.class);
                     break;
                 case "--resample":
-                    o.resample = choice(name, value(name, inline, args, i), MclConfig.Resample.class);
-                    i += inline == null ? 1 : 0;
+                    o.resample = choice(name, line.value(name), MclConfig.Resample.class);
                     break;
                 case "--init":
-                    o.init = choice(name, value(name, inline, args, i), MclConfig.Init.class);
-                    i += inline == null ? 1 : 0;
+                    o.init = choice(name, line.value(name), MclConfig.Init.class);
                     break;
                 case "--seed":
-                    o.seed = longValue(name, value(name, inline, args, i));
-                    i += inline == null ? 1 : 0;
+                    o.seed = longValue(name, line.value(name));
                     break;
                 case "--time-scale":
-                    o.timeScale = doubleIn(name, value(name, inline, args, i), false);
-                    i += inline == null ? 1 : 0;
+                    o.timeScale = doubleIn(name, line.value(name), false);
                     break;
                 case "--warmup":
-                    o.warmupS = doubleIn(name, value(name, inline, args, i), true);
-                    i += inline == null ? 1 : 0;
+                    o.warmupS = doubleIn(name, line.value(name), true);
                     break;
                 case "--spin-us":
-                    o.spinUs = intIn(name, value(name, inline, args, i), 0, 1_000_000);
-                    i += inline == null ? 1 : 0;
+                    o.spinUs = intIn(name, line.value(name), 0, 1_000_000);
                     break;
                 case "--gc-log":
-                    noValue(name, inline);
+                    line.noValue(name);
                     o.gcLog = true;
                     break;
                 case "--load-alloc": {
-                    String v = value(name, inline, args, i);
-                    i += inline == null ? 1 : 0;
+                    String v = line.value(name);
                     String[] parts = v.split(",", -1);
                     if (parts.length != 2) {
                         throw BadInputException.ofOption(name, "'" + v + "' must be MBPS,LIVEMB (e.g. 200,32)");
@@ -214,18 +181,17 @@ public final class RunOptionsParser {
                     break;
                 }
                 case "--load-name":
-                    o.loadName = pathComponent(name, value(name, inline, args, i));
-                    i += inline == null ? 1 : 0;
+                    o.loadName = pathComponent(name, line.value(name));
                     break;
                 case "--force":
-                    noValue(name, inline);
+                    line.noValue(name);
                     o.force = true;
                     break;
                 default:
-                    if (arg.startsWith("-")) {
+                    if (name.startsWith("-")) {
                         throw BadInputException.ofOption(name, "unknown option (see --help)");
                     }
-                    throw BadInputException.ofOption(arg, "unexpected argument (see --help)");
+                    throw BadInputException.ofOption(name, "unexpected argument (see --help)");
             }
         }
         if (o.help) {
@@ -266,19 +232,50 @@ public final class RunOptionsParser {
         return p;
     }
 
-    private static String value(String name, String inline, String[] args, int i) throws BadInputException {
-        if (inline != null) {
-            return inline;
-        }
-        if (i >= args.length) {
-            throw BadInputException.ofOption(name, "needs a value");
-        }
-        return args[i];
-    }
+    /** The command line as it is read: the arguments, the next one's index and the current option's inline value. */
+    private static final class Line {
+        private final String[] args;
+        private int next;
+        private String inline;
 
-    private static void noValue(String name, String inline) throws BadInputException {
-        if (inline != null) {
-            throw BadInputException.ofOption(name, "takes no value");
+        Line(String[] args, int first) {
+            this.args = args;
+            this.next = first;
+        }
+
+        boolean hasNext() {
+            return next < args.length;
+        }
+
+        /** Reads the next argument: an option's name; the value of a {@code --name=value} is kept for {@link #value}. */
+        String option() {
+            String arg = args[next++];
+            inline = null;
+            if (arg.startsWith("--")) {
+                int eq = arg.indexOf('=');
+                if (eq > 0) {
+                    inline = arg.substring(eq + 1);
+                    return arg.substring(0, eq);
+                }
+            }
+            return arg;
+        }
+
+        /** The current option's value: the one given with {@code =}, else the next argument, which it consumes. */
+        String value(String name) throws BadInputException {
+            if (inline != null) {
+                return inline;
+            }
+            if (next >= args.length) {
+                throw BadInputException.ofOption(name, "needs a value");
+            }
+            return args[next++];
+        }
+
+        void noValue(String name) throws BadInputException {
+            if (inline != null) {
+                throw BadInputException.ofOption(name, "takes no value");
+            }
         }
     }
 

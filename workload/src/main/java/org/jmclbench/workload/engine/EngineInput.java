@@ -3,8 +3,10 @@ package org.jmclbench.workload.engine;
 import java.io.File;
 import java.io.PrintStream;
 
+import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
+import org.jmclbench.workload.mcl.Localizers;
 
 /** What an engine gets: the run's options, its dataset (validated), its partial run folder and where notes go. */
 public final class EngineInput {
@@ -20,5 +22,11 @@ public final class EngineInput {
         this.dataset = dataset;
         this.folder = folder;
         this.err = err;
+    }
+
+    /** A new localizer of the options' configuration at the dataset's start pose (primed: see {@link Localizers#create}). */
+    public Localizer newLocalizer() {
+        return Localizers.create(options.mclConfig(), dataset.playground, dataset.startX, dataset.startY,
+                dataset.startTheta);
     }
 }

@@ -13,7 +13,6 @@ import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.engine.Engine;
 import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
-import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.workload.output.HeapUse;
 
 /**
@@ -54,7 +53,7 @@ public final class JavaSeEngine implements Engine {
         Dataset d = in.dataset;
         Timeline timeline = d.timeline();
         JobRecords records = new JobRecords(timeline, options.covariance);
-        Localizer localizer = Localizers.create(options.mclConfig(), d.playground, d.startX, d.startY, d.startTheta);
+        Localizer localizer = in.newLocalizer();
         HeapUse heap = HeapUse.begin();
         JavaSeFacts facts = RealTimeRun.run(options, d, timeline, localizer, records, in.folder, in.err);
         return new EngineResult(records, Collections.singletonList(heap.end(facts.allocatedBytes(), records)), facts);

@@ -55,15 +55,20 @@ class RtsjReplayTest {
         return new RtsjReplay(schedule, policy, design, job, records);
     }
 
+    /** The job and the records of one terminate replay. */
+    private static final class Attempt {
+        final LongFirstJob job = new LongFirstJob();
+        final JobRecords records = records();
+    }
+
     /** A terminate replay in which the first job started before the second release (at most five tries). */
-    private static RtsjReplay firstJobStarted(RtsjDesign design, LongFirstJob[] job, JobRecords[] r) throws Exception {
+    private static Attempt firstJobStarted(RtsjDesign design) throws Exception {
         for (int attempt = 0; ; attempt++) {
-            job[0] = new LongFirstJob();
-            r[0] = records();
-            RtsjReplay replay = replay(design, OverrunPolicy.TERMINATE, job[0], r[0]);
-            replay.run(60_000_000_000L);
-            if (r[0].startNs[0] >= 0 && r[0].startNs[0] < SECOND_RELEASE_NS || attempt == 4) {
-                return replay;
+            Attempt a = new Attempt();
+            replay(design, OverrunPolicy.TERMINATE, a.job, a.records).run(60_000_000_000L);
+            long start = a.records.startNs[0];
+            if (start >= 0 && start < SECOND_RELEASE_NS || attempt == 4) {
+                return a;
             }
         }
     }
@@ -74,14 +79,11 @@ class RtsjReplayTest {
 
     @Test
     void atomicDeliversTheAieAtTheNextPollBeforeTheCommit() throws Exception {
-        LongFirstJob[] jobs = new LongFirstJob[1];
-        JobRecords[] records = new JobRecords[1];
-        RtsjReplay replay = firstJobStarted(RtsjDesign.ATOMIC, jobs, records);
-        LongFirstJob job = jobs[0];
-        JobRecords r = records[0];
+        Attempt a = firstJobStarted(RtsjDesign.ATOMIC);
+        JobRecords r = a.records;
         assertEquals(JobRecords.TERMINATED, r.outcome[0]);
         assertEquals(JobRecords.DONE, r.outcome[1]);
-        assertEquals(1, job.commits.get(), "only the second job committed");
+        assertEquals(1, a.job.commits.get(), "only the second job committed");
         assertEquals(-1, r.abortFromNs(1), "nothing asked the last job to abort");
         assertTrue(r.abortFromNs(0) >= 0, "an AIE was fired at the first job");
         long latency = r.endNs[0] - r.abortFromNs(0);
@@ -93,13 +95,10 @@ class RtsjReplayTest {
 
     @Test
     void thesisDefersTheAieUntilTheJobHasRunToItsEnd() throws Exception {
-        LongFirstJob[] jobs = new LongFirstJob[1];
-        JobRecords[] records = new JobRecords[1];
-        RtsjReplay replay = firstJobStarted(RtsjDesign.THESIS, jobs, records);
-        LongFirstJob job = jobs[0];
-        JobRecords r = records[0];
+        Attempt a = firstJobStarted(RtsjDesign.THESIS);
+        JobRecords r = a.records;
         assertNotEquals(JobRecords.TERMINATED, r.outcome[0], "the robot's monitor defers the AIE");
-        assertEquals(2, job.commits.get());
+        assertEquals(2, a.job.commits.get());
         assertTrue(r.abortFromNs(0) >= 0, "an AIE was fired at the first job");
         // The abort took the job's remaining time: from the fire, the job ran on to the end of its
         // 400 ms (not timed against the release: a late dispatcher fires later, leaving less).

@@ -12,6 +12,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 
@@ -31,21 +32,21 @@ public final class RtsjSeededChecks {
         String replay = EngineMutant.REPLAY.replace('/', '.');
         String aie = EngineMutant.AIE.replace('/', '.');
         List<JpfCheck> l = new ArrayList<>();
-        l.add(mutant(root, "unlock-not-in-finally", EngineMutant.UNLOCK_NOT_IN_FINALLY, Property.P8, "terminate",
-                "atomic", task + ".lockAndRun", "robot's lock released outside finally"));
-        l.add(mutant(root, "clear-forgotten", EngineMutant.CLEAR_FORGOTTEN, Property.P9, "terminate", "thesis",
+        l.add(mutant(root, EngineMutant.UNLOCK_NOT_IN_FINALLY, Property.P8, "terminate", "atomic",
+                task + ".lockAndRun", "robot's lock released outside finally"));
+        l.add(mutant(root, EngineMutant.CLEAR_FORGOTTEN, Property.P9, "terminate", "thesis",
                 aie + ".doInterruptible", "doInterruptible that does not clear its AIE"));
-        l.add(mutant(root, "aie-escapes", EngineMutant.AIE_ESCAPES, Property.P9, "terminate", "atomic",
+        l.add(mutant(root, EngineMutant.AIE_ESCAPES, Property.P9, "terminate", "atomic",
                 aie + ".doInterruptible", "doInterruptible that lets its AIE escape"));
-        l.add(mutant(root, "poll-in-monitor", EngineMutant.POLL_IN_MONITOR, Property.P9, "terminate", "thesis",
+        l.add(mutant(root, EngineMutant.POLL_IN_MONITOR, Property.P9, "terminate", "thesis",
                 task + ".lockAndRun", "delivery points inside the robot's monitor"));
-        l.add(mutant(root, "poll-in-non-ai", EngineMutant.POLL_IN_NON_AI, Property.P9, "terminate", "atomic",
+        l.add(mutant(root, EngineMutant.POLL_IN_NON_AI, Property.P9, "terminate", "atomic",
                 task + ".runJob", "delivery point woven into a method that is not AI-enabled"));
-        l.add(mutant(root, "lost-notify", EngineMutant.LOST_NOTIFY, Property.P1, "queue", "thesis",
+        l.add(mutant(root, EngineMutant.LOST_NOTIFY, Property.P1, "queue", "thesis",
                 replay + ".awaitEveryEvent", "end of an event not notified"));
-        l.add(mutant(root, "ends-twice", EngineMutant.ENDS_TWICE, Property.P5, "queue", "thesis",
+        l.add(mutant(root, EngineMutant.ENDS_TWICE, Property.P5, "queue", "thesis",
                 replay + ".ended", "release that ends its event twice"));
-        l.add(mutant(root, "latest-lost", EngineMutant.LATEST_LOST, Property.P7, "terminate", "thesis",
+        l.add(mutant(root, EngineMutant.LATEST_LOST, Property.P7, "terminate", "thesis",
                 replay + ".dispatch", "dispatcher that never publishes the latest release"));
         l.add(RtsjChecks.check("rtsj-seeded-commit-before-poll", EnumSet.of(Property.P3), "terminate", "atomic",
                 RtsjChecks.config(), Expectation.violation(Property.P3, CommitBeforePoll.class, "predict"),
@@ -53,9 +54,10 @@ public final class RtsjSeededChecks {
         return l;
     }
 
-    private static JpfCheck mutant(Path root, String name, EngineMutant m, Property p, String policy, String design,
-                                   String location, String what) {
-        String id = "rtsj-seeded-" + name;
+    /** The check of mutant {@code m}, named after it ({@code rtsj-seeded-} and its name in lower case, dashed). */
+    private static JpfCheck mutant(Path root, EngineMutant m, Property p, String policy, String design, String location,
+                                   String what) {
+        String id = "rtsj-seeded-" + m.name().toLowerCase(Locale.ROOT).replace('_', '-');
         Map<String, String> config = RtsjChecks.config();
         config.put(JpfRunner.PREPEND, m.writeUnder(root, id).toAbsolutePath().toString());
         return RtsjChecks.check(id, EnumSet.of(p), policy, design, config, new Expectation(p, location, Set.of()), null,

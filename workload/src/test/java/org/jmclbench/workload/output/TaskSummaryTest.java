@@ -50,13 +50,18 @@ class TaskSummaryTest {
         assertTrue(text.indexOf("\"cpuNs\"") < text.indexOf("\"deadlineMisses\""), "new keys after the thesis's");
     }
 
-    @Test
-    void theAbortLatencySplitsAtTheMomentTheJobSawTheRequest() {
+    /** {@link #records()} with job 1 (started at 100 ms) asked to abort at 110 ms and ended at 110.05 ms. */
+    private static JobRecords withAnAbort() {
         JobRecords r = records();
-        // job 1 (started at 100 ms) asked to abort at 110 ms, saw it at 110.02 ms, ended at 110.05 ms
         r.outcome[1] = JobRecords.TERMINATED;
         r.endNs[1] = 110_050_000;
         r.requestAbort(1, 110_000_000);
+        return r;
+    }
+
+    @Test
+    void theAbortLatencySplitsAtTheMomentTheJobSawTheRequest() {
+        JobRecords r = withAnAbort();
         r.abortSeen(1, 110_020_000);
         r.abortSeen(1, 110_040_000); // a later poll changes nothing
         // job 0 asked after its end: nothing took hold, so its seen time does not count
@@ -74,11 +79,7 @@ class TaskSummaryTest {
 
     @Test
     void anEngineThatDoesNotRecordWhenTheJobSawItHasNoSplit() {
-        JobRecords r = records();
-        r.outcome[1] = JobRecords.TERMINATED;
-        r.endNs[1] = 110_050_000;
-        r.requestAbort(1, 110_000_000);
-        TaskSummary s = TaskSummary.count(r, Timeline.PREDICT);
+        TaskSummary s = TaskSummary.count(withAnAbort(), Timeline.PREDICT);
         assertEquals(1, s.abortLatency().count);
         assertEquals(0, s.abortNotice().count);
         assertTrue(json(s).contains("\"abortNoticeNs\": {\n    \"count\": 0"), json(s));

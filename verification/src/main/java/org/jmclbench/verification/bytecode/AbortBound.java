@@ -127,9 +127,9 @@ public final class AbortBound {
     }
 
     /**
-     * The signal classes the entries hand the job: each reachable {@code getstatic} of a field
-     * whose type is an AbortSignal; for an interface-typed field, the class its owner's static
-     * initialiser stores into it.
+     * The signal classes the entries hand the job: each reachable {@code getstatic} or
+     * {@code getfield} of a field whose type is an AbortSignal class; for an interface-typed static
+     * field, the class its owner's static initialiser stores into it.
      */
     List<String> signals(Collection<ClassPool.Owned> entries) {
         Set<String> out = new LinkedHashSet<>();
@@ -137,8 +137,8 @@ public final class AbortBound {
             AbstractInsnNode[] insns = e.method().instructions.toArray();
             BitSet reachable = Reachable.of(e.method(), known);
             for (int i = 0; i < insns.length; i++) {
-                if (reachable.get(i) && insns[i] instanceof FieldInsnNode f && f.getOpcode() == Opcodes.GETSTATIC
-                        && f.desc.startsWith("L")) {
+                if (reachable.get(i) && insns[i] instanceof FieldInsnNode f
+                        && (f.getOpcode() == Opcodes.GETSTATIC || f.getOpcode() == Opcodes.GETFIELD) && f.desc.startsWith("L")) {
                     String type = Type.getType(f.desc).getInternalName();
                     if (!pool.isSubtype(type, SIGNAL)) {
                         continue;
@@ -146,7 +146,7 @@ public final class AbortBound {
                     ClassNode t = pool.get(type);
                     if (t != null && (t.access & Opcodes.ACC_INTERFACE) == 0) {
                         out.add(type);
-                    } else {
+                    } else if (f.getOpcode() == Opcodes.GETSTATIC) {
                         out.addAll(storedBy(f.owner, f.name));
                     }
                 }

@@ -18,7 +18,6 @@ import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
 import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.workload.output.HeapUse;
-import org.jmclbench.rtsjcompat.Atc;
 import org.jmclbench.workload.release.EventJob;
 import org.jmclbench.workload.release.JavaSeEngine;
 import org.jmclbench.workload.release.LocalizerJob;
@@ -34,8 +33,6 @@ import org.jmclbench.workload.shim.RuntimeShim;
 public final class RtsjEngine implements Engine {
     /** Events of the class-loading replay that runs before the measured one when there is no warm-up. */
     private static final int PRELOAD_EVENTS = 4;
-    /** Polls of {@link Atc#primeDelivery}: enough for the JIT's profile of the delivery branch. */
-    private static final int PRIMING_POLLS = 20_000;
     /** The abort rehearsal's events are this far apart: each finds the previous one's job polling. */
     private static final long REHEARSAL_SPACING_NS = 2_000_000L;
     /** Beyond the replay's last release, how long the engine waits for the jobs before it calls the run hung. */
@@ -83,7 +80,7 @@ public final class RtsjEngine implements Engine {
                 }
             }
             if (o.policy == OverrunPolicy.TERMINATE) {
-                Atc.primeDelivery(PRIMING_POLLS);
+                RuntimeShim.get().beforeAborts();
                 rehearseAborts(o, d);
             }
             JobRecords records = new JobRecords(timeline, o.covariance);

@@ -2,6 +2,7 @@ package org.jmclbench.workload.shim;
 
 import java.util.List;
 
+import org.jmclbench.rtsjcompat.Atc;
 import org.jmclbench.rtsjcompat.RtsjRuntime;
 import org.jmclbench.rtsjcompat.ScjLauncher;
 
@@ -18,6 +19,14 @@ public final class CompatShim extends RuntimeShim {
     @Override
     public void beforeReplay() {
         RtsjRuntime.reset();
+    }
+
+    /** Polls of {@link Atc#primeDelivery}: enough for the JIT's profile of the delivery branch. */
+    private static final int PRIMING_POLLS = 20_000;
+
+    @Override
+    public void beforeAborts() {
+        Atc.primeDelivery(PRIMING_POLLS);
     }
 
     @Override

@@ -35,6 +35,13 @@ public abstract class RuntimeShim {
     public abstract void beforeReplay();
 
     /**
+     * Before any schedulable of a run that will fire AIEs: readies the layer's ATC so that the
+     * first deliveries cost what later ones do. Nothing on an RTSJ VM, whose ATC is its own.
+     */
+    public void beforeAborts() {
+    }
+
+    /**
      * After a replay whose events have all ended: ends the event handlers' threads (each after
      * the fires pending now), waits up to {@code timeoutMs} in all and returns the names of those
      * still running (a handler that never ends: the engine's failure).

@@ -96,7 +96,7 @@ int jm_timeline_build(jm_timeline *tl, const jm_dataset *ds, double time_scale, 
 	for (i = 0; i < tl->n; i++) {
 		jm_job *j = &tl->jobs[i];
 
-		j->start_ns = j->end_ns = j->cpu_ns = j->wake_ns = j->abort_ns = -1;
+		j->start_ns = j->end_ns = j->cpu_ns = j->wake_ns = j->abort_ns = j->seen_ns = -1;
 		j->release_ns = tl->events[i].release_ns;
 		j->deadline_ns = tl->events[i].deadline_ns;
 		j->outcome = JM_OUTCOME_PENDING;
@@ -114,6 +114,13 @@ int64_t jm_abort_from_ns(const jm_job *j)
 	return from < j->end_ns ? from : -1;
 }
 
+int64_t jm_abort_seen_from_ns(const jm_job *j)
+{
+	int64_t from = jm_abort_from_ns(j);
+
+	return from >= 0 && j->seen_ns >= from && j->seen_ns <= j->end_ns ? j->seen_ns : -1;
+}
+
 void jm_timeline_free(jm_timeline *tl)
 {
 	free(tl->events);
@@ -123,7 +130,7 @@ void jm_timeline_free(jm_timeline *tl)
 	tl->n = 0;
 }
 
-static int run_job(jm_mcl *m, const jm_event *e, const atomic_int *abort)
+static int run_job(jm_mcl *m, const jm_event *e, jm_abort *abort)
 {
 	if (e->task == JM_TASK_PREDICT)
 		return jm_mcl_predict(m, e->arg[0], e->arg[1], e->arg[2], abort);
@@ -219,7 +226,7 @@ struct engine {
 	int running;              /* event whose job is on the robot, or -1 */
 	int dispatch_done;
 	int failed;
-	atomic_int abort;         /* the job on the robot is asked to stop */
+	jm_abort abort;           /* the job on the robot is asked to stop */
 	int dispatcher_policy, dispatcher_priority;
 };
 
@@ -257,7 +264,8 @@ static void *handler_main(void *arg)
 			break;
 		k = e->fifo[e->head++];
 		e->running = k;
-		atomic_store_explicit(&e->abort, 0, memory_order_relaxed);
+		atomic_store_explicit(&e->abort.requested, 0, memory_order_relaxed);
+		e->abort.seen_ns = -1;
 		pthread_mutex_unlock(&e->lock);
 
 		c0 = jm_thread_cpu_ns();
@@ -271,6 +279,7 @@ static void *handler_main(void *arg)
 		j->start_ns = start - e->t0;
 		j->end_ns = end - e->t0;
 		j->cpu_ns = c0 >= 0 && c1 >= 0 ? c1 - c0 : -1;
+		j->seen_ns = e->abort.seen_ns >= 0 ? e->abort.seen_ns - e->t0 : -1;
 		if (r == JM_JOB_NOMEM) {
 			e->failed = 1;
 			j->outcome = JM_OUTCOME_TERMINATED;
@@ -324,7 +333,7 @@ static void *dispatcher_main(void *arg)
 			break;
 		case JM_POLICY_TERMINATE:
 			if (e->running >= 0)
-				atomic_store_explicit(&e->abort, 1, memory_order_relaxed);
+				atomic_store_explicit(&e->abort.requested, 1, memory_order_relaxed);
 			/* the request of the superseded event's job (running, waiting or ended), as Java's gates */
 			if (latest >= 0 && e->tl->jobs[latest].abort_ns < 0)
 				e->tl->jobs[latest].abort_ns = wake - e->t0;
@@ -403,7 +412,8 @@ int jm_run_realtime(jm_mcl *m, jm_timeline *tl, enum jm_policy policy, int spin_
 	e.policy = policy;
 	e.spin_ns = (int64_t)spin_us * 1000;
 	e.running = -1;
-	atomic_init(&e.abort, 0);
+	atomic_init(&e.abort.requested, 0);
+	e.abort.seen_ns = -1;
 	e.fifo = malloc(sizeof(int) * (size_t)(tl->n ? tl->n : 1));
 	if (!e.fifo)
 		return -1;

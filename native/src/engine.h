@@ -30,6 +30,7 @@ typedef struct {
 	int64_t start_ns, end_ns, cpu_ns; /* -1 where there is no such time */
 	int64_t wake_ns;                  /* dispatcher wake-up for this release; -1 in ideal runs */
 	int64_t abort_ns;                 /* first abort request (terminate), -1 never; see jm_abort_from_ns */
+	int64_t seen_ns;                  /* when the job's poll first saw it, -1 never; see jm_abort_seen_from_ns */
 	int64_t release_ns, deadline_ns;  /* as recorded (ideal: release = start, deadline -1) */
 	enum jm_outcome outcome;
 	double ex, ey, et;                /* estimate committed by a completed job */
@@ -56,6 +57,13 @@ void jm_timeline_free(jm_timeline *tl);
  * nothing was requested before its end. The abort latency is end_ns minus this.
  */
 int64_t jm_abort_from_ns(const jm_job *j);
+
+/*
+ * When the job saw the abort that took hold of it, the job files' seen_ns (Java's
+ * JobRecords.abortSeenFromNs): -1 when none took hold or the job never saw it. Noticing is this
+ * minus jm_abort_from_ns, stopping end_ns minus this.
+ */
+int64_t jm_abort_seen_from_ns(const jm_job *j);
 
 /* How the real-time engine ran: the scheduling it actually got. */
 typedef struct {

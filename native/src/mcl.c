@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "angles.h"
+#include "clock.h"
 #include "mcl.h"
 
 void jm_playground_default(jm_playground *pg)
@@ -23,9 +24,13 @@ void jm_playground_default(jm_playground *pg)
 	pg->beacon[2][1] = 2.0;
 }
 
-static inline int abort_requested(const atomic_int *abort)
+static inline int abort_requested(jm_abort *abort)
 {
-	return abort && atomic_load_explicit(abort, memory_order_relaxed);
+	if (!abort || !atomic_load_explicit(&abort->requested, memory_order_relaxed))
+		return 0;
+	if (abort->seen_ns < 0)
+		abort->seen_ns = jm_now_ns();
+	return 1;
 }
 
 static void particles_free(jm_particles *p)
@@ -164,7 +169,7 @@ void jm_mcl_free(jm_mcl *m)
 	scratch_free(m);
 }
 
-int jm_mcl_predict(jm_mcl *m, double dx, double dy, double dth, const atomic_int *abort)
+int jm_mcl_predict(jm_mcl *m, double dx, double dy, double dth, jm_abort *abort)
 {
 	const jm_particles *src = &m->buf[m->cur];
 	jm_particles *dst;
@@ -222,7 +227,7 @@ double jm_likelihood(double x, double y, double th, double angle, const jm_playg
 }
 
 int jm_resample_systematic_abortable(const double *w, int n, double u, int *out_idx,
-				     const atomic_int *abort)
+				     jm_abort *abort)
 {
 	double c = w[0];
 	int i = 0, k;
@@ -243,7 +248,7 @@ int jm_resample_systematic_abortable(const double *w, int n, double u, int *out_
 }
 
 int jm_resample_multinomial_abortable(const double *w, int n, jm_rng *r, double *cum,
-				      int *out_idx, const atomic_int *abort)
+				      int *out_idx, jm_abort *abort)
 {
 	double acc = 0.0;
 	int k;
@@ -344,7 +349,7 @@ static void weighted_covariance(const jm_mcl *m, const jm_particles *p, const do
 	cov[5] = ctt;
 }
 
-int jm_mcl_update(jm_mcl *m, double a, const atomic_int *abort)
+int jm_mcl_update(jm_mcl *m, double a, jm_abort *abort)
 {
 	const jm_particles *src = &m->buf[m->cur];
 	jm_particles *dst;

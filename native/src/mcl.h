@@ -3,6 +3,7 @@
 #define JM_MCL_H
 
 #include <stdatomic.h>
+#include <stdint.h>
 
 #include "rng.h"
 
@@ -76,6 +77,15 @@ typedef struct {
 	double cov[6]; /* cxx cxy cxt cyy cyt ctt of the last completed update */
 } jm_mcl;
 
+/*
+ * The abort request a job polls (terminate): set by the dispatcher; the first poll that sees it
+ * notes when (seen_ns, jm_now_ns), which splits the abort latency into noticing and stopping.
+ */
+typedef struct {
+	atomic_int requested;
+	int64_t seen_ns; /* -1 until a poll saw the request; written by the job's thread only */
+} jm_abort;
+
 /* Results of jm_mcl_predict / jm_mcl_update. */
 enum { JM_JOB_DONE = 0, JM_JOB_ABORTED = 1, JM_JOB_NOMEM = -1 };
 
@@ -83,10 +93,10 @@ enum { JM_JOB_DONE = 0, JM_JOB_ABORTED = 1, JM_JOB_NOMEM = -1 };
 int jm_mcl_init(jm_mcl *m, const jm_mcl_config *cfg, const jm_playground *pg);
 /* Frees everything jm_mcl_init allocated; safe on a zeroed or freed filter. */
 void jm_mcl_free(jm_mcl *m);
-/* An odometry job: JM_JOB_DONE, JM_JOB_ABORTED when *abort was seen set, or JM_JOB_NOMEM. */
-int jm_mcl_predict(jm_mcl *m, double dx, double dy, double dth, const atomic_int *abort);
+/* An odometry job: JM_JOB_DONE, JM_JOB_ABORTED when abort->requested was seen set, or JM_JOB_NOMEM. */
+int jm_mcl_predict(jm_mcl *m, double dx, double dy, double dth, jm_abort *abort);
 /* A laser job for the measured angle a; results as jm_mcl_predict. abort may be NULL. */
-int jm_mcl_update(jm_mcl *m, double a, const atomic_int *abort);
+int jm_mcl_update(jm_mcl *m, double a, jm_abort *abort);
 /* The committed estimate. */
 void jm_mcl_estimate(const jm_mcl *m, double *x, double *y, double *th);
 /* The covariance of the last completed update (zeros before the first; needs covariance). */
@@ -107,8 +117,8 @@ void jm_resample_multinomial(const double *w, int n, jm_rng *r, int *out_idx);
 
 /* The same two with abort checks and caller scratch; return 1 when aborted, else 0. */
 int jm_resample_systematic_abortable(const double *w, int n, double u, int *out_idx,
-				     const atomic_int *abort);
+				     jm_abort *abort);
 int jm_resample_multinomial_abortable(const double *w, int n, jm_rng *r, double *cum,
-				      int *out_idx, const atomic_int *abort);
+				      int *out_idx, jm_abort *abort);
 
 #endif

@@ -119,16 +119,17 @@ static int write_jobs(const jm_run *r, const char *dir, const char *name, enum j
 
 	if (!f)
 		return -1;
-	fputs("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns\n", f);
+	fputs("# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns seen_ns\n", f);
 	for (k = 0; k < r->tl->n; k++) {
 		const jm_event *e = &r->tl->events[k];
 		const jm_job *j = &r->tl->jobs[k];
 
 		if (e->task != task)
 			continue;
-		fprintf(f, "%d %lld %lld %lld %lld %s %lld %lld\n", e->index, (long long)j->release_ns,
+		fprintf(f, "%d %lld %lld %lld %lld %s %lld %lld %lld\n", e->index, (long long)j->release_ns,
 			(long long)j->start_ns, (long long)j->end_ns, (long long)j->deadline_ns,
-			outcome_name(j->outcome), (long long)j->cpu_ns, (long long)jm_abort_from_ns(j));
+			outcome_name(j->outcome), (long long)j->cpu_ns, (long long)jm_abort_from_ns(j),
+			(long long)jm_abort_seen_from_ns(j));
 	}
 	return close_out(f, path, err, errlen);
 }
@@ -282,6 +283,8 @@ static void json_task(jm_json *j, const char *key, const struct task_summary *t)
 	json_stats(j, "responseTimeNs", &s->response);
 	json_stats(j, "cpuNs", &s->cpu);
 	json_stats(j, "abortLatencyNs", &s->abort_latency);
+	json_stats(j, "abortNoticeNs", &s->abort_notice);
+	json_stats(j, "abortStopNs", &s->abort_stop);
 	jm_json_i64(j, "abortsCompleted", s->aborts_completed);
 	jm_json_i64(j, "deadlineMisses", s->deadline_misses);
 	jm_json_double(j, "missRatio", jm_miss_ratio(s)); /* NAN, written null, when nothing was released */

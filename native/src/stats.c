@@ -60,17 +60,21 @@ static int completed(enum jm_outcome o)
 	return o == JM_OUTCOME_DONE || o == JM_OUTCOME_LATE;
 }
 
+#define JM_SAMPLE_KINDS 7
+
 int jm_task_summary_compute(jm_task_summary *s, const jm_timeline *tl, int task)
 {
-	int64_t *v[5];
-	long nv[5] = { 0 };
+	/* jitter, latency, response, cpu, abort latency, its noticing and its stopping */
+	int64_t *v[JM_SAMPLE_KINDS];
+	long nv[JM_SAMPLE_KINDS] = { 0 };
 	int k, q, ret = -1;
 
 	memset(s, 0, sizeof(*s));
-	for (q = 0; q < 5; q++)
+	for (q = 0; q < JM_SAMPLE_KINDS; q++)
 		v[q] = malloc(sizeof(int64_t) * (size_t)(tl->n ? tl->n : 1));
-	if (!v[0] || !v[1] || !v[2] || !v[3] || !v[4])
-		goto out;
+	for (q = 0; q < JM_SAMPLE_KINDS; q++)
+		if (!v[q])
+			goto out;
 	for (k = 0; k < tl->n; k++) {
 		const jm_job *j = &tl->jobs[k];
 
@@ -95,6 +99,10 @@ int jm_task_summary_compute(jm_task_summary *s, const jm_timeline *tl, int task)
 			v[3][nv[3]++] = j->cpu_ns;
 		if (jm_abort_from_ns(j) >= 0) {
 			v[4][nv[4]++] = j->end_ns - jm_abort_from_ns(j);
+			if (jm_abort_seen_from_ns(j) >= 0) {
+				v[5][nv[5]++] = jm_abort_seen_from_ns(j) - jm_abort_from_ns(j);
+				v[6][nv[6]++] = j->end_ns - jm_abort_seen_from_ns(j);
+			}
 			if (completed(j->outcome))
 				s->aborts_completed++;
 		}
@@ -116,9 +124,11 @@ int jm_task_summary_compute(jm_task_summary *s, const jm_timeline *tl, int task)
 	}
 	jm_stats_compute(&s->cpu, v[3], nv[3]);
 	jm_stats_compute(&s->abort_latency, v[4], nv[4]);
+	jm_stats_compute(&s->abort_notice, v[5], nv[5]);
+	jm_stats_compute(&s->abort_stop, v[6], nv[6]);
 	ret = 0;
 out:
-	for (q = 0; q < 5; q++)
+	for (q = 0; q < JM_SAMPLE_KINDS; q++)
 		free(v[q]);
 	return ret;
 }

@@ -34,6 +34,8 @@ typedef struct {
 	long deadline_misses; /* late + skipped + terminated, under every policy */
 	jm_stats jitter, latency, response, cpu;
 	jm_stats abort_latency; /* end - jm_abort_from_ns of the jobs an abort took hold of */
+	jm_stats abort_notice;  /* of those that saw it: jm_abort_seen_from_ns - jm_abort_from_ns */
+	jm_stats abort_stop;    /* and end - jm_abort_seen_from_ns */
 	long aborts_completed;  /* of those, the ones that completed all the same */
 	/* response time at jm_released_per_mille over every release, JM_NOT_COMPLETED = +inf;
 	 * meaningful when released > 0 */

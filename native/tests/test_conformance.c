@@ -573,6 +573,7 @@ static void check_deadlines(const char *dir)
 				tl.jobs[k].start_ns = integer(&v, 4);
 				tl.jobs[k].end_ns = integer(&v, 5);
 				tl.jobs[k].abort_ns = integer(&v, 6);
+				tl.jobs[k].seen_ns = -1; /* the vectors check the abort latency whole */
 				tl.jobs[k].cpu_ns = -1;
 			}
 			continue;

@@ -311,18 +311,20 @@ static void check_jobs(const char *dir, const char *name, int ideal, int *counts
 		return;
 	}
 	while (fgets(line, sizeof(line), f)) {
-		long long idx, rel, st, en, dl, cpu, ab;
+		long long idx, rel, st, en, dl, cpu, ab, seen;
 		char outcome[32];
 
 		if (line[0] == '#')
 			continue;
-		if (sscanf(line, "%lld %lld %lld %lld %lld %31s %lld %lld", &idx, &rel, &st, &en, &dl, outcome, &cpu,
-			   &ab) != 8) {
+		if (sscanf(line, "%lld %lld %lld %lld %lld %31s %lld %lld %lld", &idx, &rel, &st, &en, &dl, outcome, &cpu,
+			   &ab, &seen) != 9) {
 			bad++;
 			continue;
 		}
 		/* abort_ns: -1, or when the abort took hold, within the job; only terminate asks for aborts */
 		bad += ab != -1 && (ideal || ab < st || ab >= en);
+		/* seen_ns: -1, or when the job's poll saw that abort, between it and the job's end */
+		bad += seen != -1 && (ab == -1 || seen < ab || seen > en);
 		/* a job aborted while running was asked to */
 		bad += !strcmp(outcome, "terminated") && st != -1 && ab == -1;
 		if (!strcmp(outcome, "done")) {
@@ -364,8 +366,8 @@ static double check_run_dir(const char *dir, int ideal, int cov, int nodo, int n
 	snprintf(path, sizeof(path), "%s.partial", dir);
 	CHECK(stat(path, &st) != 0);
 	CHECK(stat(dir, &st) == 0 && S_ISDIR(st.st_mode));
-	CHECK_INT(check_columns(dir, "odoData.txt", 8, "# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns\n"), nodo);
-	CHECK_INT(check_columns(dir, "laserData.txt", 8, "# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns\n"), nlaser);
+	CHECK_INT(check_columns(dir, "odoData.txt", 9, "# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns seen_ns\n"), nodo);
+	CHECK_INT(check_columns(dir, "laserData.txt", 9, "# index release_ns start_ns end_ns deadline_ns outcome cpu_ns abort_ns seen_ns\n"), nlaser);
 	CHECK_INT(check_columns(dir, "position.txt", 4, NULL), nodo);
 	CHECK_INT(check_columns(dir, "positionDeviation.txt", 5, NULL), nodo);
 	snprintf(path, sizeof(path), "%s/covariance.txt", dir);

@@ -256,7 +256,7 @@ static void test_termination(void)
 	jm_playground pg;
 	jm_mcl_config c;
 	jm_mcl a, b;
-	atomic_int abort_req;
+	jm_abort abort_req;
 	enum jm_memory mem;
 
 	jm_playground_default(&pg);
@@ -267,17 +267,21 @@ static void test_termination(void)
 		steps(&a, 3);
 		steps(&b, 3);
 		CHECK(same_state(&a, &b));
-		atomic_init(&abort_req, 1);
+		atomic_init(&abort_req.requested, 1);
+		abort_req.seen_ns = -1;
 		CHECK_INT(jm_mcl_predict(&a, 0.02, 0.0, 0.1, &abort_req), JM_JOB_ABORTED);
+		CHECK(abort_req.seen_ns > 0); /* the poll that saw it noted when */
 		CHECK(same_state(&a, &b));
 		CHECK_INT(jm_mcl_update(&a, 1.0, &abort_req), JM_JOB_ABORTED);
 		CHECK(same_state(&a, &b));
 		/* after the aborted jobs, the same completed jobs give the same bits */
-		atomic_store(&abort_req, 0);
+		atomic_store(&abort_req.requested, 0);
+		abort_req.seen_ns = -1;
 		CHECK_INT(jm_mcl_predict(&a, 0.02, 0.0, 0.1, &abort_req), JM_JOB_DONE);
 		CHECK_INT(jm_mcl_predict(&b, 0.02, 0.0, 0.1, NULL), JM_JOB_DONE);
 		CHECK_INT(jm_mcl_update(&a, 1.0, &abort_req), JM_JOB_DONE);
 		CHECK_INT(jm_mcl_update(&b, 1.0, NULL), JM_JOB_DONE);
+		CHECK(abort_req.seen_ns == -1); /* nothing asked: nothing seen */
 		CHECK(same_state(&a, &b));
 		jm_mcl_free(&a);
 		jm_mcl_free(&b);

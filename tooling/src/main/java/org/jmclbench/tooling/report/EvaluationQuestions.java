@@ -157,8 +157,8 @@ final class EvaluationQuestions extends EvaluationSections {
         line("");
         if (split) {
             line("Noticing runs from the request to the poll (or delivery point) that saw it, stopping from there to the "
-                    + "job's end (`seen_ns` in the job files; `-` where the engine does not record it: the C baseline, and the "
-                    + "thesis design, whose job never sees its AIE). The static bound bounds noticing, and the last column "
+                    + "job's end (`seen_ns` in the job files; `-` where no job saw its abort: the RTSJ thesis design, whose job "
+                    + "never sees its AIE, and runs recorded before the column). The static bound bounds noticing, and the last column "
                     + "compares it with the largest noticing of any run.");
             line("");
             table(List.of("configuration", "runs", "aborted per run", "abort latency p50", "abort latency p99", "abort latency max",

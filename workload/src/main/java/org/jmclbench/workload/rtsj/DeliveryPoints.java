@@ -9,19 +9,19 @@ import org.jmclbench.core.mcl.AbortSignal;
  * calls {@link #deliveryPoint()}, an AI-enabled method (it declares the AIE, so the build weaves a
  * delivery point at its entry). An AIE fired at the job is thrown there and unwinds the localizer,
  * which is not AI-enabled and commits only after its loops: the job leaves the robot unchanged.
- * Between two polls the localizer runs non-AI code, where RTSJ defers the AIE. One per task: it
- * tells its task when a delivery point threw, which splits abort latency into noticing and stopping.
+ * Between two polls the localizer runs non-AI code, where RTSJ defers the AIE. An AIE that is a
+ * {@link Witness} is told when a delivery point threw it, which splits abort latency into
+ * noticing and stopping.
  */
 final class DeliveryPoints implements AbortSignal {
-    /** Told, on the job's thread, that an AIE was thrown at one of the polls. */
+    static final DeliveryPoints INSTANCE = new DeliveryPoints();
+
+    /** An AIE told, on the job's thread, that a delivery point threw it. */
     interface Witness {
         void delivered();
     }
 
-    private final Witness witness;
-
-    DeliveryPoints(Witness witness) {
-        this.witness = witness;
+    private DeliveryPoints() {
     }
 
     @Override
@@ -29,7 +29,9 @@ final class DeliveryPoints implements AbortSignal {
         try {
             deliveryPoint();
         } catch (AsynchronouslyInterruptedException e) {
-            witness.delivered();
+            if (e instanceof Witness) {
+                ((Witness) e).delivered();
+            }
             // Passed on unchanged: AbortSignal cannot declare the AIE, the JVM does not care.
             throw DeliveryPoints.<RuntimeException>passOn(e);
         }

@@ -218,9 +218,9 @@ public final class RtsjReplay {
      * {@code doInterruptible}, where {@link #run(AsynchronouslyInterruptedException)} is the
      * AI-enabled part (woven with delivery points) and the robot work happens in non-AI methods.
      */
-    private final class Task implements Runnable, Interruptible, DeliveryPoints.Witness {
+    private final class Task implements Runnable, Interruptible {
         final AsyncEvent event = new AsyncEvent();
-        final AsynchronouslyInterruptedException aie = new AsynchronouslyInterruptedException();
+        final AsynchronouslyInterruptedException aie = new TaskInterrupt();
         private final String name;
         private final AbsoluteTime clock = new AbsoluteTime();
         private final int[] fifo;
@@ -233,7 +233,6 @@ public final class RtsjReplay {
         private boolean committed;
         // when a delivery point threw the AIE at the job in progress (real-time clock ns), or -1
         private long seen;
-        private final DeliveryPoints deliveryPoints = new DeliveryPoints(this);
 
         Task(String name, int capacity, int priority) {
             this.name = name;
@@ -287,13 +286,18 @@ public final class RtsjReplay {
                 running = -1;
                 return; // superseded before it started: never starts
             }
-            lockAndRun(design == RtsjDesign.ATOMIC ? deliveryPoints : AbortSignal.NEVER);
+            lockAndRun(design == RtsjDesign.ATOMIC ? DeliveryPoints.INSTANCE : AbortSignal.NEVER);
         }
 
-        @Override
-        public void delivered() {
-            if (seen < 0) {
-                seen = now(clock);
+        /** This task's AIE, which notes when a delivery point of the atomic design threw it. */
+        private final class TaskInterrupt extends AsynchronouslyInterruptedException implements DeliveryPoints.Witness {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void delivered() {
+                if (seen < 0) {
+                    seen = now(clock);
+                }
             }
         }
 

@@ -65,8 +65,8 @@ public enum EngineMutant {
         }
         for (AbstractInsnNode i : m.instructions.toArray()) {
             if (i instanceof FieldInsnNode f && f.getOpcode() == Opcodes.GETSTATIC && f.name.equals("NEVER")) {
-                replace(m, i, new VarInsnNode(Opcodes.ALOAD, 0), new FieldInsnNode(Opcodes.GETFIELD, EngineMutant.TASK,
-                        "deliveryPoints", "Lorg/jmclbench/workload/rtsj/DeliveryPoints;"));
+                replace(m, i, new FieldInsnNode(Opcodes.GETSTATIC, "org/jmclbench/workload/rtsj/DeliveryPoints",
+                        "INSTANCE", "Lorg/jmclbench/workload/rtsj/DeliveryPoints;"));
             }
         }
     }),

@@ -2,8 +2,6 @@ package org.jmclbench.tooling.report;
 
 import org.jmclbench.tooling.store.StoredRun;
 
-import com.fasterxml.jackson.databind.JsonNode;
-
 /**
  * A per-run value the report and compare aggregate over repetitions: read from the
  * flattened {@code metrics} table, else from the run's summary.json (docs/FORMATS.md 4-5).
@@ -47,18 +45,7 @@ public enum Metric {
         if (!run.ok()) {
             return null;
         }
-        Double v = run.metric(metricKeys);
-        if (v == null) {
-            JsonNode n = run.summary().at(summaryPointer);
-            if (n.isNumber()) {
-                v = n.asDouble();
-            }
-        }
+        Double v = run.value(summaryPointer, metricKeys);
         return v == null || v.isNaN() ? null : v * scale;
-    }
-
-    /** The run's summary.json as a tree (missing node when there is none). */
-    static JsonNode summaryOf(StoredRun run) {
-        return run.summary();
     }
 }

@@ -42,10 +42,11 @@ public enum Metric {
 
     /** The value of a run in {@link #unit}, or null when the run has none (failed, or not recorded). */
     public Double of(StoredRun run) {
-        if (!run.ok()) {
-            return null;
-        }
-        Double v = run.value(summaryPointer, metricKeys);
+        return run.ok() ? inUnit(run.value(summaryPointer, metricKeys), scale) : null;
+    }
+
+    /** A run's stored value {@code v} times {@code scale}, a metric's unit; NaN (written null) is no value either. */
+    static Double inUnit(Double v, double scale) {
         return v == null || v.isNaN() ? null : v * scale;
     }
 }

@@ -90,7 +90,7 @@ public enum TaskMetric {
                 v = this == DEADLINE_MISSES ? (Double) misses : released != null && released > 0 ? misses / released : null;
             }
         }
-        return v == null || v.isNaN() ? null : v * scale;
+        return Metric.inUnit(v, scale);
     }
 
     /** The jobs of {@code task} the run released (null: not told). */

@@ -1,6 +1,5 @@
 package org.jmclbench.workload;
 
-import java.io.File;
 import java.util.Collections;
 
 import org.jmclbench.core.mcl.Localizer;
@@ -42,10 +41,7 @@ public final class IdealEngine implements Engine {
         Localizer localizer = in.newLocalizer();
         HeapUse heap = HeapUse.begin();
         // The GC log covers the measured replay only, as in real-time runs.
-        GcLog gcLog = options.gcLog ? GcLog.start(new File(in.folder, "gc.log")) : null;
-        if (gcLog != null && !gcLog.active()) {
-            in.err.println("jmclbench: --gc-log: " + gcLog.status());
-        }
+        GcLog gcLog = GcLog.startIfAsked(options.gcLog, in.folder, in.err);
         try {
             IdealRun.run(dataset, timeline, localizer, records);
         } finally {

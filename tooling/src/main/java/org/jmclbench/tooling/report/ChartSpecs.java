@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 import java.util.function.Function;
@@ -91,14 +92,10 @@ final class ChartSpecs {
             new Figure("completion-update", "Update: fraction of released jobs completed by a response time", COMPLETION
                     + " Update\u2019s deadline is the next laser event (32 to 250 ms on the match datasets).", true,
                     s -> TaskCharts.responseCompletion(s, "update")),
-            new Figure("miss-ratio-predict", "Predict: miss ratio vs particles", MISS_RATIO, false,
-                    s -> TaskCharts.vsParticlesPerTask(s, "predict", TaskMetric.MISS_RATIO)),
-            new Figure("miss-ratio-update", "Update: miss ratio vs particles", MISS_RATIO, false,
-                    s -> TaskCharts.vsParticlesPerTask(s, "update", TaskMetric.MISS_RATIO)),
-            new Figure("response-p99-predict", "Predict: response time p99 vs particles", RESPONSE_P99, false,
-                    s -> TaskCharts.vsParticlesPerTask(s, "predict", TaskMetric.RESPONSE_P99)),
-            new Figure("response-p99-update", "Update: response time p99 vs particles", RESPONSE_P99, false,
-                    s -> TaskCharts.vsParticlesPerTask(s, "update", TaskMetric.RESPONSE_P99)),
+            vsParticles("Predict", TaskMetric.MISS_RATIO, MISS_RATIO),
+            vsParticles("Update", TaskMetric.MISS_RATIO, MISS_RATIO),
+            vsParticles("Predict", TaskMetric.RESPONSE_P99, RESPONSE_P99),
+            vsParticles("Update", TaskMetric.RESPONSE_P99, RESPONSE_P99),
             new Figure("accuracy", "Accuracy vs timeliness of the policies", "At this particle count, one point per runtime "
                     + "and policy (every policy of the store, whichever is chosen above): x, the miss ratio over both tasks "
                     + "(late + dropped + aborted jobs over released ones); y, the mean localisation deviation (m); 95% intervals "
@@ -123,6 +120,13 @@ final class ChartSpecs {
                     + "the capacity command searches it (docs/RUNNER.md).", false, ChartSpecs::breakdown),
             new Figure("jitter-cdf", "CDF of release jitter", "Fraction of jobs released with at most the given jitter (ms, log "
                     + "axis), every job of every repetition merged.", true, ChartSpecs::jitterCdf));
+
+    /** The figure of {@link TaskCharts#vsParticlesPerTask}: "Predict: miss ratio vs particles". */
+    private static Figure vsParticles(String task, TaskMetric m, String caption) {
+        String t = task.toLowerCase(Locale.ROOT);
+        return new Figure(TaskCharts.perTaskId(m, t), task + ": " + m.label + " vs particles", caption, false,
+                s -> TaskCharts.vsParticlesPerTask(s, t, m));
+    }
 
     /**
      * What one chart is built from: the model (runtime colours and order, playgrounds), where in

@@ -2,8 +2,6 @@ package org.jmclbench.tooling.report;
 
 import org.jmclbench.tooling.store.StoredRun;
 
-import com.fasterxml.jackson.databind.JsonNode;
-
 /**
  * A per-run value the report and compare aggregate over repetitions: read from the
  * flattened {@code metrics} table, else from the run's summary.json (docs/FORMATS.md 4-5).
@@ -44,21 +42,11 @@ public enum Metric {
 
     /** The value of a run in {@link #unit}, or null when the run has none (failed, or not recorded). */
     public Double of(StoredRun run) {
-        if (!run.ok()) {
-            return null;
-        }
-        Double v = run.metric(metricKeys);
-        if (v == null) {
-            JsonNode n = run.summary().at(summaryPointer);
-            if (n.isNumber()) {
-                v = n.asDouble();
-            }
-        }
-        return v == null || v.isNaN() ? null : v * scale;
+        return run.ok() ? inUnit(run.value(summaryPointer, metricKeys), scale) : null;
     }
 
-    /** The run's summary.json as a tree (missing node when there is none). */
-    static JsonNode summaryOf(StoredRun run) {
-        return run.summary();
+    /** A run's stored value {@code v} times {@code scale}, a metric's unit; NaN (written null) is no value either. */
+    static Double inUnit(Double v, double scale) {
+        return v == null || v.isNaN() ? null : v * scale;
     }
 }

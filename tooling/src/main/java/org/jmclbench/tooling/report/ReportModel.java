@@ -351,7 +351,7 @@ public final class ReportModel {
 
     /** The kind of a stored run, from its runtime, engine and summary. */
     static RuntimeKind kindOf(StoredRun run) {
-        return RuntimeKind.of(run.runtime, run.engine, Metric.summaryOf(run));
+        return RuntimeKind.of(run.runtime, run.engine, run.summary());
     }
 
     private static List<ConfigInfo> configs(List<StoredRun> runs) {
@@ -371,7 +371,7 @@ public final class ReportModel {
             Execution execution = null;
             for (StoredRun r : e.getValue()) {
                 if (r.ok() && execution == null) {
-                    execution = Execution.of(kinds.get(e.getKey()), r.engine, r.memory, Metric.summaryOf(r));
+                    execution = Execution.of(kinds.get(e.getKey()), r.engine, r.memory, r.summary());
                 }
                 if (r.runtimeVersion != null) {
                     versions.add(r.runtimeVersion);
@@ -380,10 +380,10 @@ public final class ReportModel {
                     machines.add(r.machineId);
                 }
                 if (r.ok() && facts.isEmpty()) {
-                    facts.addAll(facts(Metric.summaryOf(r)));
+                    facts.addAll(facts(r.summary()));
                 }
                 if (r.ok() && flags.isEmpty()) {
-                    JsonNode rt = Metric.summaryOf(r).at("/environment/runtime");
+                    JsonNode rt = r.summary().at("/environment/runtime");
                     rt.path("inputArguments").forEach(a -> flags.add(a.asText()));
                     if (versions.isEmpty() && rt.hasNonNull("version")) {
                         versions.add(rt.path("version").asText());
@@ -466,7 +466,7 @@ public final class ReportModel {
             if (!dataset.equals(r.dataset) || !r.ok()) {
                 continue;
             }
-            String path = Metric.summaryOf(r).at("/parameters/dataset/path").asText("");
+            String path = r.summary().at("/parameters/dataset/path").asText("");
             if (path.isEmpty()) {
                 continue;
             }

@@ -68,9 +68,13 @@ final class TaskCharts {
      * dropped jobs) the point is a hollow triangle at the top of the chart.
      */
     static ChartSpec vsParticlesPerTask(Scope s, String task, TaskMetric m) {
-        String id = m.name().toLowerCase(Locale.ROOT).replace('_', '-') + "-" + task;
-        return lines(s, id, m.label + " vs particles, " + task, m.label + " (" + m.unit + ", mean, 95% CI)",
+        return lines(s, perTaskId(m, task), m.label + " vs particles, " + task, m.label + " (" + m.unit + ", mean, 95% CI)",
                 c -> c.metrics.get(m.key(task)), m.ratio());
+    }
+
+    /** The id of {@link #vsParticlesPerTask}'s chart, and of the report's figure it fills: {@code miss-ratio-predict}. */
+    static String perTaskId(TaskMetric m, String task) {
+        return m.name().toLowerCase(Locale.ROOT).replace('_', '-') + "-" + task;
     }
 
     /** An overall {@link Metric} (the mean deviation, say) against the particle count, as {@link #vsParticlesPerTask}. */

@@ -4,8 +4,6 @@ import java.util.List;
 
 import org.jmclbench.tooling.store.StoredRun;
 
-import com.fasterxml.jackson.databind.JsonNode;
-
 /**
  * A per-run value of one task ({@code predict}, {@code update} or {@code all}), the deadline
  * accounting of docs/FORMATS.md 4: read from the flattened {@code metrics} table
@@ -92,7 +90,7 @@ public enum TaskMetric {
                 v = this == DEADLINE_MISSES ? (Double) misses : released != null && released > 0 ? misses / released : null;
             }
         }
-        return v == null || v.isNaN() ? null : v * scale;
+        return Metric.inUnit(v, scale);
     }
 
     /** The jobs of {@code task} the run released (null: not told). */
@@ -100,19 +98,9 @@ public enum TaskMetric {
         return raw(run, task, "released", "value");
     }
 
-    /** A number of the metrics table or the summary; the summary's "inf" is +infinity. */
+    /** A number of the metrics table ({@code task/field/stat}) or the summary ({@code tasks.task.field[.stat]}). */
     private static Double raw(StoredRun run, String task, String field, String stat) {
-        Double v = run.metric(task + "/" + field + "/" + stat);
-        if (v != null) {
-            return v;
-        }
-        JsonNode n = run.summary().path("tasks").path(task).path(field);
-        if (!"value".equals(stat)) {
-            n = n.path(stat);
-        }
-        if (n.isNumber()) {
-            return n.asDouble();
-        }
-        return n.isTextual() && n.asText().equals("inf") ? Double.POSITIVE_INFINITY : null;
+        String pointer = "/tasks/" + task + "/" + field + ("value".equals(stat) ? "" : "/" + stat);
+        return run.value(pointer, task + "/" + field + "/" + stat);
     }
 }

@@ -102,6 +102,23 @@ public final class StoredRun {
         return null;
     }
 
+    /**
+     * A number of the run: the first of the flattened metrics {@code keys} it has, else the number at
+     * {@code pointer} in its summary.json, where {@code "inf"} (a response-time quantile that falls
+     * among jobs that never completed) is +infinity; null when neither has one.
+     */
+    public Double value(String pointer, String... keys) {
+        Double v = metric(keys);
+        if (v != null) {
+            return v;
+        }
+        JsonNode n = summary().at(pointer);
+        if (n.isNumber()) {
+            return n.asDouble();
+        }
+        return n.isTextual() && n.asText().equals("inf") ? Double.POSITIVE_INFINITY : null;
+    }
+
     /** The run's summary.json as a tree (a missing node when there is none or it is not JSON). */
     public JsonNode summary() {
         if (summary == null) {

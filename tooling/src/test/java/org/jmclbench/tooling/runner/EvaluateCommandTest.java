@@ -33,6 +33,13 @@ class EvaluateCommandTest {
         return p;
     }
 
+    /** Writes {@code text} as the matrix file {@code m.txt} of the test's folder. */
+    private Path matrix(String text) throws java.io.IOException {
+        Path f = dir.resolve("m.txt");
+        Files.writeString(f, text);
+        return f;
+    }
+
     private static Set<String> values(EvaluationMatrix m, java.util.function.Function<MatrixSpec, List<? extends Sourced<?>>> list) {
         return m.sections.stream().flatMap(s -> list.apply(s.spec()).stream()).map(x -> String.valueOf(x.value()))
                 .collect(Collectors.toSet());
@@ -67,8 +74,7 @@ class EvaluateCommandTest {
     void aBreakdownSectionSearchesEachConfigurationUnderQueueIntoTheStore() throws Exception {
         Fixtures.home(dir);
         Path nat = Fixtures.fakeJava(dir, "c", "breaks-at-2000", 0, null, 17);
-        Path f = dir.resolve("m.txt");
-        Files.writeString(f, """
+        Path f = matrix("""
                 datasets = tiny
                 repeat = 2
                 native = %s
@@ -108,8 +114,7 @@ class EvaluateCommandTest {
     @Test
     void budgetCountsEachRuntimesEnginesAndOnlyTheStylesAnEngineHas() throws Exception {
         Fixtures.home(dir);
-        Path f = dir.resolve("m.txt");
-        Files.writeString(f, """
+        Path f = matrix("""
                 datasets = tiny
                 repeat = 2
                 [a]
@@ -133,8 +138,7 @@ class EvaluateCommandTest {
 
     @Test
     void aSectionsListReplacesTheSharedOne() throws Exception {
-        Path f = dir.resolve("m.txt");
-        Files.writeString(f, """
+        Path f = matrix("""
                 particles = 100
                 policies = skip
                 [a]
@@ -165,8 +169,7 @@ class EvaluateCommandTest {
     void evaluateRunsItsSectionsIntoOneStoreResumesAndWritesTheDocument() throws Exception {
         Fixtures.home(dir);
         Path nat = Fixtures.fakeJava(dir, "nat", "ok", 0, null, 21);
-        Path f = dir.resolve("m.txt");
-        Files.writeString(f, """
+        Path f = matrix("""
                 # cut: everything but the fake C baseline
                 datasets = tiny
                 repeat = 2
@@ -217,8 +220,7 @@ class EvaluateCommandTest {
         Fixtures.home(dir);
         Path data = dir.resolve("evaluation.db.gz");
         Files.writeString(data, "not gzip");
-        Path f = dir.resolve("m.txt");
-        Files.writeString(f, "datasets = tiny\n[a]\nruntimes = native\n");
+        Path f = matrix("datasets = tiny\n[a]\nruntimes = native\n");
         Fixtures.CliResult r = Fixtures.cli("evaluate", "--no-run", "--matrix", f.toString(), "--data", data.toString(),
                 "--out", dir.resolve("docs/evaluation").toString());
         assertEquals(2, r.exitCode());

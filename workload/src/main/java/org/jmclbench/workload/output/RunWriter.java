@@ -174,8 +174,7 @@ public final class RunWriter {
         j.name("all");
         all.writeTo(j);
         j.endObject();
-        j.name("dispatcherLatenessNs");
-        writeStats(j, dispatcherLateness());
+        writeStats(j, "dispatcherLatenessNs", dispatcherLateness());
         // Every run, ideal ones included, says which engine produced it.
         j.name("engine").beginObject();
         j.name("kind").value(options.engine);
@@ -231,9 +230,9 @@ public final class RunWriter {
         return Stats.of(v, c);
     }
 
-    /** Writes a STATS object; every field null when the sample is empty. */
-    public static void writeStats(Json j, Stats s) {
-        j.beginObject();
+    /** Writes the field {@code name}, a STATS object; every field null when the sample is empty. */
+    static void writeStats(Json j, String name, Stats s) {
+        j.name(name).beginObject();
         j.name("count").value(s.count);
         if (s.count == 0) {
             j.name("mean").nullValue().name("stdev").nullValue().name("min").nullValue().name("p50").nullValue()

@@ -1,6 +1,7 @@
 package org.jmclbench.workload.release;
 
 import java.io.File;
+import java.io.PrintStream;
 import java.lang.management.ManagementFactory;
 import javax.management.MBeanServer;
 import javax.management.ObjectName;
@@ -35,6 +36,21 @@ public final class GcLog {
             return new GcLog(file, false, "not available at run time on this runtime (" + why
                     + "); on JDK 8 pass -Xloggc:<file> to the JVM");
         }
+    }
+
+    /**
+     * With {@code --gc-log} ({@code asked}), starts the log as {@code runDir/gc.log}, with a line on
+     * {@code err} when this runtime cannot write it; null when not asked. The caller stops it.
+     */
+    public static GcLog startIfAsked(boolean asked, File runDir, PrintStream err) {
+        if (!asked) {
+            return null;
+        }
+        GcLog log = start(new File(runDir, "gc.log"));
+        if (!log.active()) {
+            err.println("jmclbench: --gc-log: " + log.status());
+        }
+        return log;
     }
 
     /** Stops logging to the file (idempotent); call before the run's outputs are written. */

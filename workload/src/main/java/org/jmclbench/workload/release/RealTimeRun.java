@@ -43,11 +43,10 @@ public final class RealTimeRun {
         // one rule for both engines: the SCJ layer's (HotSpot ignores priorities on Linux without
         // -XX:ThreadPriorityPolicy=1, and under chrt every thread inherits one priority anyway)
         facts.prioritiesApplied = RuntimeShim.get().prioritiesApplied();
-        GcLog gcLog = options.gcLog ? GcLog.start(new File(runDir, "gc.log")) : null;
+        GcLog gcLog = GcLog.startIfAsked(options.gcLog, runDir, err);
         AllocationNoise noise = null;
         try {
             if (gcLog != null && !gcLog.active()) {
-                err.println("jmclbench: --gc-log: " + gcLog.status());
                 writeNote(gcLog.file(), "# no GC log: " + gcLog.status() + "\n");
             }
             ThreadCpuClock cpuClock = ThreadCpuClock.probe();

@@ -1,7 +1,9 @@
 package org.jmclbench.rtsjcompat;
 
 import java.util.concurrent.atomic.AtomicInteger;
+
 import javax.realtime.AsynchronouslyInterruptedException;
+import javax.realtime.Interruptible;
 
 /**
  * The runtime side of asynchronous transfer of control on a stock JVM: the delivery point.
@@ -43,22 +45,53 @@ public final class Atc {
     }
 
     /**
-     * Makes the delivery branch of {@link #poll()} look taken to the JIT. HotSpot compiles a
-     * branch its profile never saw taken as a trap, and the first AIEs delivered through it then
-     * each pay a deoptimisation (tens of microseconds, measured in the rtsj engine's abort latency)
-     * that an RTSJ VM's ATC does not have. Polls here from a thread that is not a schedulable, so
-     * nothing is thrown; call it before any schedulable runs.
+     * Runs the ATC machinery {@code rounds} times on a thread of its own (an AIE fired at the
+     * doInterruptible in progress, delivered at a poll, caught and cleared; a poll while an AIE is
+     * pending on another thread), so that a JIT has
+     * compiled it before a measured run fires its first AIE. An RTSJ VM's ATC is compiled VM
+     * code; on HotSpot the rarely run fire and delivery paths would otherwise be interpreted, and
+     * the never-taken delivery branch compiled as a trap that deoptimises at each first delivery
+     * (measured in the rtsj engine: 5 to 24 us for one interpreted fire(), tens for a deoptimisation).
+     * The job code is left as cold as the runtime leaves it. Call it before any schedulable runs.
      */
-    public static void primeDelivery(int polls) {
-        PENDING.incrementAndGet();
-        try {
-            for (int i = 0; i < polls; i++) {
+    public static void prime(final int rounds) {
+        final AsynchronouslyInterruptedException aie = new AsynchronouslyInterruptedException();
+        final Interruptible firesAtItself = new Interruptible() {
+            @Override
+            public void run(AsynchronouslyInterruptedException e) throws AsynchronouslyInterruptedException {
+                e.fire();
                 poll();
             }
-        } catch (AsynchronouslyInterruptedException e) {
-            throw new IllegalStateException("a delivery while priming: " + e);
-        } finally {
-            PENDING.decrementAndGet();
+
+            @Override
+            public void interruptAction(AsynchronouslyInterruptedException e) {
+            }
+        };
+        ScjThread t = new ScjThread(new Runnable() {
+            @Override
+            public void run() {
+                for (int i = 0; i < rounds; i++) {
+                    aie.doInterruptible(firesAtItself);
+                }
+                // and a poll while an AIE is pending on another thread only: it returns
+                PENDING.incrementAndGet();
+                try {
+                    for (int i = 0; i < rounds; i++) {
+                        poll();
+                    }
+                } catch (AsynchronouslyInterruptedException e) {
+                    throw new IllegalStateException("an AIE delivered where none was pending", e);
+                } finally {
+                    PENDING.decrementAndGet();
+                }
+            }
+        }, "jmclbench-atc-prime", Thread.NORM_PRIORITY);
+        t.start();
+        if (ScjThread.joinThroughInterrupts(t)) {
+            Thread.currentThread().interrupt();
+        }
+        if (PENDING.get() != 0) {
+            throw new IllegalStateException("an AIE is still pending after priming the ATC");
         }
     }
 

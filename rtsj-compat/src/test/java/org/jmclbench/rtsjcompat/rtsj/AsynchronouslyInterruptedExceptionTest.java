@@ -69,6 +69,20 @@ class AsynchronouslyInterruptedExceptionTest {
     }
 
     @Test
+    void primingTheAtcLeavesNothingPendingAndAieWorkAfterwardsAsBefore() {
+        Atc.prime(500);
+        assertEquals(0, Atc.pendingThreads());
+        OnRealtimeThread.run(self -> {
+            AsynchronouslyInterruptedException aie = new AsynchronouslyInterruptedException();
+            assertTrue(aie.doInterruptible(task("t", e -> {
+                Atc.poll(); // nothing pending here after the priming: returns
+                log.add("not interrupted");
+            })));
+            assertEquals(Arrays.asList("not interrupted", "t completed"), log);
+        });
+    }
+
+    @Test
     void fireWithoutADoInterruptibleInProgressReturnsFalse() {
         assertFalse(new AsynchronouslyInterruptedException().fire());
     }

@@ -21,12 +21,12 @@ public final class CompatShim extends RuntimeShim {
         RtsjRuntime.reset();
     }
 
-    /** Polls of {@link Atc#primeDelivery}: enough for the JIT's profile of the delivery branch. */
-    private static final int PRIMING_POLLS = 20_000;
+    /** Rounds of {@link Atc#prime}: enough for HotSpot to compile the fire and delivery paths. */
+    private static final int PRIMING_ROUNDS = 20_000;
 
     @Override
     public void beforeAborts() {
-        Atc.primeDelivery(PRIMING_POLLS);
+        Atc.prime(PRIMING_ROUNDS);
     }
 
     @Override

@@ -153,13 +153,13 @@ final class EvaluationQuestions extends EvaluationSections {
                 + "remaining time of the job a request was made to (abortsCompleted in summary.json). The static bound is "
                 + "`./jmclbench verify`'s: the longest gap between two abort points in the job's bytecode (particle steps; the whole job where nothing bounds it) times the costliest "
                 + "particle step of these runs (the slowest job of either task over its particles), in ms; the C baseline has no "
-                + "bytecode to analyse. The last column: whether the largest abort latency of any run is within it.", n));
+                + "bytecode to analyse. The last column: whether the largest " + (split ? "noticing" : "abort latency")
+                + " of any run is within it.", n));
         line("");
         if (split) {
             line("Noticing runs from the request to the poll (or delivery point) that saw it, stopping from there to the "
                     + "job's end (`seen_ns` in the job files; `-` where no job saw its abort: the RTSJ thesis design, whose job "
-                    + "never sees its AIE, and runs recorded before the column). The static bound bounds noticing, and the last column "
-                    + "compares it with the largest noticing of any run.");
+                    + "never sees its AIE, and runs recorded before the column). The static bound bounds noticing only.");
             line("");
             table(List.of("configuration", "runs", "aborted per run", "abort latency p50", "abort latency p99", "abort latency max",
                     "noticed p50", "noticed max", "stopping max", "static bound", "noticing within it"), rows);

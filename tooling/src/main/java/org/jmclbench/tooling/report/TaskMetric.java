@@ -36,6 +36,7 @@ public enum TaskMetric {
      * it, what the static bound bounds; over the aborts whose engine recorded it.
      */
     ABORT_NOTICE_P50("abort noticed p50", "ms", 1e-6, "abortNoticeNs", "p50"),
+    ABORT_NOTICE_P99("abort noticed p99", "ms", 1e-6, "abortNoticeNs", "p99"),
     ABORT_NOTICE_MAX("abort noticed max", "ms", 1e-6, "abortNoticeNs", "max"),
     /** Its second part: from that poll to the job's end (returning, or the AIE thrown and unwound). */
     ABORT_STOP_MAX("abort stopping max", "ms", 1e-6, "abortStopNs", "max");

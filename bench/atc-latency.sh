@@ -3,29 +3,31 @@
 # computation (AIE fired to interruptAction), beside a volatile flag polled at the same points (the
 # javase and scj engines' cooperative abort), apart from any job (AtcDeliveryLatency).
 #
-# usage: bench/atc-latency.sh [--fifo] [--aborts N] [--work N] [--java PATH] [--no-build]
+# usage: bench/atc-latency.sh [--fifo] [--aborts N] [--warmup N] [--work N] [--java PATH] [--no-build]
 #   --fifo      run under SCHED_FIFO 80 (chrt -f 80)
-#   --aborts    aborts measured per mode, after 200 unrecorded ones (default 2000)
+#   --aborts    aborts measured per mode (default 2000)
+#   --warmup    unrecorded aborts before them (default 200; 0 measures a run's first aborts)
 #   --work      arithmetic steps between two delivery points (default 200, about 0.3 us)
 #   --java      the JVM to measure (default: JAVA_HOME's, else java on PATH)
 #   --no-build  use bench/target/benchmarks.jar as it is
 set -euo pipefail
 home=$(cd "$(dirname "$0")/.." && pwd)
 
-fifo=0; aborts=2000; work=200; build=1
+fifo=0; aborts=2000; warmup=200; work=200; build=1
 java=${JAVA_HOME:+$JAVA_HOME/bin/java}; java=${java:-java}
 while [ $# -gt 0 ]; do
     case "$1" in
         --fifo) fifo=1; shift ;;
         --aborts) aborts=${2:?--aborts: needs a value}; shift 2 ;;
+        --warmup) warmup=${2:?--warmup: needs a value}; shift 2 ;;
         --work) work=${2:?--work: needs a value}; shift 2 ;;
         --java) java=${2:?--java: needs a path}; shift 2 ;;
         --no-build) build=0; shift ;;
-        -h|--help) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "atc-latency: $1: unknown option (see --help)" >&2; exit 2 ;;
     esac
 done
-for n in "$aborts" "$work"; do
+for n in "$aborts" "$warmup" "$work"; do
     [[ "$n" =~ ^[0-9]+$ ]] || { echo "atc-latency: $n: not a count" >&2; exit 2; }
 done
 command -v "$java" >/dev/null || { echo "atc-latency: --java: $java: not found" >&2; exit 2; }
@@ -40,5 +42,5 @@ if [ $fifo = 1 ]; then
 fi
 echo "# $("$java" -XshowSettings:properties -version 2>&1 | sed -n 's/^ *java.vm.version = //p'), $([ $fifo = 1 ] && echo 'SCHED_FIFO 80' || echo 'default scheduler'), load $(cut -d' ' -f1-3 /proc/loadavg)"
 for mode in flag atc; do
-    "${prefix[@]}" "$java" -cp "$home/bench/target/benchmarks.jar" org.jmclbench.bench.AtcDeliveryLatency "$mode" "$aborts" 200 "$work"
+    "${prefix[@]}" "$java" -cp "$home/bench/target/benchmarks.jar" org.jmclbench.bench.AtcDeliveryLatency "$mode" "$aborts" "$warmup" "$work"
 done

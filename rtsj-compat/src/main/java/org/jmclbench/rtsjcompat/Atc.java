@@ -45,33 +45,57 @@ public final class Atc {
     }
 
     /**
-     * Runs the ATC machinery {@code rounds} times on a thread of its own (an AIE fired at the
-     * doInterruptible in progress, delivered at a poll, caught and cleared; a poll while an AIE is
-     * pending on another thread), so that a JIT has
-     * compiled it before a measured run fires its first AIE. An RTSJ VM's ATC is compiled VM
-     * code; on HotSpot the rarely run fire and delivery paths would otherwise be interpreted, and
-     * the never-taken delivery branch compiled as a trap that deoptimises at each first delivery
-     * (measured in the rtsj engine: 5 to 24 us for one interpreted fire(), tens for a deoptimisation).
-     * The job code is left as cold as the runtime leaves it. Call it before any schedulable runs.
+     * Runs the ATC machinery {@code rounds} times (an AIE fired at the doInterruptible in
+     * progress, delivered at a poll, caught and cleared; a poll while an AIE is pending on another
+     * thread), so that a JIT has compiled it before a measured run fires its first AIE. An RTSJ
+     * VM's ATC is compiled VM code; on HotSpot the rarely run fire and delivery paths would
+     * otherwise be interpreted, and the never-taken delivery branch compiled as a trap that
+     * deoptimises at each first delivery (measured in the rtsj engine: 5 to 24 us for one
+     * interpreted fire(), tens for a deoptimisation).
+     *
+     * <p>The rounds run on threads of three classes with three {@code Interruptible} classes, so
+     * that the type checks on the way (the thread at a delivery point, the logic that
+     * doInterruptible runs) are compiled for any class. With one class, HotSpot compiles a
+     * check for that class and deoptimises when a schedulable of another class takes its
+     * first AIE. bench/atc-latency.sh measured the difference.
+     *
+     * <p>Call it before any schedulable runs and before the job code is compiled. Job code compiled
+     * earlier saw a delivery branch never taken, and deoptimises at its first delivery. The job
+     * code itself is left as cold as the runtime leaves it.
      */
-    public static void prime(final int rounds) {
-        final AsynchronouslyInterruptedException aie = new AsynchronouslyInterruptedException();
-        final Interruptible firesAtItself = new Interruptible() {
-            @Override
-            public void run(AsynchronouslyInterruptedException e) throws AsynchronouslyInterruptedException {
-                e.fire();
-                poll();
-            }
+    public static void prime(int rounds) {
+        AsynchronouslyInterruptedException aie = new AsynchronouslyInterruptedException();
+        Interruptible[] logics = {new FiresAtItself(), new FiresAtItself() { }, new FiresAtItself() { }};
+        ScjThread[] threads = new ScjThread[3];
+        for (int i = 0; i < threads.length; i++) {
+            Runnable body = primingRounds(aie, logics, Math.max(1, rounds / threads.length));
+            String name = "jmclbench-atc-prime-" + i;
+            // three thread classes: ScjThread and two anonymous subclasses of it
+            threads[i] = i == 0 ? new ScjThread(body, name, Thread.NORM_PRIORITY)
+                    : i == 1 ? new ScjThread(body, name, Thread.NORM_PRIORITY) { }
+                    : new ScjThread(body, name, Thread.NORM_PRIORITY) { };
+        }
+        boolean interrupted = false;
+        for (ScjThread t : threads) {
+            t.start();
+            interrupted |= ScjThread.joinThroughInterrupts(t);
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+        if (PENDING.get() != 0) {
+            throw new IllegalStateException("an AIE is still pending after priming the ATC");
+        }
+    }
 
-            @Override
-            public void interruptAction(AsynchronouslyInterruptedException e) {
-            }
-        };
-        ScjThread t = new ScjThread(new Runnable() {
+    /** One priming thread's work: {@code rounds} deliveries, the logics taken in turn, then polls. */
+    private static Runnable primingRounds(final AsynchronouslyInterruptedException aie, final Interruptible[] logics,
+            final int rounds) {
+        return new Runnable() {
             @Override
             public void run() {
                 for (int i = 0; i < rounds; i++) {
-                    aie.doInterruptible(firesAtItself);
+                    aie.doInterruptible(logics[i % logics.length]);
                 }
                 // and a poll while an AIE is pending on another thread only: it returns
                 PENDING.incrementAndGet();
@@ -85,13 +109,19 @@ public final class Atc {
                     PENDING.decrementAndGet();
                 }
             }
-        }, "jmclbench-atc-prime", Thread.NORM_PRIORITY);
-        t.start();
-        if (ScjThread.joinThroughInterrupts(t)) {
-            Thread.currentThread().interrupt();
+        };
+    }
+
+    /** Priming logic: fires its own AIE and polls, so that the AIE is delivered at once. */
+    private static class FiresAtItself implements Interruptible {
+        @Override
+        public void run(AsynchronouslyInterruptedException e) throws AsynchronouslyInterruptedException {
+            e.fire();
+            poll();
         }
-        if (PENDING.get() != 0) {
-            throw new IllegalStateException("an AIE is still pending after priming the ATC");
+
+        @Override
+        public void interruptAction(AsynchronouslyInterruptedException e) {
         }
     }
 

@@ -68,6 +68,11 @@ public final class RtsjEngine implements Engine {
         int warmup = o.warmupS > 0 ? schedule.countBefore(o.warmupS, o.timeScale) : 0;
         facts.warmupEvents = warmup;
         try {
+            if (o.policy == OverrunPolicy.TERMINATE) {
+                // before the replays below compile the job code: code compiled while no AIE was
+                // ever delivered takes each first delivery through a deoptimisation
+                RuntimeShim.get().beforeAborts();
+            }
             if (warmup > 0) {
                 replay(o, d, schedule.prefix(warmup), o.policy);
             } else {
@@ -80,7 +85,6 @@ public final class RtsjEngine implements Engine {
                 }
             }
             if (o.policy == OverrunPolicy.TERMINATE) {
-                RuntimeShim.get().beforeAborts();
                 rehearseAborts(o, d);
             }
             JobRecords records = new JobRecords(timeline, o.covariance);

@@ -16,7 +16,6 @@ import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.engine.Engine;
 import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
-import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.workload.output.HeapUse;
 import org.jmclbench.workload.release.EventJob;
 import org.jmclbench.workload.release.JavaSeEngine;
@@ -74,21 +73,21 @@ public final class RtsjEngine implements Engine {
                 RuntimeShim.get().beforeAborts();
             }
             if (warmup > 0) {
-                replay(o, d, schedule.prefix(warmup), o.policy);
+                replay(in, schedule.prefix(warmup), o.policy);
             } else {
                 // Class loading out of the measured window: queue runs every job of the first
                 // events, then the run's own policy loads what only its path touches.
                 ReleaseSchedule first = schedule.prefix(Math.min(PRELOAD_EVENTS, schedule.size()));
-                replay(o, d, first, OverrunPolicy.QUEUE);
+                replay(in, first, OverrunPolicy.QUEUE);
                 if (o.policy != OverrunPolicy.QUEUE) {
-                    replay(o, d, first, o.policy);
+                    replay(in, first, o.policy);
                 }
             }
             if (o.policy == OverrunPolicy.TERMINATE) {
-                rehearseAborts(o, d);
+                rehearseAborts(in);
             }
             JobRecords records = new JobRecords(timeline, o.covariance);
-            Localizer localizer = Localizers.create(o.mclConfig(), d.playground, d.startX, d.startY, d.startTheta);
+            Localizer localizer = in.newLocalizer();
             records.setInitialEstimate(localizer.estimateX(), localizer.estimateY(), localizer.estimateTheta());
             HeapUse heap = HeapUse.begin();
             RtsjReplay replay = new RtsjReplay(schedule, o.policy, o.rtsjDesign,
@@ -103,13 +102,12 @@ public final class RtsjEngine implements Engine {
     }
 
     /** A replay on a throwaway localizer and records (class loading, warm-up). */
-    private static void replay(RunOptions o, Dataset d, ReleaseSchedule schedule, OverrunPolicy policy)
+    private static void replay(EngineInput in, ReleaseSchedule schedule, OverrunPolicy policy)
             throws RunFailure, InterruptedException {
-        Timeline timeline = d.timeline();
-        JobRecords scratch = new JobRecords(timeline, o.covariance);
-        Localizer throwaway = Localizers.create(o.mclConfig(), d.playground, d.startX, d.startY, d.startTheta);
-        new RtsjReplay(schedule, policy, o.rtsjDesign, new LocalizerJob(d, timeline, throwaway, scratch), scratch)
-                .run(hangNs(schedule));
+        Timeline timeline = in.dataset.timeline();
+        JobRecords scratch = new JobRecords(timeline, in.options.covariance);
+        new RtsjReplay(schedule, policy, in.options.rtsjDesign,
+                new LocalizerJob(in.dataset, timeline, in.newLocalizer(), scratch), scratch).run(hangNs(schedule));
     }
 
     /**
@@ -117,7 +115,7 @@ public final class RtsjEngine implements Engine {
      * first aborts measured do not pay for loading and resolving the ATC code (the class
      * loading that {@link #PRELOAD_EVENTS} keeps out of the window for the other paths).
      */
-    private static void rehearseAborts(RunOptions o, Dataset d) throws RunFailure, InterruptedException {
+    private static void rehearseAborts(EngineInput in) throws RunFailure, InterruptedException {
         long[] release = {0, REHEARSAL_SPACING_NS, 2 * REHEARSAL_SPACING_NS};
         long[] deadline = {Long.MAX_VALUE, Long.MAX_VALUE, Long.MAX_VALUE};
         int[] task = {Timeline.PREDICT, Timeline.UPDATE, Timeline.PREDICT};
@@ -131,8 +129,9 @@ public final class RtsjEngine implements Engine {
             }
             return true;
         };
-        JobRecords scratch = new JobRecords(d.timeline(), false);
-        new RtsjReplay(schedule, OverrunPolicy.TERMINATE, o.rtsjDesign, pollsUntilAborted, scratch).run(hangNs(schedule));
+        JobRecords scratch = new JobRecords(in.dataset.timeline(), false);
+        new RtsjReplay(schedule, OverrunPolicy.TERMINATE, in.options.rtsjDesign, pollsUntilAborted, scratch)
+                .run(hangNs(schedule));
     }
 
     private static long hangNs(ReleaseSchedule schedule) {

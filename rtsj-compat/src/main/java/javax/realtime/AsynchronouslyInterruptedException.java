@@ -156,8 +156,9 @@ public class AsynchronouslyInterruptedException extends InterruptedException {
                 return false;
             }
             enabled = value;
-            return true;
         }
+        s.enabledChanged(this);
+        return true;
     }
 
     /** Makes the generic AIE pending on {@code s} if a doInterruptible is in progress there. */

@@ -27,19 +27,18 @@ public final class Atc {
     /**
      * A delivery point: throws the AIE pending on the calling thread if it is enabled, else
      * returns. Allocates nothing (the AIE is the fired object itself, without a stack trace).
+     * It calls nothing but accessors on its way to the throw: a JIT inlines it into every loop of
+     * AI-enabled code, where the throw path is cold, and HotSpot resolves a cold call there at
+     * that loop's first delivery (measured 20 to 34 us in the rtsj engine).
      */
     public static void poll() throws AsynchronouslyInterruptedException {
         if (PENDING.get() != 0) {
-            deliver();
-        }
-    }
-
-    private static void deliver() throws AsynchronouslyInterruptedException {
-        Thread t = Thread.currentThread();
-        if (t instanceof ScjThread) {
-            AsynchronouslyInterruptedException p = ((ScjThread) t).atc.pending();
-            if (p != null && p.isEnabled()) {
-                throw p;
+            Thread t = Thread.currentThread();
+            if (t instanceof ScjThread) {
+                AsynchronouslyInterruptedException p = ((ScjThread) t).atc.deliverable();
+                if (p != null) {
+                    throw p;
+                }
             }
         }
     }

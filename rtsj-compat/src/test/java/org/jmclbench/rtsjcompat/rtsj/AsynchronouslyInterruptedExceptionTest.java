@@ -166,6 +166,23 @@ class AsynchronouslyInterruptedExceptionTest {
             assertEquals(Arrays.asList("deferred while disabled", "t interruptAction"), log);
         });
     }
+    @Test
+    void anAieDisabledAfterItsFireIsHeldUntilEnabledAgain() {
+        OnRealtimeThread.run(self -> {
+            AsynchronouslyInterruptedException aie = new AsynchronouslyInterruptedException();
+            aie.doInterruptible(task("t", e -> {
+                assertTrue(e.fire(), "enabled: pending and deliverable");
+                assertTrue(e.disable());
+                Atc.poll();
+                log.add("deferred once disabled");
+                assertTrue(e.enable());
+                Atc.poll();
+                log.add("not reached");
+            }));
+            assertEquals(Arrays.asList("deferred once disabled", "t interruptAction"), log);
+        });
+    }
+
 
     @Test
     void anOuterAieUnwindsTheInnerDoInterruptibleAndIsDeliveredInTheOuter() {

@@ -17,7 +17,7 @@ import java.util.List;
 /**
  * P9, RTSJ's rules for asynchronous transfer of control as the rtsj engine relies on them:
  * <ul>
- * <li>an AIE is delivered (thrown by rtsj-compat's {@code Atc.deliver}) only at a delivery point
+ * <li>an AIE is delivered (thrown by rtsj-compat's {@code Atc.poll}) only at a delivery point
  * of an AI-enabled method (the caller of {@code Atc.poll} declares the AIE) and never while the
  * thread holds a monitor (synchronized code, however deep);
  * <li>it is delivered in the {@code doInterruptible} call it was fired at: each call gets a token
@@ -35,6 +35,7 @@ public final class AtcListener extends RuleListener {
     static final String AIE = "javax.realtime.AsynchronouslyInterruptedException";
     private static final String DO_INTERRUPTIBLE = "doInterruptible";
     private static final String ATC = "org.jmclbench.rtsjcompat.Atc";
+    private static final String DELIVERY_POINT = "poll";
     private int serial;
 
     /** The token of one doInterruptible call (a frame attribute) and of the call an AIE was fired at (an object attribute). */
@@ -81,7 +82,7 @@ public final class AtcListener extends RuleListener {
         }
         int aie = thrown.getObjectRef();
         StackFrame top = ti.getTopFrame();
-        if (top.getMethodInfo().getClassName().equals(ATC) && top.getMethodInfo().getName().equals("deliver")) {
+        if (top.getMethodInfo().getClassName().equals(ATC) && top.getMethodInfo().getName().equals(DELIVERY_POINT)) {
             checkDelivery(vm, ti, thrown, aie);
         }
         if (violation == null) {
@@ -90,8 +91,7 @@ public final class AtcListener extends RuleListener {
     }
 
     private void checkDelivery(VM vm, ThreadInfo ti, ElementInfo thrown, int aie) {
-        StackFrame poll = ti.getTopFrame().getPrevious();
-        StackFrame point = poll == null ? null : poll.getPrevious();
+        StackFrame point = ti.getTopFrame().getPrevious(); // the caller of Atc.poll
         MethodInfo at = point == null ? null : point.getMethodInfo();
         if (at == null || !Arrays.asList(at.getThrownExceptionClassNames() == null ? new String[0]
                 : at.getThrownExceptionClassNames()).contains(AIE)) {

@@ -4,6 +4,7 @@ import org.jmclbench.verification.Property;
 import org.jmclbench.verification.jpf.AtcListener;
 import org.jmclbench.verification.jpf.AtomicRuntimeSyncPolicy;
 import org.jmclbench.verification.jpf.HeldLockListener;
+import org.jmclbench.verification.jpf.IgnoreClockReadings;
 import org.jmclbench.verification.jpf.JpfCheck;
 import org.jmclbench.verification.jpf.JpfCheck.Expectation;
 import org.jmclbench.verification.jpf.TimedDeadlockListener;
@@ -55,6 +56,7 @@ public final class RtsjChecks {
         c.put("listener", String.join(",", VolatileAccessScheduler.class.getName(),
                 TimedDeadlockListener.class.getName(), HeldLockListener.class.getName(), AtcListener.class.getName()));
         c.put("vm.scheduler.sync.class", AtomicRuntimeSyncPolicy.class.getName());
+        c.put("filter.instance_ammendments", IgnoreClockReadings.class.getName());
         // The replay joins its dispatcher with a hang budget: it times out only when nothing else can run.
         c.put("jmclbench.timeout.last", "true");
         c.put("jmclbench.atomic.packages", "org.jmclbench.rtsjcompat.,javax.realtime.," + HorizonTimeSource.class.getName());

@@ -220,7 +220,7 @@ public final class RtsjReplay {
      */
     private final class Task implements Runnable, Interruptible {
         final AsyncEvent event = new AsyncEvent();
-        final AsynchronouslyInterruptedException aie = new TaskInterrupt();
+        final DeliveryPoints.WitnessedInterrupt aie = new DeliveryPoints.WitnessedInterrupt();
         private final String name;
         private final AbsoluteTime clock = new AbsoluteTime();
         private final int[] fifo;
@@ -231,8 +231,6 @@ public final class RtsjReplay {
         private long start;
         private long end;
         private boolean committed;
-        // when a delivery point threw the AIE at the job in progress (real-time clock ns), or -1
-        private long seen;
 
         Task(String name, int capacity, int priority) {
             this.name = name;
@@ -260,7 +258,6 @@ public final class RtsjReplay {
             records.wakeNs[k] = now(clock) - t0;
             start = -1;
             end = -1;
-            seen = -1;
             committed = false;
             try {
                 if (policy == OverrunPolicy.TERMINATE) {
@@ -287,18 +284,6 @@ public final class RtsjReplay {
                 return; // superseded before it started: never starts
             }
             lockAndRun(design == RtsjDesign.ATOMIC ? DeliveryPoints.INSTANCE : AbortSignal.NEVER);
-        }
-
-        /** This task's AIE, which notes when a delivery point of the atomic design threw it. */
-        private final class TaskInterrupt extends AsynchronouslyInterruptedException implements DeliveryPoints.Witness {
-            private static final long serialVersionUID = 1L;
-
-            @Override
-            public void delivered() {
-                if (seen < 0) {
-                    seen = now(clock);
-                }
-            }
         }
 
         @Override
@@ -346,6 +331,8 @@ public final class RtsjReplay {
         /** The event's record, from what the job did (an AIE may have cut it short anywhere). */
         private void finish() {
             long now = now(clock);
+            // atomic design: the delivery's nanoTime carried onto the RTSJ clock by this reading of both
+            long seen = aie.delivered ? now - (System.nanoTime() - aie.deliveredNanoTime) : -1;
             JobRecords r = records;
             r.cpuNs[k] = -1;
             if (start < 0) {
@@ -365,6 +352,7 @@ public final class RtsjReplay {
                     r.outcome[k] = jobEnd - t0 <= r.deadlineNs[k] ? JobRecords.DONE : JobRecords.LATE;
                 }
             }
+            aie.reset(); // the next job starts with no delivery noted
             ended();
         }
     }

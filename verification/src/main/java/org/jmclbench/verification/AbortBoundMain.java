@@ -31,7 +31,8 @@ import com.fasterxml.jackson.databind.ObjectMapper;
  */
 public final class AbortBoundMain {
     private static final String USAGE = "usage: jmclbench abort-bound --engine javase|scj|hvm|rtsj [--rtsj-design thesis|atomic] "
-            + "[--memory preallocated|allocating|scoped] --classes JAR_OR_DIR[:...] [--run RUN_FOLDER]";
+            + "[--memory preallocated|allocating|scoped] --classes JAR_OR_DIR[:...] [--run RUN_FOLDER] "
+            + "(with --run, the options left out are the run's)";
     /** The localizer of each memory style: the job runs one, so the others' loops are not its code. */
     private static final Map<String, String> LOCALIZERS = Map.of("preallocated", "org/jmclbench/core/mcl/PreallocatedLocalizer",
             "scoped", "org/jmclbench/core/mcl/ScopedLocalizer", "allocating", "org/jmclbench/workload/mcl/AllocatingLocalizer");
@@ -50,8 +51,8 @@ public final class AbortBoundMain {
     /** Runs the command; 0, or 2 with one line on {@code err} for bad input. */
     static int run(String[] args, PrintStream out, PrintStream err) {
         String engine = null;
-        String design = "thesis";
-        String memory = "preallocated";
+        String design = null;
+        String memory = null;
         String classes = null;
         Path runDir = null;
         for (int i = 0; i < args.length; i++) {
@@ -75,6 +76,30 @@ public final class AbortBoundMain {
                 }
             }
         }
+        JsonNode summary = null;
+        if (runDir != null) {
+            Path s = runDir.resolve("summary.json");
+            try {
+                summary = new ObjectMapper().readTree(Files.readString(s));
+            } catch (IOException e) {
+                return bad(err, "--run: cannot read " + s + ": " + e.getMessage());
+            }
+            // the run says what ran: an option left out is taken from it, one that contradicts it is an error
+            JsonNode ran = summary.path("parameters");
+            String[][] taken = {{"--engine", engine, ran.path("engine").asText(null)},
+                    {"--rtsj-design", design, ran.path("rtsjDesign").asText(null)},
+                    {"--memory", memory, ran.path("memory").asText(null)}};
+            for (String[] t : taken) {
+                if (t[1] != null && t[2] != null && !t[1].equals(t[2])) {
+                    return bad(err, t[0] + ": '" + t[1] + "', but the run in " + runDir + " used '" + t[2] + "'");
+                }
+            }
+            engine = engine != null ? engine : taken[0][2];
+            design = design != null ? design : taken[1][2];
+            memory = memory != null ? memory : taken[2][2];
+        }
+        design = design != null ? design : "thesis";
+        memory = memory != null ? memory : "preallocated";
         if (engine == null) {
             return bad(err, "--engine: required (" + USAGE + ")");
         }
@@ -92,15 +117,6 @@ public final class AbortBoundMain {
         }
         if (classes == null) {
             return bad(err, "--classes: required (the workload jar)");
-        }
-        JsonNode summary = null;
-        if (runDir != null) {
-            Path s = runDir.resolve("summary.json");
-            try {
-                summary = new ObjectMapper().readTree(Files.readString(s));
-            } catch (IOException e) {
-                return bad(err, "--run: cannot read " + s + ": " + e.getMessage());
-            }
         }
         try {
             List<Path> paths = new ArrayList<>();
@@ -266,6 +282,13 @@ public final class AbortBoundMain {
             out.printf(Locale.ROOT, "measured abort latency: %d jobs (%d completed all the same), p50 %s p99 %s max %s%n",
                     abort.path("count").asInt(), s.path("tasks").path("all").path("abortsCompleted").asInt(),
                     ms(abort.path("p50").asDouble()), ms(abort.path("p99").asDouble()), ms(abort.path("max").asDouble()));
+            // what the bound bounds: from the request to the abort point that saw it (seen_ns)
+            JsonNode notice = s.path("tasks").path("all").path("abortNoticeNs");
+            if (notice.path("count").asInt() > 0) {
+                out.printf(Locale.ROOT, "measured noticing (what the bound bounds): %d jobs, p50 %s p99 %s max %s%n",
+                        notice.path("count").asInt(), ms(notice.path("p50").asDouble()), ms(notice.path("p99").asDouble()),
+                        ms(notice.path("max").asDouble()));
+            }
         }
     }
 

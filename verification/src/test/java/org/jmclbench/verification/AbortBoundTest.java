@@ -8,6 +8,7 @@ import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.net.URISyntaxException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.List;
@@ -21,6 +22,7 @@ import org.jmclbench.verification.bytecode.AbortPollCheck;
 import org.jmclbench.verification.bytecode.ClassPool;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.objectweb.asm.tree.ClassNode;
 import org.objectweb.asm.tree.MethodNode;
 
@@ -118,6 +120,27 @@ class AbortBoundTest {
         assertEquals(null, thesis.get("steps"), "the thesis design defers the AIE for the whole job");
         assertEquals(true, thesis.get("wholeJob"));
         assertTrue(thesis.get("deferrals").toString().contains("synchronized"), thesis.get("deferrals").toString());
+    }
+
+    @Test
+    void withARunTheOptionsLeftOutAreTheRunsAndAContradictionIsBadInput(@TempDir Path run) throws Exception {
+        Files.writeString(run.resolve("summary.json"), "{\"parameters\": {\"engine\": \"rtsj\", \"rtsjDesign\": \"atomic\","
+                + " \"memory\": \"preallocated\", \"particles\": 1600}, \"tasks\": {\"update\": {\"taskLatencyNs\":"
+                + " {\"p50\": 320000, \"max\": 640000}}, \"all\": {\"abortLatencyNs\": {\"count\": 0}}}}");
+        String shipped = Paths.get("target", "classes") + ":" + codeOf(Class.forName("org.jmclbench.workload.rtsj.RtsjReplay"))
+                + ":" + codeOf(AbortSignal.class) + ":" + codeOf(Atc.class);
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream o = new PrintStream(out, true, StandardCharsets.UTF_8);
+        PrintStream e = new PrintStream(err, true, StandardCharsets.UTF_8);
+        assertEquals(0, AbortBoundMain.run(new String[] {"--classes", shipped, "--run", run.toString()}, o, e), err.toString());
+        String report = out.toString(StandardCharsets.UTF_8);
+        assertTrue(report.startsWith("abort-bound: rtsj atomic, memory preallocated"), report);
+        // 64 steps of a particle step from the max: 640000 ns / 1600 particles
+        assertTrue(report.contains("bound on abort latency: 64 steps x step = 0.013 ms (from the max: 0.026 ms)"), report);
+        assertEquals(2, AbortBoundMain.run(new String[] {"--rtsj-design", "thesis", "--classes", shipped, "--run", run.toString()}, o, e));
+        assertEquals("jmclbench: abort-bound: --rtsj-design: 'thesis', but the run in " + run + " used 'atomic'",
+                err.toString(StandardCharsets.UTF_8).strip());
     }
 
     @Test

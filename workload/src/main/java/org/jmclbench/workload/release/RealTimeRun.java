@@ -16,12 +16,14 @@ import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 
 /**
- * A real-time (non-ideal) run: optional GC log, optional warm-up replay through the same
- * engine on a throwaway localizer and records, then the measured replay of the whole timeline
- * at its real release times under the run's policy, into the run's records.
+ * A real-time (non-ideal) run: optional GC log, under terminate an {@link AbortRehearsal},
+ * optional warm-up replay through the same engine on a throwaway localizer and records, then the
+ * measured replay of the whole timeline at its real release times under the run's policy, into
+ * the run's records.
  */
 public final class RealTimeRun {
     private RealTimeRun() {
@@ -61,6 +63,11 @@ public final class RealTimeRun {
 
             if (options.loadAllocMbPerS > 0) {
                 noise = AllocationNoise.start(options.loadAllocMbPerS, options.loadAllocLiveMb);
+            }
+            if (options.policy == OverrunPolicy.TERMINATE) {
+                // first: before any replay compiles the job's loops with the gate's answer inlined
+                new ReleaseEngine(AbortRehearsal.schedule(), PolicyGate.of(OverrunPolicy.TERMINATE), AbortRehearsal.job(),
+                        new JobRecords(timeline, false), cpuClock, 0).run();
             }
             int warmupEvents = options.warmupS > 0 ? schedule.countBefore(options.warmupS, options.timeScale) : 0;
             facts.warmupEvents = warmupEvents;

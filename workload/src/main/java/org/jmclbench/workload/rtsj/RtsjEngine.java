@@ -17,7 +17,7 @@ import org.jmclbench.workload.engine.Engine;
 import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
 import org.jmclbench.workload.output.HeapUse;
-import org.jmclbench.workload.release.EventJob;
+import org.jmclbench.workload.release.AbortRehearsal;
 import org.jmclbench.workload.release.JavaSeEngine;
 import org.jmclbench.workload.release.LocalizerJob;
 import org.jmclbench.workload.release.ReleaseSchedule;
@@ -33,7 +33,6 @@ public final class RtsjEngine implements Engine {
     /** Events of the class-loading replay that runs before the measured one when there is no warm-up. */
     private static final int PRELOAD_EVENTS = 4;
     /** The abort rehearsal's events are this far apart: each finds the previous one's job polling. */
-    private static final long REHEARSAL_SPACING_NS = 2_000_000L;
     /** Beyond the replay's last release, how long the engine waits for the jobs before it calls the run hung. */
     private static final long HANG_MARGIN_NS = 120_000_000_000L;
 
@@ -111,26 +110,15 @@ public final class RtsjEngine implements Engine {
     }
 
     /**
-     * terminate: two AIEs fired at jobs that only poll, before the measured window, so that the
-     * first aborts measured do not pay for loading and resolving the ATC code (the class
-     * loading that {@link #PRELOAD_EVENTS} keeps out of the window for the other paths).
+     * terminate: two AIEs fired at jobs that only poll ({@link AbortRehearsal}), before the
+     * measured window, so that the first aborts measured do not pay for loading and resolving the
+     * ATC code (the class loading that {@link #PRELOAD_EVENTS} keeps out of the window for the
+     * other paths).
      */
     private static void rehearseAborts(EngineInput in) throws RunFailure, InterruptedException {
-        long[] release = {0, REHEARSAL_SPACING_NS, 2 * REHEARSAL_SPACING_NS};
-        long[] deadline = {Long.MAX_VALUE, Long.MAX_VALUE, Long.MAX_VALUE};
-        int[] task = {Timeline.PREDICT, Timeline.UPDATE, Timeline.PREDICT};
-        ReleaseSchedule schedule = ReleaseSchedule.of(release, deadline, task);
-        EventJob pollsUntilAborted = (k, abort) -> {
-            long until = System.nanoTime() + 2 * REHEARSAL_SPACING_NS;
-            while (System.nanoTime() < until) {
-                if (abort.abortRequested()) {
-                    return false;
-                }
-            }
-            return true;
-        };
+        ReleaseSchedule schedule = AbortRehearsal.schedule();
         JobRecords scratch = new JobRecords(in.dataset.timeline(), false);
-        new RtsjReplay(schedule, OverrunPolicy.TERMINATE, in.options.rtsjDesign, pollsUntilAborted, scratch)
+        new RtsjReplay(schedule, OverrunPolicy.TERMINATE, in.options.rtsjDesign, AbortRehearsal.job(), scratch)
                 .run(hangNs(schedule));
     }
 

@@ -32,7 +32,6 @@ import org.jmclbench.workload.shim.RuntimeShim;
 public final class RtsjEngine implements Engine {
     /** Events of the class-loading replay that runs before the measured one when there is no warm-up. */
     private static final int PRELOAD_EVENTS = 4;
-    /** The abort rehearsal's events are this far apart: each finds the previous one's job polling. */
     /** Beyond the replay's last release, how long the engine waits for the jobs before it calls the run hung. */
     private static final long HANG_MARGIN_NS = 120_000_000_000L;
 

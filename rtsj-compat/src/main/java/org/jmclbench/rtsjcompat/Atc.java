@@ -65,15 +65,11 @@ public final class Atc {
     public static void prime(int rounds) {
         AsynchronouslyInterruptedException aie = new AsynchronouslyInterruptedException();
         Interruptible[] logics = {new FiresAtItself(), new FiresAtItself() { }, new FiresAtItself() { }};
-        ScjThread[] threads = new ScjThread[3];
-        for (int i = 0; i < threads.length; i++) {
-            Runnable body = primingRounds(aie, logics, Math.max(1, rounds / threads.length));
-            String name = "jmclbench-atc-prime-" + i;
-            // three thread classes: ScjThread and two anonymous subclasses of it
-            threads[i] = i == 0 ? new ScjThread(body, name, Thread.NORM_PRIORITY)
-                    : i == 1 ? new ScjThread(body, name, Thread.NORM_PRIORITY) { }
-                    : new ScjThread(body, name, Thread.NORM_PRIORITY) { };
-        }
+        Runnable body = primingRounds(aie, logics, Math.max(1, rounds / 3));
+        // three thread classes: ScjThread and two anonymous subclasses of it
+        ScjThread[] threads = {new ScjThread(body, "jmclbench-atc-prime-0", Thread.NORM_PRIORITY),
+            new ScjThread(body, "jmclbench-atc-prime-1", Thread.NORM_PRIORITY) { },
+            new ScjThread(body, "jmclbench-atc-prime-2", Thread.NORM_PRIORITY) { }};
         boolean interrupted = false;
         for (ScjThread t : threads) {
             t.start();

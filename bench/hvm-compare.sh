@@ -21,6 +21,10 @@ hvm_modes=compiled,interpreted,hot
 only_hvm=0
 while [ $# -gt 0 ]; do
     case "$1" in
+        --hvm-modes|--particles|--policy|--dataset|-O)
+            [ $# -ge 2 ] && [ -n "$2" ] || { echo "hvm-compare: $1: needs a value" >&2; exit 2; } ;;
+    esac
+    case "$1" in
         --hvm-modes) hvm_modes=$2; shift 2 ;;
         --only-hvm) only_hvm=1; shift ;;
         --particles) particles=$2; shift 2 ;;
@@ -28,7 +32,7 @@ while [ $# -gt 0 ]; do
         --dataset) dataset=$2; shift 2 ;;
         -O) out=$2; shift 2 ;;
         -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        *) echo "hvm-compare: unknown option: $1" >&2; exit 2 ;;
+        *) echo "hvm-compare: $1: unknown option" >&2; exit 2 ;;
     esac
 done
 [ -n "$out" ] || out=$(mktemp -d "${TMPDIR:-/tmp}/hvm-compare.XXXXXX")

@@ -19,15 +19,19 @@ out=
 prefix=()
 while [ $# -gt 0 ]; do
     case "$1" in
-        --particles) particles=${2:?--particles: needs a list}; shift 2 ;;
-        --policies) policies=${2:?--policies: needs a list}; shift 2 ;;
-        --dataset) dataset=${2:?--dataset: needs a folder}; shift 2 ;;
-        --warmup) warmup=${2:?--warmup: needs seconds}; shift 2 ;;
-        --out) out=${2:?--out: needs a folder}; shift 2 ;;
+        --particles|--policies|--dataset|--warmup|--out)
+            [ $# -ge 2 ] && [ -n "$2" ] || { echo "overload: $1: needs a value" >&2; exit 2; } ;;
+    esac
+    case "$1" in
+        --particles) particles=$2; shift 2 ;;
+        --policies) policies=$2; shift 2 ;;
+        --dataset) dataset=$2; shift 2 ;;
+        --warmup) warmup=$2; shift 2 ;;
+        --out) out=$2; shift 2 ;;
         --fifo) prefix=(chrt -f 80); shift ;;
         --) shift; break ;;
         -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        *) echo "jmclbench: $1: unknown option" >&2; exit 2 ;;
+        *) echo "overload: $1: unknown option" >&2; exit 2 ;;
     esac
 done
 extra=("$@")

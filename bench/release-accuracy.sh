@@ -22,24 +22,28 @@ fifo=0; loops_1ms=10000; loops_50ms=400; spin_us=0
 java=${JAVA_HOME:+$JAVA_HOME/bin/java}; java=${java:-java}
 while [ $# -gt 0 ]; do
     case "$1" in
+        --loops-1ms|--loops-50ms|--spin-us|--java)
+            [ $# -ge 2 ] && [ -n "$2" ] || { echo "release-accuracy: $1: needs a value" >&2; exit 2; } ;;
+    esac
+    case "$1" in
         --fifo) fifo=1; shift ;;
-        --loops-1ms) loops_1ms=${2:?--loops-1ms: needs a value}; shift 2 ;;
-        --loops-50ms) loops_50ms=${2:?--loops-50ms: needs a value}; shift 2 ;;
-        --spin-us) spin_us=${2:?--spin-us: needs a value}; shift 2 ;;
-        --java) java=${2:?--java: needs a path}; shift 2 ;;
+        --loops-1ms) loops_1ms=$2; shift 2 ;;
+        --loops-50ms) loops_50ms=$2; shift 2 ;;
+        --spin-us) spin_us=$2; shift 2 ;;
+        --java) java=$2; shift 2 ;;
         -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        *) echo "jmclbench: $1: unknown option" >&2; exit 2 ;;
+        *) echo "release-accuracy: $1: unknown option" >&2; exit 2 ;;
     esac
 done
-for n in "$loops_1ms" "$loops_50ms" "$spin_us"; do
-    [[ "$n" =~ ^[0-9]+$ ]] || { echo "jmclbench: $n: not a count" >&2; exit 2; }
+for opt in "--loops-1ms $loops_1ms" "--loops-50ms $loops_50ms" "--spin-us $spin_us"; do
+    [[ "${opt#* }" =~ ^[0-9]+$ ]] || { echo "release-accuracy: ${opt%% *}: ${opt#* }: not a count" >&2; exit 2; }
 done
-command -v cyclictest >/dev/null || { echo "jmclbench: cyclictest not found (apt-get install rt-tests)" >&2; exit 1; }
-command -v python3 >/dev/null || { echo "jmclbench: python3 is needed to read cyclictest's JSON" >&2; exit 1; }
+command -v cyclictest >/dev/null || { echo "release-accuracy: cyclictest not found (apt-get install rt-tests)" >&2; exit 1; }
+command -v python3 >/dev/null || { echo "release-accuracy: python3 is needed to read cyclictest's JSON" >&2; exit 1; }
 
 jar=$home/workload/target/jmclbench-workload.jar
 "$home/jmclbench" build
-[ -f "$jar" ] || { echo "jmclbench: $jar missing after the build" >&2; exit 1; }
+[ -f "$jar" ] || { echo "release-accuracy: $jar missing after the build" >&2; exit 1; }
 
 prefix=(); ct_prio=()
 policy=SCHED_OTHER

@@ -24,20 +24,24 @@ particles=1000; dataset=$home/data/match-short; policy=queue; out=; repeat=3
 java=${JAVA_HOME:+$JAVA_HOME/bin/java}; java=${java:-java}
 while [ $# -gt 0 ]; do
     case "$1" in
-        --particles) particles=${2:?--particles: needs a value}; shift 2 ;;
-        --dataset) dataset=${2:?--dataset: needs a folder}; shift 2 ;;
-        --policy) policy=${2:?--policy: needs a value}; shift 2 ;;
-        --repeat) repeat=${2:?--repeat: needs a count}; shift 2 ;;
-        --java) java=${2:?--java: needs a path}; shift 2 ;;
-        --out) out=${2:?--out: needs a folder}; shift 2 ;;
+        --particles|--dataset|--policy|--repeat|--java|--out)
+            [ $# -ge 2 ] && [ -n "$2" ] || { echo "scj-overhead: $1: needs a value" >&2; exit 2; } ;;
+    esac
+    case "$1" in
+        --particles) particles=$2; shift 2 ;;
+        --dataset) dataset=$2; shift 2 ;;
+        --policy) policy=$2; shift 2 ;;
+        --repeat) repeat=$2; shift 2 ;;
+        --java) java=$2; shift 2 ;;
+        --out) out=$2; shift 2 ;;
         -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        *) echo "jmclbench: $1: unknown option" >&2; exit 2 ;;
+        *) echo "scj-overhead: $1: unknown option" >&2; exit 2 ;;
     esac
 done
-[[ "$particles" =~ ^[0-9]+$ ]] || { echo "jmclbench: --particles: $particles: not a count" >&2; exit 2; }
-[[ "$repeat" =~ ^[1-9][0-9]*$ ]] || { echo "jmclbench: --repeat: $repeat: not a positive count" >&2; exit 2; }
-[ -d "$dataset" ] || { echo "jmclbench: --dataset: $dataset: no such folder" >&2; exit 2; }
-command -v python3 >/dev/null || { echo "jmclbench: python3 is needed to read summary.json" >&2; exit 1; }
+[[ "$particles" =~ ^[0-9]+$ ]] || { echo "scj-overhead: --particles: $particles: not a count" >&2; exit 2; }
+[[ "$repeat" =~ ^[1-9][0-9]*$ ]] || { echo "scj-overhead: --repeat: $repeat: not a positive count" >&2; exit 2; }
+[ -d "$dataset" ] || { echo "scj-overhead: --dataset: $dataset: no such folder" >&2; exit 2; }
+command -v python3 >/dev/null || { echo "scj-overhead: python3 is needed to read summary.json" >&2; exit 1; }
 
 "$home/jmclbench" build
 if [ -z "$out" ]; then out=$(mktemp -d); trap 'rm -rf "$out"' EXIT; fi

@@ -12,28 +12,23 @@
 #   --no-build  use bench/target/benchmarks.jar as it is
 set -euo pipefail
 home=$(cd "$(dirname "$0")/.." && pwd)
+. "$home/bench/options.sh"
 
 fifo=0; aborts=2000; warmup=200; work=200; build=1
 java=${JAVA_HOME:+$JAVA_HOME/bin/java}; java=${java:-java}
 while [ $# -gt 0 ]; do
     case "$1" in
-        --aborts|--warmup|--work|--java)
-            [ $# -ge 2 ] && [ -n "$2" ] || { echo "atc-latency: $1: needs a value" >&2; exit 2; } ;;
-    esac
-    case "$1" in
         --fifo) fifo=1; shift ;;
-        --aborts) aborts=$2; shift 2 ;;
-        --warmup) warmup=$2; shift 2 ;;
-        --work) work=$2; shift 2 ;;
-        --java) java=$2; shift 2 ;;
+        --aborts) aborts=$(value_of "$@"); shift 2 ;;
+        --warmup) warmup=$(value_of "$@"); shift 2 ;;
+        --work) work=$(value_of "$@"); shift 2 ;;
+        --java) java=$(value_of "$@"); shift 2 ;;
         --no-build) build=0; shift ;;
         -h|--help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "atc-latency: $1: unknown option (see --help)" >&2; exit 2 ;;
     esac
 done
-for opt in "--aborts $aborts" "--warmup $warmup" "--work $work"; do
-    [[ "${opt#* }" =~ ^[0-9]+$ ]] || { echo "atc-latency: ${opt%% *}: ${opt#* }: not a count" >&2; exit 2; }
-done
+require_count --aborts "$aborts"; require_count --warmup "$warmup"; require_count --work "$work"
 command -v "$java" >/dev/null || { echo "atc-latency: --java: $java: not found" >&2; exit 2; }
 if [ $build = 1 ]; then
     echo "atc-latency: building the benchmarks..." >&2

@@ -13,6 +13,7 @@
 set -euo pipefail
 
 ROOT=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)
+. "$ROOT/bench/options.sh"
 particles=100,400,1600
 policy=skip
 dataset=match-short
@@ -21,16 +22,12 @@ hvm_modes=compiled,interpreted,hot
 only_hvm=0
 while [ $# -gt 0 ]; do
     case "$1" in
-        --hvm-modes|--particles|--policy|--dataset|-O)
-            [ $# -ge 2 ] && [ -n "$2" ] || { echo "hvm-compare: $1: needs a value" >&2; exit 2; } ;;
-    esac
-    case "$1" in
-        --hvm-modes) hvm_modes=$2; shift 2 ;;
+        --hvm-modes) hvm_modes=$(value_of "$@"); shift 2 ;;
         --only-hvm) only_hvm=1; shift ;;
-        --particles) particles=$2; shift 2 ;;
-        --policy) policy=$2; shift 2 ;;
-        --dataset) dataset=$2; shift 2 ;;
-        -O) out=$2; shift 2 ;;
+        --particles) particles=$(value_of "$@"); shift 2 ;;
+        --policy) policy=$(value_of "$@"); shift 2 ;;
+        --dataset) dataset=$(value_of "$@"); shift 2 ;;
+        -O) out=$(value_of "$@"); shift 2 ;;
         -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "hvm-compare: $1: unknown option" >&2; exit 2 ;;
     esac

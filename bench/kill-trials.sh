@@ -20,26 +20,22 @@
 #   --keep DIR   keep every trial's folder (store, logs) under DIR instead of a temporary folder
 set -euo pipefail
 home=$(cd "$(dirname "$0")/.." && pwd)
+. "$home/bench/options.sh"
 trials=100
 command=matrix
 seed=$RANDOM
 keep=
 while [ $# -gt 0 ]; do
     case "$1" in
-        --trials|--command|--seed|--keep)
-            [ $# -ge 2 ] && [ -n "$2" ] || { echo "kill-trials: $1: needs a value" >&2; exit 2; } ;;
-    esac
-    case "$1" in
-        --trials) trials=$2; shift 2 ;;
-        --command) command=$2; shift 2 ;;
-        --seed) seed=$2; shift 2 ;;
-        --keep) keep=$2; shift 2 ;;
+        --trials) trials=$(value_of "$@"); shift 2 ;;
+        --command) command=$(value_of "$@"); shift 2 ;;
+        --seed) seed=$(value_of "$@"); shift 2 ;;
+        --keep) keep=$(value_of "$@"); shift 2 ;;
         -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "kill-trials: $1: unknown option" >&2; exit 2 ;;
     esac
 done
-case "$trials" in ''|*[!0-9]*) echo "kill-trials: --trials: not a number: $trials" >&2; exit 2 ;; esac
-case "$seed" in ''|*[!0-9]*) echo "kill-trials: --seed: not a number: $seed" >&2; exit 2 ;; esac
+require_count --trials "$trials"; require_count --seed "$seed"
 case "$command" in matrix|evaluate|verify) ;; *) echo "kill-trials: --command: matrix, evaluate or verify, not $command" >&2; exit 2 ;; esac
 command -v sqlite3 >/dev/null || { echo "kill-trials: needs the sqlite3 command (apt-get install sqlite3)" >&2; exit 2; }
 if [ -n "$keep" ]; then

@@ -11,6 +11,7 @@
 #            than its share of a machine that other processes also load
 set -euo pipefail
 home=$(cd "$(dirname "$0")/.." && pwd)
+. "$home/bench/options.sh"
 particles="400 1000 2000 5000 10000 20000 50000"
 policies="skip"
 warmup=2
@@ -19,15 +20,11 @@ out=
 prefix=()
 while [ $# -gt 0 ]; do
     case "$1" in
-        --particles|--policies|--dataset|--warmup|--out)
-            [ $# -ge 2 ] && [ -n "$2" ] || { echo "overload: $1: needs a value" >&2; exit 2; } ;;
-    esac
-    case "$1" in
-        --particles) particles=$2; shift 2 ;;
-        --policies) policies=$2; shift 2 ;;
-        --dataset) dataset=$2; shift 2 ;;
-        --warmup) warmup=$2; shift 2 ;;
-        --out) out=$2; shift 2 ;;
+        --particles) particles=$(value_of "$@"); shift 2 ;;
+        --policies) policies=$(value_of "$@"); shift 2 ;;
+        --dataset) dataset=$(value_of "$@"); shift 2 ;;
+        --warmup) warmup=$(value_of "$@"); shift 2 ;;
+        --out) out=$(value_of "$@"); shift 2 ;;
         --fifo) prefix=(chrt -f 80); shift ;;
         --) shift; break ;;
         -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;

@@ -17,27 +17,22 @@
 #   --java         the JVM to measure (default: JAVA_HOME's, else java on PATH)
 set -euo pipefail
 home=$(cd "$(dirname "$0")/.." && pwd)
+. "$home/bench/options.sh"
 
 fifo=0; loops_1ms=10000; loops_50ms=400; spin_us=0
 java=${JAVA_HOME:+$JAVA_HOME/bin/java}; java=${java:-java}
 while [ $# -gt 0 ]; do
     case "$1" in
-        --loops-1ms|--loops-50ms|--spin-us|--java)
-            [ $# -ge 2 ] && [ -n "$2" ] || { echo "release-accuracy: $1: needs a value" >&2; exit 2; } ;;
-    esac
-    case "$1" in
         --fifo) fifo=1; shift ;;
-        --loops-1ms) loops_1ms=$2; shift 2 ;;
-        --loops-50ms) loops_50ms=$2; shift 2 ;;
-        --spin-us) spin_us=$2; shift 2 ;;
-        --java) java=$2; shift 2 ;;
+        --loops-1ms) loops_1ms=$(value_of "$@"); shift 2 ;;
+        --loops-50ms) loops_50ms=$(value_of "$@"); shift 2 ;;
+        --spin-us) spin_us=$(value_of "$@"); shift 2 ;;
+        --java) java=$(value_of "$@"); shift 2 ;;
         -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "release-accuracy: $1: unknown option" >&2; exit 2 ;;
     esac
 done
-for opt in "--loops-1ms $loops_1ms" "--loops-50ms $loops_50ms" "--spin-us $spin_us"; do
-    [[ "${opt#* }" =~ ^[0-9]+$ ]] || { echo "release-accuracy: ${opt%% *}: ${opt#* }: not a count" >&2; exit 2; }
-done
+require_count --loops-1ms "$loops_1ms"; require_count --loops-50ms "$loops_50ms"; require_count --spin-us "$spin_us"
 command -v cyclictest >/dev/null || { echo "release-accuracy: cyclictest not found (apt-get install rt-tests)" >&2; exit 1; }
 command -v python3 >/dev/null || { echo "release-accuracy: python3 is needed to read cyclictest's JSON" >&2; exit 1; }
 

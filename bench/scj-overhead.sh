@@ -19,26 +19,23 @@
 #   --out        where the run folders go (default: a temporary folder, removed at the end)
 set -euo pipefail
 home=$(cd "$(dirname "$0")/.." && pwd)
+. "$home/bench/options.sh"
 
 particles=1000; dataset=$home/data/match-short; policy=queue; out=; repeat=3
 java=${JAVA_HOME:+$JAVA_HOME/bin/java}; java=${java:-java}
 while [ $# -gt 0 ]; do
     case "$1" in
-        --particles|--dataset|--policy|--repeat|--java|--out)
-            [ $# -ge 2 ] && [ -n "$2" ] || { echo "scj-overhead: $1: needs a value" >&2; exit 2; } ;;
-    esac
-    case "$1" in
-        --particles) particles=$2; shift 2 ;;
-        --dataset) dataset=$2; shift 2 ;;
-        --policy) policy=$2; shift 2 ;;
-        --repeat) repeat=$2; shift 2 ;;
-        --java) java=$2; shift 2 ;;
-        --out) out=$2; shift 2 ;;
+        --particles) particles=$(value_of "$@"); shift 2 ;;
+        --dataset) dataset=$(value_of "$@"); shift 2 ;;
+        --policy) policy=$(value_of "$@"); shift 2 ;;
+        --repeat) repeat=$(value_of "$@"); shift 2 ;;
+        --java) java=$(value_of "$@"); shift 2 ;;
+        --out) out=$(value_of "$@"); shift 2 ;;
         -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "scj-overhead: $1: unknown option" >&2; exit 2 ;;
     esac
 done
-[[ "$particles" =~ ^[0-9]+$ ]] || { echo "scj-overhead: --particles: $particles: not a count" >&2; exit 2; }
+require_count --particles "$particles"
 [[ "$repeat" =~ ^[1-9][0-9]*$ ]] || { echo "scj-overhead: --repeat: $repeat: not a positive count" >&2; exit 2; }
 [ -d "$dataset" ] || { echo "scj-overhead: --dataset: $dataset: no such folder" >&2; exit 2; }
 command -v python3 >/dev/null || { echo "scj-overhead: python3 is needed to read summary.json" >&2; exit 1; }

@@ -43,7 +43,7 @@ class ScriptOptionsTest {
             "atc-latency, --warmup, -3, not a count",
             "release-accuracy, --loops-1ms, 1x, not a count",
             "scj-overhead, --particles, many, not a count",
-            "kill-trials, --seed, x, not a number"})
+            "kill-trials, --seed, x, not a count"})
     void aValueOfTheWrongKindNamesItsOption(String script, String option, String value, String what) throws Exception {
         assertBadInput(script, script + ": " + option + ": ", option, value);
         assertTrue(run(script, option, value).get(0).contains(what), what);

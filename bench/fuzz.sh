@@ -12,6 +12,7 @@
 #   bench/fuzz.sh --runs 1000000       the long run whose counts docs/RELIABILITY.md gives
 set -euo pipefail
 home=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)
+. "$home/bench/options.sh"
 
 limit=(-max_total_time=60)
 work=$home/results/fuzz
@@ -19,12 +20,9 @@ build=1
 targets=()
 while [ $# -gt 0 ]; do
     case "$1" in
-        --runs|--seconds|--work) [ $# -ge 2 ] || { echo "fuzz: $1: needs a value" >&2; exit 2; } ;;
-    esac
-    case "$1" in
-        --runs) limit=(-runs="$2"); shift 2 ;;
-        --seconds) limit=(-max_total_time="$2"); shift 2 ;;
-        --work) work=$(readlink -f "$2"); shift 2 ;;
+        --runs) n=$(value_of "$@"); limit=(-runs="$n"); shift 2 ;;
+        --seconds) n=$(value_of "$@"); limit=(-max_total_time="$n"); shift 2 ;;
+        --work) work=$(value_of "$@"); work=$(readlink -f "$work"); shift 2 ;;
         --no-build) build=0; shift ;;
         -h|--help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         c-dataset|c-options|java-events|java-properties|java-options|java-matrix|java-hvm-result) targets+=("$1"); shift ;;
@@ -115,8 +113,15 @@ for t in "${targets[@]}"; do
     secs=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
     runs=$(sed -n 's/^Done \([0-9]*\) runs in.*/\1/p' "$log" | tail -1)
     result=ok
-    if [ "$code" != 0 ] || [ -z "$runs" ] || [ -n "$(ls -A "$art")" ]; then
+    if [ -n "$(ls -A "$art")" ]; then
         result="FINDING (exit $code): $log; keep the input from $art in $kept"
+        status=1
+    elif [ "$code" != 0 ] || [ -z "$runs" ]; then
+        if grep -q '^INFO: Seed:' "$log"; then # it fuzzed, then died keeping no input (a crash of the JVM)
+            result="FINDING (exit $code, no input kept): $log"
+        else # it never started (not built, a bad class path): the harness, not the parser
+            result="DID NOT RUN (exit $code): $log"
+        fi
         status=1
     fi
     printf '%-16s %12s %8.1f %9.0f  %s\n' "$t" "${runs:-?}" "$secs" \

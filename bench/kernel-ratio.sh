@@ -11,6 +11,7 @@
 # same warm-up count, iteration count and iteration time from them.
 set -euo pipefail
 home=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)
+. "$home/bench/options.sh"
 
 java=${JAVA_HOME:+$JAVA_HOME/bin/java}
 java=${java:-java}
@@ -21,14 +22,10 @@ build=1
 jmh_opts=(-f 1 -wi 3 -i 5 -w 1s -r 1s)
 while [ $# -gt 0 ]; do
     case "$1" in
-        --java|--dataset|--particles|--out)
-            [ $# -ge 2 ] || { echo "kernel-ratio: $1: needs a value" >&2; exit 2; } ;;
-    esac
-    case "$1" in
-        --java) java=$2; shift 2 ;;
-        --dataset) dataset=$(readlink -f "$2"); shift 2 ;;
-        --particles) particles=$2; shift 2 ;;
-        --out) out=$2; shift 2 ;;
+        --java) java=$(value_of "$@"); shift 2 ;;
+        --dataset) dataset=$(value_of "$@"); dataset=$(readlink -f "$dataset"); shift 2 ;;
+        --particles) particles=$(value_of "$@"); shift 2 ;;
+        --out) out=$(value_of "$@"); shift 2 ;;
         --no-build) build=0; shift ;;
         --) shift; jmh_opts=("$@"); break ;;
         -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;

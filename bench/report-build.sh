@@ -6,7 +6,10 @@
 #   bench/report-build.sh [RUNS]
 set -euo pipefail
 home=$(cd "$(dirname "$0")/.." && pwd)
+. "$home/bench/options.sh"
+case "${1:-}" in -h|--help) sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;; esac
 runs=${1:-1000}
+require_count RUNS "$runs"
 cd "$home"
 java17=/usr/lib/jvm/java-17-openjdk-amd64
 if [ -z "${JAVA_HOME:-}" ] && [ -d "$java17" ]; then export JAVA_HOME=$java17; fi

@@ -52,11 +52,23 @@ public final class Weaver {
         /** AI-enabled methods found, and delivery points inserted. */
         public final int aiMethods;
         public final int deliveryPoints;
+        /**
+         * The class was woven by an earlier build (and left as it is): its AI-enabled methods and
+         * the delivery points already in them, counted so that a rebuild does not report "0".
+         */
+        public final int aiMethodsBefore;
+        public final int deliveryPointsBefore;
 
         Result(byte[] bytes, int aiMethods, int deliveryPoints) {
+            this(bytes, aiMethods, deliveryPoints, 0, 0);
+        }
+
+        private Result(byte[] bytes, int aiMethods, int deliveryPoints, int aiMethodsBefore, int deliveryPointsBefore) {
             this.bytes = bytes;
             this.aiMethods = aiMethods;
             this.deliveryPoints = deliveryPoints;
+            this.aiMethodsBefore = aiMethodsBefore;
+            this.deliveryPointsBefore = deliveryPointsBefore;
         }
     }
 
@@ -80,7 +92,7 @@ public final class Weaver {
         ClassNode c = new ClassNode();
         new ClassReader(classFile).accept(c, 0);
         if (woven(c)) {
-            return new Result(classFile, 0, 0);
+            return wovenBefore(classFile, c);
         }
         int ai = 0;
         int points = 0;
@@ -100,6 +112,20 @@ public final class Weaver {
         ClassWriter w = new ClassWriter(ClassWriter.COMPUTE_MAXS);
         c.accept(w);
         return new Result(w.toByteArray(), ai, points);
+    }
+
+    private static Result wovenBefore(byte[] classFile, ClassNode c) {
+        int ai = 0;
+        int points = 0;
+        for (MethodNode m : c.methods) {
+            if (aiEnabled(m)) {
+                ai++;
+                for (AbstractInsnNode n : m.instructions.toArray()) {
+                    points += isPoll(n) ? 1 : 0;
+                }
+            }
+        }
+        return new Result(classFile, 0, 0, ai, points);
     }
 
     /** Whether {@code m} declares the AIE itself in its throws clause. */
@@ -151,6 +177,11 @@ public final class Weaver {
         return deferFinally ? r.deliverable(i) : r.deliverableIgnoringFinally(i);
     }
 
+    private static boolean isPoll(AbstractInsnNode n) {
+        return n instanceof MethodInsnNode && POLL_OWNER.equals(((MethodInsnNode) n).owner)
+                && POLL_NAME.equals(((MethodInsnNode) n).name);
+    }
+
     private static boolean isCall(AbstractInsnNode n) {
         if (n instanceof MethodInsnNode) {
             MethodInsnNode c = (MethodInsnNode) n;
@@ -189,8 +220,7 @@ public final class Weaver {
         new ClassReader(classFile).accept(c, 0);
         for (MethodNode m : c.methods) {
             for (AbstractInsnNode n : m.instructions.toArray()) {
-                if (n instanceof MethodInsnNode && POLL_OWNER.equals(((MethodInsnNode) n).owner)
-                        && POLL_NAME.equals(((MethodInsnNode) n).name)) {
+                if (isPoll(n)) {
                     m.instructions.remove(n);
                 }
             }
@@ -198,6 +228,15 @@ public final class Weaver {
         ClassWriter w = new ClassWriter(ClassWriter.COMPUTE_MAXS);
         c.accept(w);
         return w.toByteArray();
+    }
+
+    /** What a directory holds after weaving, and how much of it an earlier build wove. */
+    static String summary(int ai, int points, int aiBefore, int pointsBefore) {
+        String all = (ai + aiBefore) + " AI-enabled methods, " + (points + pointsBefore) + " delivery points";
+        if (aiBefore == 0) {
+            return all;
+        }
+        return all + (ai == 0 ? " (woven by an earlier build)" : " (" + aiBefore + " of the methods woven by an earlier build)");
     }
 
     /** Weaves the classes under each directory in place. */
@@ -219,6 +258,8 @@ public final class Weaver {
             }
             int ai = 0;
             int points = 0;
+            int aiBefore = 0;
+            int pointsBefore = 0;
             try {
                 List<Path> files;
                 try (Stream<Path> s = Files.walk(dir)) {
@@ -232,6 +273,8 @@ public final class Weaver {
                     }
                     ai += r.aiMethods;
                     points += r.deliveryPoints;
+                    aiBefore += r.aiMethodsBefore;
+                    pointsBefore += r.deliveryPointsBefore;
                 }
             } catch (WeaveException e) {
                 err.println("rtsj-weaver: " + e.getMessage());
@@ -240,7 +283,7 @@ public final class Weaver {
                 err.println("rtsj-weaver: " + dir + ": " + e.getMessage());
                 return 1;
             }
-            out.println("rtsj-weaver: " + dir + ": " + ai + " AI-enabled methods, " + points + " delivery points");
+            out.println("rtsj-weaver: " + dir + ": " + summary(ai, points, aiBefore, pointsBefore));
         }
         return 0;
     }

@@ -144,7 +144,18 @@ class WeaverTest {
         Weaver.Result again = new Weaver().weave(r.bytes);
         assertArrayEquals(r.bytes, again.bytes);
         assertEquals(0, again.deliveryPoints);
+        // a rebuild reports what the class holds, not "0 AI-enabled methods"
+        assertEquals(r.aiMethods, again.aiMethodsBefore);
+        assertEquals(r.deliveryPoints, again.deliveryPointsBefore);
         assertEquals(0, pointsPerMethod(Weaver.strip(r.bytes)).values().stream().mapToInt(Integer::intValue).sum());
+    }
+
+    @Test
+    void theSummarySaysWhatAnEarlierBuildWove() {
+        assertEquals("2 AI-enabled methods, 7 delivery points", Weaver.summary(2, 7, 0, 0));
+        assertEquals("2 AI-enabled methods, 7 delivery points (woven by an earlier build)", Weaver.summary(0, 0, 2, 7));
+        assertEquals("3 AI-enabled methods, 9 delivery points (1 of the methods woven by an earlier build)",
+                Weaver.summary(2, 7, 1, 2));
     }
 
     @Test

@@ -21,6 +21,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.ServiceLoader;
+import java.util.stream.Stream;
 
 /**
  * {@code ./jmclbench verify}: runs every catalogue's static and JPF checks, prints the table
@@ -108,6 +109,10 @@ public final class VerifyMain {
         ClassPool pool = ClassPool.of(classPath.stream().filter(e -> !e.isEmpty()).map(Paths::get)
                 .filter(p -> !p.getFileName().toString().startsWith("jpf")).toList());
         JpfRunner runner = null;
+        if (only != null && catalogs.stream().noneMatch(c -> Stream.concat(c.staticChecks().stream().map(StaticCheck::id),
+                c.jpfChecks().stream().map(JpfCheck::id)).anyMatch(id -> selected(id, only)))) {
+            usage("--only: no check id starts with " + String.join(" or ", only));
+        }
         System.out.printf("%-34s %-48s %-9s %-8s %9s %8s%n", "check", "property", "policy", "verdict", "states",
                 "seconds");
         checks:
@@ -165,9 +170,6 @@ public final class VerifyMain {
                 row.put("instructions", r.instructions());
                 rows.add(row);
             }
-        }
-        if (rows.isEmpty()) {
-            usage("--only: no check id starts with " + String.join(" or ", only));
         }
         if (!seeded && only == null) {
             System.out.println("no seeded bug ran: the verification's test classes are not on the class path,"

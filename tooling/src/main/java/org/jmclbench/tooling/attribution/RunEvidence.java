@@ -32,6 +32,8 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
     public static final String PREDICT_FILE = "odoData.txt";
     /** Job file of the update task. */
     public static final String UPDATE_FILE = "laserData.txt";
+    /** Levels of the run tree below {@code runs/<run_key>/}: runtime, coverage, particles, policy, repetition. */
+    private static final int RUN_TREE_DEPTH = 5;
 
     /**
      * Loads the run in {@code dir}: either the run folder itself, or a folder holding exactly
@@ -59,8 +61,8 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
         RunClock clock = RunClock.fromSummary(summary);
         List<VmEvent> events = List.of();
         String source;
-        Path jfr = findUp(runDir, dir, JfrFlags.RECORDING);
-        Path gcLog = findUp(runDir, dir, JfrFlags.GC_LOG);
+        Path jfr = findUp(runDir, JfrFlags.RECORDING);
+        Path gcLog = findUp(runDir, JfrFlags.GC_LOG);
         if (jfr == null && gcLog == null) {
             source = "none (no " + JfrFlags.RECORDING + " or " + JfrFlags.GC_LOG + "): only os, queued, preemption and compute can be told";
         } else if (clock == null) {
@@ -111,20 +113,15 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
     }
 
     /**
-     * {@code name} in {@code from} or one of its parents, up to {@code root} when the run was
-     * found below it, else up to five levels (the depth of the run tree below the runner's
-     * {@code runs/<run_key>/}); null when there is none.
+     * {@code name} in the run folder or one of its five parents: the depth of the run tree below
+     * the runner's {@code runs/<run_key>/}, which holds the recording. Whichever folder the user
+     * named, the search never goes above that key folder; null when there is none.
      */
-    private static Path findUp(Path from, Path root, String name) {
-        Path top = root.toAbsolutePath().normalize();
-        Path start = from.toAbsolutePath().normalize();
-        int levels = start.equals(top) ? 5 : Integer.MAX_VALUE;
-        for (Path p = start; p != null && levels-- >= 0; p = p.getParent()) {
+    private static Path findUp(Path runDir, String name) {
+        Path p = runDir.toAbsolutePath().normalize();
+        for (int level = 0; p != null && level <= RUN_TREE_DEPTH; level++, p = p.getParent()) {
             if (Files.isRegularFile(p.resolve(name))) {
                 return p.resolve(name);
-            }
-            if (p.equals(top) && !start.equals(top)) {
-                break;
             }
         }
         return null;

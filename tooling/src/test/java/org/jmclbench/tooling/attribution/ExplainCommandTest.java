@@ -49,6 +49,10 @@ class ExplainCommandTest {
         String[] leaf = run("explain", "--json", key.resolve("local/nocov/400/QueueTest/1").toString());
         assertEquals("0", leaf[0], leaf[2]);
         assertTrue(leaf[1].contains("\"kind\" : \"gc\""), leaf[1]);
+        // So does a folder between the two, which holds that one run.
+        String[] runtime = run("explain", "--limit", "0", key.resolve("local").toString());
+        assertEquals("0", runtime[0], runtime[2]);
+        assertTrue(runtime[1].contains("events:  JFR " + key.resolve("recording.jfr")), runtime[1]);
     }
 
     @Test

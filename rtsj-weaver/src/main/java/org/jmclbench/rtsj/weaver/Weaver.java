@@ -183,11 +183,7 @@ public final class Weaver {
     }
 
     private static boolean isCall(AbstractInsnNode n) {
-        if (n instanceof MethodInsnNode) {
-            MethodInsnNode c = (MethodInsnNode) n;
-            return !(POLL_OWNER.equals(c.owner) && POLL_NAME.equals(c.name));
-        }
-        return n instanceof InvokeDynamicInsnNode;
+        return n instanceof MethodInsnNode ? !isPoll(n) : n instanceof InvokeDynamicInsnNode;
     }
 
     private static boolean backwardBranch(MethodRegions r, AbstractInsnNode n, int i) {
@@ -212,22 +208,6 @@ public final class Weaver {
 
     private static MethodInsnNode poll() {
         return new MethodInsnNode(Opcodes.INVOKESTATIC, POLL_OWNER, POLL_NAME, POLL_DESC, false);
-    }
-
-    /** Removes every delivery point (for measuring their cost against the same code without them). */
-    public static byte[] strip(byte[] classFile) {
-        ClassNode c = new ClassNode();
-        new ClassReader(classFile).accept(c, 0);
-        for (MethodNode m : c.methods) {
-            for (AbstractInsnNode n : m.instructions.toArray()) {
-                if (isPoll(n)) {
-                    m.instructions.remove(n);
-                }
-            }
-        }
-        ClassWriter w = new ClassWriter(ClassWriter.COMPUTE_MAXS);
-        c.accept(w);
-        return w.toByteArray();
     }
 
     /** What a directory holds after weaving, and how much of it an earlier build wove. */

@@ -147,7 +147,6 @@ class WeaverTest {
         // a rebuild reports what the class holds, not "0 AI-enabled methods"
         assertEquals(r.aiMethods, again.aiMethodsBefore);
         assertEquals(r.deliveryPoints, again.deliveryPointsBefore);
-        assertEquals(0, pointsPerMethod(Weaver.strip(r.bytes)).values().stream().mapToInt(Integer::intValue).sum());
     }
 
     @Test

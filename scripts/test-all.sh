@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Every test of the project: the native baseline (normal and sanitizer builds), then the
-# Java modules (unit, conformance, end-to-end and browser tests) with Maven.
+# Every test of the project: the native baseline (normal and sanitizer builds), the Java modules
+# with Maven (unit, conformance, end-to-end and browser tests), short fuzz runs, the Ant builds, the
+# verification. Arguments go to Maven (e.g. -o; -Dtest=NAME -Dsurefire.failIfNoSpecifiedTests=false).
 set -euo pipefail
 home=$(cd "$(dirname "$0")/.." && pwd)
+case "${1:-}" in -h|--help) sed -n '2,4p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;; esac
 cd "$home"
 
 "$home/scripts/install-deps.sh"

@@ -18,6 +18,7 @@ import picocli.CommandLine.Parameters;
 
 /** {@code jmclbench explain RUN_DIR}: why each job of one run missed its deadline or was late. */
 @Command(name = "explain", mixinStandardHelpOptions = true,
+        header = "Says why each missed or late job of one run missed.",
         description = {"Says why each missed or late job of one run missed: GC pauses, safepoints, JIT, "
                 + "class loading, locks, waiting for another job (queued), the OS waking it late, "
                 + "preemption, or plain compute.",

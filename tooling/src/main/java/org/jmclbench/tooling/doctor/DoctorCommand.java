@@ -8,9 +8,10 @@ import picocli.CommandLine.Option;
 
 /** Checks this machine for real-time measurement, like rtcheck. */
 @Command(name = "doctor", mixinStandardHelpOptions = true,
-        description = {"Checks this machine for real-time measurement (PREEMPT_RT, RT throttling, SCHED_FIFO permission,",
-                "memlock, CPU governor, isolated CPUs, transparent huge pages, clocksource, virtualisation, steal time,",
-                "cyclictest). The same checks are stored with every matrix. Exit code 0 whatever the findings."})
+        header = "Checks this machine for real-time measurement.",
+        description = {"Checks this machine for real-time measurement (PREEMPT_RT, RT throttling, SCHED_FIFO permission, "
+                + "memlock, CPU governor, isolated CPUs, transparent huge pages, clocksource, virtualisation, steal time, "
+                + "cyclictest). The same checks are stored with every matrix. Exit code 0 whatever the findings."})
 public final class DoctorCommand implements Callable<Integer> {
 
     @Option(names = "--json", description = "print JSON: [{\"check\",\"status\",\"value\",\"advice\"}]")

@@ -10,7 +10,8 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /** Generates a dataset with the robot simulator. */
-@Command(name = "generate", mixinStandardHelpOptions = true, sortOptions = false,
+@Command(name = "generate", mixinStandardHelpOptions = true,
+        header = "Generates a dataset with the robot simulator.", sortOptions = false,
         description = {"Generates a dataset with the robot simulator: odometry.txt, laser.txt, real.txt and "
                 + "dataset.properties (docs/FORMATS.md section 1). The same scenario, seed and duration give "
                 + "byte-identical files.", "", "Scenarios:",

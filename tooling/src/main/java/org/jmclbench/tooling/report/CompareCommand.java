@@ -25,15 +25,16 @@ import picocli.CommandLine.Parameters;
  * rule tells A and B apart ("not separated" otherwise: never a ranking the data do not carry).
  */
 @Command(name = "compare", mixinStandardHelpOptions = true,
-        description = {"Compares two result sets metric by metric, like benchstat: A and B (mean [95%% bootstrap",
-                "interval]), the ratio B/A with its bootstrap 95%% CI (fixed seed) and whether one is lower:",
-                "only with at least 10 runs a side, Mann-Whitney U p < 0.05 and the ratio's interval",
-                "excluding 1; else \"not separated\" (\"n too small to separate\" below 10 runs a side).",
+        header = "Compares two result sets metric by metric, like benchstat.",
+        description = {"Compares two result sets metric by metric, like benchstat: A and B (mean [95%% bootstrap "
+                + "interval]), the ratio B/A with its bootstrap 95%% CI (fixed seed) and whether one is lower: "
+                + "only with at least 10 runs a side, Mann-Whitney U p < 0.05 and the ratio's interval "
+                + "excluding 1; else \"not separated\" (\"n too small to separate\" below 10 runs a side).",
                 "",
                 "  compare A.db B.db      the same configurations in two databases (two machines)",
                 "  compare --db X.db --a RUNTIME[/PROFILE][/ENGINE][/MEMORY] --b ...",
                 "                         two configurations of one database, e.g.",
-                "                         --a temurin-25 --b temurin-25/scj (Java SE vs SCJ engine)",
+                "                         --a temurin-25 --b temurin-25/scj (Java SE vs SCJ)",
                 ""})
 public final class CompareCommand implements Callable<Integer> {
 

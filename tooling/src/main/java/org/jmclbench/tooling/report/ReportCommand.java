@@ -13,9 +13,10 @@ import picocli.CommandLine.Option;
 
 /** Builds the HTML report (charts, comparison tables, SVG/PNG exports) from the results database. */
 @Command(name = "report", mixinStandardHelpOptions = true,
-        description = {"Builds the report from the results database: a self-contained index.html (works",
-                "offline from file://) with the comparison tables and charts, and every chart as",
-                "SVG and PNG in charts/. See docs/REPORT.md.",
+        header = "Builds the report (a page and its charts) from the results store.",
+        description = {"Builds the report from the results database: a self-contained index.html (works "
+                + "offline from file://) with the comparison tables and charts, and every chart as "
+                + "SVG and PNG in charts/. See docs/REPORT.md.",
                 ""})
 public final class ReportCommand implements Callable<Integer> {
 

@@ -35,11 +35,12 @@ import picocli.CommandLine.Spec;
  * search resumes, and the report reads the same runs); the bracket is printed with its ratio to
  * the C baseline's when {@code native} is searched too.
  */
-@Command(name = "capacity", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Finds each configuration's breakdown load: the largest particle count at which every job of both",
-                "tasks completes by its deadline under the queue policy in every repetition, and the smallest at which",
-                "one does not, by a geometric then bisecting search to within 10%. Every probe is a run in the store;",
-                "rerunning the same command resumes. Exit 0 when every search ended, 2 for bad input."},
+@Command(name = "capacity", mixinStandardHelpOptions = true,
+        header = "Finds each configuration's breakdown load (queue policy).", sortOptions = false,
+        description = {"Finds each configuration's breakdown load: the largest particle count at which every job of both "
+                + "tasks completes by its deadline under the queue policy in every repetition, and the smallest at which "
+                + "one does not, by a geometric then bisecting search to within 10%%. Every probe is a run in the store; "
+                + "rerunning the same command resumes. Exit 0 when every search ended, 2 for bad input."},
         footer = {"", "Example: capacity --runtimes native,temurin-25 --engines javase,scj --repeat 3 --from 100 --max 102400"},
         modelTransformer = CapacityCommand.Settings.class)
 public final class CapacityCommand implements Callable<Integer> {

@@ -27,10 +27,11 @@ import picocli.CommandLine.Option;
  * store (resumable), then writes docs/EVALUATION.md and its figures from that store.
  */
 @Command(name = "evaluate", mixinStandardHelpOptions = true,
-        description = {"Runs the evaluation matrix (evaluation/matrix.txt: every LTS JDK, both engines, native and hvm,",
-                "three policies, a particle sweep, collectors, memory styles; about two hours) into --db, installing the",
-                "JDKs it needs (jvm install), then writes docs/EVALUATION.md and its SVG figures from the store.",
-                "Rerunning resumes. --dry-run prints the plan and its time budget; --smoke runs a small subset."})
+        header = "Runs the evaluation (about 2 h) and writes docs/EVALUATION.md.",
+        description = {"Runs the evaluation matrix (evaluation/matrix.txt: every LTS JDK, both engines, native and hvm, "
+                + "three policies, a particle sweep, collectors, memory styles; about two hours) into --db, installing the "
+                + "JDKs it needs (jvm install), then writes docs/EVALUATION.md and its SVG figures from the store. "
+                + "Rerunning resumes. --dry-run prints the plan and its time budget; --smoke runs a small subset."})
 public final class EvaluateCommand implements Callable<Integer> {
 
     /** JVM start, warm-up, attribution and folder writing on top of the replay (as quick measured it). */

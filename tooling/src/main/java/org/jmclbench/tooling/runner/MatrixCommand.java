@@ -12,12 +12,13 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /** Runs a matrix of runtimes x profiles x engines x memory styles x policies x particles x datasets x repetitions. */
-@Command(name = "matrix", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Runs a matrix of runtimes x profiles x engines x memory styles x policies x particles x datasets",
-                "x repetitions, each run a fresh",
-                "process with a timeout, into a SQLite database (raw run folders beside it under runs/). Rerunning the same",
-                "command resumes: runs already in the database are skipped. Lists take commas and repeats.",
-                "Exit code 0 when the matrix completed (failed runs are recorded and listed), 2 for bad input (nothing runs)."},
+@Command(name = "matrix", mixinStandardHelpOptions = true,
+        header = "Runs a matrix of configurations into the results store (resumable).", sortOptions = false,
+        description = {"Runs a matrix of runtimes x profiles x engines x memory styles x policies x particles x datasets "
+                + "x repetitions, each run a fresh "
+                + "process with a timeout, into a SQLite database (raw run folders beside it under runs/). Rerunning the same "
+                + "command resumes: runs already in the database are skipped. Lists take commas and repeats. "
+                + "Exit code 0 when the matrix completed (failed runs are recorded and listed), 2 for bad input (nothing runs)."},
         footer = {"", "Example: matrix --runtimes temurin-25,native --java /opt/jdk/bin/java --profiles g1,zgc --policies skip,terminate \\",
                 "           --particles 100,400,1600 --datasets match-short --repeat 3 --db results/results.db",
                 "Matrix file (--matrix): 'key = value' lines, keys are these long options without dashes, e.g.",

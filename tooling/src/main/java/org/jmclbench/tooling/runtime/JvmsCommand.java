@@ -14,9 +14,10 @@ import picocli.CommandLine.Option;
 
 /** Lists the runtimes found on this machine and the profiles each supports. */
 @Command(name = "jvms", mixinStandardHelpOptions = true,
-        description = {"Lists the runtimes found on this machine (JAVA_HOME, PATH, /usr/lib/jvm, SDKMAN, ~/.jdks, JDKs",
-                "installed by `jvm install`, the native baseline) and the profile components each supports.",
-                "Each JVM is asked once per flag set (`java <flags> -version`); answers are cached."})
+        header = "Lists the runtimes found here and the profiles each supports.",
+        description = {"Lists the runtimes found on this machine (JAVA_HOME, PATH, /usr/lib/jvm, SDKMAN, ~/.jdks, JDKs "
+                + "installed by `jvm install`, the native baseline) and the profile components each supports. "
+                + "Each JVM is asked once per flag set (`java <flags> -version`); answers are cached."})
 public final class JvmsCommand implements Callable<Integer> {
 
     @Option(names = "--java", paramLabel = "PATH", description = "also list this JVM (repeatable)")

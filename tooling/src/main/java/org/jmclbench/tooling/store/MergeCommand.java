@@ -10,8 +10,9 @@ import picocli.CommandLine.Parameters;
 
 /** Merges results databases (machines, shards) into one, keeping every run once. */
 @Command(name = "merge", mixinStandardHelpOptions = true,
-        description = {"Merges results databases into one: every run once (by run key; an ok run wins over a",
-                "failed one), with its run folder copied. Example: merge A.db B.db --into C.db"})
+        header = "Merges results databases into one.",
+        description = {"Merges results databases into one: every run once (by run key; an ok run wins over a "
+                + "failed one), with its run folder copied. Example: merge A.db B.db --into C.db"})
 public final class MergeCommand implements Callable<Integer> {
 
     @Parameters(arity = "1..*", paramLabel = "DB", description = "databases to merge")

@@ -166,6 +166,7 @@ class AsynchronouslyInterruptedExceptionTest {
             assertEquals(Arrays.asList("deferred while disabled", "t interruptAction"), log);
         });
     }
+
     @Test
     void anAieDisabledAfterItsFireIsHeldUntilEnabledAgain() {
         OnRealtimeThread.run(self -> {
@@ -182,7 +183,6 @@ class AsynchronouslyInterruptedExceptionTest {
             assertEquals(Arrays.asList("deferred once disabled", "t interruptAction"), log);
         });
     }
-
 
     @Test
     void anOuterAieUnwindsTheInnerDoInterruptibleAndIsDeliveredInTheOuter() {

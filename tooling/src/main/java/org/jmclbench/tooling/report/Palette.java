@@ -16,12 +16,17 @@ import java.util.Map;
 final class Palette {
 
     /**
-     * Twenty colours that stay apart on white (Tableau 10, then ten darker or more saturated ones);
-     * past twenty, hues at the golden angle, so that no two rows of a store share a colour.
+     * Forty colours, any two far apart and none pale on white: Tableau 10, then the next entries
+     * of colorcet's glasbey_category10 (HoloViz, CC-BY 4.0), a palette that adds each colour as
+     * far as it can from all before it, leaving out the few with less than 2:1 contrast on white.
+     * A store's rows are many (the evaluation has over thirty) and a chart shows any few of them,
+     * so every pair must stay apart, not only neighbours. Past forty, hues at the golden angle.
      */
     static final List<String> RUNTIME_COLORS = List.of("#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b",
-            "#e377c2", "#17becf", "#bcbd22", "#7f7f7f", "#393b79", "#637939", "#f0027f", "#00a087", "#843c39", "#a6761d",
-            "#5e3c99", "#1b9e77", "#7b4173", "#e6ab02");
+            "#e377c2", "#17becf", "#bcbd22", "#7f7f7f", "#3a0183", "#004301", "#5e0040", "#b80080", "#004e53", "#6b6500",
+            "#7d0200", "#6126ff", "#574964", "#8cb894", "#028268", "#8300a0", "#ad8944", "#5b3400", "#ff6f76", "#798cff",
+            "#dd00ff", "#515646", "#00458a", "#ff018d", "#af98b5", "#b75700", "#027000", "#cd88ff", "#7a98b5", "#a56089",
+            "#6f8957", "#bd7d76", "#8b2945", "#00adff");
 
     /** Cause kinds of docs/FORMATS.md 5, VM causes first, in a stable order and colour across settings. */
     static final Map<String, String> CAUSE_COLORS = orderedMap("gc", "#d62728", "safepoint", "#9467bd", "jit", "#ff7f0e",

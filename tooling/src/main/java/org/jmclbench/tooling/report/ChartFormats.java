@@ -29,10 +29,11 @@ final class ChartFormats {
         return new BigDecimal(v).round(new MathContext(3)).stripTrailingZeros().toPlainString() + " " + BYTE_UNITS[i];
     }
 
-    /** 1/(1-p) written as the percentile p: 10 -> 90%, 1000 -> 99.9%. */
+    /** 1/(1-p) written as the percentile p: 10 -> 90%, 200 -> 99.5%, 1000 -> 99.9%. */
     static String percentile(double v) {
         double p = 100 - 100 / v;
-        int decimals = Math.max(0, (int) Math.round(Math.log10(v)) - 2);
+        // as many decimals as 1/v needs: 200 is 99.5%, never rounded up to 100%
+        int decimals = Math.max(0, (int) Math.ceil(Math.log10(v) - 1e-9) - 2);
         return String.format(Locale.ROOT, "%." + decimals + "f%%", Math.max(0, p));
     }
 

@@ -392,13 +392,17 @@
     return { categories: (spec.categories || []).filter(function (c, i) { return keep[i]; }), series: series,
       bands: first ? spec.bands.filter(function (b) { return b.config === first.config; }) : [] };
   }
+  // A log axis labels 1, 2 and 5 times each power of ten; percentiles and bytes their powers alone
+  // unless that labels fewer than three ticks (an axis of a decade or two), as the export does.
   function tickLabel(axis) {
-    return function (v) {
-      var exp = Math.log10(v), whole = Math.abs(exp - Math.round(exp)) < 1e-9;
-      if (axis.format === 'PERCENTILE') { return !whole ? null : v === 1 ? '0%' : (100 - 100 / v).toFixed(Math.max(0, Math.round(exp) - 2)) + '%'; }
-      if (axis.format === 'BYTES') { return whole ? bytes(v) : null; }
-      var m = v / Math.pow(10, Math.floor(exp + 1e-9));
-      return [1, 2, 5].some(function (k) { return Math.abs(m - k) < 1e-6; }) ? String(Number(v.toPrecision(3))) : null;
+    function whole(v) { var e = Math.log10(v); return Math.abs(e - Math.round(e)) < 1e-9; }
+    return function (v, i, ticks) {
+      var exp = Math.log10(v), m = v / Math.pow(10, Math.floor(exp + 1e-9));
+      var oneTwoFive = [1, 2, 5].some(function (k) { return Math.abs(m - k) < 1e-6; });
+      var few = ticks.filter(function (t) { return whole(t.value); }).length < 3;
+      if (!(axis.format === 'NUMBER' || few ? oneTwoFive : whole(v))) { return null; }
+      if (axis.format === 'PERCENTILE') { return v === 1 ? '0%' : (100 - 100 / v).toFixed(Math.max(0, Math.ceil(exp - 1e-9) - 2)) + '%'; }
+      return axis.format === 'BYTES' ? bytes(v) : String(Number(v.toPrecision(3)));
     };
   }
   function scale(axis, stacked) {

@@ -34,6 +34,13 @@ class ExportedLogAxisTest {
         assertEquals(List.of("0.01", "0.1", "1", "10"), xLabels(log(ChartSpec.Format.NUMBER, 0.002, 20.0)));
     }
 
+    @Test
+    void aPercentileLabelHasTheDecimalsItNeeds() {
+        assertEquals(List.of("0%", "50%", "90%", "95%", "98%", "99%", "99.5%", "99.8%", "99.9%", "99.95%"),
+                java.util.stream.DoubleStream.of(1, 2, 10, 20, 50, 100, 200, 500, 1000, 2000).mapToObj(ChartFormats::percentile)
+                        .toList());
+    }
+
     private static ChartSpec.Axis log(ChartSpec.Format format, double min, double max) {
         return new ChartSpec.Axis("x", ChartSpec.Scale.LOG, format, min, max);
     }

@@ -196,6 +196,30 @@ class ReportBrowserTest {
     }
 
     @Test
+    void everyLogAxisLabelsAtLeastThreeDistinctValues() {
+        // an axis of a decade or two labelled its powers of ten alone: one or two numbers to read by
+        @SuppressWarnings("unchecked")
+        List<List<String>> axes = (List<List<String>>) js().executeScript("var out = [];"
+                + "Object.keys(window.jmclbenchCharts).forEach(function (id) {"
+                + "  var c = window.jmclbenchCharts[id];"
+                + "  Object.keys(c.scales).forEach(function (k) {"
+                + "    var s = c.scales[k];"
+                + "    if (s.type === 'logarithmic' && s.ticks.length) {"
+                + "      out.push([id + ' ' + k].concat(s.ticks.map(function (t) { return t.label; })"
+                + "          .filter(function (l) { return l !== null && l !== undefined && l !== ''; })));"
+                + "    }"
+                + "  });"
+                + "});"
+                + "return out;");
+        assertTrue(axes.size() >= 3, "log axes drawn: " + axes);
+        for (List<String> axis : axes) {
+            List<String> labels = axis.subList(1, axis.size());
+            assertTrue(labels.size() >= 3, axis.get(0) + " labels " + labels);
+            assertEquals(labels.size(), new java.util.HashSet<>(labels).size(), axis.get(0) + " labels " + labels);
+        }
+    }
+
+    @Test
     void loadsWithoutErrorOrRequestAndDrawsEveryChart() throws Exception {
         List<LogEntry> severe = driver.manage().logs().get(LogType.BROWSER).getAll().stream()
                 .filter(e -> e.getLevel().intValue() >= Level.WARNING.intValue()).toList();

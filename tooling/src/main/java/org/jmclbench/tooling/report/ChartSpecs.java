@@ -224,8 +224,9 @@ final class ChartSpecs {
     // ---------------------------------------------------------------- over the particle sweep
 
     static ChartSpec misses(Scope s) {
-        return vsParticles(s, "misses", "Deadline misses vs particles", "deadline misses per run (missCount, mean, 95% CI)",
-                Metric.MISS_COUNT);
+        String jobs = Metric.missCountJobs(s.setting().policy());
+        return vsParticles(s, "misses", Character.toUpperCase(jobs.charAt(0)) + jobs.substring(1) + " vs particles",
+                jobs + " per run (the thesis's missCount, mean, 95% CI)", Metric.MISS_COUNT);
     }
 
     static ChartSpec deviation(Scope s) {

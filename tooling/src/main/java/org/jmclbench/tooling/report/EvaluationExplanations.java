@@ -73,10 +73,10 @@ final class EvaluationExplanations extends EvaluationSections {
         }
         line("Table 10: heap with GC (javase allocating) against everything preallocated (javase preallocated: heap, no allocation "
                 + "per job; scj preallocated: immortal and mission memory) against per-release scoped memory (scj scoped), same "
-                + "runtime and particle count, policy skip: misses per run, task latency (ms), and per memory area its peak use "
+                + "runtime and particle count, policy skip: dropped jobs per run (missCount), task latency (ms), and per memory area its peak use "
                 + "and bytes allocated per release.");
         line("");
-        table(List.of("configuration", "particles", "misses", "latency mean", "latency p99", "memory areas: peak (allocated per release)"), rows);
+        table(List.of("configuration", "particles", "dropped", "latency mean", "latency p99", "memory areas: peak (allocated per release)"), rows);
         // The figure's count: the one with the most configurations reporting their areas (so HotSpot
         // and the HVM side by side where both ran), the heavier on a tie.
         List<ReportModel.Cell> finalExp = exp;
@@ -93,7 +93,7 @@ final class EvaluationExplanations extends EvaluationSections {
             ReportModel.Cell worst = fig.stream().filter(c -> mean(c, Metric.LATENCY_P99) != null)
                     .max(Comparator.comparingDouble(c -> mean(c, Metric.LATENCY_P99))).orElseThrow();
             line(String.format(Locale.ROOT, "At %d particles the lowest p99 task latency of the memory styles is **%s**'s, %s ms, "
-                    + "with %s misses per run; the highest is **%s**'s, %s ms (Table 10). %s", shown, best.config,
+                    + "with %s dropped jobs per run; the highest is **%s**'s, %s ms (Table 10). %s", shown, best.config,
                     agg(best, Metric.LATENCY_P99, 3), agg(best, Metric.MISS_COUNT, 1), worst.config, agg(worst, Metric.LATENCY_P99, 3),
                     separation(best, worst, Metric.LATENCY_P99)));
             line("");
@@ -197,10 +197,10 @@ final class EvaluationExplanations extends EvaluationSections {
             rows.add(List.of(c.config, String.valueOf(c.particles), agg(c, Metric.MISS_COUNT, 1), agg(c, Metric.LATENCY_P99, 3),
                     agg(c, Metric.LATENCY_MAX, 3), agg(c, Metric.JITTER_P99, 3)));
         }
-        line("Table 11: one JVM with each collector (profile), policy skip: misses per run, task latency p99 and max, release "
-                + "jitter p99 (ms).");
+        line("Table 11: one JVM with each collector (profile), policy skip: dropped jobs per run (missCount), task latency p99 "
+                + "and max, release jitter p99 (ms).");
         line("");
-        table(List.of("configuration", "particles", "misses", "latency p99", "latency max", "jitter p99"), rows);
+        table(List.of("configuration", "particles", "dropped", "latency p99", "latency max", "jitter p99"), rows);
     }
 
     void attribution() throws IOException {

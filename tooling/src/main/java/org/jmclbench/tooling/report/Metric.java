@@ -45,6 +45,20 @@ public enum Metric {
         return run.ok() ? inUnit(run.value(summaryPointer, metricKeys), scale) : null;
     }
 
+    /**
+     * The jobs the thesis's missCount counts under {@code policy} (docs/FORMATS.md 4): the dropped
+     * ones under skip, the dropped or aborted ones under terminate, the late ones under queue. A
+     * late job under skip is a deadline miss it does not count, so it is never called the misses.
+     */
+    public static String missCountJobs(String policy) {
+        return switch (policy == null ? "" : policy) {
+            case "skip" -> "dropped jobs";
+            case "terminate" -> "dropped or aborted jobs";
+            case "queue" -> "late jobs";
+            default -> "missed jobs";
+        };
+    }
+
     /** A run's stored value {@code v} times {@code scale}, a metric's unit; NaN (written null) is no value either. */
     static Double inUnit(Double v, double scale) {
         return v == null || v.isNaN() ? null : v * scale;

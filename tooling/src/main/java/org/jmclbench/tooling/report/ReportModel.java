@@ -37,6 +37,8 @@ public final class ReportModel {
     public int runCount;
     public List<String> datasets = new ArrayList<>();
     public List<String> policies = new ArrayList<>();
+    /** Per policy of the store, what its missCount counts ({@link Metric#missCountJobs}), for the page's words. */
+    public Map<String, String> missCountJobs = new LinkedHashMap<>();
     public List<Integer> particles = new ArrayList<>();
     /** The engines of the runs (javase, scj, native, ...), for the engine filter. */
     public List<String> engines = new ArrayList<>();
@@ -255,6 +257,7 @@ public final class ReportModel {
         }
         m.datasets = runs.stream().map(r -> r.dataset).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
         m.policies = runs.stream().map(r -> r.policy).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
+        m.policies.forEach(p -> m.missCountJobs.put(p, Metric.missCountJobs(p)));
         m.particles = runs.stream().map(r -> r.particles).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
         m.engines = runs.stream().map(r -> r.engine).collect(Collectors.toCollection(TreeSet::new)).stream().toList();
         m.configs = configs(runs);

@@ -149,7 +149,8 @@ class ReportCommandTest {
             }
         }
         String svg = Files.readString(charts.resolve("match-short-skip-misses.svg"));
-        assertTrue(svg.contains("Deadline misses vs particles"), "title in the SVG");
+        assertTrue(svg.contains("Dropped jobs vs particles"), "title in the SVG: what skip's missCount counts");
+        assertTrue(Files.readString(charts.resolve("match-short-terminate-misses.svg")).contains("Dropped or aborted jobs vs particles"));
         assertTrue(svg.contains("&lt;script&gt;alert(1)&lt;/script&gt;/g1"), "legend escaped in the SVG");
         assertFalse(svg.contains(ReportFixtures.XSS_RUNTIME));
         String causes = Files.readString(charts.resolve("match-short-skip-400-causes.svg"));

@@ -438,6 +438,17 @@
       zeros: log ? s.values.map(function (v) { return v === 0; }) : null,
       data: s.values.map(function (v) { return v === null || v === undefined ? (stacked ? 0 : null) : (log && v <= 0 ? null : v); }) };
   }
+  // A title that names the configurations left out runs to hundreds of characters, and Chart.js
+  // squeezes one line into the chart's width until it cannot be read: cut it into lines of words.
+  var TITLE_LINE = 80;
+  function titleLines(text) {
+    var lines = [], line = '';
+    text.split(' ').forEach(function (w) {
+      if (line && (line + ' ' + w).length > TITLE_LINE) { lines.push(line); line = w; } else { line = line ? line + ' ' + w : w; }
+    });
+    if (line) { lines.push(line); }
+    return lines.length > 1 ? lines : text;
+  }
   function chartConfig(spec, view) {
     var bars = spec.kind !== 'LINES', stacked = spec.kind === 'STACKED_BARS';
     var category = { title: { display: true, text: spec.x.label }, stacked: stacked };
@@ -446,7 +457,7 @@
     var notes = view.series.some(function (s) { return s.notes; });
     var o = {
       responsive: true, maintainAspectRatio: false, normalized: true, indexAxis: spec.horizontal ? 'y' : 'x',
-      plugins: { title: { display: true, text: spec.title }, legend: { display: !single, position: 'bottom', labels: { boxWidth: 12,
+      plugins: { title: { display: true, text: titleLines(spec.title) }, legend: { display: !single, position: 'bottom', labels: { boxWidth: 12,
         // marks without lines (the policies' shapes): the legend shows each mark's shape
         usePointStyle: !bars && view.series.length > 0 && view.series.every(function (s) { return !s.style.line; }) } },
         jmclbenchPauses: view.bands, jmclbenchFrame: spec.frame || null },

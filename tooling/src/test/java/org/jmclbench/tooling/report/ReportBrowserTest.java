@@ -221,6 +221,19 @@ class ReportBrowserTest {
     }
 
     @Test
+    void aLongChartTitleIsCutIntoLinesRatherThanSqueezed() {
+        // "no response times stored for ..." names every configuration left out; on one line Chart.js
+        // squeezed it to the chart's width, letters over letters
+        @SuppressWarnings("unchecked")
+        List<String> titles = (List<String>) js().executeScript("return Object.keys(window.jmclbenchCharts).map(function (id) {"
+                + " return [].concat(window.jmclbenchCharts[id].options.plugins.title.text).join('\\n'); })");
+        assertTrue(titles.stream().anyMatch(t -> t.contains("\n")), "the fixture has a title of several lines: " + titles);
+        for (String t : titles) {
+            assertTrue(t.lines().allMatch(l -> l.length() <= 80), t);
+        }
+    }
+
+    @Test
     void loadsWithoutErrorOrRequestAndDrawsEveryChart() throws Exception {
         List<LogEntry> severe = driver.manage().logs().get(LogType.BROWSER).getAll().stream()
                 .filter(e -> e.getLevel().intValue() >= Level.WARNING.intValue()).toList();
@@ -375,7 +388,8 @@ class ReportBrowserTest {
         new Select(driver.findElement(By.id("sel-particles"))).selectByValue("1600");
         waitForRender(before);
         assertNotEquals(latencyAt400, cell("native", "latMean"), "the table follows the particle count");
-        String title = (String) js().executeScript("return window.jmclbenchCharts['latency-index'].options.plugins.title.text");
+        String title = (String) js().executeScript("return [].concat(window.jmclbenchCharts['latency-index'].options.plugins.title.text)"
+                + ".join(' ')");
         assertTrue(title.contains("1600 particles"), title);
         // the per-task columns: a response-time p99 among the dropped jobs reads as infinity, not as no value
         @SuppressWarnings("unchecked")

@@ -117,6 +117,13 @@
       winners.map(function (c) { return c.config; }).join(', ') + ' (' + fmtCi(winners[0].metrics.MISS_COUNT) +
       ' per run, ' + winners[0].metrics.MISS_COUNT.n + (winners[0].metrics.MISS_COUNT.n === 1 ? ' run)' : ' runs)') +
       separationNote(winners, withMiss)));
+    var unseparated = notSeparated(winners, withMiss);
+    if (unseparated.length > HEADLINE_NAMES) {
+      var which = el('details', { id: 'headline-unseparated' });
+      which.appendChild(el('summary', null, 'which ' + unseparated.length));
+      which.appendChild(el('p', null, unseparated.map(function (c) { return c.config; }).join(', ')));
+      h.appendChild(which);
+    }
     var javas = withMiss.filter(function (c) { return !isNative(c); });
     var nat = withMiss.filter(isNative)[0];
     var p = el('p', { id: 'headline-ratio' });
@@ -149,11 +156,18 @@
     var others = cells.filter(function (c) { return winners.indexOf(c) < 0; });
     if (others.length === 0) { return '.'; }
     var sep = winners[0].missSeparation || {};
-    var not = others.filter(function (c) { return sep[c.config] !== 'A_LOWER'; });
+    var not = notSeparated(winners, cells);
     if (not.length === 0) { return '; lower than every other chosen runtime (separated: docs/REPORT.md).'; }
     var few = not.some(function (c) { return sep[c.config] === 'TOO_FEW'; });
-    return '; not separated from ' + not.map(function (c) { return c.config; }).join(', ') +
-      (few ? ' (fewer than 10 runs a side: no ranking)' : '') + ' (docs/REPORT.md).';
+    // a headline of twenty names is not read at a glance: past a few, their count, and the names below
+    var names = not.length <= HEADLINE_NAMES ? not.map(function (c) { return c.config; }).join(', ')
+      : not.length + ' of the ' + others.length + ' other chosen runtimes';
+    return '; not separated from ' + names + (few ? ' (fewer than 10 runs a side: no ranking)' : '') + ' (docs/REPORT.md).';
+  }
+  var HEADLINE_NAMES = 4;
+  function notSeparated(winners, cells) {
+    var sep = winners[0].missSeparation || {};
+    return cells.filter(function (c) { return winners.indexOf(c) < 0 && sep[c.config] !== 'A_LOWER'; });
   }
   /** What missCount counts under the chosen policy: dropped, dropped or aborted, or late jobs (Metric.missCountJobs). */
   function missCountJobs() { return (DATA.missCountJobs || {})[state.policy] || 'missed jobs'; }

@@ -355,12 +355,15 @@ class ReportBrowserTest {
     }
 
     @Test
-    void javaIsComparedWithTheCBaselineOfItsOwnProfile() throws Exception {
-        // the evaluation's fifo+pinned JVM against native/default: unlike scheduling, one ratio
+    void aStoreOfManyProfilesComparesJavaWithTheCOfItsProfileAndFoldsTheUnseparated() throws Exception {
+        // the evaluation's fifo+pinned JVM was compared with native/default: unlike scheduling, one ratio
         FixtureDb f = new FixtureDb();
         f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
                 new FixtureDb.Config("native", "fifo", "gcc 12.2.0", 0.8, "ok"),
-                new FixtureDb.Config("temurin-25", "fifo", "25+36", 1.15, "ok")));
+                new FixtureDb.Config("temurin-25", "fifo", "25+36", 1.15, "ok"),
+                new FixtureDb.Config("temurin-21", "fifo", "21.0.8", 1.2, "ok"),
+                new FixtureDb.Config("temurin-17", "fifo", "17.0.15", 1.25, "ok"),
+                new FixtureDb.Config("temurin-11", "fifo", "11.0.25", 1.3, "ok")));
         f.policies = List.of("skip");
         f.particles = List.of(400);
         f.repetitions = 2;
@@ -371,9 +374,17 @@ class ReportBrowserTest {
             driver.get(out.resolve("index.html").toAbsolutePath().toUri().toString());
             waitForRender(0);
             String ratio = driver.findElement(By.id("headline-ratio")).getText();
-            assertTrue(ratio.startsWith("Java vs C: temurin-25/fifo, ") && ratio.contains(" that of native/fifo ("), ratio);
+            assertTrue(ratio.startsWith("Java vs C: temurin-") && ratio.contains("/fifo, the chosen Java runtime")
+                    && ratio.contains(" that of native/fifo ("), ratio);
             assertEquals("1.00\u00d7", cell("native/fifo", "vsNative"), "the C row of a profile is its own baseline");
             assertEquals("1.00\u00d7", cell("native", "vsNative"));
+            // two runs a side separate nothing: five names would fill the headline, so it counts them and lists them below
+            String best = driver.findElement(By.id("headline-best")).getText();
+            assertTrue(best.contains("; not separated from 5 of the 5 other chosen runtimes (fewer than 10 runs a side"), best);
+            WebElement which = driver.findElement(By.id("headline-unseparated"));
+            assertEquals("which 5", which.findElement(By.tagName("summary")).getText());
+            which.findElement(By.tagName("summary")).click();
+            assertTrue(which.getText().contains("temurin-11/fifo"), which.getText());
         } finally {
             driver.get(mixedPage);
             waitForRender(0);

@@ -465,7 +465,9 @@
   }
   function chartConfig(spec, view) {
     var bars = spec.kind !== 'LINES', stacked = spec.kind === 'STACKED_BARS';
-    var category = { title: { display: true, text: spec.x.label }, stacked: stacked };
+    // every bar keeps its label: Chart.js would skip every other one where they crowd, leaving bars
+    // nobody can name (draw() makes a chart of many rows tall enough for them)
+    var category = { title: { display: true, text: spec.x.label }, stacked: stacked, ticks: { autoSkip: false, maxRotation: 90 } };
     var value = scale(spec.y, stacked);
     var single = view.series.length === 1 && !!view.series[0].colors;
     var notes = view.series.some(function (s) { return s.notes; });
@@ -500,9 +502,14 @@
       data: { labels: bars ? view.categories.map(function (c) { return c.label; }) : undefined,
         datasets: view.series.map(function (s) { return dataset(spec, s); }) } };
   }
+  var ROWS_IN_A_BOX = 12;
   function draw(f, spec, view) {
     if (charts[f.id]) { charts[f.id].destroy(); }
     var canvas = document.getElementById('chart-' + f.id);
+    var rows = spec && spec.kind !== 'LINES' ? view.categories.length : 0;
+    // many rows: a horizontal chart grows a line per row, a vertical one makes room for its turned labels
+    canvas.parentNode.style.height = rows <= ROWS_IN_A_BOX ? '' : spec.horizontal ? (8 + 1.3 * rows) + 'rem' : '36rem';
+    document.getElementById('figure-' + f.id).classList.toggle('crowded', rows > ROWS_IN_A_BOX);
     var config = spec ? chartConfig(spec, view) : { type: 'scatter', data: { datasets: [] },
       options: { responsive: true, maintainAspectRatio: false, plugins: { title: { display: true, text: f.heading + ': no run at this setting' } } } };
     charts[f.id] = new Chart(canvas, config);

@@ -392,6 +392,34 @@ class ReportBrowserTest {
     }
 
     @Test
+    void everyBarOfACrowdedChartKeepsItsLabel() throws Exception {
+        // the evaluation's cause chart had sixteen bars and nine labels: Chart.js skipped the rest
+        FixtureDb f = new FixtureDb();
+        f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok")));
+        for (int i = 0; i < 17; i++) {
+            f.configs.add(new FixtureDb.Config("temurin-" + (8 + i), "g1", "25+36", 1.1 + i / 100.0, "ok"));
+        }
+        f.policies = List.of("skip");
+        f.particles = List.of(1600);
+        f.repetitions = 1;
+        Path out = ARTIFACTS.resolve("crowded-report");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", ReportFixtures.write(f, ARTIFACTS, "crowded.db").toString(),
+                "--out", out.toString(), "--no-export"));
+        try {
+            driver.get(out.resolve("index.html").toAbsolutePath().toUri().toString());
+            waitForRender(0);
+            for (String id : List.of("causes", "memory")) {
+                assertEquals(Boolean.TRUE, js().executeScript("var c = window.jmclbenchCharts[arguments[0]];"
+                        + " var axis = c.options.indexAxis === 'y' ? c.scales.y : c.scales.x;"
+                        + " return c.data.labels.length > 12 && axis.ticks.length === c.data.labels.length;", id), id);
+            }
+        } finally {
+            driver.get(mixedPage);
+            waitForRender(0);
+        }
+    }
+
+    @Test
     void choicesDriveTheTablesAndCharts() {
         String latencyAt400 = cell("native", "latMean");
 

@@ -30,10 +30,15 @@ final class ChartSpecs {
 
     /**
      * A figure of the page: its heading, caption, whether it is drawn per particle count (else
-     * over the sweep of one policy) and the method that builds its chart.
+     * over the sweep of one policy), whether its legend names each runtime once (its caption tells
+     * a runtime's several series apart: predict and update, latency and jitter, repetitions) and
+     * the method that builds its chart.
      */
-    record Figure(String id, String heading, String caption, boolean perSetting,
+    record Figure(String id, String heading, String caption, boolean perSetting, boolean legendPerRuntime,
                   @JsonIgnore Function<Scope, ChartSpec> builder) {
+        Figure(String id, String heading, String caption, boolean perSetting, Function<Scope, ChartSpec> builder) {
+            this(id, heading, caption, perSetting, false, builder);
+        }
     }
 
     private static final String COMPLETION = "Every released job of every repetition merged: the fraction completed within "
@@ -57,7 +62,7 @@ final class ChartSpecs {
                     false, ChartSpecs::deviation),
             new Figure("latency-jitter", "Average task latency and release jitter vs particles", "Mean over all jobs, then over "
                     + "repetitions (ms), on a log particle axis. Solid: task latency (end \u2212 start); dashed: release jitter "
-                    + "(start \u2212 release).", false, ChartSpecs::latencyJitter),
+                    + "(start \u2212 release).", false, true, ChartSpecs::latencyJitter),
             new Figure("memory", "Memory areas: peak bytes per engine and memory style", "The memory-model experiment at a "
                     + "glance: for each runtime, engine and memory style, the peak use of each memory area (bytes, log axis; the "
                     + "largest over the repetitions); the table gives the peaks and the mean bytes one release allocated in the area "
@@ -79,9 +84,11 @@ final class ChartSpecs {
             new Figure("latency-index", "Task latency vs event index", "Every job of the first repetition (down-sampled): "
                     + "predict (odometry, every 50 ms) as dots, update (laser) as triangles. The thesis\u2019s XY points graph. "
                     + "Shaded bands: the GC (red) and safepoint (violet) pauses of that repetition of the first runtime shown "
-                    + "that has some, placed on the event index through the jobs\u2019 release times.", true, ChartSpecs::latencyIndex),
+                    + "that has some, placed on the event index through the jobs\u2019 release times.", true, true,
+                    ChartSpecs::latencyIndex),
             new Figure("deviation-time", "Deviation over time, repeated runs", "Euclidean xy deviation (m) over the run, one "
-                    + "line per repetition (up to five) per runtime. The thesis\u2019s XY lines graph.", true, ChartSpecs::deviationTime),
+                    + "line per repetition (up to five) per runtime. The thesis\u2019s XY lines graph.", true, true,
+                    ChartSpecs::deviationTime),
             new Figure("trajectory", "Estimated vs real trajectory", "On the playground (dashed frame, metres); black: ground "
                     + "truth; triangles: the beacons; one estimate per runtime (first repetition).", true, ChartSpecs::trajectory),
             new Figure("spectrum", "Task latency percentile spectrum", "HdrHistogram style: every job of every repetition "

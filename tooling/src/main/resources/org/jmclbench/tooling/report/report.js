@@ -441,7 +441,7 @@
   function dataset(spec, s) {
     var st = s.style;
     if (spec.kind === 'LINES') {
-      return { label: s.name, data: s.points.map(function (p) { return { x: p[0], y: p[1] }; }), showLine: st.line,
+      return { label: s.name, config: s.config, data: s.points.map(function (p) { return { x: p[0], y: p[1] }; }), showLine: st.line,
         borderWidth: st.line ? st.width : 1, borderDash: st.dash || [], stepped: st.stepped,
         pointRadius: st.marker ? st.size : 0, pointStyle: st.marker === 'square' ? 'rect' : (st.marker || 'circle'),
         borderColor: s.color, backgroundColor: st.fill === 'none' ? 'transparent' : (st.fill || s.color),
@@ -463,7 +463,36 @@
     if (line) { lines.push(line); }
     return lines.length > 1 ? lines : text;
   }
-  function chartConfig(spec, view) {
+  /**
+   * A legend that names each runtime once, by its first series, and shows or hides all its series:
+   * for a figure whose caption tells a runtime's several series apart (Figure.legendPerRuntime).
+   */
+  function legendPerRuntime(legend) {
+    function key(d) { return d.config || d.label; }
+    legend.labels.generateLabels = function (chart) {
+      var seen = {};
+      return Chart.defaults.plugins.legend.labels.generateLabels(chart).filter(function (item) {
+        var k = key(chart.data.datasets[item.datasetIndex]);
+        if (seen[k]) { return false; }
+        seen[k] = true;
+        item.text = k;
+        return true;
+      });
+    };
+    legend.onClick = function (e, item, l) {
+      var chart = l.chart, k = key(chart.data.datasets[item.datasetIndex]), show = !chart.isDatasetVisible(item.datasetIndex);
+      chart.data.datasets.forEach(function (d, i) { if (key(d) === k) { chart.setDatasetVisibility(i, show); } });
+      chart.update();
+    };
+  }
+  /** The legend's entries: one per series, or one per runtime. */
+  function legendItems(f, view) {
+    if (!f.legendPerRuntime) { return view.series.length; }
+    var seen = {};
+    view.series.forEach(function (s) { seen[s.config || s.name] = true; });
+    return Object.keys(seen).length;
+  }
+  function chartConfig(spec, view, f) {
     var bars = spec.kind !== 'LINES', stacked = spec.kind === 'STACKED_BARS';
     // every bar keeps its label: Chart.js would skip every other one where they crowd, leaving bars
     // nobody can name (draw() makes a chart of many rows tall enough for them)
@@ -480,6 +509,7 @@
       scales: !bars ? { x: scale(spec.x, false), y: value } : spec.horizontal ? { y: category, x: value } : { x: category, y: value }
     };
     if (!bars) { o.parsing = false; }
+    if (f && f.legendPerRuntime) { legendPerRuntime(o.plugins.legend); }
     if (!spec.horizontal) {
       // the axes reach the intervals' ends, so that no error bar runs off the plot
       view.series.forEach(function (s) {
@@ -507,10 +537,15 @@
     if (charts[f.id]) { charts[f.id].destroy(); }
     var canvas = document.getElementById('chart-' + f.id);
     var rows = spec && spec.kind !== 'LINES' ? view.categories.length : 0;
-    // many rows: a horizontal chart grows a line per row, a vertical one makes room for its turned labels
-    canvas.parentNode.style.height = rows <= ROWS_IN_A_BOX ? '' : spec.horizontal ? (8 + 1.3 * rows) + 'rem' : '36rem';
-    document.getElementById('figure-' + f.id).classList.toggle('crowded', rows > ROWS_IN_A_BOX);
-    var config = spec ? chartConfig(spec, view) : { type: 'scatter', data: { datasets: [] },
+    var items = spec && !(view.series.length === 1 && view.series[0].colors) ? legendItems(f, view) : 0;
+    // many rows: a horizontal chart grows a line per row, a vertical one makes room for its turned
+    // labels; a long legend (three entries a line across the page) may take half the box and no more,
+    // so the box grows until it needs no more than that (Chart.js cuts a legend that needs more)
+    var height = rows <= ROWS_IN_A_BOX ? 0 : spec.horizontal ? 8 + 1.3 * rows : 36;
+    if (items > ROWS_IN_A_BOX) { height = Math.max(height, 22, 6 + 3 * Math.ceil(items / 3)); }
+    canvas.parentNode.style.height = height ? height + 'rem' : '';
+    document.getElementById('figure-' + f.id).classList.toggle('crowded', rows > ROWS_IN_A_BOX || items > ROWS_IN_A_BOX);
+    var config = spec ? chartConfig(spec, view, f) : { type: 'scatter', data: { datasets: [] },
       options: { responsive: true, maintainAspectRatio: false, plugins: { title: { display: true, text: f.heading + ': no run at this setting' } } } };
     charts[f.id] = new Chart(canvas, config);
     var pts = config.data.datasets.reduce(function (n, d) { return n + d.data.filter(function (v) { return v !== null; }).length; }, 0);

@@ -392,8 +392,9 @@ class ReportBrowserTest {
     }
 
     @Test
-    void everyBarOfACrowdedChartKeepsItsLabel() throws Exception {
-        // the evaluation's cause chart had sixteen bars and nine labels: Chart.js skipped the rest
+    void aCrowdedStoreKeepsEveryLabelAndLegendEntry() throws Exception {
+        // the evaluation's cause chart had sixteen bars and nine labels: Chart.js skipped the rest;
+        // its legends of twenty runtimes or more were cut, with the plot squeezed to a strip
         FixtureDb f = new FixtureDb();
         f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok")));
         for (int i = 0; i < 17; i++) {
@@ -413,6 +414,15 @@ class ReportBrowserTest {
                         + " var axis = c.options.indexAxis === 'y' ? c.scales.y : c.scales.x;"
                         + " return c.data.labels.length > 12 && axis.ticks.length === c.data.labels.length;", id), id);
             }
+            assertTrue(driver.findElement(By.id("figure-misses")).getAttribute("class").contains("crowded"), "the page's width");
+            assertEquals(Boolean.TRUE, js().executeScript("var box = document.querySelector('#figure-misses .canvas-box');"
+                    + " var legend = window.jmclbenchCharts['misses'].legend;"
+                    + " return legend.legendItems.length === 18 && legend.height <= box.clientHeight / 2 + 1;"), "the whole legend fits");
+            // predict and update of a runtime: one legend entry, named for the runtime (the caption tells dots from triangles)
+            assertEquals(Boolean.TRUE, js().executeScript("var c = window.jmclbenchCharts['latency-index'];"
+                    + " var names = c.legend.legendItems.map(function (i) { return i.text; });"
+                    + " return c.data.datasets.length === 2 * names.length && names.indexOf('native') >= 0"
+                    + " && new Set(names).size === names.length;"));
         } finally {
             driver.get(mixedPage);
             waitForRender(0);

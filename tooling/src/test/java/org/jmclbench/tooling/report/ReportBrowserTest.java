@@ -354,25 +354,34 @@ class ReportBrowserTest {
         }
     }
 
+    /**
+     * Opens the page (no exports) of a store of {@code configs} under skip at one particle count,
+     * written under target/report-test/NAME-report; the caller goes back to the first page after.
+     */
+    static void openSkipReport(String name, List<FixtureDb.Config> configs, int particles, int repetitions) throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.configs = new ArrayList<>(configs);
+        f.policies = List.of("skip");
+        f.particles = List.of(particles);
+        f.repetitions = repetitions;
+        Path out = ARTIFACTS.resolve(name + "-report");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", ReportFixtures.write(f, ARTIFACTS, name + ".db").toString(),
+                "--out", out.toString(), "--no-export"));
+        driver.get(out.resolve("index.html").toAbsolutePath().toUri().toString());
+        waitForRender(0);
+    }
+
     @Test
     void aStoreOfManyProfilesComparesJavaWithTheCOfItsProfileAndFoldsTheUnseparated() throws Exception {
         // the evaluation's fifo+pinned JVM was compared with native/default: unlike scheduling, one ratio
-        FixtureDb f = new FixtureDb();
-        f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+        List<FixtureDb.Config> configs = List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
                 new FixtureDb.Config("native", "fifo", "gcc 12.2.0", 0.8, "ok"),
                 new FixtureDb.Config("temurin-25", "fifo", "25+36", 1.15, "ok"),
                 new FixtureDb.Config("temurin-21", "fifo", "21.0.8", 1.2, "ok"),
                 new FixtureDb.Config("temurin-17", "fifo", "17.0.15", 1.25, "ok"),
-                new FixtureDb.Config("temurin-11", "fifo", "11.0.25", 1.3, "ok")));
-        f.policies = List.of("skip");
-        f.particles = List.of(400);
-        f.repetitions = 2;
-        Path out = ARTIFACTS.resolve("profiles-report");
-        assertEquals(0, JmclbenchCli.execute("report", "--db", ReportFixtures.write(f, ARTIFACTS, "profiles.db").toString(),
-                "--out", out.toString(), "--no-export"));
+                new FixtureDb.Config("temurin-11", "fifo", "11.0.25", 1.3, "ok"));
         try {
-            driver.get(out.resolve("index.html").toAbsolutePath().toUri().toString());
-            waitForRender(0);
+            openSkipReport("profiles", configs, 400, 2);
             String ratio = driver.findElement(By.id("headline-ratio")).getText();
             assertTrue(ratio.startsWith("Java vs C: temurin-") && ratio.contains("/fifo, the chosen Java runtime")
                     && ratio.contains(" that of native/fifo ("), ratio);
@@ -395,20 +404,12 @@ class ReportBrowserTest {
     void aCrowdedStoreKeepsEveryLabelAndLegendEntry() throws Exception {
         // the evaluation's cause chart had sixteen bars and nine labels: Chart.js skipped the rest;
         // its legends of twenty runtimes or more were cut, with the plot squeezed to a strip
-        FixtureDb f = new FixtureDb();
-        f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok")));
+        List<FixtureDb.Config> configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok")));
         for (int i = 0; i < 17; i++) {
-            f.configs.add(new FixtureDb.Config("temurin-" + (8 + i), "g1", "25+36", 1.1 + i / 100.0, "ok"));
+            configs.add(new FixtureDb.Config("temurin-" + (8 + i), "g1", "25+36", 1.1 + i / 100.0, "ok"));
         }
-        f.policies = List.of("skip");
-        f.particles = List.of(1600);
-        f.repetitions = 1;
-        Path out = ARTIFACTS.resolve("crowded-report");
-        assertEquals(0, JmclbenchCli.execute("report", "--db", ReportFixtures.write(f, ARTIFACTS, "crowded.db").toString(),
-                "--out", out.toString(), "--no-export"));
         try {
-            driver.get(out.resolve("index.html").toAbsolutePath().toUri().toString());
-            waitForRender(0);
+            openSkipReport("crowded", configs, 1600, 1);
             for (String id : List.of("causes", "memory")) {
                 assertEquals(Boolean.TRUE, js().executeScript("var c = window.jmclbenchCharts[arguments[0]];"
                         + " var axis = c.options.indexAxis === 'y' ? c.scales.y : c.scales.x;"

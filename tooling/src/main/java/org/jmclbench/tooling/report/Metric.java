@@ -7,7 +7,8 @@ import org.jmclbench.tooling.store.StoredRun;
  * flattened {@code metrics} table, else from the run's summary.json (docs/FORMATS.md 4-5).
  */
 public enum Metric {
-    MISS_COUNT("missCount", "misses", 1, "/missCount", "run/missCount/value", "all/missCount/value", "all/missCount/mean"),
+    /** The thesis's missCount: dropped, dropped or aborted, or late jobs by the policy ({@link #missCountJobs}). */
+    MISS_COUNT("missCount", "jobs", 1, "/missCount", "run/missCount/value", "all/missCount/value", "all/missCount/mean"),
     LATE("late", "jobs", 1, "/tasks/all/late", "all/late/value", "run/late/value"),
     /** Jobs not completed by their deadline (late + skipped + terminated), both tasks: the real-time miss count. */
     DEADLINE_MISSES("deadline misses", "jobs", 1, "/tasks/all/deadlineMisses"),

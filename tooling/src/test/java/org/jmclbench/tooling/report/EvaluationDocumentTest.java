@@ -175,7 +175,7 @@ class EvaluationDocumentTest {
 
     @Test
     void fewestMissesClaimIsTheStoresMinimum() {
-        Matcher m = Pattern.compile("At 1600 particles \\(the heaviest load of the sweep\\), \\*\\*(.+?)\\*\\* dropped or aborted "
+        Matcher m = Pattern.compile("At 1600 particles \\(the heaviest load of the sweep\\), \\*\\*(.+?)\\*\\* dropped "
                 + "the fewest jobs \\(missCount\\): ([0-9.]+) ").matcher(doc);
         assertTrue(m.find(), doc);
         double min = configs().stream().mapToDouble(c -> mean(c, "skip", 1600, Metric.MISS_COUNT)).min().orElseThrow();

@@ -1,7 +1,8 @@
 /*
  * jmclbench report page: the Chart.js plugins the charts of report.js use, registered once before
  * report.js runs: intervals as error bars, the playground's frame, GC and safepoint pause bands,
- * and a "0" where a log axis cannot draw a bar.
+ * and a "0" where a log axis cannot draw a bar; and how the charts write their text
+ * (window.jmclbenchText): bytes, log-axis tick labels, long titles, a legend per runtime.
  */
 (function () {
   'use strict';
@@ -81,6 +82,61 @@
       ctx.restore();
     }
   };
+  /** Bytes in decimal units (kB = 1000 B), as the log axis' powers of ten read best (ChartFormats.bytes). */
+  function bytes(v) {
+    if (v === null || v === undefined) { return '\u2013'; }
+    var units = ['B', 'kB', 'MB', 'GB'], i = 0;
+    while (Math.abs(v) >= 1000 && i < units.length - 1) { v /= 1000; i++; }
+    return String(Number(v.toPrecision(3))) + ' ' + units[i];
+  }
+  // A log axis labels 1, 2 and 5 times each power of ten; percentiles and bytes their powers alone
+  // unless that labels fewer than three ticks (an axis of a decade or two), as the export does.
+  function tickLabel(axis) {
+    function whole(v) { var e = Math.log10(v); return Math.abs(e - Math.round(e)) < 1e-9; }
+    return function (v, i, ticks) {
+      var exp = Math.log10(v), m = v / Math.pow(10, Math.floor(exp + 1e-9));
+      var oneTwoFive = [1, 2, 5].some(function (k) { return Math.abs(m - k) < 1e-6; });
+      var few = ticks.filter(function (t) { return whole(t.value); }).length < 3;
+      if (!(axis.format === 'NUMBER' || few ? oneTwoFive : whole(v))) { return null; }
+      if (axis.format === 'PERCENTILE') { return v === 1 ? '0%' : (100 - 100 / v).toFixed(Math.max(0, Math.ceil(exp - 1e-9) - 2)) + '%'; }
+      return axis.format === 'BYTES' ? bytes(v) : String(Number(v.toPrecision(3)));
+    };
+  }
+  // A title that names the configurations left out runs to hundreds of characters, and Chart.js
+  // squeezes one line into the chart's width until it cannot be read: cut it into lines of words.
+  var TITLE_LINE = 80;
+  function titleLines(text) {
+    var lines = [], line = '';
+    text.split(' ').forEach(function (w) {
+      if (line && (line + ' ' + w).length > TITLE_LINE) { lines.push(line); line = w; } else { line = line ? line + ' ' + w : w; }
+    });
+    if (line) { lines.push(line); }
+    return lines.length > 1 ? lines : text;
+  }
+  /**
+   * A legend that names each runtime once, by its first series, and shows or hides all its series:
+   * for a figure whose caption tells a runtime's several series apart (Figure.legendPerRuntime).
+   */
+  function legendPerRuntime(legend) {
+    function key(d) { return d.config || d.label; }
+    legend.labels.generateLabels = function (chart) {
+      var seen = {};
+      return Chart.defaults.plugins.legend.labels.generateLabels(chart).filter(function (item) {
+        var k = key(chart.data.datasets[item.datasetIndex]);
+        if (seen[k]) { return false; }
+        seen[k] = true;
+        item.text = k;
+        return true;
+      });
+    };
+    legend.onClick = function (e, item, l) {
+      var chart = l.chart, k = key(chart.data.datasets[item.datasetIndex]), show = !chart.isDatasetVisible(item.datasetIndex);
+      chart.data.datasets.forEach(function (d, i) { if (key(d) === k) { chart.setDatasetVisibility(i, show); } });
+      chart.update();
+    };
+  }
+  window.jmclbenchText = { bytes: bytes, tickLabel: tickLabel, titleLines: titleLines, legendPerRuntime: legendPerRuntime };
+
   Chart.register(errorBars, frame, bands, zeroMarks);
   Chart.defaults.animation = false;
   Chart.defaults.font.size = 12;

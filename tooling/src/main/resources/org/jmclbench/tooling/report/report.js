@@ -22,6 +22,7 @@
     engines: new Set(DATA.engines)
   };
   var sortState = { column: null, dir: 1 };
+  var chartText = window.jmclbenchText, bytes = chartText.bytes; // report-plugins.js: how the charts write numbers, titles, legends
 
   function el(tag, attrs, text) {
     var e = document.createElement(tag);
@@ -373,13 +374,6 @@
   // is: this script only leaves out what belongs to runtimes or engines not chosen.
   // the Chart.js plugins (error bars, the playground's frame, pause bands, zero marks) are in report-plugins.js
 
-  /** Bytes in decimal units (kB = 1000 B), as the log axis' powers of ten read best (ChartFormats.bytes). */
-  function bytes(v) {
-    if (v === null || v === undefined) { return '\u2013'; }
-    var units = ['B', 'kB', 'MB', 'GB'], i = 0;
-    while (Math.abs(v) >= 1000 && i < units.length - 1) { v /= 1000; i++; }
-    return String(Number(v.toPrecision(3))) + ' ' + units[i];
-  }
   function buildFigures() {
     var box = document.getElementById('charts');
     DATA.figures.forEach(function (f) {
@@ -418,22 +412,9 @@
     return { categories: (spec.categories || []).filter(function (c, i) { return keep[i]; }), series: series,
       bands: first ? spec.bands.filter(function (b) { return b.config === first.config; }) : [] };
   }
-  // A log axis labels 1, 2 and 5 times each power of ten; percentiles and bytes their powers alone
-  // unless that labels fewer than three ticks (an axis of a decade or two), as the export does.
-  function tickLabel(axis) {
-    function whole(v) { var e = Math.log10(v); return Math.abs(e - Math.round(e)) < 1e-9; }
-    return function (v, i, ticks) {
-      var exp = Math.log10(v), m = v / Math.pow(10, Math.floor(exp + 1e-9));
-      var oneTwoFive = [1, 2, 5].some(function (k) { return Math.abs(m - k) < 1e-6; });
-      var few = ticks.filter(function (t) { return whole(t.value); }).length < 3;
-      if (!(axis.format === 'NUMBER' || few ? oneTwoFive : whole(v))) { return null; }
-      if (axis.format === 'PERCENTILE') { return v === 1 ? '0%' : (100 - 100 / v).toFixed(Math.max(0, Math.ceil(exp - 1e-9) - 2)) + '%'; }
-      return axis.format === 'BYTES' ? bytes(v) : String(Number(v.toPrecision(3)));
-    };
-  }
   function scale(axis, stacked) {
     var s = { type: axis.scale === 'LOG' ? 'logarithmic' : 'linear', stacked: stacked, title: { display: true, text: axis.label } };
-    if (axis.scale === 'LOG') { s.ticks = { autoSkip: axis.format === 'NUMBER', maxRotation: 0, callback: tickLabel(axis) }; }
+    if (axis.scale === 'LOG') { s.ticks = { autoSkip: axis.format === 'NUMBER', maxRotation: 0, callback: chartText.tickLabel(axis) }; }
     if (axis.min !== undefined) { s.min = axis.min; }
     if (axis.max !== undefined) { s.max = axis.max; }
     return s;
@@ -452,39 +433,6 @@
       zeros: log ? s.values.map(function (v) { return v === 0; }) : null,
       data: s.values.map(function (v) { return v === null || v === undefined ? (stacked ? 0 : null) : (log && v <= 0 ? null : v); }) };
   }
-  // A title that names the configurations left out runs to hundreds of characters, and Chart.js
-  // squeezes one line into the chart's width until it cannot be read: cut it into lines of words.
-  var TITLE_LINE = 80;
-  function titleLines(text) {
-    var lines = [], line = '';
-    text.split(' ').forEach(function (w) {
-      if (line && (line + ' ' + w).length > TITLE_LINE) { lines.push(line); line = w; } else { line = line ? line + ' ' + w : w; }
-    });
-    if (line) { lines.push(line); }
-    return lines.length > 1 ? lines : text;
-  }
-  /**
-   * A legend that names each runtime once, by its first series, and shows or hides all its series:
-   * for a figure whose caption tells a runtime's several series apart (Figure.legendPerRuntime).
-   */
-  function legendPerRuntime(legend) {
-    function key(d) { return d.config || d.label; }
-    legend.labels.generateLabels = function (chart) {
-      var seen = {};
-      return Chart.defaults.plugins.legend.labels.generateLabels(chart).filter(function (item) {
-        var k = key(chart.data.datasets[item.datasetIndex]);
-        if (seen[k]) { return false; }
-        seen[k] = true;
-        item.text = k;
-        return true;
-      });
-    };
-    legend.onClick = function (e, item, l) {
-      var chart = l.chart, k = key(chart.data.datasets[item.datasetIndex]), show = !chart.isDatasetVisible(item.datasetIndex);
-      chart.data.datasets.forEach(function (d, i) { if (key(d) === k) { chart.setDatasetVisibility(i, show); } });
-      chart.update();
-    };
-  }
   /** The legend's entries: one per series, or one per runtime. */
   function legendItems(f, view) {
     if (!f.legendPerRuntime) { return view.series.length; }
@@ -502,14 +450,14 @@
     var notes = view.series.some(function (s) { return s.notes; });
     var o = {
       responsive: true, maintainAspectRatio: false, normalized: true, indexAxis: spec.horizontal ? 'y' : 'x',
-      plugins: { title: { display: true, text: titleLines(spec.title) }, legend: { display: !single, position: 'bottom', labels: { boxWidth: 12,
+      plugins: { title: { display: true, text: chartText.titleLines(spec.title) }, legend: { display: !single, position: 'bottom', labels: { boxWidth: 12,
         // marks without lines (the policies' shapes): the legend shows each mark's shape
         usePointStyle: !bars && view.series.length > 0 && view.series.every(function (s) { return !s.style.line; }) } },
         jmclbenchPauses: view.bands, jmclbenchFrame: spec.frame || null },
       scales: !bars ? { x: scale(spec.x, false), y: value } : spec.horizontal ? { y: category, x: value } : { x: category, y: value }
     };
     if (!bars) { o.parsing = false; }
-    if (f && f.legendPerRuntime) { legendPerRuntime(o.plugins.legend); }
+    if (f && f.legendPerRuntime) { chartText.legendPerRuntime(o.plugins.legend); }
     if (!spec.horizontal) {
       // the axes reach the intervals' ends, so that no error bar runs off the plot
       view.series.forEach(function (s) {

@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Properties;
 import java.util.Set;
 import java.util.TreeSet;
@@ -387,7 +388,7 @@ public final class ReportModel {
                 }
                 if (r.ok() && flags.isEmpty()) {
                     JsonNode rt = r.summary().at("/environment/runtime");
-                    rt.path("inputArguments").forEach(a -> flags.add(a.asText()));
+                    rt.path("inputArguments").forEach(a -> shownFlag(a.asText()).ifPresent(flags::add));
                     if (versions.isEmpty() && rt.hasNonNull("version")) {
                         versions.add(rt.path("version").asText());
                     }
@@ -397,6 +398,21 @@ public final class ReportModel {
                     colors.get(e.getKey()), List.copyOf(versions), List.copyOf(flags), List.copyOf(machines), List.copyOf(facts), execution));
         }
         return out;
+    }
+
+    /**
+     * A JVM argument as the page shows it. What the harness adds to every run says nothing about the
+     * configuration: its JFR recording's per-run file names (three lines of paths a runtime) are
+     * cut to the option's name, and the workload's home folder is left out.
+     */
+    static Optional<String> shownFlag(String arg) {
+        if (arg.startsWith("-Djmclbench.home=")) {
+            return Optional.empty();
+        }
+        if (arg.startsWith("-XX:StartFlightRecording=")) {
+            return Optional.of("-XX:StartFlightRecording (jmclbench's recording, for the causes of misses)");
+        }
+        return Optional.of(arg);
     }
 
     /** What says how far a run's numbers can be trusted: scheduling, priorities, allocation (FORMATS.md 4). */

@@ -277,6 +277,9 @@ public final class FixtureDb {
         } else {
             args.add("-XX:+Use" + (cfg.profile().isEmpty() ? "G1" : cfg.profile().toUpperCase(Locale.ROOT).replace("ZGC", "Z")) + "GC");
             args.add("-Xms256m");
+            // what the runner adds to every JVM run (JfrFlags): a recording of this run's own, and the home
+            args.add("-XX:StartFlightRecording=filename=/results/runs/" + key + "/recording.jfr,settings=/results/runs/" + key
+                    + "/jmclbench.jfc,dumponexit=true").add("-Djmclbench.home=/opt/jmclbench");
         }
         env.putObject("os").put("name", "Linux").put("arch", "amd64").put("kernel", "6.1.0-27-amd64");
         env.putObject("cpu").put("model", "Intel(R) Xeon(R) CPU @ 2.20GHz").put("processors", 2);

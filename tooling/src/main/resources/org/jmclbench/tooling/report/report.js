@@ -114,11 +114,12 @@
     var best = Math.min.apply(null, withMiss.map(function (c) { return c.metrics.MISS_COUNT.mean; }));
     var winners = withMiss.filter(function (c) { return c.metrics.MISS_COUNT.mean === best; });
     var jobs = missCountJobs();
+    var sep = winners[0].missSeparation || {};
+    var unseparated = withMiss.filter(function (c) { return winners.indexOf(c) < 0 && sep[c.config] !== 'A_LOWER'; });
     h.appendChild(el('p', { 'class': 'big', id: 'headline-best' }, 'Fewest ' + jobs + ' at ' + where + ': ' +
       winners.map(function (c) { return c.config; }).join(', ') + ' (' + fmtCi(winners[0].metrics.MISS_COUNT) +
       ' per run, ' + winners[0].metrics.MISS_COUNT.n + (winners[0].metrics.MISS_COUNT.n === 1 ? ' run)' : ' runs)') +
-      separationNote(winners, withMiss)));
-    var unseparated = notSeparated(winners, withMiss);
+      separationNote(winners, withMiss, unseparated)));
     if (unseparated.length > HEADLINE_NAMES) {
       var which = el('details', { id: 'headline-unseparated' });
       which.appendChild(el('summary', null, 'which ' + unseparated.length));
@@ -150,14 +151,13 @@
     h.appendChild(p);
   }
   /**
-   * Which of the others the lowest is not separated from (docs/REPORT.md: at least 10 runs a side,
-   * Mann-Whitney U and the bootstrap interval of the ratio): a lowest mean is not a ranking.
+   * Which of the others the lowest is not separated from ({@code not}; docs/REPORT.md: at least 10
+   * runs a side, Mann-Whitney U and the bootstrap interval of the ratio): a lowest mean is not a ranking.
    */
-  function separationNote(winners, cells) {
+  function separationNote(winners, cells, not) {
     var others = cells.filter(function (c) { return winners.indexOf(c) < 0; });
     if (others.length === 0) { return '.'; }
     var sep = winners[0].missSeparation || {};
-    var not = notSeparated(winners, cells);
     if (not.length === 0) { return '; lower than every other chosen runtime (separated: docs/REPORT.md).'; }
     var few = not.some(function (c) { return sep[c.config] === 'TOO_FEW'; });
     // a headline of twenty names is not read at a glance: past a few, their count, and the names below
@@ -166,10 +166,6 @@
     return '; not separated from ' + names + (few ? ' (fewer than 10 runs a side: no ranking)' : '') + ' (docs/REPORT.md).';
   }
   var HEADLINE_NAMES = 4;
-  function notSeparated(winners, cells) {
-    var sep = winners[0].missSeparation || {};
-    return cells.filter(function (c) { return winners.indexOf(c) < 0 && sep[c.config] !== 'A_LOWER'; });
-  }
   /** What missCount counts under the chosen policy: dropped, dropped or aborted, or late jobs (Metric.missCountJobs). */
   function missCountJobs() { return (DATA.missCountJobs || {})[state.policy] || 'missed jobs'; }
   function isNative(c) { return configById[c.config] && configById[c.config].kind === 'NATIVE'; }
@@ -433,6 +429,8 @@
       zeros: log ? s.values.map(function (v) { return v === 0; }) : null,
       data: s.values.map(function (v) { return v === null || v === undefined ? (stacked ? 0 : null) : (log && v <= 0 ? null : v); }) };
   }
+  /** One series of bars in the runtimes' colours: the categories name them, and no legend is drawn. */
+  function oneSeriesInRuntimeColours(view) { return view.series.length === 1 && !!view.series[0].colors; }
   /** The legend's entries: one per series, or one per runtime. */
   function legendItems(f, view) {
     if (!f.legendPerRuntime) { return view.series.length; }
@@ -449,7 +447,7 @@
     var category = { title: { display: true, text: spec.x.label }, stacked: stacked,
       ticks: { autoSkip: false, maxRotation: 90, minRotation: upright ? 90 : 0 } };
     var value = scale(spec.y, stacked);
-    var single = view.series.length === 1 && !!view.series[0].colors;
+    var single = oneSeriesInRuntimeColours(view);
     var notes = view.series.some(function (s) { return s.notes; });
     var o = {
       responsive: true, maintainAspectRatio: false, normalized: true, indexAxis: spec.horizontal ? 'y' : 'x',
@@ -488,7 +486,7 @@
     if (charts[f.id]) { charts[f.id].destroy(); }
     var canvas = document.getElementById('chart-' + f.id);
     var rows = spec && spec.kind !== 'LINES' ? view.categories.length : 0;
-    var items = spec && !(view.series.length === 1 && view.series[0].colors) ? legendItems(f, view) : 0;
+    var items = spec && !oneSeriesInRuntimeColours(view) ? legendItems(f, view) : 0;
     // many rows: a horizontal chart grows a line per row, a vertical one makes room for its turned
     // labels; a long legend (three entries a line across the page) may take half the box and no more,
     // so the box grows until it needs no more than that (Chart.js cuts a legend that needs more)

@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.List;
+import java.util.Optional;
 
 /**
  * The JVM flags that capture a run's runtime events, for a Java feature version: a JFR
@@ -61,6 +62,29 @@ public final class JfrFlags {
                     "-XX:+PrintGCApplicationStoppedTime"), log);
         }
         return new EventCapture(EventCapture.Mode.NONE, List.of(), null);
+    }
+
+    /**
+     * The flag as a reader should see it: one that {@link #forJava} added, named without its
+     * per-run file paths (they differ in every run and say nothing of the configuration); any
+     * other flag as it is.
+     */
+    public static String withoutRunPaths(String jvmArg) {
+        return captureName(jvmArg).orElse(jvmArg);
+    }
+
+    private static Optional<String> captureName(String a) {
+        if (a.startsWith("-XX:StartFlightRecording=filename=") && a.contains("/" + RECORDING + ",settings=")
+                && a.contains("/" + SETTINGS + ",")) {
+            return Optional.of("-XX:StartFlightRecording (jmclbench's recording, for the causes of misses)");
+        }
+        if (a.startsWith("-Xlog:gc,gc+phases,safepoint:file=") && a.contains("/" + GC_LOG + ":")) {
+            return Optional.of("-Xlog:gc,gc+phases,safepoint (jmclbench's GC log, for the causes of misses)");
+        }
+        if (a.startsWith("-Xloggc:") && a.endsWith("/" + GC_LOG)) {
+            return Optional.of("-Xloggc (jmclbench's GC log, for the causes of misses)");
+        }
+        return Optional.empty();
     }
 
     /** Copies our JFR settings to {@code target}. */

@@ -15,6 +15,7 @@ import java.util.TreeSet;
 import java.util.function.Consumer;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.attribution.JfrFlags;
 import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
@@ -402,17 +403,14 @@ public final class ReportModel {
 
     /**
      * A JVM argument as the page shows it. What the harness adds to every run says nothing about the
-     * configuration: its JFR recording's per-run file names (three lines of paths a runtime) are
-     * cut to the option's name, and the workload's home folder is left out.
+     * configuration: its JFR recording's or GC log's per-run file names (three lines of paths a
+     * runtime) are cut to the option's name, and the workload's home folder is left out.
      */
     static Optional<String> shownFlag(String arg) {
         if (arg.startsWith("-Djmclbench.home=")) {
             return Optional.empty();
         }
-        if (arg.startsWith("-XX:StartFlightRecording=")) {
-            return Optional.of("-XX:StartFlightRecording (jmclbench's recording, for the causes of misses)");
-        }
-        return Optional.of(arg);
+        return Optional.of(JfrFlags.withoutRunPaths(arg));
     }
 
     /** What says how far a run's numbers can be trusted: scheduling, priorities, allocation (FORMATS.md 4). */

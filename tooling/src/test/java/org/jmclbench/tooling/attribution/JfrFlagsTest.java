@@ -1,6 +1,7 @@
 package org.jmclbench.tooling.attribution;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -35,6 +36,24 @@ class JfrFlagsTest {
         assertTrue(eight.jvmArgs().containsAll(List.of("-Xloggc:/tmp/x/gc.log", "-XX:+PrintGCDateStamps",
                 "-XX:+PrintGCApplicationStoppedTime")));
         assertEquals(EventCapture.Mode.NONE, JfrFlags.forJava(7, d).mode());
+    }
+
+    @Test
+    void theFlagsItAddsAreNamedWithoutTheirRunPathsAndOthersKeptWhole(@TempDir Path tmp) {
+        Path run = tmp.resolve("runs/k");
+        for (int version : new int[] { 8, 9, 11, 25 }) {
+            for (String flag : JfrFlags.forJava(version, run).jvmArgs()) {
+                String shown = JfrFlags.withoutRunPaths(flag);
+                assertFalse(shown.contains(run.toString()), "JDK " + version + ": " + shown);
+            }
+        }
+        assertEquals("-Xloggc (jmclbench's GC log, for the causes of misses)", JfrFlags.withoutRunPaths("-Xloggc:/r/gc.log"));
+        assertEquals("-XX:+PrintGCDetails", JfrFlags.withoutRunPaths("-XX:+PrintGCDetails"));
+        // a profile's own recording or log is part of the configuration: kept as written
+        for (String own : List.of("-XX:StartFlightRecording=filename=/data/mine.jfr", "-Xloggc:/var/log/app-gc.log",
+                "-Xlog:gc:file=/var/log/gc.log")) {
+            assertEquals(own, JfrFlags.withoutRunPaths(own));
+        }
     }
 
     @Test

@@ -23,19 +23,37 @@ import org.objectweb.asm.tree.MethodNode;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
 /**
  * {@code ./jmclbench abort-bound}: the static bound on abort latency of an engine's terminable
  * job ({@link AbortBound}) and, with a run folder, the bound in time beside the measured
  * distribution: a particle step costs at most the run's task latency divided by its particles
  * (a job's loops together cost that per particle), so a gap of G steps takes at most G times it.
  */
+@Command(sortOptions = false, description = "The static bound on abort latency of an engine's"
+        + " terminable job and, with --run, that bound in time beside the run's measured abort latency.",
+        footer = "With --run, the options left out are the run's.")
 public final class AbortBoundMain {
-    private static final String USAGE = "usage: jmclbench abort-bound --engine javase|scj|hvm|rtsj [--rtsj-design thesis|atomic] "
-            + "[--memory preallocated|allocating|scoped] --classes JAR_OR_DIR[:...] [--run RUN_FOLDER] "
-            + "(with --run, the options left out are the run's)";
     /** The localizer of each memory style: the job runs one, so the others' loops are not its code. */
     private static final Map<String, String> LOCALIZERS = Map.of("preallocated", "org/jmclbench/core/mcl/PreallocatedLocalizer",
             "scoped", "org/jmclbench/core/mcl/ScopedLocalizer", "allocating", "org/jmclbench/workload/mcl/AllocatingLocalizer");
+
+    @Option(names = "--engine", paramLabel = "javase|scj|hvm|rtsj", description = "whose job")
+    private String engine;
+    @Option(names = "--rtsj-design", paramLabel = "thesis|atomic", description = "the rtsj engine's design (default thesis)")
+    private String design;
+    @Option(names = "--memory", paramLabel = "preallocated|allocating|scoped",
+            description = "the memory style, whose localizer the job runs (default preallocated)")
+    private String memory;
+    @Option(names = "--classes", paramLabel = "JAR_OR_DIR[:...]", description = "the workload jar (the launcher gives it)")
+    private String classes;
+    @Option(names = "--run", paramLabel = "RUN_FOLDER", description = "a run of that job: the bound in time beside its"
+            + " measured abort latency")
+    private Path runDir;
+    @Option(names = {"-h", "--help"}, usageHelp = true, description = "this help")
+    private boolean help;
 
     /** An engine's job: where it starts and how an abort takes effect. */
     private record Job(String[][] entries, AbortBound.Mode mode) {
@@ -50,32 +68,15 @@ public final class AbortBoundMain {
 
     /** Runs the command; 0, or 2 with one line on {@code err} for bad input. */
     static int run(String[] args, PrintStream out, PrintStream err) {
-        String engine = null;
-        String design = null;
-        String memory = null;
-        String classes = null;
-        Path runDir = null;
-        for (int i = 0; i < args.length; i++) {
-            String a = args[i];
-            if (a.equals("-h") || a.equals("--help")) {
-                out.println(USAGE);
-                return 0;
-            }
-            if (i + 1 >= args.length) {
-                return bad(err, a + ": needs a value (" + USAGE + ")");
-            }
-            String v = args[++i];
-            switch (a) {
-                case "--engine" -> engine = v;
-                case "--rtsj-design" -> design = v;
-                case "--memory" -> memory = v;
-                case "--classes" -> classes = v;
-                case "--run" -> runDir = Paths.get(v);
-                default -> {
-                    return bad(err, a + ": unknown option (" + USAGE + ")");
-                }
-            }
-        }
+        AbortBoundMain options = new AbortBoundMain();
+        Integer exit = CommandLines.parse(options, "abort-bound", args, out, err);
+        return exit != null ? exit : options.bound(out, err);
+    }
+
+    private int bound(PrintStream out, PrintStream err) {
+        String engine = this.engine;
+        String design = this.design;
+        String memory = this.memory;
         JsonNode summary = null;
         if (runDir != null) {
             Path s = runDir.resolve("summary.json");
@@ -101,7 +102,7 @@ public final class AbortBoundMain {
         design = design != null ? design : "thesis";
         memory = memory != null ? memory : "preallocated";
         if (engine == null) {
-            return bad(err, "--engine: required (" + USAGE + ")");
+            return bad(err, "--engine: required (or --run)");
         }
         if (!design.equals("thesis") && !design.equals("atomic")) {
             return bad(err, "--rtsj-design: '" + design + "' is not one of thesis|atomic");
@@ -297,7 +298,6 @@ public final class AbortBoundMain {
     }
 
     private static int bad(PrintStream err, String message) {
-        err.println("jmclbench: abort-bound: " + message);
-        return 2;
+        return CommandLines.bad(err, "abort-bound", message);
     }
 }

@@ -23,78 +23,63 @@ import java.util.Map;
 import java.util.ServiceLoader;
 import java.util.stream.Stream;
 
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
 /**
  * {@code ./jmclbench verify}: runs every catalogue's static and JPF checks, prints the table
  * (property, policy, verdict, states, seconds), writes {@code results/verification.json}, and
  * exits 0 only when every property holds and every seeded bug is caught.
  *
- * <p>Usage: {@code VerifyMain [--out FILE] [--logs DIR] [--timeout SECONDS] [--heap MB] [--only PREFIX,...]
- * [--fail-fast]}. {@code --only} runs the checks whose id starts with one of the prefixes (a
- * partial run: it writes no results file unless {@code --out} is given). {@code --fail-fast} stops
- * at the first check that fails (the mutation score's runs: one failure is a caught mutant).
- * The class path holds the project's classes; the seeded bugs' catalogue is in verification's
- * test classes, and verify fails when it is missing (no check may pass unseeded).
+ * <p>{@code --only} runs the checks whose id starts with one of the prefixes (a partial run: it
+ * writes no results file unless {@code --out} is given). {@code --fail-fast} stops at the first
+ * check that fails (the mutation score's runs: one failure is a caught mutant). The class path
+ * holds the project's classes; the seeded bugs' catalogue is in verification's test classes, and
+ * verify fails when it is missing (no check may pass unseeded).
  */
+@Command(sortOptions = false, description = "Java PathFinder and bytecode checks of the SCJ mission"
+        + " and the rtsj engine; exits 0 only when every property holds and every seeded bug is caught.")
 public final class VerifyMain {
     /** The per-check budget of issue 11: 2 minutes; the heap cap keeps the JVM under 1.5 GB. */
     static final int TIMEOUT_SECONDS = 120;
     static final int HEAP_MB = 1200;
 
+    @Option(names = "--out", paramLabel = "FILE", description = "the results file (default results/verification.json;"
+            + " none for a run with --only)")
+    private Path out;
+    @Option(names = "--logs", paramLabel = "DIR", description = "each JPF check's log (default ${DEFAULT-VALUE})")
+    private Path logs = Paths.get("results", "verification");
+    @Option(names = "--timeout", paramLabel = "SECONDS", converter = CommandLines.Positive.class,
+            description = "each JPF check's wall-clock budget (default ${DEFAULT-VALUE})")
+    private int timeout = TIMEOUT_SECONDS;
+    @Option(names = "--heap", paramLabel = "MB", converter = CommandLines.Positive.class,
+            description = "each JPF check's heap (default ${DEFAULT-VALUE})")
+    private int heap = HEAP_MB;
+    @Option(names = "--only", paramLabel = "PREFIX", split = ",",
+            description = "only the checks whose id starts with one of these (for example mission-,P4)")
+    private List<String> only;
+    @Option(names = "--fail-fast", description = "stop at the first check that fails")
+    private boolean failFast;
+    @Option(names = {"-h", "--help"}, usageHelp = true, description = "this help")
+    private boolean help;
+
     private VerifyMain() {}
 
     public static void main(String[] args) throws Exception {
-        Path out = null;
-        List<String> only = null;
-        Path logs = Paths.get("results", "verification");
-        int timeout = TIMEOUT_SECONDS;
-        int heap = HEAP_MB;
-        boolean failFast = false;
-        for (int i = 0; i < args.length; i++) {
-            String a = args[i];
-            if (a.equals("--fail-fast")) {
-                failFast = true;
-                continue;
-            }
-            if (a.equals("--help") || a.equals("-h")) {
-                System.out.println("usage: jmclbench verify [--out FILE] [--logs DIR] [--timeout SECONDS] [--heap MB]"
-                        + " [--only PREFIX,...] [--fail-fast]");
-                return;
-            }
-            if (i + 1 >= args.length) {
-                usage(a + ": needs a value");
-            }
-            String v = args[++i];
-            switch (a) {
-                case "--out" -> out = Paths.get(v);
-                case "--logs" -> logs = Paths.get(v);
-                case "--timeout" -> timeout = positive(a, v);
-                case "--heap" -> heap = positive(a, v);
-                case "--only" -> only = List.of(v.split(","));
-                default -> usage("unknown option " + a);
-            }
+        VerifyMain options = new VerifyMain();
+        Integer exit = CommandLines.parse(options, "verify", args, System.out, System.err);
+        if (exit != null) {
+            System.exit(exit);
         }
-        if (out == null && only == null) {
+        Path out = options.out;
+        if (out == null && options.only == null) {
             out = Paths.get("results", "verification.json");
         }
-        System.exit(run(out, logs, timeout, heap, only, failFast));
-    }
-
-    private static int positive(String option, String v) {
-        try {
-            int n = Integer.parseInt(v);
-            if (n > 0) {
-                return n;
-            }
-        } catch (NumberFormatException e) {
-            // falls through to the usage error
-        }
-        usage(option + ": not a positive number: " + v);
-        return 0;
+        System.exit(run(out, options.logs, options.timeout, options.heap, options.only, options.failFast));
     }
 
     private static void usage(String message) {
-        System.err.println("jmclbench verify: " + message);
-        System.exit(2);
+        System.exit(CommandLines.bad(System.err, "verify", message));
     }
 
     static int run(Path out, Path logs, int timeout, int heap, List<String> only, boolean failFast)

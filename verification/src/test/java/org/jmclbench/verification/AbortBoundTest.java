@@ -151,10 +151,12 @@ class AbortBoundTest {
         assertEquals(2, AbortBoundMain.run(new String[] {"--engine", "native", "--classes", "x"}, o, e));
         assertEquals(2, AbortBoundMain.run(new String[] {"--engine", "rtsj", "--rtsj-design", "fast", "--classes", "x"}, o, e));
         assertEquals(2, AbortBoundMain.run(new String[] {"--engine", "javase", "--classes", "/no/such.jar"}, o, e));
+        assertEquals(2, AbortBoundMain.run(new String[] {"--engine", "javase", "--bogus"}, o, e));
         String[] lines = err.toString(StandardCharsets.UTF_8).split("\n");
-        assertEquals(3, lines.length);
+        assertEquals(4, lines.length);
         assertTrue(lines[0].startsWith("jmclbench: abort-bound: --engine: 'native' is not one of"), lines[0]);
         assertTrue(lines[1].startsWith("jmclbench: abort-bound: --rtsj-design: 'fast'"), lines[1]);
         assertTrue(lines[2].startsWith("jmclbench: abort-bound: --classes: no such file or folder"), lines[2]);
+        assertEquals("jmclbench: abort-bound: Unknown option: '--bogus'", lines[3]);
     }
 }

@@ -25,14 +25,21 @@ class VerifyMainTest {
 
     @Test
     void anOnlyPrefixNoCheckHasIsOneLineAndNoTable() throws Exception {
-        assertBadInput("jmclbench verify: --only: no check id starts with no-such-check or nor-this",
+        assertBadInput("jmclbench: verify: --only: no check id starts with no-such-check or nor-this",
                 "--only", "no-such-check,nor-this");
     }
 
     @Test
     void aTimeoutThatIsNotAPositiveNumberIsOneLine() throws Exception {
-        assertBadInput("jmclbench verify: --timeout: not a positive number: 0", "--timeout", "0");
-        assertBadInput("jmclbench verify: --heap: needs a value", "--heap");
+        assertBadInput("jmclbench: verify: Invalid value for option '--timeout': '0' is not a positive number",
+                "--timeout", "0");
+        assertBadInput("jmclbench: verify: Missing required parameter for option '--heap' (MB)", "--heap");
+    }
+
+    @Test
+    void anUnknownOptionIsNamedAsUnknown() throws Exception {
+        // the hand-written parser took it for an option that needs a value
+        assertBadInput("jmclbench: verify: Unknown option: '--bogus'", "--bogus");
     }
 
     private void assertBadInput(String message, String... args) throws Exception {

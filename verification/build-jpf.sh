@@ -8,7 +8,8 @@
 #   JPF_CORE_SRC   a jpf-core folder or a tarball that unpacks into one (jpf-core-7ea25de.tar.gz)
 #   otherwise      git clone of branch java-17 at the pinned commit (needs network access)
 # Cache: ${JMCLBENCH_CACHE:-~/.cache/jmclbench}/jpf/<key>, where key names the commit (when known)
-# and a hash of the sources, so another source never reuses a stale build.
+# and a hash of the sources, so another source never reuses a stale build. Without JPF_CORE_SRC,
+# a build of the pinned commit's own sources is used as it is, with no clone.
 #
 # Usage: build-jpf.sh [--quiet] [--link PATH]
 #   prints the JPF home on stdout (progress on stderr), points <cache>/current at it, and
@@ -54,8 +55,23 @@ java17_home() {
     die "JPF (branch java-17) builds and runs on JDK 17 only; set JPF_JAVA_HOME to a JDK 17"
 }
 
+cache=${JMCLBENCH_CACHE:-$HOME/.cache/jmclbench}/jpf
+# A home built from the pinned commit's own sources (the clone or the pinned tarball) says so in
+# PINNED, so that without JPF_CORE_SRC a build that exists is used without cloning again.
+PINNED_MARK=$PINNED_COMMIT
+built() { [ -f "$1/build/jpf.jar" ] && [ -f "$1/build/jpf-classes.jar" ] && [ -f "$1/site.properties" ]; }
+if [ -z "${JPF_CORE_SRC:-}" ]; then
+    for h in "$cache"/"${PINNED_COMMIT:0:7}"-*; do
+        if built "$h" && [ "$(cat "$h/PINNED" 2>/dev/null)" = "$PINNED_MARK" ]; then
+            say "cached (the pinned commit): $h"
+            finish "$h"; exit 0
+        fi
+    done
+fi
+
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+pristine=false
 
 # --- 1. the source tree and what we know of its commit
 commit=""
@@ -69,6 +85,7 @@ if [ -n "${JPF_CORE_SRC:-}" ]; then
         [ -n "$src" ] || die "JPF_CORE_SRC=$JPF_CORE_SRC: no jpf-core folder (jpf.properties) inside"
         if [ "$(sha256sum "$JPF_CORE_SRC" | cut -d' ' -f1)" = "$PINNED_TARBALL_SHA256" ]; then
             commit=$PINNED_COMMIT
+            pristine=true
         fi
     else
         die "JPF_CORE_SRC=$JPF_CORE_SRC: no such folder or file"
@@ -82,6 +99,7 @@ else
         || die "commit $PINNED_COMMIT not found in $UPSTREAM"
     src=$work/jpf-core
     commit=$PINNED_COMMIT
+    pristine=true
 fi
 for d in src/main src/peers src/classes/modules src/annotations jpf.properties; do
     [ -e "$src/$d" ] || die "$src: not a jpf-core tree (no $d)"
@@ -91,10 +109,10 @@ done
 srchash=$(cd "$src" && find jpf.properties src/main src/peers src/classes src/annotations -type f -print0 \
     | sort -z | xargs -0 sha256sum | sha256sum | cut -c1-12)
 key=${commit:+${commit:0:7}-}$srchash
-cache=${JMCLBENCH_CACHE:-$HOME/.cache/jmclbench}/jpf
 home=$cache/$key
-if [ -f "$home/build/jpf.jar" ] && [ -f "$home/build/jpf-classes.jar" ] && [ -f "$home/site.properties" ]; then
+if built "$home"; then
     say "cached: $home"
+    ! $pristine || echo "$PINNED_MARK" > "$home/PINNED"
     finish "$home"; exit 0
 fi
 
@@ -161,6 +179,7 @@ extensions = \${jpf-core}
 EOF
 printf 'commit=%s\nsource=%s\nbuilt=%s\njava=%s\n' "${commit:-unknown}" "${JPF_CORE_SRC:-$UPSTREAM}" \
     "$(date -u +%FT%TZ)" "$jdk" > "$out/BUILD-INFO"
+! $pristine || echo "$PINNED_MARK" > "$out/PINNED"
 mkdir -p "$cache"
 rm -rf "$home.tmp.$$"
 mv "$out" "$home.tmp.$$"

@@ -1,0 +1,75 @@
+package org.jmclbench.verification.jpf;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * build-jpf.sh without JPF_CORE_SRC: a build of the pinned commit's own sources in the cache is
+ * used as it is; anything else would be a clone (here a git that fails, as with no network).
+ */
+class BuildJpfScriptTest {
+    private static final Path SCRIPT = Paths.get("build-jpf.sh").toAbsolutePath();
+    private static final String PINNED = "7ea25de453111be77d09e12eb196fecf2dc6d365";
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void aBuildOfThePinnedCommitIsUsedWithoutCloning() throws Exception {
+        Path home = fakeHome("7ea25de-0123456789ab");
+        Files.writeString(home.resolve("PINNED"), PINNED + "\n");
+        Result r = run();
+        assertEquals(0, r.exit, r.err);
+        assertEquals(home.toString(), r.out.strip());
+        assertFalse(r.err.contains("cloning"), r.err);
+        assertEquals(home.toRealPath(), dir.resolve("cache/jpf/current").toRealPath());
+    }
+
+    @Test
+    void aBuildOfOtherSourcesIsNotTakenForThePinnedCommit() throws Exception {
+        fakeHome("7ea25de-0123456789ab"); // from a JPF_CORE_SRC folder at that commit, perhaps edited: no PINNED
+        Result r = run();
+        assertEquals(1, r.exit, r.out);
+        assertTrue(r.err.contains("no JPF_CORE_SRC: cloning"), r.err);
+        assertTrue(r.err.contains("set JPF_CORE_SRC to a jpf-core folder or tarball"), r.err);
+    }
+
+    private Path fakeHome(String key) throws IOException {
+        Path home = dir.resolve("cache/jpf").resolve(key);
+        Files.createDirectories(home.resolve("build"));
+        for (String f : new String[] {"build/jpf.jar", "build/jpf-classes.jar", "site.properties"}) {
+            Files.writeString(home.resolve(f), "");
+        }
+        return home;
+    }
+
+    private record Result(int exit, String out, String err) {
+    }
+
+    private Result run() throws Exception {
+        Path bin = Files.createDirectories(dir.resolve("bin"));
+        Path git = bin.resolve("git");
+        Files.writeString(git, "#!/bin/sh\necho 'fatal: unable to access (no network in this test)' >&2\nexit 128\n");
+        Files.setPosixFilePermissions(git, PosixFilePermissions.fromString("rwxr-xr-x"));
+        ProcessBuilder pb = new ProcessBuilder("bash", SCRIPT.toString());
+        pb.environment().remove("JPF_CORE_SRC");
+        pb.environment().put("JMCLBENCH_CACHE", dir.resolve("cache").toString());
+        pb.environment().put("PATH", bin + ":" + System.getenv("PATH"));
+        Path out = dir.resolve("out.txt");
+        Path err = dir.resolve("err.txt");
+        Process p = pb.redirectOutput(out.toFile()).redirectError(err.toFile()).start();
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "build-jpf.sh did not end");
+        return new Result(p.exitValue(), Files.readString(out), Files.readString(err));
+    }
+}

@@ -220,13 +220,16 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     private void printTable(List<StoredRun> ra, List<StoredRun> rb) {
-        String fmt = "%-26s %-30s %-30s %8s  %-20s %s%n";
+        String fmt = "%-36s %-30s %-30s %8s  %-20s %s%n";
         out.printf(Locale.ROOT, fmt, "metric", "A", "B", "B/A", "95% CI of B/A", "separation");
+        // one table is one setting, so one policy: missCount is named for the jobs it counts under it
+        String policy = ra.isEmpty() ? null : ra.get(0).policy;
         for (Metric m : METRICS) {
             double[] xa = values(ra, m);
             double[] xb = values(rb, m);
             Row row = compare(xa, xb);
-            out.printf(Locale.ROOT, fmt, m.label + " (" + m.unit + ")", cell(xa), cell(xb), row.ratio, row.ci, row.verdict);
+            String unit = m == Metric.MISS_COUNT ? Metric.missCountJobs(policy) : m.unit;
+            out.printf(Locale.ROOT, fmt, m.label + " (" + unit + ")", cell(xa), cell(xb), row.ratio, row.ci, row.verdict);
         }
         int failedA = (int) ra.stream().filter(r -> !r.ok()).count();
         int failedB = (int) rb.stream().filter(r -> !r.ok()).count();

@@ -63,6 +63,20 @@ class CompareCommandTest {
     }
 
     @Test
+    void missCountIsNamedForTheJobsItCountsUnderEachPolicy() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.policies = List.of("skip", "terminate", "queue");
+        f.particles = List.of(400);
+        Path db = ReportFixtures.write(f, dir, "policies.db");
+        String out = run(0, "compare", "--db", db.toString(), "--a", "native", "--b", "temurin-25/zgc")[0];
+        for (String[] policyJobs : new String[][] {{"skip", "dropped jobs"}, {"terminate", "dropped or aborted jobs"},
+                {"queue", "late jobs"}}) {
+            String table = out.substring(out.indexOf("  " + policyJobs[0] + "  400 particles =="));
+            assertTrue(line(table, "missCount").startsWith("missCount (" + policyJobs[1] + ") "), line(table, "missCount"));
+        }
+    }
+
+    @Test
     void twoDatabasesPairTheSameConfigurations() {
         String out = run(0, "compare", a.toString(), b.toString())[0];
         assertTrue(out.contains("== match-short  skip  400 particles  native =="), out);

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
@@ -56,6 +57,18 @@ public final class ExplainCommand implements Callable<Integer> {
         return 0;
     }
 
+    /** " (5 dropped, 2 late)": how the jobs missed, in the report's words (skipped is dropped, terminated aborted). */
+    static String byOutcome(List<JobAttribution> attributions) {
+        Map<String, Long> n = attributions.stream().collect(Collectors.groupingBy(JobAttribution::outcome, Collectors.counting()));
+        List<String> parts = new ArrayList<>();
+        for (String[] outcome : new String[][] {{"skipped", "dropped"}, {"terminated", "aborted"}, {"late", "late"}}) {
+            if (n.containsKey(outcome[0])) {
+                parts.add(n.get(outcome[0]) + " " + outcome[1]);
+            }
+        }
+        return parts.isEmpty() ? "" : " (" + String.join(", ", parts) + ")";
+    }
+
     private void printTable(RunEvidence run, List<JobAttribution> attributions, PrintStream out) {
         out.println("run:     " + run.runDir());
         var env = run.summary().path("environment").path("runtime");
@@ -66,7 +79,7 @@ public final class ExplainCommand implements Callable<Integer> {
                 + params.path("load").path("scenario").asText(params.path("load").asText("none")));
         out.println("events:  " + run.eventSource() + " (" + run.events().size() + ")");
         long released = run.jobs().size();
-        out.printf(Locale.ROOT, "missed or late: %d of %d jobs%n", attributions.size(), released);
+        out.printf(Locale.ROOT, "missed or late: %d of %d jobs%s%n", attributions.size(), released, byOutcome(attributions));
         Map<String, Double> split = new LinkedHashMap<>();
         for (MetricRow m : WarmupSplit.metrics(run.jobs(), WarmupSplit.DEFAULT_BOUNDARY_NS)) {
             if (m.task().equals("all")) {

@@ -43,6 +43,7 @@ class ExplainCommandTest {
         String out = r[1];
         assertTrue(out.contains("events:  JFR " + key.resolve("recording.jfr")), out);
         assertTrue(out.contains("load alloc"), out);
+        assertTrue(out.matches("(?s).*\nmissed or late: (\\d+) of \\d+ jobs \\(\\1 late\\)\n.*"), "queue: every one late\n" + out);
         assertTrue(out.matches("(?s).*causes:  .*gc \\d+ \\[\\d+\\].*"), out);
         assertTrue(out.matches("(?s).*\\npredict +40 late .*compute 4\\d\\.\\d ms.*"), "the slow job is compute:\n" + out);
         // The leaf given directly finds the same recording five levels up.
@@ -53,6 +54,16 @@ class ExplainCommandTest {
         String[] runtime = run("explain", "--limit", "0", key.resolve("local").toString());
         assertEquals("0", runtime[0], runtime[2]);
         assertTrue(runtime[1].contains("events:  JFR " + key.resolve("recording.jfr")), runtime[1]);
+    }
+
+    @Test
+    void theJobsAreCountedByHowTheyMissedInTheReportsWords() {
+        JobAttribution dropped = new JobAttribution("predict", 1, "skipped", 0, 1, null, java.util.List.of());
+        JobAttribution aborted = new JobAttribution("update", 2, "terminated", 0, 1, null, java.util.List.of());
+        JobAttribution late = new JobAttribution("update", 3, "late", 0, 1, null, java.util.List.of());
+        assertEquals(" (2 dropped, 1 aborted, 1 late)",
+                ExplainCommand.byOutcome(java.util.List.of(dropped, late, aborted, dropped)));
+        assertEquals("", ExplainCommand.byOutcome(java.util.List.of()));
     }
 
     @Test

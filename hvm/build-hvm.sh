@@ -10,8 +10,8 @@
 # PyPI wheel pysemgenjar-packr==0.1.0 (OpenJDK 1.8.0_191).
 # Jars: bcel 6.0 and seven Eclipse jars (compile time only) from Maven Central, see
 # toolchain-deps.pom.xml.
-# Cache: ${JMCLBENCH_CACHE:-~/.cache/jmclbench}/hvm/toolchain-<key>, key = hash of the source,
-# our patches and this script; --unpatched builds the upstream VM (to show what the patches fix).
+# Cache: ${JMCLBENCH_CACHE:-~/.cache/jmclbench}/hvm/toolchain-<key>, key = hash of the source
+# (the pinned commit's, for its clone and its tarball alike), our patches and this script; --unpatched builds the upstream VM (to show what the patches fix).
 # --check says whether the tool chain can be built here (exit 0) or why not (exit 1), building
 # nothing.
 # The folder holds: src/ (the hvm-scj tree, patched), lib/ (jars), rt.jar, tools/ (compiled
@@ -21,6 +21,8 @@ set -euo pipefail
 HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
 HVM_COMMIT=4d31e231688a7fdaddd464d21a3923b435d11683
 HVM_REPO=https://github.com/scj-devel/hvm-scj
+# The pinned commit's tarball (../shared/vendor/README.md): its build is the clone's, one cache entry.
+HVM_TARBALL_SHA256=07e4964499f7c85a7649e302c5f7b9fe8cdfa7df80928eb4549b06704c56f2fb
 WHEEL=pysemgenjar-packr==0.1.0
 RT_JAR_SHA256=4994e9fa2877deada22c102eb8d234454a236bd37d32c0ce88c3609fc047c385
 CACHE=${JMCLBENCH_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/jmclbench}/hvm
@@ -84,6 +86,7 @@ if [ -n "${HVM_SRC:-}" ]; then
     else
         src_kind=tar
         src_id=$(sha256sum "$HVM_SRC" | cut -c1-64)
+        [ "$src_id" != "$HVM_TARBALL_SHA256" ] || src_id=$HVM_COMMIT
     fi
 else
     src_kind=git

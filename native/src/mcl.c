@@ -230,19 +230,24 @@ int jm_resample_systematic_abortable(const double *w, int n, double u, int *out_
 				     jm_abort *abort)
 {
 	double c = w[0];
-	int i = 0, k;
+	int i = 0, k = 0;
+	long step;
 
-	for (k = 0; k < n; k++) {
+	/* One loop walks both sequences, as the Java one: each step passes an old particle or places
+	 * a new one, so no block of JM_ABORT_BLOCK steps between two polls walks all N. */
+	for (step = 0; k < n; step++) {
 		double t;
 
-		if (k % JM_ABORT_BLOCK == 0 && abort_requested(abort))
+		if (step % JM_ABORT_BLOCK == 0 && abort_requested(abort))
 			return 1;
 		t = u + (double)k / (double)n;
-		while (t > c && i < n - 1) {
+		if (t > c && i < n - 1) {
 			i = i + 1;
 			c = c + w[i];
+		} else {
+			out_idx[k] = i;
+			k = k + 1;
 		}
-		out_idx[k] = i;
 	}
 	return 0;
 }

@@ -103,7 +103,7 @@ public final class SeededCatalog implements CheckCatalog {
                         Set.of(GuardedCounter.class.getName() + ":offer")),
                 new StaticCheck("static-seeded-abort-poll", Property.P4, StaticCheck.Kind.ABORT_POLL,
                         n -> n.equals(internal(poll)), n -> false, n -> false, Set.of(poll + ":update", poll + ":siblings", poll + ":wide",
-                                poll + ":sparse", poll + ":normalise")));
+                                poll + ":sparse", poll + ":normalise", poll + ":walk")));
     }
 
     private static String internal(String className) {

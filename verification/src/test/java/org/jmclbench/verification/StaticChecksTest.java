@@ -68,13 +68,15 @@ class StaticChecksTest {
                 .filter(x -> x.className().equals(PollingJob.class.getName())).toList();
         assertEquals(markedLines(PollingJob.class), lines(v), v.toString());
         String job = PollingJob.class.getName();
-        assertEquals(Set.of(job + ":update", job + ":siblings", job + ":wide", job + ":sparse", job + ":normalise"),
+        assertEquals(Set.of(job + ":update", job + ":siblings", job + ":wide", job + ":sparse", job + ":normalise",
+                job + ":walk"),
                 v.stream().map(x -> x.className() + ":" + x.method()).collect(Collectors.toSet()));
         // The strides read from the guards: (pollMask << 2) | 3 is four intervals, i % 128 two.
         assertTrue(v.stream().anyMatch(x -> x.method().equals("wide") && x.what().contains("every 256 particle steps")),
                 v.toString());
         assertTrue(v.stream().anyMatch(x -> x.method().equals("sparse") && x.what().contains("every 128 particle steps")),
                 v.toString());
+        assertTrue(v.stream().anyMatch(x -> x.method().equals("walk") && x.what().contains("left i ")), v.toString());
     }
 
     @Test

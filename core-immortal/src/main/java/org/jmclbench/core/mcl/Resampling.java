@@ -2,8 +2,9 @@ package org.jmclbench.core.mcl;
 
 /**
  * Resampling of normalised weights into particle indices (ALGORITHM 7.5). The variants taking
- * an {@link AbortSignal} poll it before each block of {@link MotionModel#ABORT_BLOCK} outputs
- * and return false when aborted (the output is then partial and must be discarded).
+ * an {@link AbortSignal} poll it before each block of {@link MotionModel#ABORT_BLOCK} steps (an
+ * output, or systematic's pass over an old particle) and return false when aborted (the output
+ * is then partial and must be discarded).
  */
 public final class Resampling {
     private Resampling() {
@@ -22,20 +23,28 @@ public final class Resampling {
         return systematic(w, n, u, outIndex, abort, MotionModel.ABORT_BLOCK - 1);
     }
 
-    /** Systematic resampling polling the abort signal when {@code (m & pollMask) == 0}; false when aborted. */
+    /**
+     * Systematic resampling polling the abort signal when {@code (step & pollMask) == 0}; false
+     * when aborted. One loop walks both sequences: each step either passes an old particle or
+     * places a new one, at most 2N - 1 steps. As two nested loops (place m; while t > c, pass one),
+     * one placing could pass all N old particles between two polls.
+     */
     public static boolean systematic(double[] w, int n, double u, int[] outIndex, AbortSignal abort, int pollMask) {
         double c = w[0];
         int i = 0;
-        for (int m = 0; m < n; m++) {
-            if ((m & pollMask) == 0 && abort.abortRequested()) {
+        int m = 0;
+        for (int step = 0; m < n; step++) {
+            if ((step & pollMask) == 0 && abort.abortRequested()) {
                 return false;
             }
             double t = u + (double) m / n;
-            while (t > c && i < n - 1) {
+            if (t > c && i < n - 1) {
                 i++;
                 c += w[i];
+            } else {
+                outIndex[m] = i;
+                m++;
             }
-            outIndex[m] = i;
         }
         return true;
     }

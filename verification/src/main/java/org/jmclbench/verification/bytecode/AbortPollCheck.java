@@ -43,7 +43,9 @@ import java.util.function.Predicate;
  * the interval as its stride and {@code (i & ((pollMask << 2) | 3))} four intervals. A guard it
  * cannot evaluate is reported. A particle loop is fine when a poll in its body has a stride of
  * at most the interval, or when it sits in a block loop that polls once per iteration, outside
- * its other inner loops, and steps its counter by at most the interval. Code that runs inside a
+ * its other inner loops, and steps its counter by at most the interval, and the inner loop starts
+ * afresh in each block (a local its exit test reads is set in the block loop outside it; else it
+ * is a walk that may pass every particle in one block). Code that runs inside a
  * particle loop (an inner loop, or a method called from that loop's body) is part of one particle
  * step and is not held to the rule. Every other particle loop is reported at the line of its
  * head: after an abort request it may run more than an interval of particles.
@@ -246,6 +248,11 @@ public final class AbortPollCheck {
             }
             for (Poll p : polls) {
                 if (inside(p.at(), outer) && directlyIn(p.at(), outer, loops)) {
+                    String walked = carriedCounter(m, insns, loop, outer);
+                    if (walked != null) {
+                        return new Gap(UNKNOWN, "loop goes on from where the block loop's previous iteration left " + walked
+                                + " (it is not set again there): one block may walk every particle between two polls");
+                    }
                     long block = counterStep(insns, outer);
                     return new Gap(block, block <= interval ? null
                             : "loop runs a block of " + (block == UNKNOWN ? "an unknown number of" : block)
@@ -255,6 +262,48 @@ public final class AbortPollCheck {
             }
         }
         return new Gap(UNKNOWN, "loop does not poll abortRequested() (terminable job code)");
+    }
+
+    /**
+     * A local that {@code loop}'s exit test reads and its body changes, but that the block loop
+     * {@code outer} does not set outside it: the loop carries on where the block's previous
+     * iteration left it (systematic resampling's walk as an inner while), so its iterations in one
+     * block are not bounded by the block. Its name (or "local N"), else null.
+     */
+    private static String carriedCounter(MethodNode m, AbstractInsnNode[] insns, int[] loop, int[] outer) {
+        Set<Integer> tested = new HashSet<>();
+        for (int i = loop[0]; i <= loop[1]; i++) {
+            if (insns[i] instanceof JumpInsnNode j && j.getOpcode() != Opcodes.GOTO
+                    && !inside(m.instructions.indexOf(j.label), loop)) {
+                for (int k = i - 1; k >= loop[0] && !(insns[k] instanceof JumpInsnNode); k--) {
+                    if (insns[k].getOpcode() == Opcodes.ILOAD) {
+                        tested.add(((VarInsnNode) insns[k]).var);
+                    }
+                }
+            }
+        }
+        for (int v : tested) {
+            if (sets(insns, loop[0], loop[1], v) >= 0 && !setsOutside(insns, outer, loop, v)) {
+                String name = localName(m, v, insns[sets(insns, loop[0], loop[1], v)]);
+                return name != null ? name : "local " + v;
+            }
+        }
+        return null;
+    }
+
+    /** The first instruction in [from, to] that stores into or increments local {@code var}, else -1. */
+    private static int sets(AbstractInsnNode[] insns, int from, int to, int var) {
+        for (int i = from; i <= to; i++) {
+            if (insns[i] instanceof IincInsnNode inc && inc.var == var
+                    || insns[i].getOpcode() == Opcodes.ISTORE && ((VarInsnNode) insns[i]).var == var) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    private static boolean setsOutside(AbstractInsnNode[] insns, int[] outer, int[] loop, int var) {
+        return sets(insns, outer[0], loop[0] - 1, var) >= 0 || sets(insns, loop[1] + 1, outer[1], var) >= 0;
     }
 
     /** True when the instruction is in the loop's body and in no loop nested in it. */

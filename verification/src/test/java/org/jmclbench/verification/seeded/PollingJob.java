@@ -67,6 +67,27 @@ public final class PollingJob {
         return true;
     }
 
+    /**
+     * Systematic resampling as two nested loops, as the mission had it: the walk over the old
+     * particles goes on across placings, so one placing may pass all of them between two polls (seeded).
+     */
+    public boolean walk(double u, int[] out, AbortSignal abort) {
+        double c = w[0];
+        int i = 0;
+        for (int m = 0; m < w.length; m++) {
+            if ((m & 63) == 0 && abort.abortRequested()) {
+                return false;
+            }
+            double t = u + (double) m / w.length;
+            while (t > c && i < w.length - 1) { // VIOLATION
+                i++;
+                c += w[i];
+            }
+            out[m] = i;
+        }
+        return true;
+    }
+
     /** Polls every fourth interval, as a mask of {@code (pollMask << 2) | 3} does (seeded). */
     public boolean wide(AbortSignal abort, int pollMask) {
         for (int i = 0; i < x.length; i++) { // VIOLATION

@@ -89,7 +89,8 @@ class RtsjReplayTest {
         long latency = r.endNs[0] - r.abortFromNs(0);
         assertTrue(latency < JOB_NS / 2, "aborted at a poll, not at the job's end: " + latency + " ns");
         long seen = r.abortSeenFromNs(0);
-        assertTrue(seen >= r.abortFromNs(0) && seen <= r.endNs[0], "the delivery point that threw is recorded: " + seen);
+        assertTrue(seen >= r.abortFromNs(0) && seen <= r.endNs[0], "the delivery point that threw is recorded: seen "
+                + r.abortSeenNs[0] + " ns, abort requested " + r.abortNs[0] + ", job " + r.startNs[0] + " to " + r.endNs[0]);
         assertEquals(-1, r.abortSeenFromNs(1));
     }
 

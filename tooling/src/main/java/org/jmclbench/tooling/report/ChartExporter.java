@@ -10,6 +10,7 @@ import java.awt.Shape;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -29,6 +30,7 @@ import org.jfree.chart.axis.CategoryAxis;
 import org.jfree.chart.axis.LogAxis;
 import org.jfree.chart.axis.NumberAxis;
 import org.jfree.chart.axis.ValueAxis;
+import org.jfree.chart.block.RectangleConstraint;
 import org.jfree.chart.labels.ItemLabelAnchor;
 import org.jfree.chart.labels.ItemLabelPosition;
 import org.jfree.chart.labels.StandardCategoryItemLabelGenerator;
@@ -43,6 +45,7 @@ import org.jfree.chart.renderer.category.CategoryItemRendererState;
 import org.jfree.chart.renderer.category.StackedBarRenderer;
 import org.jfree.chart.renderer.category.StandardBarPainter;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
+import org.jfree.chart.title.LegendTitle;
 import org.jfree.chart.title.TextTitle;
 import org.jfree.chart.ui.Layer;
 import org.jfree.chart.ui.RectangleEdge;
@@ -63,6 +66,8 @@ final class ChartExporter {
 
     static final int WIDTH = 900;
     static final int HEIGHT = 520;
+    /** The legend's height {@link #HEIGHT} has room for (two lines). */
+    static final double LEGEND_ROOM = 44;
     /** Points per series of marks in the files: enough for print, and the export stays fast. */
     static final int EXPORT_POINTS = 300;
 
@@ -105,12 +110,32 @@ final class ChartExporter {
     void write(ChartSpec spec) throws IOException {
         Files.createDirectories(dir);
         JFreeChart chart = render(spec);
-        ChartUtils.saveChartAsPNG(dir.resolve(spec.stem() + ".png").toFile(), chart, WIDTH, HEIGHT);
-        SVGGraphics2D g2 = new SVGGraphics2D(WIDTH, HEIGHT);
+        int height = height(chart);
+        ChartUtils.saveChartAsPNG(dir.resolve(spec.stem() + ".png").toFile(), chart, WIDTH, height);
+        SVGGraphics2D g2 = new SVGGraphics2D(WIDTH, height);
         g2.setDefsKeyPrefix(spec.stem() + "-"); // the default is made from the clock: the same chart must give the same bytes
         g2.setGeomDoubleConverter(ChartExporter::twoDecimals); // a hundredth of a pixel is plenty
-        chart.draw(g2, new Rectangle(0, 0, WIDTH, HEIGHT));
+        chart.draw(g2, new Rectangle(0, 0, WIDTH, height));
         SVGUtils.writeToSVG(dir.resolve(spec.stem() + ".svg").toFile(), g2.getSVGElement());
+    }
+
+    /**
+     * The figure's height: {@link #HEIGHT}, grown by what its legend needs beyond two lines, so
+     * that a legend of many runtimes takes room below the plot instead of squeezing it (twenty
+     * entries left the abort-latency figure half its plot).
+     */
+    static int height(JFreeChart chart) {
+        LegendTitle legend = chart.getLegend();
+        if (legend == null || !legend.isVisible()) {
+            return HEIGHT;
+        }
+        Graphics2D g = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics();
+        try {
+            double needed = legend.arrange(g, new RectangleConstraint(WIDTH, new Range(0, 10 * HEIGHT))).height;
+            return HEIGHT + (int) Math.ceil(Math.max(0, needed - LEGEND_ROOM));
+        } finally {
+            g.dispose();
+        }
     }
 
     static JFreeChart render(ChartSpec spec) {

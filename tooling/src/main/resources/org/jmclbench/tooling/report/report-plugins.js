@@ -103,12 +103,13 @@
     };
   }
   // A title that names the configurations left out runs to hundreds of characters, and Chart.js
-  // squeezes one line into the chart's width until it cannot be read: cut it into lines of words.
+  // squeezes one line into the chart's width until it cannot be read: cut it into lines of words
+  // (of at most `width` characters, 80 unless said; a vertical axis's title has a chart's height).
   var TITLE_LINE = 80;
-  function titleLines(text) {
-    var lines = [], line = '';
+  function titleLines(text, width) {
+    var most = width || TITLE_LINE, lines = [], line = '';
     text.split(' ').forEach(function (w) {
-      if (line && (line + ' ' + w).length > TITLE_LINE) { lines.push(line); line = w; } else { line = line ? line + ' ' + w : w; }
+      if (line && (line + ' ' + w).length > most) { lines.push(line); line = w; } else { line = line ? line + ' ' + w : w; }
     });
     if (line) { lines.push(line); }
     return lines.length > 1 ? lines : text;

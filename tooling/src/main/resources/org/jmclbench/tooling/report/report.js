@@ -457,6 +457,8 @@
         jmclbenchPauses: view.bands, jmclbenchFrame: spec.frame || null },
       scales: !bars ? { x: scale(spec.x, false), y: value } : spec.horizontal ? { y: category, x: value } : { x: category, y: value }
     };
+    // the vertical axis's title runs along the plot's height: a long one ran off the chart's top
+    o.scales.y.title.text = chartText.titleLines(String(o.scales.y.title.text), AXIS_TITLE_LINE);
     if (!bars) { o.parsing = false; }
     if (f && f.legendPerRuntime) { chartText.legendPerRuntime(o.plugins.legend); }
     if (!spec.horizontal) {
@@ -482,6 +484,8 @@
         datasets: view.series.map(function (s) { return dataset(spec, s); }) } };
   }
   var ROWS_IN_A_BOX = 12;
+  /** Characters a line of a vertical axis's title holds in the smallest chart box (about 160 px). */
+  var AXIS_TITLE_LINE = 22;
   function draw(f, spec, view) {
     if (charts[f.id]) { charts[f.id].destroy(); }
     var canvas = document.getElementById('chart-' + f.id);

@@ -234,6 +234,26 @@ class ReportBrowserTest {
     }
 
     @Test
+    void everyVerticalAxisTitleFitsItsAxis() {
+        // "time (ms, mean over repetitions; dashed: release jitter)" ran off the chart's top
+        @SuppressWarnings("unchecked")
+        List<String> tooLong = (List<String>) js().executeScript("var out = [];"
+                + "Object.keys(window.jmclbenchCharts).forEach(function (id) {"
+                + "  var c = window.jmclbenchCharts[id], s = c.scales.y;"
+                + "  if (!s || !s.options.title.display) { return; }"
+                + "  c.ctx.save(); c.ctx.font = Chart.helpers.toFont(s.options.title.font).string;"
+                + "  [].concat(s.options.title.text).forEach(function (line) {"
+                + "    var w = c.ctx.measureText(line).width;"
+                + "    if (w > s.height) { out.push(id + ': \"' + line + '\" ' + Math.round(w) + ' px on an axis '"
+                + "        + Math.round(s.height) + ' px high'); }"
+                + "  });"
+                + "  c.ctx.restore();"
+                + "});"
+                + "return out;");
+        assertEquals(List.of(), tooLong);
+    }
+
+    @Test
     void loadsWithoutErrorOrRequestAndDrawsEveryChart() throws Exception {
         List<LogEntry> severe = driver.manage().logs().get(LogType.BROWSER).getAll().stream()
                 .filter(e -> e.getLevel().intValue() >= Level.WARNING.intValue()).toList();

@@ -326,13 +326,21 @@ final class ChartSpecs {
             String color = Palette.area(n, Palette.AREA_COLORS.containsKey(n) ? 0 : privateIndex++);
             series.add(new Series(n, null, null, color, Style.BAR, null, values, null, null, notes));
         }
-        // from 1 B, or the power of ten under the smallest value (a mean of 72 B in one release of 200 is 0.36 B)
         double smallest = series.stream().flatMap(x -> x.values().stream()).filter(v -> v != null && v > 0)
                 .mapToDouble(Double::doubleValue).min().orElse(1.0);
-        double lo = Math.min(1.0, Math.pow(10, Math.floor(Math.log10(smallest))));
+        double lo = logFloor(smallest);
         Axis y = rows.isEmpty() ? Axis.linear(axis + ": no memory areas reported")
                 : new Axis(axis, Scale.LOG, Format.BYTES, lo, null);
         return s.spec(id, title, Kind.BARS, false, Axis.linear("runtime / engine memory style"), y, categories(rows), series);
+    }
+
+    /**
+     * A log bar axis's lower end: 1, or the power of ten strictly under the smallest value (a mean
+     * of 72 B in one release of 200 is 0.36 B), so that every bar has a height; from 1 B, a bar
+     * of 1 B per release had none and read as no value.
+     */
+    static double logFloor(double smallest) {
+        return Math.min(1.0, Math.pow(10, Math.ceil(Math.log10(smallest)) - 1));
     }
 
     /** Stacked bars across: per runtime, the jobs missed or late per run by primary cause, in the causes' fixed colours. */

@@ -275,6 +275,15 @@ class ChartSpecsTest {
     }
 
     @Test
+    void aMemoryBarOfOneByteStandsAboveTheAxisEnd() {
+        // the quick store's Java SE heaps allocate 1 B per release: from 1 B, their bars had no height
+        assertEquals(0.1, ChartSpecs.logFloor(1.0), 1e-12);
+        assertEquals(0.1, ChartSpecs.logFloor(0.36), 1e-12);
+        assertEquals(1.0, ChartSpecs.logFloor(72), 1e-12);
+        assertEquals(1e-4, ChartSpecs.logFloor(1e-3), 1e-16);
+    }
+
+    @Test
     void memoryPerReleaseDrawsZeroAsZeroAndSaysWhatTheAreasAre() throws Exception {
         Path db = ReportFixtures.write(ReportFixtures.engines(), dir, "engines.db");
         ReportModel m;

@@ -428,7 +428,7 @@ final class ChartExporter {
     private static ValueAxis axis(ChartSpec.Axis a, boolean empty) {
         ValueAxis out;
         if (a.scale() == ChartSpec.Scale.LOG && !empty) {
-            LogAxis log = new ReadableLogAxis(a.label());
+            LogAxis log = new ReadableLogAxis(a.label(), a.format() != ChartSpec.Format.PERCENTILE && a.max() == null);
             log.setStandardTickUnits(NumberAxis.createIntegerTickUnits());
             log.setNumberFormatOverride(switch (a.format()) {
                 case PERCENTILE -> ChartFormats.of(ChartFormats::percentile);

@@ -13,19 +13,67 @@ import org.jfree.chart.axis.TickType;
 import org.jfree.chart.axis.ValueTick;
 import org.jfree.chart.ui.RectangleEdge;
 import org.jfree.chart.ui.TextAnchor;
+import org.jfree.data.Range;
 
 /**
  * A log axis a reader can read values from. JFreeChart labels whole powers of ten only, so an
  * axis that spans a decade or less (response times of 0.6 to 9 ms) had one label, or none. Where
  * the powers of ten give fewer than three labels, 2 and 5 times each power are labelled too; the
- * other minor ticks stay as grid lines.
+ * other minor ticks stay as grid lines. An axis fitted to its data that holds fewer than three of
+ * those values (1 to 2.6 bytes) is carried up to its third.
  */
 final class ReadableLogAxis extends LogAxis {
     private static final long serialVersionUID = 1L;
     private static final int[] STEPS = {1, 2, 5};
+    private final boolean roundUp;
 
-    ReadableLogAxis(String label) {
+    /** @param roundUp whether a range fitted to the data may be carried up (not a percentile axis, which ends at the data) */
+    ReadableLogAxis(String label, boolean roundUp) {
         super(label);
+        this.roundUp = roundUp;
+    }
+
+    @Override
+    protected void autoAdjustRange() {
+        super.autoAdjustRange();
+        if (!roundUp || !isAutoRange()) {
+            return;
+        }
+        double low = Math.max(getRange().getLowerBound(), getSmallestValue());
+        double high = getRange().getUpperBound();
+        for (int i = 0; i < 6 && oneTwoFive(low, high).size() < 3; i++) {
+            high = nextStep(high);
+        }
+        if (high > getRange().getUpperBound()) {
+            setRange(new Range(getRange().getLowerBound(), high), false, false);
+        }
+    }
+
+    /** The smallest of 1, 2 and 5 times a power of ten above {@code v}. */
+    static double nextStep(double v) {
+        int k = (int) Math.floor(Math.log10(v));
+        for (int e = k; ; e++) {
+            for (int m : STEPS) {
+                double c = m * Math.pow(10, e);
+                if (c > v * (1 + 1e-9)) {
+                    return c;
+                }
+            }
+        }
+    }
+
+    /** 1, 2 and 5 times the powers of ten from {@code low} to {@code high}. */
+    private static TreeSet<Double> oneTwoFive(double low, double high) {
+        TreeSet<Double> out = new TreeSet<>();
+        for (int k = (int) Math.floor(Math.log10(low)); k <= (int) Math.ceil(Math.log10(high)); k++) {
+            for (int m : STEPS) {
+                double v = m * Math.pow(10, k);
+                if (v >= low * (1 - 1e-9) && v <= high * (1 + 1e-9)) {
+                    out.add(v);
+                }
+            }
+        }
+        return out;
     }
 
     @Override
@@ -35,17 +83,8 @@ final class ReadableLogAxis extends LogAxis {
         if (ticks.stream().filter(t -> t.getTickType() == TickType.MAJOR).count() >= 3) {
             return ticks;
         }
-        double low = Math.max(getRange().getLowerBound(), getSmallestValue());
-        double high = getRange().getUpperBound();
-        TreeSet<Double> labelled = new TreeSet<>();
-        for (int k = (int) Math.floor(Math.log10(low)); k <= (int) Math.ceil(Math.log10(high)); k++) {
-            for (int m : STEPS) {
-                double v = m * Math.pow(10, k);
-                if (v >= low && v <= high) {
-                    labelled.add(v);
-                }
-            }
-        }
+        TreeSet<Double> labelled = oneTwoFive(Math.max(getRange().getLowerBound(), getSmallestValue()),
+                getRange().getUpperBound());
         List out = new ArrayList();
         for (ValueTick t : ticks) {
             if (t.getTickType() == TickType.MINOR && !near(labelled, t.getValue())) {

@@ -102,6 +102,26 @@
       return axis.format === 'BYTES' ? bytes(v) : String(Number(v.toPrecision(3)));
     };
   }
+  // A log axis fitted to data that hold fewer than three of those values (1 to 2.6 B) is carried
+  // up to its third, as the export's: the largest value for it from (min, max).
+  function threeLabelMax(min, max) {
+    if (!(min > 0) || !(max > min)) { return max; }
+    function count(hi) {
+      var n = 0;
+      for (var k = Math.floor(Math.log10(min)); k <= Math.ceil(Math.log10(hi)); k++) {
+        [1, 2, 5].forEach(function (m) { var v = m * Math.pow(10, k); if (v >= min * (1 - 1e-9) && v <= hi * (1 + 1e-9)) { n++; } });
+      }
+      return n;
+    }
+    function next(v) {
+      for (var e = Math.floor(Math.log10(v)); ; e++) {
+        for (var i = 0; i < 3; i++) { var c = [1, 2, 5][i] * Math.pow(10, e); if (c > v * (1 + 1e-9)) { return c; } }
+      }
+    }
+    var hi = max;
+    for (var i = 0; i < 6 && count(hi) < 3; i++) { hi = next(hi); }
+    return hi;
+  }
   // A title that names the configurations left out runs to hundreds of characters, and Chart.js
   // squeezes one line into the chart's width until it cannot be read: cut it into lines of words
   // (of at most `width` characters, 80 unless said; a vertical axis's title has a chart's height).
@@ -136,7 +156,8 @@
       chart.update();
     };
   }
-  window.jmclbenchText = { bytes: bytes, tickLabel: tickLabel, titleLines: titleLines, legendPerRuntime: legendPerRuntime };
+  window.jmclbenchText = { bytes: bytes, tickLabel: tickLabel, threeLabelMax: threeLabelMax, titleLines: titleLines,
+    legendPerRuntime: legendPerRuntime };
 
   Chart.register(errorBars, frame, bands, zeroMarks);
   Chart.defaults.animation = false;

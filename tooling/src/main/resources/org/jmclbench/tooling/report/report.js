@@ -411,6 +411,9 @@
   function scale(axis, stacked) {
     var s = { type: axis.scale === 'LOG' ? 'logarithmic' : 'linear', stacked: stacked, title: { display: true, text: axis.label } };
     if (axis.scale === 'LOG') { s.ticks = { autoSkip: axis.format === 'NUMBER', maxRotation: 0, callback: chartText.tickLabel(axis) }; }
+    if (axis.scale === 'LOG' && axis.max === undefined && axis.format !== 'PERCENTILE') {
+      s.afterDataLimits = function (sc) { sc.max = chartText.threeLabelMax(sc.min, sc.max); };
+    }
     if (axis.min !== undefined) { s.min = axis.min; }
     if (axis.max !== undefined) { s.max = axis.max; }
     return s;

@@ -41,14 +41,31 @@ class ExportedLogAxisTest {
                         .toList());
     }
 
+    @Test
+    void anAxisFittedToLessThanThreeLabelsIsCarriedUpToItsThird() {
+        // the page's bytes-per-release chart: one bar of 2.6 B, labels 1 B and 2 B
+        assertEquals(List.of("1", "2", "5"), xLabels(new ChartSpec.Axis("x", ChartSpec.Scale.LOG, ChartSpec.Format.NUMBER, null,
+                null), 1.0, 2.6));
+        assertEquals(List.of("5", "10", "20"), xLabels(new ChartSpec.Axis("x", ChartSpec.Scale.LOG, ChartSpec.Format.NUMBER, null,
+                null), 3.0, 4.0));
+        // a percentile axis ends where its data end (its last point is p = 1 - 1/n): not carried up
+        assertEquals(List.of("0%"), xLabels(new ChartSpec.Axis("x", ChartSpec.Scale.LOG, ChartSpec.Format.PERCENTILE, 1.0,
+                null), 1.0, 1.8));
+    }
+
     private static ChartSpec.Axis log(ChartSpec.Format format, double min, double max) {
         return new ChartSpec.Axis("x", ChartSpec.Scale.LOG, format, min, max);
     }
 
     /** The labelled ticks of a line chart's x axis, as exported. */
     private static List<String> xLabels(ChartSpec.Axis x) {
+        return xLabels(x, x.min(), x.max());
+    }
+
+    /** The same, for a line from {@code from} to {@code to}. */
+    private static List<String> xLabels(ChartSpec.Axis x, double from, double to) {
         ChartSpec.Series s = new ChartSpec.Series("a", "c", "javase", "#1f77b4", ChartSpec.Style.line(1),
-                List.of(new double[] {x.min(), 1}, new double[] {x.max(), 2}), null, null, null, null);
+                List.of(new double[] {from, 1}, new double[] {to, 2}), null, null, null, null);
         ChartSpec spec = new ChartSpec("c", "c", new ChartSpec.Setting("d", "skip", null), "t", ChartSpec.Kind.LINES, false,
                 x, ChartSpec.Axis.linear("y"), null, List.of(s), List.of(), null, false);
         JFreeChart chart = ChartExporter.render(spec);

@@ -221,6 +221,14 @@ class ReportBrowserTest {
     }
 
     @Test
+    void aLogAxisFittedToLessThanThreeLabelsIsCarriedUpToItsThird() {
+        // the bytes-per-release chart with one bar of 2.6 B was labelled 1 B and 2 B, and the bar touched its top
+        List<?> max = (List<?>) js().executeScript("return [jmclbenchText.threeLabelMax(1, 2.6),"
+                + " jmclbenchText.threeLabelMax(3, 4), jmclbenchText.threeLabelMax(0.1, 1000)]");
+        assertEquals(List.of(5.0, 20.0, 1000.0), max.stream().map(n -> ((Number) n).doubleValue()).toList());
+    }
+
+    @Test
     void aLongChartTitleIsCutIntoLinesRatherThanSqueezed() {
         // "no response times stored for ..." names every configuration left out; on one line Chart.js
         // squeezed it to the chart's width, letters over letters

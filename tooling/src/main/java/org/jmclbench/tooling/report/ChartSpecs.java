@@ -393,16 +393,18 @@ final class ChartSpecs {
 
     /** The ground truth, one estimate per runtime and the beacons, on the dataset's playground. */
     static ChartSpec trajectory(Scope s) {
+        // both renderers draw the first series on top: the beacons, then the estimates, then the
+        // ground truth under them all (on top, its thick line hid every estimate that tracked it)
         List<Series> series = new ArrayList<>();
-        s.ordered().stream().filter(c -> !c.real.isEmpty()).findFirst().ifPresent(c ->
-                series.add(new Series("real", null, null, "#000000", Style.line(2.5), c.real, null, null, null, null)));
+        ReportModel.Playground pg = s.model().playgrounds.getOrDefault(s.setting().dataset(), ReportModel.Playground.thesis());
+        series.add(new Series("beacons", null, null, "#000000", Style.marks("triangle", 9, "#ffd400"), pg.beacons(), null, null,
+                null, null));
         for (ReportModel.Cell c : s.ordered()) {
             addIfAny(series, new Series(c.config + " estimate", c.config, c.engine, s.color(c.config), Style.line(1.2), c.trajectory,
                     null, null, null, null));
         }
-        ReportModel.Playground pg = s.model().playgrounds.getOrDefault(s.setting().dataset(), ReportModel.Playground.thesis());
-        series.add(new Series("beacons", null, null, "#000000", Style.marks("triangle", 9, "#ffd400"), pg.beacons(), null, null,
-                null, null));
+        s.ordered().stream().filter(c -> !c.real.isEmpty()).findFirst().ifPresent(c ->
+                series.add(new Series("real", null, null, "#000000", Style.line(2.5), c.real, null, null, null, null)));
         double m = 0.15;
         return s.spec("trajectory", "Estimated vs real trajectory", Kind.LINES, false,
                 Axis.linear("x (m)").range(-m, pg.width() + m), Axis.linear("y (m)").range(-m, pg.height() + m), null, series)

@@ -316,8 +316,11 @@ class ChartSpecsTest {
         assertFalse(li.bands().isEmpty());
         assertTrue(li.bands().stream().allMatch(b -> b.config() != null && b.from() <= b.to() && b.color().startsWith("rgba(")));
         ChartSpec trajectory = chart("trajectory", "skip", 400);
-        assertEquals("real", trajectory.series().get(0).name());
-        assertEquals("beacons", trajectory.series().get(trajectory.series().size() - 1).name());
+        // the first series is drawn on top: the beacons, and the ground truth under every estimate
+        assertEquals("beacons", trajectory.series().get(0).name());
+        assertEquals("real", trajectory.series().get(trajectory.series().size() - 1).name());
+        assertTrue(trajectory.series().subList(1, trajectory.series().size() - 1).stream()
+                .allMatch(x -> x.name().endsWith(" estimate")), trajectory.series().toString());
         assertEquals(3.0, trajectory.frame().width());
     }
 

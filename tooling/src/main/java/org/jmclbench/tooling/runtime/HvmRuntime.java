@@ -41,11 +41,19 @@ public final class HvmRuntime {
             return new Availability(false, "no " + script);
         }
         ProcessRunner.Result r = ProcessRunner.run(List.of(script.toString(), "--check"), 60_000);
-        String detail = r.output().trim().replace("build-hvm: ", "");
-        if (r.ok() && !sourceGiven()) {
+        return availability(r.ok(), r.exitCode(), r.output(), sourceGiven());
+    }
+
+    /**
+     * What {@code build-hvm.sh --check} said, for a reader: without HVM_SRC, a tool chain not
+     * cached yet will be cloned from GitHub; a cached one (the pinned commit's) needs nothing.
+     */
+    static Availability availability(boolean ok, int exitCode, String output, boolean sourceGiven) {
+        String detail = output.trim().replace("build-hvm: ", "");
+        if (ok && !sourceGiven && !detail.contains("(cached:")) {
             detail += "; HVM_SRC is not set: the source will be cloned from GitHub (needs network)";
         }
-        return new Availability(r.ok(), detail.isEmpty() ? "exit status " + r.exitCode() : detail);
+        return new Availability(ok, detail.isEmpty() ? "exit status " + exitCode : detail);
     }
 
     /**

@@ -83,7 +83,10 @@ public final class JvmsCommand implements Callable<Integer> {
         }
         System.out.printf("%-16s %-18s %-26s %s%n", "NAME", "VENDOR", "VERSION", "PATH");
         for (Map<String, Object> row : rows) {
-            System.out.printf("%-16s %-18s %-26s %s%n", row.get("name"), row.get("vendor"), row.get("version"), row.get("realPath"));
+            // the HVM is no JVM: its path is the JVM that builds and drives its executable
+            Object path = "hvm".equals(row.get("kind")) ? "the mission compiled to C by hvm/ (driven from " + row.get("realPath")
+                    + ")" : row.get("realPath");
+            System.out.printf("%-16s %-18s %-26s %s%n", row.get("name"), row.get("vendor"), row.get("version"), path);
             if (!noProbe) {
                 System.out.println("    profiles: " + String.join(" ", castList(row.get("profiles"))));
                 @SuppressWarnings("unchecked")
@@ -96,7 +99,7 @@ public final class JvmsCommand implements Callable<Integer> {
         }
         System.out.println();
         System.out.println("Profiles compose with '+', e.g. g1+pretouch+fifo+pinned; the native runtime takes only fifo and pinned,"
-                + " the hvm runtime those and int (its interpreter; compiled to C otherwise).");
+                + " the hvm runtime those, int (its interpreter) and hot (hot methods compiled to C); compiled to C otherwise.");
         return 0;
     }
 

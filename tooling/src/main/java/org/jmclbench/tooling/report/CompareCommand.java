@@ -220,7 +220,7 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     private void printTable(List<StoredRun> ra, List<StoredRun> rb) {
-        String fmt = "%-36s %-30s %-30s %8s  %-20s %s%n";
+        String fmt = "%-38s %-30s %-30s %8s  %-20s %s%n";
         out.printf(Locale.ROOT, fmt, "metric", "A", "B", "B/A", "95% CI of B/A", "separation");
         // one table is one setting, so one policy: missCount is named for the jobs it counts under it
         String policy = ra.isEmpty() ? null : ra.get(0).policy;

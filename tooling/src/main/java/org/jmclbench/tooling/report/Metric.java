@@ -13,8 +13,8 @@ public enum Metric {
     /** Jobs not completed by their deadline (late + skipped + terminated), both tasks: the real-time miss count. */
     DEADLINE_MISSES("deadline misses", "jobs", 1, "/tasks/all/deadlineMisses"),
     /** A task's deadline misses over its released jobs in one run (a ratio in [0, 1]). */
-    MISS_RATIO_PREDICT("predict miss ratio", "ratio", 1, "/tasks/predict/missRatio"),
-    MISS_RATIO_UPDATE("update miss ratio", "ratio", 1, "/tasks/update/missRatio"),
+    MISS_RATIO_PREDICT("predict miss ratio", "fraction of jobs", 1, "/tasks/predict/missRatio"),
+    MISS_RATIO_UPDATE("update miss ratio", "fraction of jobs", 1, "/tasks/update/missRatio"),
     LATENCY_MEAN("task latency mean", "ms", 1e-6, "/tasks/all/taskLatencyNs/mean", "all/taskLatencyNs/mean"),
     LATENCY_P99("task latency p99", "ms", 1e-6, "/tasks/all/taskLatencyNs/p99", "all/taskLatencyNs/p99"),
     LATENCY_MAX("task latency max", "ms", 1e-6, "/tasks/all/taskLatencyNs/max", "all/taskLatencyNs/max"),

@@ -74,6 +74,8 @@ class CompareCommandTest {
             String table = out.substring(out.indexOf("  " + policyJobs[0] + "  400 particles =="));
             assertTrue(line(table, "missCount").startsWith("missCount (" + policyJobs[1] + ") "), line(table, "missCount"));
         }
+        // a miss ratio is a fraction of the task's released jobs, not a "ratio (ratio)"
+        assertTrue(line(out, "predict miss ratio").startsWith("predict miss ratio (fraction of jobs) "), line(out, "predict miss ratio"));
     }
 
     @Test

@@ -89,13 +89,14 @@
     while (Math.abs(v) >= 1000 && i < units.length - 1) { v /= 1000; i++; }
     return String(Number(v.toPrecision(3))) + ' ' + units[i];
   }
+  var ONE_TWO_FIVE = [1, 2, 5];
   // A log axis labels 1, 2 and 5 times each power of ten; percentiles and bytes their powers alone
   // unless that labels fewer than three ticks (an axis of a decade or two), as the export does.
   function tickLabel(axis) {
     function whole(v) { var e = Math.log10(v); return Math.abs(e - Math.round(e)) < 1e-9; }
     return function (v, i, ticks) {
       var exp = Math.log10(v), m = v / Math.pow(10, Math.floor(exp + 1e-9));
-      var oneTwoFive = [1, 2, 5].some(function (k) { return Math.abs(m - k) < 1e-6; });
+      var oneTwoFive = ONE_TWO_FIVE.some(function (k) { return Math.abs(m - k) < 1e-6; });
       var few = ticks.filter(function (t) { return whole(t.value); }).length < 3;
       if (!(axis.format === 'NUMBER' || few ? oneTwoFive : whole(v))) { return null; }
       if (axis.format === 'PERCENTILE') { return v === 1 ? '0%' : (100 - 100 / v).toFixed(Math.max(0, Math.ceil(exp - 1e-9) - 2)) + '%'; }
@@ -109,13 +110,13 @@
     function count(hi) {
       var n = 0;
       for (var k = Math.floor(Math.log10(min)); k <= Math.ceil(Math.log10(hi)); k++) {
-        [1, 2, 5].forEach(function (m) { var v = m * Math.pow(10, k); if (v >= min * (1 - 1e-9) && v <= hi * (1 + 1e-9)) { n++; } });
+        ONE_TWO_FIVE.forEach(function (m) { var v = m * Math.pow(10, k); if (v >= min * (1 - 1e-9) && v <= hi * (1 + 1e-9)) { n++; } });
       }
       return n;
     }
     function next(v) {
       for (var e = Math.floor(Math.log10(v)); ; e++) {
-        for (var i = 0; i < 3; i++) { var c = [1, 2, 5][i] * Math.pow(10, e); if (c > v * (1 + 1e-9)) { return c; } }
+        for (var i = 0; i < 3; i++) { var c = ONE_TWO_FIVE[i] * Math.pow(10, e); if (c > v * (1 + 1e-9)) { return c; } }
       }
     }
     var hi = max;

@@ -283,8 +283,9 @@ public final class AbortPollCheck {
             }
         }
         for (int v : tested) {
-            if (sets(insns, loop[0], loop[1], v) >= 0 && !setsOutside(insns, outer, loop, v)) {
-                String name = localName(m, v, insns[sets(insns, loop[0], loop[1], v)]);
+            int set = sets(insns, loop[0], loop[1], v);
+            if (set >= 0 && !setsOutside(insns, outer, loop, v)) {
+                String name = localName(m, v, insns[set]);
                 return name != null ? name : "local " + v;
             }
         }

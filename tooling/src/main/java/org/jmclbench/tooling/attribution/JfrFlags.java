@@ -21,6 +21,10 @@ public final class JfrFlags {
     public static final String GC_LOG = "gc.log";
     /** Our JFR settings' file name in the run directory. */
     public static final String SETTINGS = "jmclbench.jfc";
+    // the options forJava writes, each followed by a file of the run directory
+    private static final String JFR_OPTION = "-XX:StartFlightRecording=filename=";
+    private static final String GC_LOG_OPTION = "-Xlog:gc,gc+phases,safepoint:file=";
+    private static final String LEGACY_GC_LOG_OPTION = "-Xloggc:";
 
     private JfrFlags() {
     }
@@ -48,16 +52,16 @@ public final class JfrFlags {
             Path recording = dir.resolve(RECORDING);
             writeSettings(settings);
             return new EventCapture(EventCapture.Mode.JFR, List.of(
-                    "-XX:StartFlightRecording=filename=" + recording + ",settings=" + settings + ",dumponexit=true"),
+                    JFR_OPTION + recording + ",settings=" + settings + ",dumponexit=true"),
                     recording);
         }
         Path log = dir.resolve(GC_LOG);
         if (javaFeatureVersion >= 9) {
             return new EventCapture(EventCapture.Mode.UNIFIED_GC_LOG, List.of(
-                    "-Xlog:gc,gc+phases,safepoint:file=" + log + ":uptime,timenanos,level,tags"), log);
+                    GC_LOG_OPTION + log + ":uptime,timenanos,level,tags"), log);
         }
         if (javaFeatureVersion == 8) {
-            return new EventCapture(EventCapture.Mode.LEGACY_GC_LOG, List.of("-verbose:gc", "-Xloggc:" + log,
+            return new EventCapture(EventCapture.Mode.LEGACY_GC_LOG, List.of("-verbose:gc", LEGACY_GC_LOG_OPTION + log,
                     "-XX:+PrintGCDetails", "-XX:+PrintGCDateStamps", "-XX:+PrintGCTimeStamps",
                     "-XX:+PrintGCApplicationStoppedTime"), log);
         }
@@ -74,14 +78,14 @@ public final class JfrFlags {
     }
 
     private static Optional<String> captureName(String a) {
-        if (a.startsWith("-XX:StartFlightRecording=filename=") && a.contains("/" + RECORDING + ",settings=")
+        if (a.startsWith(JFR_OPTION) && a.contains("/" + RECORDING + ",settings=")
                 && a.contains("/" + SETTINGS + ",")) {
             return Optional.of("-XX:StartFlightRecording (jmclbench's recording, for the causes of misses)");
         }
-        if (a.startsWith("-Xlog:gc,gc+phases,safepoint:file=") && a.contains("/" + GC_LOG + ":")) {
+        if (a.startsWith(GC_LOG_OPTION) && a.contains("/" + GC_LOG + ":")) {
             return Optional.of("-Xlog:gc,gc+phases,safepoint (jmclbench's GC log, for the causes of misses)");
         }
-        if (a.startsWith("-Xloggc:") && a.endsWith("/" + GC_LOG)) {
+        if (a.startsWith(LEGACY_GC_LOG_OPTION) && a.endsWith("/" + GC_LOG)) {
             return Optional.of("-Xloggc (jmclbench's GC log, for the causes of misses)");
         }
         return Optional.empty();

@@ -3,9 +3,7 @@ package org.jmclbench.hvm.launcher;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.File;
-import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -32,7 +30,9 @@ class BuildHvmCacheTest {
         String src = System.getenv("HVM_SRC");
         Assumptions.assumeTrue(src != null && Files.isRegularFile(Paths.get(src))
                 && PINNED_TARBALL_SHA256.equals(sha256(Paths.get(src))), "HVM_SRC is not the pinned tarball");
-        Path script = projectHome().resolve("hvm/build-hvm.sh");
+        File home = HvmRunTest.projectHome();
+        Assumptions.assumeTrue(home != null, "no hvm/ folder above the working directory");
+        Path script = home.toPath().resolve("hvm/build-hvm.sh");
         String fromTarball = toolChainFolder(script, src);
         String fromClone = toolChainFolder(script, null);
         assertEquals(fromTarball, fromClone);
@@ -46,7 +46,7 @@ class BuildHvmCacheTest {
             pb.environment().put("HVM_SRC", hvmSrc);
         }
         Process p = pb.start();
-        String out = new String(readAll(p.getInputStream()), StandardCharsets.UTF_8).trim();
+        String out = new String(HvmRunTest.readAll(p), StandardCharsets.UTF_8).trim();
         assertTrue(p.waitFor(60, TimeUnit.SECONDS), "build-hvm.sh --check hung");
         Assumptions.assumeTrue(p.exitValue() == 0, "the tool chain cannot be built here: " + out);
         Matcher m = FOLDER.matcher(out);
@@ -60,23 +60,5 @@ class BuildHvmCacheTest {
             hex.append(String.format("%02x", b));
         }
         return hex.toString();
-    }
-
-    private static byte[] readAll(InputStream in) throws Exception {
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        byte[] buf = new byte[8192];
-        for (int n; (n = in.read(buf)) > 0;) {
-            out.write(buf, 0, n);
-        }
-        return out.toByteArray();
-    }
-
-    private static Path projectHome() {
-        File dir = new File("").getAbsoluteFile();
-        while (dir != null && !new File(dir, "hvm/build-hvm.sh").isFile()) {
-            dir = dir.getParentFile();
-        }
-        Assumptions.assumeTrue(dir != null, "no hvm/ folder above the working directory");
-        return dir.toPath();
     }
 }

@@ -49,7 +49,8 @@ class HvmRunTest {
 
     private final WorkloadCall call = new WorkloadCall();
 
-    private static File projectHome() {
+    /** The project folder above the working directory, or null. */
+    static File projectHome() {
         File dir = new File("").getAbsoluteFile();
         while (dir != null && !new File(dir, "hvm/build-mission.sh").isFile()) {
             dir = dir.getParentFile();
@@ -159,7 +160,8 @@ class HvmRunTest {
         assertFalse(new File(o, "hvm/nocov/400/QueueTest/1/summary.json").exists(), "nothing recorded as valid");
     }
 
-    private static byte[] readAll(Process p) throws IOException {
+    /** Everything a process wrote on its standard output. */
+    static byte[] readAll(Process p) throws IOException {
         ByteArrayOutputStream b = new ByteArrayOutputStream();
         byte[] buf = new byte[4096];
         for (int n; (n = p.getInputStream().read(buf)) > 0;) {

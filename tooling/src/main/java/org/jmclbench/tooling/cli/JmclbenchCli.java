@@ -22,7 +22,7 @@ import picocli.CommandLine.Command;
  * The {@code ./jmclbench} command line. {@code run} (one test) is executed by the workload
  * itself on the runtime under test (see the launcher script); everything else lives here.
  */
-@Command(name = "jmclbench", mixinStandardHelpOptions = true, version = "jmclbench 0.1.0",
+@Command(name = "jmclbench", mixinStandardHelpOptions = true, versionProvider = CodeVersion.class,
         description = "Real-time Java benchmark: Monte-Carlo Localization replayed on its real timeline.",
         footer = {"", "Commands of the launcher itself (each takes --help):",
                 "  run          one test on a JVM (--java PATH; --engine javase, scj or rtsj)",

@@ -51,7 +51,8 @@ public final class EvaluationDocument extends EvaluationSections {
         try (StoredRuns store = StoredRuns.open(db, "--db")) {
             model = ReportModel.build(store, AbortBounds.read(verificationFile), s -> { });
             List<String> starts = store.runs().stream().map(r -> r.startedAt).filter(Objects::nonNull).sorted().toList();
-            period = starts.isEmpty() ? "no runs" : "runs started " + starts.get(0) + " to " + starts.get(starts.size() - 1);
+            period = starts.isEmpty() ? "no runs" : "runs started " + starts.get(0) + " to " + starts.get(starts.size() - 1)
+                    + "; " + model.codeVersions;
         }
         // the document must not depend on when or where it is written: the same data, the same bytes
         model.database = source;

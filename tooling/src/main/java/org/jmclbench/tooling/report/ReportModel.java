@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 import java.util.Properties;
 import java.util.Set;
@@ -35,6 +36,8 @@ public final class ReportModel {
 
     public String schema = "jmclbench-report/1";
     public String generatedAt;
+    /** Which jmclbench code made the runs ({@link #codeVersions(List)}). */
+    public String codeVersions;
     public String database;
     public int runCount;
     public List<String> datasets = new ArrayList<>();
@@ -242,6 +245,7 @@ public final class ReportModel {
         m.database = store.file().getFileName().toString();
         List<StoredRun> runs = store.runs();
         m.runCount = runs.size();
+        m.codeVersions = codeVersions(runs);
         progress.accept("read " + runs.size() + " runs");
 
         Map<String, StoredRuns.Machine> machineRows = store.machines();
@@ -352,6 +356,27 @@ public final class ReportModel {
         }
         CellSeries.read(store, ok, c);
         return c;
+    }
+
+    /**
+     * Which jmclbench code made the runs, oldest first: a store resumed after a change holds runs of
+     * more than one commit, and a reader must see that before comparing them.
+     */
+    static String codeVersions(List<StoredRun> runs) {
+        Map<String, List<StoredRun>> byVersion = runs.stream().collect(Collectors.groupingBy(
+                r -> r.codeVersion == null ? "" : r.codeVersion, LinkedHashMap::new, Collectors.toList()));
+        Comparator<List<StoredRun>> byFirstStart = Comparator.comparing(
+                rs -> rs.stream().map(r -> r.startedAt).filter(Objects::nonNull).min(Comparator.naturalOrder()).orElse(""));
+        if (byVersion.size() == 1) {
+            String only = byVersion.keySet().iterator().next();
+            return only.isEmpty() ? "the jmclbench code that made them is not recorded (the store predates it)"
+                    : "every run by jmclbench commit " + only;
+        }
+        List<String> parts = byVersion.entrySet().stream().sorted(Map.Entry.comparingByValue(byFirstStart))
+                .map(e -> e.getValue().size() + (e.getValue().size() == 1 ? " run" : " runs")
+                        + (e.getKey().isEmpty() ? " by code not recorded (stored before the store kept it)" : " by commit " + e.getKey()))
+                .toList();
+        return "made by more than one version of jmclbench: " + String.join(", ", parts);
     }
 
     /** The kind of a stored run, from its runtime, engine and summary. */

@@ -36,6 +36,7 @@ final class ReportPage {
                 "DB", escapeHtml(model.database),
                 "RUNS", Integer.toString(model.runCount),
                 "GENERATED", escapeHtml(model.generatedAt),
+                "CODE", escapeHtml(model.codeVersions),
                 "DATA", json(model),
                 "CHARTJS", inlineScript(chartJs()),
                 "PLUGINS", inlineScript(resource("report-plugins.js")),

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.UUID;
 
+import org.jmclbench.tooling.cli.CodeVersion;
 import org.jmclbench.tooling.attribution.AttributionData;
 import org.jmclbench.tooling.attribution.RunInstrumentation;
 import org.jmclbench.tooling.runtime.HvmRuntime;
@@ -258,6 +259,6 @@ public final class MatrixRunner {
         return new RunRow(run.runKey(), matrixId, machine.machineId(), run.runtime().name(), run.runtime().version(),
                 run.profile().name(), run.policy(), run.particles(), run.dataset().label(), run.load().label(), run.repetition(), status,
                 exitCode, failure, stderrTail, startedAt, Instant.now().toString(), wallS, runDir, summary, run.seed(), cmdJson,
-                run.engine(), run.memory());
+                run.engine(), run.memory(), CodeVersion.current());
     }
 }

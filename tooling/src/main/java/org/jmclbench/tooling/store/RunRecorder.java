@@ -95,11 +95,11 @@ public final class RunRecorder implements AutoCloseable {
             }
             batch("INSERT INTO runs (run_key, matrix_id, machine_id, runtime, runtime_version, profile, policy, particles,"
                     + " dataset, load, repetition, status, exit_code, failure, stderr_tail, started_at, ended_at, wall_s, run_dir,"
-                    + " summary_json, seed, command_json, engine, memory) VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
+                    + " summary_json, seed, command_json, engine, memory, code_version) VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)",
                     List.of(r), x -> new Object[] {x.runKey(), x.matrixId(), x.machineId(), x.runtime(), x.runtimeVersion(),
                         x.profile(), x.policy(), x.particles(), x.dataset(), x.load(), x.repetition(), x.status(), x.exitCode(),
                         x.failure(), x.stderrTail(), x.startedAt(), x.endedAt(), x.wallS(), x.runDir(), x.summaryJson(), x.seed(),
-                        x.commandJson(), x.engine(), x.memory()});
+                        x.commandJson(), x.engine(), x.memory(), x.codeVersion()});
             batch("INSERT INTO memory_areas (run_key, name, size, peak_bytes, bytes_per_release) VALUES (?,?,?,?,?)",
                     data.areas, a -> new Object[] {key, a.name(), a.size(), a.peakBytes(), a.bytesPerRelease()});
             batch("INSERT INTO metrics (run_key, task, metric, stat, value) VALUES (?,?,?,?,?)",

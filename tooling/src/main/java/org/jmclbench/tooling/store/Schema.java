@@ -2,11 +2,12 @@ package org.jmclbench.tooling.store;
 
 /**
  * The results store's SQL schema (docs/FORMATS.md section 5); {@code PRAGMA user_version} is {@link #VERSION}.
- * Version 2 added the runs' engine and memory style and the {@code memory_areas} table; a version 1
- * store is migrated when opened for writing ({@link #ADDED_RUN_COLUMNS}, {@link #FILL_ENGINES}).
+ * Version 2 added the runs' engine and memory style and the {@code memory_areas} table; version 3 the
+ * jmclbench commit that made each run ({@code code_version}, null in the runs stored before it). An
+ * older store is migrated when opened for writing ({@link #ADDED_RUN_COLUMNS}, {@link #FILL_ENGINES}).
  */
 final class Schema {
-    static final int VERSION = 2;
+    static final int VERSION = 3;
     /** The oldest version this tool reads and migrates. */
     static final int OLDEST = 1;
 
@@ -36,7 +37,8 @@ final class Schema {
           seed INTEGER,
           command_json TEXT,
           engine TEXT,
-          memory TEXT
+          memory TEXT,
+          code_version TEXT
         )""",
         """
         CREATE TABLE IF NOT EXISTS metrics (
@@ -70,7 +72,7 @@ final class Schema {
      * them appended (so that its column order is a new store's).
      */
     static final String[][] ADDED_RUN_COLUMNS = {
-        {"seed", "INTEGER"}, {"command_json", "TEXT"}, {"engine", "TEXT"}, {"memory", "TEXT"},
+        {"seed", "INTEGER"}, {"command_json", "TEXT"}, {"engine", "TEXT"}, {"memory", "TEXT"}, {"code_version", "TEXT"},
     };
 
     /**

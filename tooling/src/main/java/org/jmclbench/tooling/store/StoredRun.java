@@ -29,6 +29,8 @@ public final class StoredRun {
     public String engine;
     /** preallocated | allocating | scoped. */
     public String memory;
+    /** The jmclbench commit that made the run; null in a store before schema 3, or for a build outside git. */
+    public String codeVersion;
     /** The run's memory areas (summary.json memory.areas), in the order the run reported them. */
     public final List<MemoryAreaRow> areas = new ArrayList<>();
     public int repetition;

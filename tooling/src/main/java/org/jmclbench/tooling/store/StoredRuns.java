@@ -58,7 +58,8 @@ public final class StoredRuns implements AutoCloseable {
         boolean engineColumns = hasColumn("runs", "engine") && hasColumn("runs", "memory");
         String sql = "SELECT run_key, matrix_id, machine_id, runtime, runtime_version, profile, policy, particles, dataset, load,"
                 + " repetition, status, exit_code, failure, stderr_tail, started_at, wall_s, run_dir, summary_json,"
-                + (engineColumns ? " engine, memory" : " NULL, NULL") + " FROM runs"
+                + (engineColumns ? " engine, memory" : " NULL, NULL")
+                + (hasColumn("runs", "code_version") ? ", code_version" : ", NULL") + " FROM runs"
                 + " ORDER BY dataset, policy, particles, runtime, profile, 20, 21, repetition, started_at, run_key";
         try (Statement st = conn.createStatement(); ResultSet rs = st.executeQuery(sql)) {
             while (rs.next()) {
@@ -86,6 +87,7 @@ public final class StoredRuns implements AutoCloseable {
                 r.summaryJson = rs.getString(19);
                 r.engine = rs.getString(20);
                 r.memory = rs.getString(21);
+                r.codeVersion = rs.getString(22);
                 if (r.engine == null || r.memory == null) {
                     // a store before engines: what the summary says, else the Java SE engine (native for C)
                     com.fasterxml.jackson.databind.JsonNode p = r.summary().path("parameters");

@@ -396,4 +396,22 @@ class EvaluationDocumentTest {
     void tableCellsFromTheStoreCannotBreakTheTable() {
         assertEquals("a\\|b &lt;script&gt;", EvaluationDocument.escape("a|b <script>"));
     }
+
+    private static StoredRun run(String startedAt, String codeVersion) {
+        StoredRun r = new StoredRun();
+        r.startedAt = startedAt;
+        r.codeVersion = codeVersion;
+        return r;
+    }
+
+    @Test
+    void theHeaderSaysWhichCodeMadeTheRunsOldestFirst() {
+        assertEquals("made by more than one version of jmclbench: 2 runs by code not recorded (stored before the store kept it),"
+                        + " 1 run by commit 1a2b3c4-dirty, 2 runs by commit 9f8e7d6",
+                ReportModel.codeVersions(List.of(run("2026-11-27T11:00Z", "9f8e7d6"), run("2026-11-27T02:00Z", null),
+                        run("2026-11-27T10:00Z", "1a2b3c4-dirty"), run("2026-11-27T12:00Z", "9f8e7d6"), run("2026-11-27T03:00Z", null))));
+        assertEquals("every run by jmclbench commit 9f8e7d6", ReportModel.codeVersions(List.of(run("t", "9f8e7d6"))));
+        assertTrue(doc.contains("the jmclbench code that made them is not recorded (the store predates it)"),
+                "the fixture store is schema 2: " + doc.lines().findFirst().orElse(""));
+    }
 }

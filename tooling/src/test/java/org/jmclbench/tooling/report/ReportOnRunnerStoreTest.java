@@ -12,6 +12,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import org.jmclbench.tooling.Fixtures;
+import org.jmclbench.tooling.cli.CodeVersion;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -39,6 +40,9 @@ class ReportOnRunnerStoreTest {
         Fixtures.CliResult r = Fixtures.cli("report", "--db", db.toString(), "--out", dir.resolve("report").toString());
         assertEquals(0, r.exitCode(), r.out() + r.err());
         String html = Files.readString(dir.resolve("report/index.html"));
+        String code = CodeVersion.current() == null ? "the jmclbench code that made them is not recorded (the store predates it)"
+                : "every run by jmclbench commit " + CodeVersion.current();
+        assertTrue(html.contains(" runs (" + code + "), built "), "the page says which code made its runs");
         Matcher data = Pattern.compile("(?s)id=\"jmclbench-data\">(.*?)</script>").matcher(html);
         assertTrue(data.find());
         JsonNode model = new ObjectMapper().readTree(data.group(1));

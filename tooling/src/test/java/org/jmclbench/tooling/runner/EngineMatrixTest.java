@@ -18,6 +18,7 @@ import java.util.List;
 import java.util.Map;
 
 import org.jmclbench.tooling.Fixtures;
+import org.jmclbench.tooling.cli.CodeVersion;
 import org.jmclbench.tooling.load.LoadScenario;
 import org.jmclbench.tooling.load.LoadSettings;
 import org.jmclbench.tooling.runtime.HvmRuntime;
@@ -146,7 +147,12 @@ class EngineMatrixTest extends FakeJvmHome {
                 }
             }
             try (ResultSet rs = s.executeQuery("PRAGMA user_version")) {
-                assertEquals(2, rs.getInt(1));
+                assertEquals(3, rs.getInt(1));
+            }
+            try (ResultSet rs = s.executeQuery("SELECT DISTINCT code_version FROM runs")) {
+                assertTrue(rs.next());
+                assertEquals(CodeVersion.current(), rs.getString(1), "every run carries the commit that made it");
+                assertFalse(rs.next());
             }
         }
         assertEquals(9, rows.size(), rows.keySet().toString()); // fake-21: 2 engines x 3 styles; native: 3 styles

@@ -75,7 +75,10 @@ class StoreMigrationTest {
         assertEquals(MIGRATED, enginesAndStyles(db));
         try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement()) {
             try (ResultSet rs = s.executeQuery("PRAGMA user_version")) {
-                assertEquals(2, rs.getInt(1));
+                assertEquals(3, rs.getInt(1));
+            }
+            try (ResultSet rs = s.executeQuery("SELECT count(*) FROM runs WHERE code_version IS NULL")) {
+                assertEquals(4, rs.getInt(1), "the column exists; which code made the old runs was not kept");
             }
             try (ResultSet rs = s.executeQuery("SELECT count(*) FROM memory_areas")) {
                 assertEquals(0, rs.getInt(1), "the table exists, empty: old runs reported no areas");

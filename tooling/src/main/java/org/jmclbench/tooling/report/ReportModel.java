@@ -369,14 +369,14 @@ public final class ReportModel {
                 rs -> rs.stream().map(r -> r.startedAt).filter(Objects::nonNull).min(Comparator.naturalOrder()).orElse(""));
         if (byVersion.size() == 1) {
             String only = byVersion.keySet().iterator().next();
-            return only.isEmpty() ? "the jmclbench code that made them is not recorded (the store predates it)"
+            return only.isEmpty() ? "which jmclbench version made them is not recorded: the store predates that"
                     : "every run by jmclbench commit " + only;
         }
         List<String> parts = byVersion.entrySet().stream().sorted(Map.Entry.comparingByValue(byFirstStart))
                 .map(e -> e.getValue().size() + (e.getValue().size() == 1 ? " run" : " runs")
-                        + (e.getKey().isEmpty() ? " by code not recorded (stored before the store kept it)" : " by commit " + e.getKey()))
+                        + (e.getKey().isEmpty() ? " by a version not recorded" : " by commit " + e.getKey()))
                 .toList();
-        return "made by more than one version of jmclbench: " + String.join(", ", parts);
+        return "made by more than one version of jmclbench, oldest first: " + String.join(", ", parts);
     }
 
     /** The kind of a stored run, from its runtime, engine and summary. */

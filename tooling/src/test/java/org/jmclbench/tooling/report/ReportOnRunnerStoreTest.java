@@ -40,7 +40,7 @@ class ReportOnRunnerStoreTest {
         Fixtures.CliResult r = Fixtures.cli("report", "--db", db.toString(), "--out", dir.resolve("report").toString());
         assertEquals(0, r.exitCode(), r.out() + r.err());
         String html = Files.readString(dir.resolve("report/index.html"));
-        String code = CodeVersion.current() == null ? "the jmclbench code that made them is not recorded (the store predates it)"
+        String code = CodeVersion.current() == null ? "which jmclbench version made them is not recorded: the store predates that"
                 : "every run by jmclbench commit " + CodeVersion.current();
         assertTrue(html.contains(" runs (" + code + "), built "), "the page says which code made its runs");
         Matcher data = Pattern.compile("(?s)id=\"jmclbench-data\">(.*?)</script>").matcher(html);

@@ -15,8 +15,14 @@ import java.util.Map;
  *
  * @param holds the largest count that held, or null when the smallest count in the store failed
  * @param fails the smallest count above it that failed, or null when every count held
+ * @param failedRuns null when that count failed by a late job; else how its runs failed (crashed, timed out),
+ *                   which bounds the load by the runtime's limits, not by a deadline
  */
-record BreakdownLoad(Integer holds, Integer fails) {
+record BreakdownLoad(Integer holds, Integer fails, String failedRuns) {
+
+    BreakdownLoad(Integer holds, Integer fails) {
+        this(holds, fails, null);
+    }
 
     /** Per configuration of the queue cells, in the order of {@code configs}. */
     static Map<String, BreakdownLoad> of(List<ReportModel.Cell> queueCells, List<String> configs) {
@@ -29,19 +35,40 @@ record BreakdownLoad(Integer holds, Integer fails) {
             }
             Integer holds = null;
             Integer fails = null;
+            String failedRuns = null;
             for (ReportModel.Cell c : cs) {
                 if (c.unsupported > 0 && c.ok == 0) {
                     continue;
                 }
                 if (!held(c)) {
                     fails = c.particles;
+                    failedRuns = failedRuns(c);
                     break;
                 }
                 holds = c.particles;
             }
-            out.put(config, new BreakdownLoad(holds, fails));
+            out.put(config, new BreakdownLoad(holds, fails, failedRuns));
         }
         return out;
+    }
+
+    /**
+     * How a count's runs failed, when some did and none completed without a late job: {@code 3 of 3
+     * runs failed: the HVM executable failed (exit status 139)}; null when a completed run had a late job.
+     */
+    static String failedRuns(ReportModel.Cell c) {
+        int bad = c.failed + c.timeout;
+        ReportModel.Agg misses = c.metrics.get(Metric.MISS_COUNT.name());
+        if (bad == 0 || (c.ok > 0 && misses != null && misses.max() != null && misses.max() > 0)) {
+            return null;
+        }
+        String first = c.failures.stream().map(ReportModel.Failure::failure).filter(f -> f != null && !f.isBlank())
+                .findFirst().orElse("");
+        // "exit code 1: jmclbench: failure: the HVM executable failed (exit status 139): warning: ..." -> its first clause
+        first = first.replaceFirst("^exit code -?\\d+: ", "").replaceFirst("^jmclbench: (failure: )?", "");
+        int cut = first.indexOf(": ");
+        first = cut > 0 ? first.substring(0, cut) : first;
+        return bad + " of " + (c.ok + bad) + " runs failed" + (first.isBlank() ? "" : ": " + first);
     }
 
     /** Every repetition ran to its end and no job of any was late. */

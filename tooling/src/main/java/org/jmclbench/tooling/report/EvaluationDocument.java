@@ -378,14 +378,16 @@ public final class EvaluationDocument extends EvaluationSections {
         loads.forEach((config, b) -> {
             holds.put(config, b.holds() == null ? 0 : b.holds());
             rows.add(List.of(config, b.holds() == null ? "none" : String.valueOf(b.holds()),
-                    b.fails() == null ? "none in the store" : String.valueOf(b.fails()),
+                    b.fails() == null ? "none in the store"
+                            : b.fails() + (b.failedRuns() == null ? "" : ", where " + b.failedRuns()),
                     c0 == null || c0.holds() == null || b.holds() == null ? ""
                             : (b == c0 ? "" : c0.fails() == null && b.fails() != null ? "<= " : b.fails() == null && c0.fails() != null ? ">= " : "")
                             + num((double) b.holds() / c0.holds(), 2) + "x"));
         });
         line("Table 1: per configuration, under queue (no job is dropped or aborted), the largest particle count at which every "
                 + "job of both tasks completed by its deadline in every repetition, every smaller count in the store holding too, "
-                + "and the smallest count above it at which one did not; the last column divides the held count by the C "
+                + "and the smallest count above it at which one did not (where runs failed there instead, the cell says how: that "
+                + "count is a limit of the runtime, not of its deadlines); the last column divides the held count by the C "
                 + "baseline's (a bound, `<=` or `>=`, where one of the two held at every count in the store). The bracket is as fine "
                 + "as the counts in the store (`./jmclbench capacity` narrows it to 10%).");
         line("");
@@ -394,7 +396,8 @@ public final class EvaluationDocument extends EvaluationSections {
                 () -> charts.write(ChartSpecs.sustained(scope(null, queue), "breakdown-load",
                         "Breakdown load: every job by its deadline (" + data.dataset + ", queue)", holds)));
         findings.add("Breakdown load under queue: " + loads.entrySet().stream()
-                .map(e -> e.getKey() + " " + (e.getValue().holds() == null ? "none" : e.getValue().holds()))
+                .map(e -> e.getKey() + " " + (e.getValue().holds() == null ? "none" : e.getValue().holds())
+                        + (e.getValue().failedRuns() == null ? "" : " (its runs failed above it, at " + e.getValue().fails() + ")"))
                 .collect(Collectors.joining(", ")) + " particles (2.1).");
     }
 

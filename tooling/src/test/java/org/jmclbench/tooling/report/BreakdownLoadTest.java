@@ -42,4 +42,16 @@ class BreakdownLoadTest {
         assertFalse(BreakdownLoad.held(cell("c", 100, 2, 1, 0)));
         assertNull(BreakdownLoad.of(List.of(cell("c", 100, 2, 1, 0)), List.of("c")).get("c").holds());
     }
+
+    @Test
+    void aCountWhoseRunsCrashedSaysSoInsteadOfPassingForALateJob() {
+        ReportModel.Cell crashed = cell("hvm", 800, 0, 3, 0);
+        crashed.metrics.clear();
+        crashed.failures.add(new ReportModel.Failure(1, "failed", 1, "exit code 1: jmclbench: failure: the HVM executable failed"
+                + " (exit status 139): warning: unimplemented function executed", null));
+        assertEquals(new BreakdownLoad(400, 800, "3 of 3 runs failed: the HVM executable failed (exit status 139)"),
+                BreakdownLoad.of(List.of(cell("hvm", 400, 3, 0, 0), crashed), List.of("hvm")).get("hvm"));
+        assertNull(BreakdownLoad.of(List.of(cell("c", 100, 2, 1, 3)), List.of("c")).get("c").failedRuns(),
+                "a completed run had a late job: the deadline bounds the load, whatever the failed one did");
+    }
 }

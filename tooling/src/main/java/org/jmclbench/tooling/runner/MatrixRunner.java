@@ -12,9 +12,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.UUID;
 
-import org.jmclbench.tooling.cli.CodeVersion;
 import org.jmclbench.tooling.attribution.AttributionData;
 import org.jmclbench.tooling.attribution.RunInstrumentation;
+import org.jmclbench.tooling.cli.CodeVersion;
 import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.runtime.LaunchPlan;

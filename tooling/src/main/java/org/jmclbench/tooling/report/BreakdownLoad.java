@@ -20,10 +20,6 @@ import java.util.Map;
  */
 record BreakdownLoad(Integer holds, Integer fails, String failedRuns) {
 
-    BreakdownLoad(Integer holds, Integer fails) {
-        this(holds, fails, null);
-    }
-
     /** Per configuration of the queue cells, in the order of {@code configs}. */
     static Map<String, BreakdownLoad> of(List<ReportModel.Cell> queueCells, List<String> configs) {
         Map<String, BreakdownLoad> out = new LinkedHashMap<>();
@@ -58,8 +54,8 @@ record BreakdownLoad(Integer holds, Integer fails, String failedRuns) {
      */
     static String failedRuns(ReportModel.Cell c) {
         int bad = c.failed + c.timeout;
-        ReportModel.Agg misses = c.metrics.get(Metric.MISS_COUNT.name());
-        if (bad == 0 || (c.ok > 0 && misses != null && misses.max() != null && misses.max() > 0)) {
+        Double late = mostLate(c);
+        if (bad == 0 || (late != null && late > 0)) {
             return null;
         }
         String first = c.failures.stream().map(ReportModel.Failure::failure).filter(f -> f != null && !f.isBlank())
@@ -73,7 +69,13 @@ record BreakdownLoad(Integer holds, Integer fails, String failedRuns) {
 
     /** Every repetition ran to its end and no job of any was late. */
     static boolean held(ReportModel.Cell c) {
+        Double late = mostLate(c);
+        return c.ok > 0 && c.failed == 0 && c.timeout == 0 && late != null && late == 0;
+    }
+
+    /** The most late jobs of a completed repetition (under queue, its missCount); null when none completed. */
+    private static Double mostLate(ReportModel.Cell c) {
         ReportModel.Agg misses = c.metrics.get(Metric.MISS_COUNT.name());
-        return c.ok > 0 && c.failed == 0 && c.timeout == 0 && misses != null && misses.max() != null && misses.max() == 0;
+        return misses == null ? null : misses.max();
     }
 }

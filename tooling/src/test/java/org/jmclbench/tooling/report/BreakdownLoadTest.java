@@ -31,9 +31,9 @@ class BreakdownLoadTest {
                 cell("c", 1600, 3, 0, 1), cell("c", 3200, 3, 0, 0), // held again above a failure: noise, not capacity
                 cell("jvm", 100, 3, 0, 2),
                 cell("all", 100, 3, 0, 0), cell("all", 200, 3, 0, 0)), List.of("c", "jvm", "all", "absent"));
-        assertEquals(new BreakdownLoad(800, 1600), b.get("c"));
-        assertEquals(new BreakdownLoad(null, 100), b.get("jvm"), "late already at the smallest count");
-        assertEquals(new BreakdownLoad(200, null), b.get("all"), "every count held");
+        assertEquals(new BreakdownLoad(800, 1600, null), b.get("c"));
+        assertEquals(new BreakdownLoad(null, 100, null), b.get("jvm"), "late already at the smallest count");
+        assertEquals(new BreakdownLoad(200, null, null), b.get("all"), "every count held");
         assertFalse(b.containsKey("absent"));
     }
 

@@ -9,6 +9,13 @@ cd "$home"
 
 "$home/scripts/install-deps.sh"
 
+# The arguments are Maven's: one Maven cannot parse is bad usage, said now rather than after the
+# native tests have run.
+if [ $# -gt 0 ] && ! mvn_err=$(mvn -q -v "$@" 2>&1 >/dev/null); then
+    echo "test-all: $(printf '%s\n' "$mvn_err" | sed 's/\x1b\[[0-9;]*m//g' | grep -m1 .)" >&2
+    exit 2
+fi
+
 if [ -f native/Makefile ]; then
     echo "== native tests (C, with AddressSanitizer and UndefinedBehaviorSanitizer) =="
     make -s -C native test

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A fake runtime for the runner's tests: answers like a JVM to probes and, as the workload, does
 # what MODE says (ok, crash, hang, garbage, badjson, oom, badexit, wrongrun: a valid folder for
-# another particle count; gate: an ok run that first creates ../started beside its bin/ and waits
+# another particle count; unsupported: a count past the runtime's limits, exit 3; gate: an ok run that first creates ../started beside its bin/ and waits
 # for ../open, so that a test can act while a matrix is surely mid-run). Tests copy it with the
 # placeholders replaced. Never a real measurement.
 MODE=@MODE@
@@ -69,6 +69,8 @@ case $MODE in
         echo 'Exception in thread "main" java.lang.OutOfMemoryError: Java heap space' >&2; exit 1 ;;
     badexit)
         echo "jmclbench: something broke" >&2; exit 1 ;;
+    unsupported)
+        echo "jmclbench: unsupported: --particles $p: the fake VM holds at most 50 particles" >&2; exit 3 ;;
     gate)
         here=$(cd "$(dirname "$0")/.." && pwd)
         touch "$here/started"

@@ -18,14 +18,16 @@ import org.jmclbench.workload.output.RunWriter;
 
 /**
  * Entry point of the workload process: {@code run [options]} reads a dataset, runs one test
- * (ideal or real-time), writes its run folder and exits 0 (success), 2 (bad usage or input)
- * or 1 (a failure of the benchmark itself). A folder left behind by a failure is {@code .partial}.
+ * (ideal or real-time), writes its run folder and exits 0 (success), 2 (bad usage or input),
+ * 3 (a configuration the runtime under test cannot run) or 1 (a failure of the benchmark
+ * itself). A folder left behind by a failure is {@code .partial}.
  */
 public final class WorkloadMain {
     /** Exit codes of docs/FORMATS.md section 2. */
     public static final int OK = 0;
     public static final int FAILURE = 1;
     public static final int BAD_INPUT = 2;
+    public static final int UNSUPPORTED = 3;
 
     private WorkloadMain() {
     }
@@ -56,6 +58,9 @@ public final class WorkloadMain {
         } catch (BadInputException e) {
             err.println("jmclbench: " + e.getMessage());
             return BAD_INPUT;
+        } catch (UnsupportedRunException e) {
+            err.println("jmclbench: unsupported: " + e.getMessage());
+            return UNSUPPORTED;
         } catch (RunFailure e) {
             err.println("jmclbench: failure: " + e.getMessage());
             return FAILURE;
@@ -75,7 +80,7 @@ public final class WorkloadMain {
      * result written and the folder committed.
      */
     private static int execute(RunOptions options, PrintStream out, PrintStream err)
-            throws BadInputException, IOException, RunFailure {
+            throws BadInputException, UnsupportedRunException, IOException, RunFailure {
         Dataset dataset = load(options);
         Engine engine = Engines.of(options);
         engine.validate(options, dataset);

@@ -31,7 +31,8 @@ import picocli.CommandLine.Command;
                 "  verify       Java PathFinder and bytecode checks (SCJ mission, rtsj engine)",
                 "  abort-bound  the static bound on abort latency, beside a run's measured one",
                 "  test         every test of the project",
-                "Exit codes: 0 success, 2 bad usage or bad input, 1 a failure of the benchmark."},
+                "Exit codes: 0 success, 2 bad usage or bad input, 1 a failure of the benchmark;",
+                "a run of one test exits 3 when the runtime under test cannot run it (the HVM's limits)."},
         subcommands = {GenerateCommand.class, QuickCommand.class, MatrixCommand.class, CapacityCommand.class,
                 JvmsCommand.class, JvmCommand.class, DoctorCommand.class, ReportCommand.class, EvaluateCommand.class,
                 CompareCommand.class, MergeCommand.class, ExplainCommand.class})

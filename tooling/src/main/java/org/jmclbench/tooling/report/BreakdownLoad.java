@@ -15,8 +15,9 @@ import java.util.Map;
  *
  * @param holds the largest count that held, or null when the smallest count in the store failed
  * @param fails the smallest count above it that failed, or null when every count held
- * @param failedRuns null when that count failed by a late job; else how its runs failed (crashed, timed out),
- *                   which bounds the load by the runtime's limits, not by a deadline
+ * @param failedRuns null when that count failed by a late job; else how its runs failed (crashed, timed out)
+ *                   or why the runtime cannot run it (unsupported, above a count that held), which bounds the
+ *                   load by the runtime's limits, not by a deadline
  */
 record BreakdownLoad(Integer holds, Integer fails, String failedRuns) {
 
@@ -33,8 +34,8 @@ record BreakdownLoad(Integer holds, Integer fails, String failedRuns) {
             Integer fails = null;
             String failedRuns = null;
             for (ReportModel.Cell c : cs) {
-                if (c.unsupported > 0 && c.ok == 0) {
-                    continue;
+                if (c.unsupported > 0 && c.ok == 0 && holds == null) {
+                    continue; // nothing of this configuration has run yet (an engine's memory style it lacks)
                 }
                 if (!held(c)) {
                     fails = c.particles;
@@ -50,21 +51,32 @@ record BreakdownLoad(Integer holds, Integer fails, String failedRuns) {
 
     /**
      * How a count's runs failed, when some did and none completed without a late job: {@code 3 of 3
-     * runs failed: the HVM executable failed (exit status 139)}; null when a completed run had a late job.
+     * runs failed: the HVM executable failed (exit status 139)}, or {@code the runtime cannot run it:
+     * the HVM holds at most 65,535 particles (...)} when every run was unsupported; null when a
+     * completed run had a late job.
      */
     static String failedRuns(ReportModel.Cell c) {
+        if (c.unsupported > 0 && c.ok + c.failed + c.timeout == 0) {
+            // "--particles 66399: the HVM holds at most 65,535 particles (...)" -> what follows the option
+            String why = firstFailure(c).replaceFirst("^--particles \\d+: ", "");
+            return "the runtime cannot run it" + (why.isBlank() ? "" : ": " + why);
+        }
         int bad = c.failed + c.timeout;
         Double late = mostLate(c);
         if (bad == 0 || (late != null && late > 0)) {
             return null;
         }
-        String first = c.failures.stream().map(ReportModel.Failure::failure).filter(f -> f != null && !f.isBlank())
-                .findFirst().orElse("");
+        String first = firstFailure(c);
         // "exit code 1: jmclbench: failure: the HVM executable failed (exit status 139): warning: ..." -> its first clause
         first = first.replaceFirst("^exit code -?\\d+: ", "").replaceFirst("^jmclbench: (failure: )?", "");
         int cut = first.indexOf(": ");
         first = cut > 0 ? first.substring(0, cut) : first;
         return bad + " of " + (c.ok + bad) + " runs failed" + (first.isBlank() ? "" : ": " + first);
+    }
+
+    private static String firstFailure(ReportModel.Cell c) {
+        return c.failures.stream().map(ReportModel.Failure::failure).filter(f -> f != null && !f.isBlank())
+                .findFirst().orElse("");
     }
 
     /** Every repetition ran to its end and no job of any was late. */

@@ -386,9 +386,9 @@ public final class EvaluationDocument extends EvaluationSections {
         });
         line("Table 1: per configuration, under queue (no job is dropped or aborted), the largest particle count at which every "
                 + "job of both tasks completed by its deadline in every repetition, every smaller count in the store holding too, "
-                + "and the smallest count above it at which one did not (where runs failed there instead, the cell says how: that "
-                + "count is a limit of the runtime, not of its deadlines); the last column divides the held count by the C "
-                + "baseline's (a bound, `<=` or `>=`, where one of the two held at every count in the store). The bracket is as fine "
+                + "and the smallest count above it at which one did not (where runs failed there instead, or the runtime cannot run "
+                + "that count, the cell says so: that count is a limit of the runtime, not of its deadlines); the last column "
+                + "divides the held count by the C baseline's (a bound, `<=` or `>=`, where one of the two held at every count in the store). The bracket is as fine "
                 + "as the counts in the store (`./jmclbench capacity` narrows it to 10%).");
         line("");
         table(List.of("configuration", "holds at", "fails at", "vs C"), rows);
@@ -397,7 +397,7 @@ public final class EvaluationDocument extends EvaluationSections {
                         "Breakdown load: every job by its deadline (" + data.dataset + ", queue)", holds)));
         findings.add("Breakdown load under queue: " + loads.entrySet().stream()
                 .map(e -> e.getKey() + " " + (e.getValue().holds() == null ? "none" : e.getValue().holds())
-                        + (e.getValue().failedRuns() == null ? "" : " (its runs failed above it, at " + e.getValue().fails() + ")"))
+                        + (e.getValue().failedRuns() == null ? "" : " (above it, at " + e.getValue().fails() + ", a limit of the runtime, not a deadline)"))
                 .collect(Collectors.joining(", ")) + " particles (2.1).");
     }
 

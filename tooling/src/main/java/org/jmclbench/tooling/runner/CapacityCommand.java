@@ -120,7 +120,7 @@ public final class CapacityCommand implements Callable<Integer> {
                     boolean held = held(all.db(), keys);
                     search.record(n, held);
                     out.printf(Locale.ROOT, "capacity: %s at %d particles: %s%n", c.label(), n,
-                            held ? "every job by its deadline" : "a job late, dropped or failed");
+                            held ? "every job by its deadline" : "a job late or dropped, or a run failed or unsupported");
                 }
             }
         }

@@ -21,12 +21,15 @@ import com.fasterxml.jackson.databind.ObjectMapper;
  * Runs one workload process, JMH-fork style: the host builds the whole command line, the child
  * gets its configuration from arguments only, its stdout and stderr go to files in the run folder,
  * a timeout kills the whole process tree, and a run counts as ok only when it exited 0 and left a
- * complete folder with a valid summary.json. Anything else is that run's recorded failure.
+ * complete folder with a valid summary.json. Exit 3 is the workload saying that the runtime under
+ * test cannot run the configuration (unsupported); anything else is that run's recorded failure.
  */
 public final class ForkedRun {
 
     /** The summary schema this runner understands (docs/FORMATS.md section 4). */
     public static final String SUMMARY_SCHEMA = "jmclbench-run/1";
+    /** The workload's exit code for a configuration the runtime under test cannot run (docs/FORMATS.md section 2). */
+    static final int UNSUPPORTED_EXIT = 3;
     static final int STDERR_TAIL_LINES = 20;
     static final int STDERR_TAIL_CHARS = 4000;
 
@@ -92,6 +95,11 @@ public final class ForkedRun {
                     "timed out after %.0f s: process tree killed", timeoutS), tail, wall, null, null, null);
         }
         int code = p.exitValue();
+        if (code == UNSUPPORTED_EXIT) {
+            // "jmclbench: unsupported: --particles 65536: the HVM holds at most ..." -> what follows "unsupported: "
+            String why = lastLine(tail).replaceFirst("^jmclbench: unsupported: ", "");
+            return new ForkOutcome(RunRow.UNSUPPORTED, code, why, tail, wall, null, null, null);
+        }
         if (code != 0) {
             return new ForkOutcome(RunRow.FAILED, code, describeExit(code, tail), tail, wall, null, null, null);
         }

@@ -54,4 +54,19 @@ class BreakdownLoadTest {
         assertNull(BreakdownLoad.of(List.of(cell("c", 100, 2, 1, 3)), List.of("c")).get("c").failedRuns(),
                 "a completed run had a late job: the deadline bounds the load, whatever the failed one did");
     }
+
+    @Test
+    void aCountTheRuntimeCannotRunAboveOneThatHeldIsItsLimitNamed() {
+        ReportModel.Cell past = cell("hvm", 66399, 0, 0, 0);
+        past.metrics.clear();
+        past.unsupported = 3;
+        past.runs = 3;
+        past.failures.add(new ReportModel.Failure(1, "unsupported", 3, "--particles 66399: the HVM holds at most 65,535"
+                + " particles (its arrays hold at most 65,535 elements; docs/HVM.md)", null));
+        assertEquals(new BreakdownLoad(60888, 66399, "the runtime cannot run it: the HVM holds at most 65,535 particles"
+                + " (its arrays hold at most 65,535 elements; docs/HVM.md)"),
+                BreakdownLoad.of(List.of(cell("hvm", 60888, 3, 0, 0), past), List.of("hvm")).get("hvm"));
+        assertEquals(new BreakdownLoad(null, null, null), BreakdownLoad.of(List.of(past), List.of("hvm")).get("hvm"),
+                "a configuration none of whose counts ran has no breakdown load to bound");
+    }
 }

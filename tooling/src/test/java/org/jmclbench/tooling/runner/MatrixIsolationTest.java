@@ -21,7 +21,10 @@ import org.jmclbench.tooling.store.RunFolderIngest;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** Each run is a separate process: a crash, hang, garbage or OOM is that run's recorded failure and the matrix goes on. */
+/**
+ * Each run is a separate process: a crash, hang, garbage or OOM is that run's recorded failure, a
+ * count the runtime says it cannot run is recorded unsupported with its reason, and the matrix goes on.
+ */
 class MatrixIsolationTest {
 
     @TempDir
@@ -30,7 +33,7 @@ class MatrixIsolationTest {
     @Test
     void everyKindOfFailureIsRecordedAndTheMatrixGoesOn() throws Exception {
         Fixtures.home(dir);
-        String[] modes = {"ok", "crash", "hang", "garbage", "badjson", "oom", "badexit", "wrongrun"};
+        String[] modes = {"ok", "crash", "hang", "garbage", "badjson", "oom", "badexit", "wrongrun", "unsupported"};
         java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of("matrix", "--datasets", "tiny",
                 "--particles", "100", "--policies", "skip", "--timeout", "15", // generous: the ok runs must not time out on a loaded machine
                 "--db", dir.resolve("r/results.db").toString()));
@@ -58,7 +61,7 @@ class MatrixIsolationTest {
                 }
             }
         }
-        assertEquals(8, statusByRuntime.size(), statusByRuntime.toString());
+        assertEquals(9, statusByRuntime.size(), statusByRuntime.toString());
         assertEquals("ok", statusByRuntime.get("fake-21"));
         assertEquals("failed", statusByRuntime.get("fake-22"));
         assertTrue(failureByRuntime.get("fake-22").contains("SIGSEGV"), failureByRuntime.get("fake-22"));
@@ -73,7 +76,9 @@ class MatrixIsolationTest {
         assertEquals("failed", statusByRuntime.get("fake-28"));
         assertTrue(failureByRuntime.get("fake-28").contains("describes another run (particles 101, asked 100)"),
                 failureByRuntime.get("fake-28"));
-        assertTrue(r.out().contains("1 ok, 6 failed, 1 timed out"), r.out());
+        assertEquals("unsupported", statusByRuntime.get("fake-29"));
+        assertEquals("--particles 100: the fake VM holds at most 50 particles", failureByRuntime.get("fake-29"));
+        assertTrue(r.out().contains("1 ok, 6 failed, 1 timed out, 1 unsupported"), r.out());
 
         // the hung run's whole process tree was killed
         String mark = Fixtures.hangMark(dir.resolve("hang"));
@@ -112,7 +117,7 @@ class MatrixIsolationTest {
         // rerunning resumes: nothing left to run
         Fixtures.CliResult again = Fixtures.cli(args.toArray(String[]::new));
         assertEquals(0, again.exitCode());
-        assertTrue(again.out().contains("8 already in"), again.out());
+        assertTrue(again.out().contains("9 already in"), again.out());
         assertTrue(again.out().contains("0 ran"), again.out());
     }
 }

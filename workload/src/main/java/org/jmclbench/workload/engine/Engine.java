@@ -5,6 +5,7 @@ import java.io.IOException;
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.UnsupportedRunException;
 import org.jmclbench.workload.data.Dataset;
 
 /**
@@ -28,9 +29,10 @@ public interface Engine {
 
     /**
      * Rejects the dataset, or options that depend on it, before anything is written or started
-     * (the SCJ mission's periodic odometry). Nothing to check by default.
+     * (the SCJ mission's periodic odometry), or, with an {@link UnsupportedRunException}, a
+     * configuration beyond the runtime under test's limits. Nothing to check by default.
      */
-    default void validate(RunOptions options, Dataset dataset) throws BadInputException {
+    default void validate(RunOptions options, Dataset dataset) throws BadInputException, UnsupportedRunException {
     }
 
     /**

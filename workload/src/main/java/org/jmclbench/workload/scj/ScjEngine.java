@@ -6,6 +6,7 @@ import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.UnsupportedRunException;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.engine.Engine;
 import org.jmclbench.workload.engine.EngineInput;
@@ -30,7 +31,7 @@ public class ScjEngine implements Engine {
 
     /** A PeriodicEventHandler needs periodic odometry; the area sizes must fit the mission's areas. */
     @Override
-    public void validate(RunOptions options, Dataset dataset) throws BadInputException {
+    public void validate(RunOptions options, Dataset dataset) throws BadInputException, UnsupportedRunException {
         ScjRun.checkPeriodic(dataset);
         try {
             ScjRun.configuration(options, options.mclConfig(), options.timeScale, true);

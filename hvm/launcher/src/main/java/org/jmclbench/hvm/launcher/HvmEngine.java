@@ -2,7 +2,11 @@ package org.jmclbench.hvm.launcher;
 
 import java.io.IOException;
 
+import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.RunFailure;
+import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.UnsupportedRunException;
+import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
 import org.jmclbench.workload.scj.ScjEngine;
@@ -16,7 +20,6 @@ public final class HvmEngine extends ScjEngine {
     public HvmEngine() {
     }
 
-
     @Override
     public String name() {
         return "hvm";
@@ -25,6 +28,16 @@ public final class HvmEngine extends ScjEngine {
     @Override
     public String runtimeName(String jvmName) {
         return "hvm"; // a VM of its own, not the JVM that drives it
+    }
+
+    /** The scj engine's checks, then the HVM's limits ({@link HvmLimits}): a run past them is unsupported. */
+    @Override
+    public void validate(RunOptions options, Dataset dataset) throws BadInputException, UnsupportedRunException {
+        super.validate(options, dataset);
+        String beyond = HvmLimits.beyond(options.mclConfig(), dataset.timeline().size());
+        if (beyond != null) {
+            throw new UnsupportedRunException(beyond);
+        }
     }
 
     @Override

@@ -104,6 +104,21 @@ class HvmFailureTest {
     }
 
     @Test
+    void aCountPastTheHvmsArraysIsUnsupportedBeforeAnythingIsBuiltOrStarted() throws Exception {
+        homeWithExecutable("touch '" + tmp + "/started'");
+        Path build = tmp.toPath().resolve("home/hvm/build-mission.sh");
+        write(build, "#!/usr/bin/env bash\ntouch '" + tmp + "/built'\nexit 1\n");
+        for (String[] past : new String[][] {{"-p", "65536"}, {"-p", "8192", "--memory", "scoped"}}) {
+            assertEquals(WorkloadMain.UNSUPPORTED, run(past), err());
+            assertTrue(err().startsWith("jmclbench: unsupported: --particles " + past[1] + ": the HVM "), err());
+            assertEquals(1, err().trim().split("\n").length, err());
+        }
+        assertFalse(new File(tmp, "built").exists(), "refused before the executable is built");
+        assertFalse(new File(tmp, "started").exists());
+        assertFalse(new File(tmp, "out").exists(), "no run folder begun");
+    }
+
+    @Test
     void aFullMemoryAreaIsNamedAndTheRunsFailure() throws Exception {
         // icecap's words when an allocation does not fit: the area's size and the request, in hex (2000 = 0x7d0)
         homeWithExecutable("echo 'out of memory: 0x7d0, 0x1f40'\nexit 1");

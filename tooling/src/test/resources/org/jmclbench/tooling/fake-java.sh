@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A fake runtime for the runner's tests: answers like a JVM to probes and, as the workload, does
 # what MODE says (ok, crash, hang, garbage, badjson, oom, badexit, wrongrun: a valid folder for
-# another particle count; unsupported: a count past the runtime's limits, exit 3; gate: an ok run that first creates ../started beside its bin/ and waits
+# another particle count; unsupported: a count past the runtime's limits, exit 3; limit-at-N:
+# ok up to N particles, unsupported above; gate: an ok run that first creates ../started beside its bin/ and waits
 # for ../open, so that a test can act while a matrix is surely mid-run). Tests copy it with the
 # placeholders replaced. Never a real measurement.
 MODE=@MODE@
@@ -71,6 +72,10 @@ case $MODE in
         echo "jmclbench: something broke" >&2; exit 1 ;;
     unsupported)
         echo "jmclbench: unsupported: --particles $p: the fake VM holds at most 50 particles" >&2; exit 3 ;;
+    limit-at-*)
+        if [ "$p" -gt "${MODE#limit-at-}" ]; then
+            echo "jmclbench: unsupported: --particles $p: the fake VM holds at most ${MODE#limit-at-} particles" >&2; exit 3
+        fi ;;
     gate)
         here=$(cd "$(dirname "$0")/.." && pwd)
         touch "$here/started"
@@ -120,6 +125,7 @@ else
     fi
     case $MODE in
         breaks-at-*) if [ "$p" -ge "${MODE#breaks-at-}" ]; then dm=1; else dm=0; fi; ALLDM="\"deadlineMisses\": $dm, " ;;
+        limit-at-*) ALLDM="\"deadlineMisses\": 0, " ;;
         *) ALLDM="" ;;
     esac
     S='{"count": 9, "mean": 2000000.0, "stdev": 1000.0, "min": 100000, "p50": 2000000, "p90": 2100000, "p99": 2200000, "p999": 2200000, "max": 2200000}'

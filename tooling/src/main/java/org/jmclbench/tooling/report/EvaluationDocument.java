@@ -47,16 +47,12 @@ public final class EvaluationDocument extends EvaluationSections {
     public static void write(Path db, String source, Path document, Path figures, List<String> cuts, Path verificationFile)
             throws IOException, BadUsageException {
         ReportModel model;
-        String period;
         try (StoredRuns store = StoredRuns.open(db, "--db")) {
             model = ReportModel.build(store, AbortBounds.read(verificationFile), s -> { });
-            List<String> starts = store.runs().stream().map(r -> r.startedAt).filter(Objects::nonNull).sorted().toList();
-            period = starts.isEmpty() ? "no runs" : "runs started " + starts.get(0) + " to " + starts.get(starts.size() - 1)
-                    + "; " + model.codeVersions;
         }
         // the document must not depend on when or where it is written: the same data, the same bytes
         model.database = source;
-        model.generatedAt = period;
+        model.generatedAt = model.runPeriod + "; " + model.codeVersions;
         removeOldFigures(figures);
         EvaluationDocument d = new EvaluationDocument(model, document, figures, cuts, verificationFile);
         d.build();

@@ -40,6 +40,9 @@ public final class ReportModel {
     public String codeVersions;
     public String database;
     public int runCount;
+    /** When the runs were made: {@code runs started <first> to <last>}, or {@code no runs} (for the evaluation's header). */
+    @JsonIgnore
+    public String runPeriod;
     public List<String> datasets = new ArrayList<>();
     public List<String> policies = new ArrayList<>();
     /** Per policy of the store, what its missCount counts ({@link Metric#missCountJobs}), for the page's words. */
@@ -246,6 +249,8 @@ public final class ReportModel {
         List<StoredRun> runs = store.runs();
         m.runCount = runs.size();
         m.codeVersions = codeVersions(runs);
+        List<String> starts = runs.stream().map(r -> r.startedAt).filter(java.util.Objects::nonNull).sorted().toList();
+        m.runPeriod = starts.isEmpty() ? "no runs" : "runs started " + starts.get(0) + " to " + starts.get(starts.size() - 1);
         progress.accept("read " + runs.size() + " runs");
 
         Map<String, StoredRuns.Machine> machineRows = store.machines();

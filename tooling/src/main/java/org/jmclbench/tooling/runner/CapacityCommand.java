@@ -16,6 +16,7 @@ import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.store.MachineInfo;
 import org.jmclbench.tooling.store.RunRecorder;
+import org.jmclbench.tooling.store.RunRow;
 import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
 
@@ -117,21 +118,38 @@ public final class CapacityCommand implements Callable<Integer> {
                     Set<String> keys = mine.stream().map(PlannedRun::runKey).collect(Collectors.toSet());
                     runner.run(runner.remaining(false).stream().filter(r -> keys.contains(r.runKey())).toList(),
                             Progress.forConsole(out));
-                    boolean held = held(all.db(), keys);
-                    search.record(n, held);
+                    String notHeld = notHeld(all.db(), keys);
+                    search.record(n, notHeld == null);
                     out.printf(Locale.ROOT, "capacity: %s at %d particles: %s%n", c.label(), n,
-                            held ? "every job by its deadline" : "a job late or dropped, or a run failed or unsupported");
+                            notHeld == null ? "every job by its deadline" : notHeld);
                 }
             }
         }
         return searches;
     }
 
-    /** Whether every run of these keys completed and no job of it missed its deadline. */
-    static boolean held(Path db, Set<String> runKeys) {
+    /**
+     * Why the runs of these keys do not hold the load, in a few words (the runtime cannot run the
+     * count, runs failed, a job missed its deadline); null when every run completed and no job of
+     * any missed its deadline.
+     */
+    static String notHeld(Path db, Set<String> runKeys) {
         try (StoredRuns stored = StoredRuns.open(db, "--db")) {
             List<StoredRun> runs = stored.runs().stream().filter(r -> runKeys.contains(r.runKey)).toList();
-            return runs.size() == runKeys.size() && runs.stream().allMatch(r -> r.ok() && deadlineMisses(r.summary()) == 0);
+            String of = " of " + runKeys.size() + " runs";
+            if (runs.size() < runKeys.size()) {
+                return (runKeys.size() - runs.size()) + of + " not in the store";
+            }
+            StoredRun unsupported = runs.stream().filter(r -> RunRow.UNSUPPORTED.equals(r.status)).findFirst().orElse(null);
+            if (unsupported != null) {
+                return "unsupported: " + unsupported.failure;
+            }
+            long failed = runs.stream().filter(r -> !r.ok()).count();
+            if (failed > 0) {
+                return failed + of + " failed or timed out";
+            }
+            long missed = runs.stream().filter(r -> deadlineMisses(r.summary()) > 0).count();
+            return missed == 0 ? null : "a job missed its deadline in " + missed + of;
         }
     }
 

@@ -59,6 +59,23 @@ class CapacityCommandTest {
     }
 
     @Test
+    void aCountTheRuntimeCannotRunBoundsTheSearchAndEachProbeSaysWhy() throws Exception {
+        Fixtures.home(dir);
+        String jvm = Fixtures.fakeJava(dir, "a", "limit-at-1000", 0, null, 17).toString();
+        Fixtures.CliResult r = Fixtures.cli("capacity", "--java", jvm, "--datasets", "tiny", "--repeat", "1", "--from", "100",
+                "--max", "12800", "--db", dir.resolve("results/results.db").toString());
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+        assertTrue(r.out().contains(" at 800 particles: every job by its deadline\n"), r.out());
+        assertTrue(r.out().contains(" at 1600 particles: unsupported: --particles 1600: the fake VM holds at most 1000 particles\n"),
+                r.out());
+        // 1600, 1131 and 1037 are past the limit, 951 is not: [951, 1037]
+        Matcher a = row("fake-17").matcher(r.out());
+        assertTrue(a.find(), r.out());
+        assertEquals("951", a.group(1));
+        assertEquals("1037", a.group(2));
+    }
+
+    @Test
     void aRatioToALoadThatHeldToTheMaxIsABound() {
         CapacitySearch c = new CapacitySearch(100, 200);
         c.record(100, true);

@@ -67,7 +67,12 @@ public final class WorkloadMain {
         } catch (IOException e) {
             err.println("jmclbench: I/O failure: " + e);
             return FAILURE;
-        } catch (RuntimeException | OutOfMemoryError | StackOverflowError e) {
+        } catch (OutOfMemoryError e) {
+            // too little heap for the options, not a bug to trace: say what to change, in one line
+            err.println("jmclbench: failure: out of memory (" + e.getMessage() + "): this JVM's heap is at most "
+                    + Runtime.getRuntime().maxMemory() / (1024 * 1024) + " MiB (set it with -Xmx; fewer particles need less)");
+            return FAILURE;
+        } catch (RuntimeException | StackOverflowError e) {
             err.println("jmclbench: failure: " + e);
             e.printStackTrace(err);
             return FAILURE;

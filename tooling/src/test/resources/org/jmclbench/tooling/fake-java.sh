@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # A fake runtime for the runner's tests: answers like a JVM to probes and, as the workload, does
 # what MODE says (ok, crash, hang, garbage, badjson, oom, badexit, wrongrun: a valid folder for
-# another particle count; unsupported: a count past the runtime's limits, exit 3; limit-at-N:
-# ok up to N particles, unsupported above; gate: an ok run that first creates ../started beside its bin/ and waits
-# for ../open, so that a test can act while a matrix is surely mid-run). Tests copy it with the
-# placeholders replaced. Never a real measurement.
+# another particle count; unsupported: a count past the runtime's limits, exit 3; limit-at-N: ok
+# up to N particles, unsupported above; gate: an ok run that first creates ../started beside its
+# bin/ and waits for ../open, so that a test can act while a matrix is surely mid-run). Tests copy
+# it with the placeholders replaced. Never a real measurement.
 MODE=@MODE@
 SLEEP=@SLEEP@
 REJECT='@REJECT@'

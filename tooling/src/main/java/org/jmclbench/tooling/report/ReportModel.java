@@ -249,7 +249,7 @@ public final class ReportModel {
         List<StoredRun> runs = store.runs();
         m.runCount = runs.size();
         m.codeVersions = codeVersions(runs);
-        List<String> starts = runs.stream().map(r -> r.startedAt).filter(java.util.Objects::nonNull).sorted().toList();
+        List<String> starts = runs.stream().map(r -> r.startedAt).filter(Objects::nonNull).sorted().toList();
         m.runPeriod = starts.isEmpty() ? "no runs" : "runs started " + starts.get(0) + " to " + starts.get(starts.size() - 1);
         progress.accept("read " + runs.size() + " runs");
 

@@ -34,7 +34,7 @@ public final class HvmEngine extends ScjEngine {
     @Override
     public void validate(RunOptions options, Dataset dataset) throws BadInputException, UnsupportedRunException {
         super.validate(options, dataset);
-        String beyond = HvmLimits.beyond(options.mclConfig(), dataset.timeline().size());
+        String beyond = HvmLimits.beyond(options.mclConfig(), dataset.odometryCount() + dataset.laserCount());
         if (beyond != null) {
             throw new UnsupportedRunException(beyond);
         }

@@ -249,7 +249,8 @@ final class EvaluationData {
      * one-off (rtsj-compat/README.md) does not read as a release style that allocates.
      */
     static String areaText(ReportModel.MemoryArea a) {
-        StringBuilder t = new StringBuilder(a.name()).append(' ').append(bytes(a.peakBytes()));
+        // the HVM reports its handlers' private memories by size only, not their use
+        StringBuilder t = new StringBuilder(a.name()).append(' ').append(a.peakBytes() == null ? "use not measured" : bytes(a.peakBytes()));
         List<String> notes = new ArrayList<>();
         if (a.releases() != null && a.allocatingReleases() != null) {
             notes.add(a.allocatingReleases() + " of " + a.releases() + " releases allocated");

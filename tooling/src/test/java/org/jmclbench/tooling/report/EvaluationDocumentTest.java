@@ -36,11 +36,15 @@ class EvaluationDocumentTest {
     private String doc;
     private List<StoredRun> runs;
 
-    /** native, one JVM with both engines and all four memory styles, a JVM with three collectors, hvm. */
+    /**
+     * native, one JVM with both engines and all four memory styles and the rtsj engine (preallocated
+     * only), a JVM with three collectors, hvm.
+     */
     static FixtureDb evaluationStore() {
         FixtureDb f = new FixtureDb();
         f.configs = ReportFixtures.memoryModels("default");
         f.configs.addAll(List.of(
+                new FixtureDb.Config("temurin-25", "default", "25+36", 1.1, "ok", "rtsj", "preallocated"),
                 new FixtureDb.Config("temurin-21", "g1", "21.0.5", 1.2, "ok"),
                 new FixtureDb.Config("temurin-21", "zgc", "21.0.5", 1.1, "ok"),
                 new FixtureDb.Config("temurin-21", "serial", "21.0.5", 1.4, "ok"),
@@ -309,6 +313,24 @@ class EvaluationDocumentTest {
         assertTrue(rows.stream().filter(r -> r.get(0).contains("scj scoped")).allMatch(r -> r.get(5).contains("mission")),
                 "the SCJ rows name their areas");
         assertTrue(Files.size(dir.resolve("docs/evaluation/memory-1600.svg")) > 1000);
+        assertTrue(rows.stream().noneMatch(r -> r.get(0).contains("rtsj")), "an engine with one memory style is no memory style");
+    }
+
+    @Test
+    void aMemoryStyleIsComparedWithItsOwnEnginesPreallocatedOnly() {
+        String section = doc.substring(doc.indexOf("### 2.10"), doc.indexOf("### 2.11"));
+        List<String> comparisons = section.lines().filter(l -> l.startsWith("- ")).toList();
+        assertEquals(List.of("- temurin-25/default / javase allocating against temurin-25/default / javase preallocated",
+                        "- temurin-25/default / scj scoped against temurin-25/default / scj preallocated"),
+                comparisons.stream().map(l -> l.substring(0, l.indexOf(':'))).toList(), section);
+        String javase = comparisons.get(0);
+        assertTrue(javase.contains("mean task latency " + num(mean("temurin-25/default / javase allocating", "skip", 1600,
+                Metric.LATENCY_MEAN), 3) + " ["), javase);
+        String finding = doc.lines().filter(l -> l.startsWith("- Memory model at 1600 particles")).findFirst().orElseThrow();
+        double ratio = mean("temurin-25/default / javase allocating", "skip", 1600, Metric.LATENCY_MEAN)
+                / mean("temurin-25/default / javase preallocated", "skip", 1600, Metric.LATENCY_MEAN);
+        assertTrue(finding.contains("temurin-25/default / javase allocating " + num(ratio, 2) + "x ("), finding);
+        assertFalse(finding.contains("rtsj"), finding);
     }
 
     @Test

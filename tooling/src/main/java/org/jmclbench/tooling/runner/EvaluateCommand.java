@@ -4,9 +4,12 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
 
@@ -234,55 +237,87 @@ public final class EvaluateCommand implements Callable<Integer> {
      * replays its dataset for duration x time scale, plus {@link #JVM_OVERHEAD_S} for a JVM or hvm (whose
      * runs go through the tool's JVM) or {@link #NATIVE_OVERHEAD_S} for native; hvm's one-time build of
      * its tool chain and executable is not counted. A memory style an engine lacks is recorded
-     * unsupported at no cost, so it is not counted.
+     * unsupported at no cost, so it is not counted; nor is a run an earlier section already planned
+     * (the same configuration, setting and repetition: the matrix resumes past it). A breakdown search
+     * is counted at its most probes.
      */
     static Budget budget(EvaluationMatrix m, Path home) {
         List<String> lines = new ArrayList<>();
         List<Double> perSection = new ArrayList<>();
+        Set<String> planned = new HashSet<>();
         int runs = 0;
         double seconds = 0;
         for (EvaluationMatrix.Section s : m.sections) {
             MatrixSpec spec = s.spec();
-            int policies = size(spec.policies, MatrixDefaults.POLICIES.size());
-            int particles = size(spec.particles, MatrixDefaults.PARTICLES.size());
             int repeat = spec.repeat != null ? spec.repeat : MatrixDefaults.REPEAT;
-            int loads = size(spec.loads, 1);
             double scale = spec.timeScale != null ? spec.timeScale : MatrixDefaults.TIME_SCALE;
-            List<String> engines = spec.engines.isEmpty() ? MatrixDefaults.ENGINES : spec.engines.stream().map(Sourced::value).distinct().toList();
-            List<String> memory = spec.memory.isEmpty() ? MatrixDefaults.MEMORY : spec.memory.stream().map(Sourced::value).distinct().toList();
-            List<String> profiles = spec.profiles.isEmpty() ? MatrixDefaults.PROFILES : spec.profiles.stream().map(Sourced::value).distinct().toList();
-            double duration = 0;
+            List<String> engines = values(spec.engines, MatrixDefaults.ENGINES);
+            List<String> memory = values(spec.memory, MatrixDefaults.MEMORY);
+            List<String> profiles = values(spec.profiles, MatrixDefaults.PROFILES);
+            List<String> policies = values(spec.policies, MatrixDefaults.POLICIES);
+            List<Integer> particles = values(spec.particles, MatrixDefaults.PARTICLES);
+            List<String> loads = values(spec.loads, List.of("none"));
             List<Sourced<String>> ds = spec.datasets.isEmpty()
                     ? MatrixDefaults.DATASETS.stream().map(d -> new Sourced<>(d, "--datasets")).toList() : spec.datasets;
+            Map<String, Double> durations = new LinkedHashMap<>();
             for (Sourced<String> d : ds) {
-                duration += Dataset.resolve(d.value(), home, d.where()).durationS();
+                durations.putIfAbsent(d.value(), Dataset.resolve(d.value(), home, d.where()).durationS());
             }
-            int jvmCells = 0;
-            int nativeCells = 0;
+            // the configurations: runtime, the profile it keeps, engine and memory style
+            List<String[]> cells = new ArrayList<>();
             for (Sourced<String> r : spec.runtimes) {
                 String name = r.value();
-                if (name.equals("native")) {
-                    long nativeProfiles = distinctFor(profiles, RuntimeKind.NATIVE);
-                    nativeCells += (int) nativeProfiles * (int) memory.stream().filter(x -> Engines.memoryStyles(Engines.NATIVE).contains(x)).count();
-                } else if (name.equals(HVM)) {
-                    // its own engine; a run starts the tool's JVM around the executable (docs/HVM.md), so it costs what a JVM run does
-                    // once per profile it keeps (default compiled, int interpreted, fifo, pinned)
-                    jvmCells += (int) distinctFor(profiles, RuntimeKind.HVM)
-                            * (int) memory.stream().filter(x -> Engines.memoryStyles(HVM).contains(x)).count();
-                } else {
-                    for (String e : engines) {
-                        jvmCells += profiles.size() * (int) memory.stream().filter(x -> Engines.memoryStyles(e).contains(x)).count();
+                RuntimeKind kind = name.equals("native") ? RuntimeKind.NATIVE : name.equals(HVM) ? RuntimeKind.HVM : RuntimeKind.JVM;
+                List<String> kept = profiles.stream().map(p -> Profile.parse(p, "profiles").effectiveFor(kind).name()).distinct().toList();
+                List<String> own = kind == RuntimeKind.NATIVE ? List.of(Engines.NATIVE) : kind == RuntimeKind.HVM ? List.of(HVM) : engines;
+                for (String p : kept) {
+                    for (String e : own) {
+                        memory.stream().filter(x -> Engines.memoryStyles(e).contains(x)).forEach(x -> cells.add(new String[] {name, p, e, x}));
                     }
                 }
             }
-            // a breakdown search probes one count at a time under queue, at most maxProbes counts
-            int per = s.breakdown() != null ? CapacitySearch.maxProbes(s.breakdown().from(), s.breakdown().max()) * repeat * loads
-                    : policies * particles * repeat * loads;
-            int jvmRuns = jvmCells * per;
-            int nativeRuns = nativeCells * per;
-            double t = jvmRuns * (duration * scale + JVM_OVERHEAD_S) + nativeRuns * (duration * scale + NATIVE_OVERHEAD_S);
-            lines.add(String.format(Locale.ROOT, "[%s] %s%d runs (%d JVM or hvm, %d native) of %.0f s x %.2f: about %.0f s", s.name(),
-                    s.breakdown() != null ? "breakdown search, at most " : "", jvmRuns + nativeRuns, jvmRuns, nativeRuns, duration, scale, t));
+            int jvmRuns = 0;
+            int nativeRuns = 0;
+            int shared = 0;
+            double t = 0;
+            int probes = s.breakdown() == null ? 0 : CapacitySearch.maxProbes(s.breakdown().from(), s.breakdown().max());
+            for (String[] c : cells) {
+                boolean nat = c[0].equals("native");
+                double overhead = nat ? NATIVE_OVERHEAD_S : JVM_OVERHEAD_S;
+                for (Map.Entry<String, Double> d : durations.entrySet()) {
+                    int fresh = 0;
+                    if (s.breakdown() != null) {
+                        // a search probes one count at a time under queue: its counts are not known ahead
+                        fresh = probes * repeat * loads.size();
+                    } else {
+                        for (String policy : policies) {
+                            for (int n : particles) {
+                                for (String load : loads) {
+                                    for (int rep = 1; rep <= repeat; rep++) {
+                                        String key = String.join(" ", c) + " " + policy + " " + n + " " + d.getKey() + " " + load
+                                                + " " + rep + " " + scale + " " + spec.workloadArgs;
+                                        if (planned.add(key)) {
+                                            fresh++;
+                                        } else {
+                                            shared++;
+                                        }
+                                    }
+                                }
+                            }
+                        }
+                    }
+                    if (nat) {
+                        nativeRuns += fresh;
+                    } else {
+                        jvmRuns += fresh;
+                    }
+                    t += fresh * (d.getValue() * scale + overhead);
+                }
+            }
+            double durationS = durations.values().stream().mapToDouble(Double::doubleValue).sum();
+            lines.add(String.format(Locale.ROOT, "[%s] %s%d runs (%d JVM or hvm, %d native%s) of %.0f s x %.2f: about %.0f s", s.name(),
+                    s.breakdown() != null ? "breakdown search, at most " : "", jvmRuns + nativeRuns, jvmRuns, nativeRuns,
+                    shared == 0 ? "" : "; " + shared + " more are earlier sections' runs", durationS, scale, t));
             runs += jvmRuns + nativeRuns;
             seconds += t;
             perSection.add(t);
@@ -290,12 +325,8 @@ public final class EvaluateCommand implements Callable<Integer> {
         return new Budget(lines, perSection, runs, seconds);
     }
 
-    private static int size(List<?> l, int dflt) {
-        return l.isEmpty() ? dflt : (int) l.stream().map(x -> ((Sourced<?>) x).value()).distinct().count();
-    }
-
-    /** How many distinct profiles a runtime of that kind runs of these (docs/RUNNER.md: what each kind keeps). */
-    private static long distinctFor(List<String> profiles, RuntimeKind kind) {
-        return profiles.stream().map(p -> Profile.parse(p, "profiles").effectiveFor(kind).name()).distinct().count();
+    /** The values of a matrix setting, or its default where the section leaves it out. */
+    private static <T> List<T> values(List<Sourced<T>> l, List<T> dflt) {
+        return l.isEmpty() ? dflt : l.stream().map(Sourced::value).distinct().toList();
     }
 }

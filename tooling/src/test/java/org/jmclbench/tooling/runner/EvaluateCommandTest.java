@@ -71,6 +71,36 @@ class EvaluateCommandTest {
     }
 
     @Test
+    void theBudgetCountsARunThatAnEarlierSectionPlannedOnce() throws Exception {
+        Fixtures.home(dir);
+        Path f = matrix("""
+                datasets = tiny
+                [sweep]
+                runtimes = native, temurin-25
+                engines = javase, scj
+                memory = preallocated, scoped
+                particles = 100, 400
+                repeat = 3
+                [compare]
+                runtimes = temurin-25, native
+                engines = javase, scj
+                particles = 400
+                repeat = 10
+                """);
+        EvaluateCommand.Budget b = EvaluateCommand.budget(EvaluationMatrix.read(f), dir);
+        // sweep: native preallocated + temurin-25 javase preallocated, scj preallocated and scoped (javase has
+        // no scoped) = 4 configurations x 2 counts x 3; compare: 3 configurations at 400 x 10, of which the
+        // sweep's repetitions 1-3 are already planned
+        assertEquals(4 * 2 * 3 + 3 * 7, b.runs());
+        assertTrue(b.lines().get(1).contains("9 more are earlier sections' runs"), b.lines().toString());
+        // a native run costs its replay plus NATIVE_OVERHEAD_S, a JVM run JVM_OVERHEAD_S: the sweep's 6 and 18 give
+        // one native run's time, and the compare section is the time of its own 7 and 14 runs alone
+        double k = EvaluateCommand.JVM_OVERHEAD_S - EvaluateCommand.NATIVE_OVERHEAD_S;
+        double nativeRun = (b.sectionSeconds().get(0) - 18 * k) / 24;
+        assertEquals(7 * nativeRun + 14 * (nativeRun + k), b.sectionSeconds().get(1), 1e-6);
+    }
+
+    @Test
     void aBreakdownSectionSearchesEachConfigurationUnderQueueIntoTheStore() throws Exception {
         Fixtures.home(dir);
         Path nat = Fixtures.fakeJava(dir, "c", "breaks-at-2000", 0, null, 17);

@@ -244,6 +244,23 @@ final class EvaluationData {
     }
 
     /**
+     * The jobs missed or late over the jobs released in one window of the runs ({@code WARM}: released
+     * in the warm-up, {@code STEADY}: after it), pooled over the completed repetitions, with its 95%
+     * Wilson interval; NaN when no run split its jobs. The windows differ in length, so their counts do
+     * not compare; their ratios do.
+     */
+    static Stats.Interval windowMissRatio(ReportModel.Cell c, String window) {
+        ReportModel.Agg missed = c.metrics.get(window + "_MISSES");
+        ReportModel.Agg released = c.metrics.get(window + "_RELEASED");
+        if (missed == null || released == null || missed.values() == null || released.values() == null
+                || missed.values().length != released.values().length) {
+            return Stats.wilson(0, 0);
+        }
+        return Stats.wilson(Math.round(java.util.Arrays.stream(missed.values()).sum()),
+                Math.round(java.util.Arrays.stream(released.values()).sum()));
+    }
+
+    /**
      * A memory area as the evaluation's table gives it: {@code update 248 B (1 of 90 releases
      * allocated, 3 B/release)}; a private memory says how many releases allocated, so that a JIT
      * one-off (rtsj-compat/README.md) does not read as a release style that allocates.

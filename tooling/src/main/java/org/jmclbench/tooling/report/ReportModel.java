@@ -230,6 +230,8 @@ public final class ReportModel {
         m.put("STEADY_P99", new String[] {"all/taskLatencyNs.steady/p99", "1e-6"});
         m.put("WARM_MISSES", new String[] {"all/missedOrLate.warm/value", "1"});
         m.put("STEADY_MISSES", new String[] {"all/missedOrLate.steady/value", "1"});
+        m.put("WARM_RELEASED", new String[] {"all/released.warm/value", "1"});
+        m.put("STEADY_RELEASED", new String[] {"all/released.steady/value", "1"});
         m.put("WARM_RESPONSE_P99", new String[] {"all/responseTimeNs.warm/p99", "1e-6"});
         m.put("STEADY_RESPONSE_P99", new String[] {"all/responseTimeNs.steady/p99", "1e-6"});
         return m;

@@ -91,4 +91,19 @@ class EvaluationDataTest {
         assertEquals(Stats.wilson(3, 600), EvaluationData.missRatio(c, "predict"), "late + skipped + terminated without deadlineMisses");
         assertTrue(Double.isNaN(EvaluationData.missRatio(c, "all").estimate()), "a task no run reported");
     }
+
+    @Test
+    void aWindowsMissRatioIsPooledOverTheRunsSoThatWindowsOfOtherLengthsCompare() {
+        ReportModel.Cell c = new ReportModel.Cell();
+        c.metrics.put("WARM_MISSES", ReportModel.Agg.of(List.of(1.0, 2.0, 2.0)));
+        c.metrics.put("WARM_RELEASED", ReportModel.Agg.of(List.of(40.0, 40.0, 40.0)));
+        c.metrics.put("STEADY_MISSES", ReportModel.Agg.of(List.of(30.0, 34.0, 38.0)));
+        c.metrics.put("STEADY_RELEASED", ReportModel.Agg.of(List.of(2600.0, 2600.0, 2600.0)));
+        assertEquals(Stats.wilson(5, 120), EvaluationData.windowMissRatio(c, "WARM"));
+        assertEquals(Stats.wilson(102, 7800), EvaluationData.windowMissRatio(c, "STEADY"));
+        assertTrue(EvaluationData.windowMissRatio(c, "WARM").estimate() > EvaluationData.windowMissRatio(c, "STEADY").estimate(),
+                "fewer jobs missed in the warm-up, but a larger share of them");
+        c.metrics.remove("STEADY_RELEASED");
+        assertTrue(Double.isNaN(EvaluationData.windowMissRatio(c, "STEADY").estimate()), "a store without the released counts");
+    }
 }

@@ -257,6 +257,7 @@ public final class EvaluateCommand implements Callable<Integer> {
             List<String> policies = values(spec.policies, MatrixDefaults.POLICIES);
             List<Integer> particles = values(spec.particles, MatrixDefaults.PARTICLES);
             List<String> loads = values(spec.loads, List.of("none"));
+            List<String> args = spec.workloadArgs.stream().map(Sourced::value).toList();
             List<Sourced<String>> ds = spec.datasets.isEmpty()
                     ? MatrixDefaults.DATASETS.stream().map(d -> new Sourced<>(d, "--datasets")).toList() : spec.datasets;
             Map<String, Double> durations = new LinkedHashMap<>();
@@ -283,6 +284,7 @@ public final class EvaluateCommand implements Callable<Integer> {
             int probes = s.breakdown() == null ? 0 : CapacitySearch.maxProbes(s.breakdown().from(), s.breakdown().max());
             for (String[] c : cells) {
                 boolean nat = c[0].equals("native");
+                // an hvm run starts the tool's JVM around the executable (docs/HVM.md): it costs what a JVM run does
                 double overhead = nat ? NATIVE_OVERHEAD_S : JVM_OVERHEAD_S;
                 for (Map.Entry<String, Double> d : durations.entrySet()) {
                     int fresh = 0;
@@ -295,7 +297,7 @@ public final class EvaluateCommand implements Callable<Integer> {
                                 for (String load : loads) {
                                     for (int rep = 1; rep <= repeat; rep++) {
                                         String key = String.join(" ", c) + " " + policy + " " + n + " " + d.getKey() + " " + load
-                                                + " " + rep + " " + scale + " " + spec.workloadArgs;
+                                                + " " + rep + " " + scale + " " + args;
                                         if (planned.add(key)) {
                                             fresh++;
                                         } else {

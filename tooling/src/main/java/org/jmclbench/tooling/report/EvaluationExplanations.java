@@ -123,7 +123,10 @@ final class EvaluationExplanations extends EvaluationSections {
         }
         line(String.format(Locale.ROOT, "At %d particles, each memory style against the same runtime's and engine's "
                 + "preallocated style (Table 10; Mann-Whitney U with the bootstrap interval of the ratio, docs/REPORT.md). A "
-                + "style is compared with its own engine only: engines differ in more than their memory.", n));
+                + "style is compared with its own engine only: engines differ in more than their memory. The evaluation runs "
+                + "the memory styles in a section of their own ([memory], after [compare], whose runs are the preallocated "
+                + "ones): runs are shuffled within a section, not across sections, so the machine's drift between the two "
+                + "can make a separated difference of a few percent.", n));
         line("");
         bullets.forEach(this::line);
         line("");

@@ -107,16 +107,15 @@ final class EvaluationExplanations extends EvaluationSections {
             if (pre == null || other == pre || mean(other, Metric.LATENCY_MEAN) == null || mean(pre, Metric.LATENCY_MEAN) == null) {
                 continue;
             }
+            String meanTest = separate(other, pre, Metric.LATENCY_MEAN).text(other.config, pre.config);
             bullets.add(String.format(Locale.ROOT, "- %s against %s: mean task latency %s against %s ms (%s), p99 %s against %s ms "
                     + "(%s); dropped jobs per run %s against %s.", other.config, pre.config,
-                    agg(other, Metric.LATENCY_MEAN, 3), agg(pre, Metric.LATENCY_MEAN, 3),
-                    separate(other, pre, Metric.LATENCY_MEAN).text(other.config, pre.config),
+                    agg(other, Metric.LATENCY_MEAN, 3), agg(pre, Metric.LATENCY_MEAN, 3), meanTest,
                     agg(other, Metric.LATENCY_P99, 3), agg(pre, Metric.LATENCY_P99, 3),
                     separate(other, pre, Metric.LATENCY_P99).text(other.config, pre.config),
                     agg(other, Metric.MISS_COUNT, 1), agg(pre, Metric.MISS_COUNT, 1)));
             found.add(String.format(Locale.ROOT, "%s %sx (%s)", other.config,
-                    num(mean(other, Metric.LATENCY_MEAN) / mean(pre, Metric.LATENCY_MEAN), 2),
-                    separate(other, pre, Metric.LATENCY_MEAN).text(other.config, pre.config)));
+                    num(mean(other, Metric.LATENCY_MEAN) / mean(pre, Metric.LATENCY_MEAN), 2), meanTest));
         }
         if (found.isEmpty()) {
             return;

@@ -298,12 +298,13 @@ final class EvaluationQuestions extends EvaluationSections {
 
     /** A window's miss ratio and, in brackets, its jobs missed or late and released per run. */
     private static String windowMisses(ReportModel.Cell c, String window) {
-        String ratio = percent(EvaluationData.windowMissRatio(c, window));
-        ReportModel.Agg released = c.metrics.get(window + "_RELEASED");
-        if (ratio.equals("n/a") || released == null || released.mean() == null) {
-            return ratio;
+        Stats.Interval ratio = EvaluationData.windowMissRatio(c, window);
+        if (Double.isNaN(ratio.estimate())) {
+            return percent(ratio);
         }
-        return ratio + " (" + agg(c, window + "_MISSES", 1) + " of " + num(released.mean(), 0) + " per run)";
+        // a ratio comes from both counts, so both have a mean
+        return percent(ratio) + " (" + agg(c, window + "_MISSES", 1) + " of " + num(c.metrics.get(window + "_RELEASED").mean(), 0)
+                + " per run)";
     }
 
     /** A task's response time p99 over released jobs, infinite when a dropped or aborted job is in some run's top 1%. */

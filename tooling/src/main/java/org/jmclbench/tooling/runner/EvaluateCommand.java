@@ -264,56 +264,27 @@ public final class EvaluateCommand implements Callable<Integer> {
             for (Sourced<String> d : ds) {
                 durations.putIfAbsent(d.value(), Dataset.resolve(d.value(), home, d.where()).durationS());
             }
-            // the configurations: runtime, the profile it keeps, engine and memory style
-            List<String[]> cells = new ArrayList<>();
-            for (Sourced<String> r : spec.runtimes) {
-                String name = r.value();
-                RuntimeKind kind = name.equals("native") ? RuntimeKind.NATIVE : name.equals(HVM) ? RuntimeKind.HVM : RuntimeKind.JVM;
-                List<String> kept = profiles.stream().map(p -> Profile.parse(p, "profiles").effectiveFor(kind).name()).distinct().toList();
-                List<String> own = kind == RuntimeKind.NATIVE ? List.of(Engines.NATIVE) : kind == RuntimeKind.HVM ? List.of(HVM) : engines;
-                for (String p : kept) {
-                    for (String e : own) {
-                        memory.stream().filter(x -> Engines.memoryStyles(e).contains(x)).forEach(x -> cells.add(new String[] {name, p, e, x}));
-                    }
-                }
-            }
+            List<String> configurations = configurations(spec.runtimes, profiles, engines, memory);
             int jvmRuns = 0;
             int nativeRuns = 0;
             int shared = 0;
             double t = 0;
-            int probes = s.breakdown() == null ? 0 : CapacitySearch.maxProbes(s.breakdown().from(), s.breakdown().max());
-            for (String[] c : cells) {
-                boolean nat = c[0].equals("native");
-                // an hvm run starts the tool's JVM around the executable (docs/HVM.md): it costs what a JVM run does
-                double overhead = nat ? NATIVE_OVERHEAD_S : JVM_OVERHEAD_S;
-                for (Map.Entry<String, Double> d : durations.entrySet()) {
-                    int fresh = 0;
-                    if (s.breakdown() != null) {
-                        // a search probes one count at a time under queue: its counts are not known ahead
-                        fresh = probes * repeat * loads.size();
-                    } else {
-                        for (String policy : policies) {
-                            for (int n : particles) {
-                                for (String load : loads) {
-                                    for (int rep = 1; rep <= repeat; rep++) {
-                                        String key = String.join(" ", c) + " " + policy + " " + n + " " + d.getKey() + " " + load
-                                                + " " + rep + " " + scale + " " + args;
-                                        if (planned.add(key)) {
-                                            fresh++;
-                                        } else {
-                                            shared++;
-                                        }
-                                    }
-                                }
-                            }
-                        }
-                    }
+            // a search probes one count at a time under queue: its counts are not known ahead, only how many at most
+            int searched = s.breakdown() == null ? 0
+                    : CapacitySearch.maxProbes(s.breakdown().from(), s.breakdown().max()) * repeat * loads.size();
+            for (Map.Entry<String, Double> d : durations.entrySet()) {
+                List<String> settings = searched > 0 ? List.of() : settings(policies, particles, d.getKey(), loads, repeat, scale + " " + args);
+                for (String c : configurations) {
+                    boolean nat = c.startsWith("native ");
+                    int fresh = searched > 0 ? searched : (int) settings.stream().filter(x -> planned.add(c + " " + x)).count();
+                    shared += searched > 0 ? 0 : settings.size() - fresh;
                     if (nat) {
                         nativeRuns += fresh;
                     } else {
                         jvmRuns += fresh;
                     }
-                    t += fresh * (d.getValue() * scale + overhead);
+                    // an hvm run starts the tool's JVM around the executable (docs/HVM.md): it costs what a JVM run does
+                    t += fresh * (d.getValue() * scale + (nat ? NATIVE_OVERHEAD_S : JVM_OVERHEAD_S));
                 }
             }
             double durationS = durations.values().stream().mapToDouble(Double::doubleValue).sum();
@@ -325,6 +296,39 @@ public final class EvaluateCommand implements Callable<Integer> {
             perSection.add(t);
         }
         return new Budget(lines, perSection, runs, seconds);
+    }
+
+    /** A section's configurations, each as "runtime profile engine memory": the profiles each kind keeps, its engines' memory styles. */
+    private static List<String> configurations(List<Sourced<String>> runtimes, List<String> profiles, List<String> engines,
+            List<String> memory) {
+        List<String> out = new ArrayList<>();
+        for (Sourced<String> r : runtimes) {
+            String name = r.value();
+            RuntimeKind kind = name.equals("native") ? RuntimeKind.NATIVE : name.equals(HVM) ? RuntimeKind.HVM : RuntimeKind.JVM;
+            List<String> own = kind == RuntimeKind.NATIVE ? List.of(Engines.NATIVE) : kind == RuntimeKind.HVM ? List.of(HVM) : engines;
+            for (String p : profiles.stream().map(p -> Profile.parse(p, "profiles").effectiveFor(kind).name()).distinct().toList()) {
+                for (String e : own) {
+                    memory.stream().filter(x -> Engines.memoryStyles(e).contains(x)).forEach(x -> out.add(String.join(" ", name, p, e, x)));
+                }
+            }
+        }
+        return out;
+    }
+
+    /** Every run of one configuration on one dataset: policy, particles, load and repetition, with what else tells runs apart. */
+    private static List<String> settings(List<String> policies, List<Integer> particles, String dataset, List<String> loads,
+            int repeat, String rest) {
+        List<String> out = new ArrayList<>();
+        for (String policy : policies) {
+            for (int n : particles) {
+                for (String load : loads) {
+                    for (int rep = 1; rep <= repeat; rep++) {
+                        out.add(String.join(" ", policy, String.valueOf(n), dataset, load, String.valueOf(rep), rest));
+                    }
+                }
+            }
+        }
+        return out;
     }
 
     /** The values of a matrix setting, or its default where the section leaves it out. */

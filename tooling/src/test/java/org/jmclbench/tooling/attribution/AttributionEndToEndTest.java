@@ -59,7 +59,7 @@ class AttributionEndToEndTest {
 
     @Test
     void underAllocationLoadOnASmallSerialHeapAMissIsAttributedToAGcPause(@TempDir Path tmp) throws Exception {
-        List<String> args = new ArrayList<>(shortData(tmp, 8.0));
+        List<String> args = new ArrayList<>(shortData(tmp, 16.0));
         args.addAll(List.of("-p", "1000", "--time-scale", "0.5", "--load-alloc", "300,28"));
         RunEvidence run = run(tmp, List.of("-XX:+UseSerialGC", "-Xmx48m", "-Xms48m"), args);
         assertTrue(run.eventSource().startsWith("JFR "), run.eventSource());

@@ -221,7 +221,10 @@ public final class ReportModel {
         public Map<String, long[]> deadlines = new LinkedHashMap<>();
     }
 
-    /** Extra per-cell aggregates (not {@link Metric}s): the warm-up split of the attribution, in ms and jobs per run. */
+    /**
+     * Extra per-cell aggregates (not {@link Metric}s): the warm-up split of the attribution, in ms and
+     * jobs per run; the cell also gets {@code WARM_MISS_RATIO} and {@code STEADY_MISS_RATIO} from them.
+     */
     static final Map<String, String[]> WARMUP_METRICS = warmupMetrics();
 
     private static Map<String, String[]> warmupMetrics() {
@@ -235,6 +238,23 @@ public final class ReportModel {
         m.put("WARM_RESPONSE_P99", new String[] {"all/responseTimeNs.warm/p99", "1e-6"});
         m.put("STEADY_RESPONSE_P99", new String[] {"all/responseTimeNs.steady/p99", "1e-6"});
         return m;
+    }
+
+    /**
+     * Each run's jobs missed or late over its jobs released in one window ({@code WARM} or
+     * {@code STEADY}); a run that released none there, or did not split its jobs, is no evidence.
+     * The windows differ in length (2 s against the rest of the run), so only their ratios compare.
+     */
+    private static List<Double> windowMissRatios(List<StoredRun> runs, String window) {
+        List<Double> ratios = new ArrayList<>();
+        for (StoredRun r : runs) {
+            Double missed = r.metric(WARMUP_METRICS.get(window + "_MISSES")[0]);
+            Double released = r.metric(WARMUP_METRICS.get(window + "_RELEASED")[0]);
+            if (missed != null && released != null && released > 0) {
+                ratios.add(missed / released);
+            }
+        }
+        return ratios;
     }
 
     /** Builds the model, reporting progress through {@code progress} (one line a step), without abort bounds. */
@@ -354,6 +374,9 @@ public final class ReportModel {
                 }
             }
             c.metrics.put(e.getKey(), Agg.of(values));
+        }
+        for (String window : List.of("WARM", "STEADY")) {
+            c.metrics.put(window + "_MISS_RATIO", Agg.of(windowMissRatios(ok, window)));
         }
         c.causes = CellAggregates.causes(ok);
         c.deadlines = CellAggregates.deadlines(ok);

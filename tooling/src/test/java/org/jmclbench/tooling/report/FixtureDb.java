@@ -383,6 +383,8 @@ public final class FixtureDb {
         addMetric(metric, key, "all", "taskLatencyNs.steady", "p99", steadyP99);
         addMetric(metric, key, "all", "missedOrLate.warm", "value", (double) (java ? missCount / 2 : 0));
         addMetric(metric, key, "all", "missedOrLate.steady", "value", (double) (missCount - (java ? missCount / 2 : 0)));
+        addMetric(metric, key, "all", "released.warm", "value", (double) warmJobs);
+        addMetric(metric, key, "all", "released.steady", "value", (double) (predict.length - warmJobs));
         if (java) {
             ObjectNode o = JSON.createObjectNode();
             o.putArray("columns").add("start").add("end").add("kind").add("detail");

@@ -114,6 +114,38 @@ class ReportCommandTest {
         }
     }
 
+    @Test
+    void aWindowsMissRatioIsEachRunsMissedOverReleasedSoThatWindowsOfOtherLengthsCompare() throws Exception {
+        Matcher m = Pattern.compile("(?s)<script type=\"application/json\" id=\"jmclbench-data\">(.*?)</script>").matcher(html);
+        assertTrue(m.find());
+        JsonNode data = new ObjectMapper().readTree(m.group(1));
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
+            List<StoredRun> runs = store.runs().stream()
+                    .filter(r -> r.config().equals("temurin-17/g1") && r.policy.equals("skip") && r.particles == 1600).toList();
+            assertEquals(3, runs.size());
+            for (String window : List.of("warm", "steady")) {
+                double sum = 0;
+                for (StoredRun r : runs) {
+                    sum += r.metric("all/missedOrLate." + window + "/value") / r.metric("all/released." + window + "/value");
+                }
+                assertTrue(sum > 0, "the fixture misses jobs in both windows");
+                JsonNode cell = cellOf(data, "temurin-17/g1", "skip", 1600);
+                String key = window.equals("warm") ? "WARM_MISS_RATIO" : "STEADY_MISS_RATIO";
+                assertEquals(sum / 3, cell.at("/metrics/" + key + "/mean").asDouble(), 1e-12, key);
+                assertEquals(3, cell.at("/metrics/" + key + "/n").asInt(), key);
+            }
+        }
+    }
+
+    private static JsonNode cellOf(JsonNode data, String config, String policy, int particles) {
+        for (JsonNode c : data.get("cells")) {
+            if (c.get("config").asText().equals(config) && c.get("policy").asText().equals(policy) && c.get("particles").asInt() == particles) {
+                return c;
+            }
+        }
+        throw new AssertionError("no cell " + config + " " + policy + " " + particles);
+    }
+
     /** The page's chart of one figure at one setting. */
     static JsonNode chart(JsonNode data, String policy, Integer particles, String id) {
         for (JsonNode c : data.get("charts")) {

@@ -57,17 +57,27 @@ class AttributionEndToEndTest {
         return RunEvidence.load(runDir);
     }
 
+    /**
+     * Runs like this one miss 2 to 5 jobs in 10 s, so a run can miss none: that run is no evidence
+     * either way and is repeated (up to three runs). A run with misses of which none overlaps a GC
+     * pause fails at once.
+     */
     @Test
     void underAllocationLoadOnASmallSerialHeapAMissIsAttributedToAGcPause(@TempDir Path tmp) throws Exception {
         List<String> args = new ArrayList<>(shortData(tmp, 16.0));
         args.addAll(List.of("-p", "1000", "--time-scale", "0.5", "--load-alloc", "300,28"));
-        RunEvidence run = run(tmp, List.of("-XX:+UseSerialGC", "-Xmx48m", "-Xms48m"), args);
-        assertTrue(run.eventSource().startsWith("JFR "), run.eventSource());
-        assertEquals("alloc", run.summary().path("parameters").path("load").path("scenario").asText());
-        List<JobAttribution> a = run.attribute(Attribution.Settings.defaults());
-        assertTrue(a.stream().anyMatch(j -> j.causes().stream().anyMatch(c -> c.kind().equals("gc"))),
-                "some miss overlaps a GC pause; causes: " + Attribution.countCauses(a));
-        assertTrue(run.events().stream().anyMatch(e -> e.kind() == VmEventKind.GC_PAUSE && e.detail().startsWith("DefNew")));
+        List<JobAttribution> a = List.of();
+        for (int attempt = 1; attempt <= 3 && a.isEmpty(); attempt++) {
+            Path root = Files.createDirectories(tmp.resolve("attempt-" + attempt));
+            RunEvidence run = run(root, List.of("-XX:+UseSerialGC", "-Xmx48m", "-Xms48m"), args);
+            assertTrue(run.eventSource().startsWith("JFR "), run.eventSource());
+            assertEquals("alloc", run.summary().path("parameters").path("load").path("scenario").asText());
+            assertTrue(run.events().stream().anyMatch(e -> e.kind() == VmEventKind.GC_PAUSE && e.detail().startsWith("DefNew")));
+            a = run.attribute(Attribution.Settings.defaults());
+        }
+        List<JobAttribution> missed = a;
+        assertTrue(missed.stream().anyMatch(j -> j.causes().stream().anyMatch(c -> c.kind().equals("gc"))),
+                "some miss overlaps a GC pause; causes: " + Attribution.countCauses(missed));
     }
 
     @Test

@@ -9,9 +9,32 @@ import org.jmclbench.scj.MissionSizes;
 
 import vm.Memory;
 
-/** The mission's output on the HVM: the job records, written to the result file by the natives. */
+/**
+ * The mission's output on the HVM: the job records, written to the result file by the natives,
+ * and the use of each handler's private memory, measured at the end of each release (icecap
+ * empties a private memory after each release and keeps no peak of it).
+ */
 final class HvmOutput implements MissionOutput {
     private boolean written;
+    // per area (MissionSizes), only the private memories' entries used; built before the mission
+    private final long[] largestRelease = new long[MissionSizes.AREA_COUNT];
+    private final long[] releases = new long[MissionSizes.AREA_COUNT];
+    private final long[] allocatingReleases = new long[MissionSizes.AREA_COUNT];
+    private final long[] allocatedBytes = new long[MissionSizes.AREA_COUNT];
+
+    @Override
+    public void releaseEnding(int area) {
+        // the handler's private memory is current, and holds what this release allocated
+        long used = Memory.getCurrentMemoryArea().consumedMemory();
+        releases[area]++;
+        if (used > 0) {
+            allocatingReleases[area]++;
+            allocatedBytes[area] += used;
+        }
+        if (used > largestRelease[area]) {
+            largestRelease[area] = used;
+        }
+    }
 
     @Override
     public void missionEnded(JobRecords r) {
@@ -43,11 +66,17 @@ final class HvmOutput implements MissionOutput {
         HvmData.put(r.durationNs);
         // Each area's use, in the order of MissionSizes.AREA_NAMES. The mission ends here, in
         // its cleanup (mission memory current), so immortal and mission memory are at their
-        // peak; a private memory is emptied after each release, and icecap keeps no peak of it.
+        // peak; a private memory's is its largest release.
         HvmData.put(MemoryArea.getMemoryArea(r).memoryConsumed());
         HvmData.put(Memory.getCurrentMemoryArea().consumedMemory());
         for (int a = MissionSizes.PREDICT; a < MissionSizes.AREA_COUNT; a++) {
-            HvmData.put(-1);
+            HvmData.put(largestRelease[a]);
+        }
+        HvmData.put(MissionRunFile.RELEASE_SECTION);
+        for (int a = MissionSizes.PREDICT; a < MissionSizes.AREA_COUNT; a++) {
+            HvmData.put(releases[a]);
+            HvmData.put(allocatingReleases[a]);
+            HvmData.put(allocatedBytes[a]);
         }
         written = true;
     }

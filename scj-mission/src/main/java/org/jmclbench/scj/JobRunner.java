@@ -9,7 +9,7 @@ import org.jmclbench.core.record.JobRecords;
  * One handler's side of a job: records the event's release, runs the job on the robot (holding
  * its monitor, so the start is when the robot became this job's), records start, end and
  * outcome, and counts the event as ended, the last one requesting the mission's termination.
- * Also the job's abort signal. One per handler, used by that handler's thread only; no allocation.
+ * Also the job's abort signal, and where the handler's release ends. One per handler, used by that handler's thread only; no allocation.
  */
 final class JobRunner implements AbortSignal {
     private final Robot robot;
@@ -17,18 +17,24 @@ final class JobRunner implements AbortSignal {
     private final ImmortalEntry entry;
     private final MissionClock clock;
     private final MclMission mission;
+    private final MissionOutput output;
+    private final int area;
     private final AbsoluteTime now = new AbsoluteTime();
     private final AbsoluteTime pollTime = new AbsoluteTime();
     private int event = JobGate.FREE;
     // when the gate stops the job whatever the polls say (JobGate.periodicAbortAtNs); MAX_VALUE: never
     private long abortAtNs = Long.MAX_VALUE;
 
-    JobRunner(Robot robot, JobGate gate, ImmortalEntry entry, MissionClock clock, MclMission mission) {
+    /** {@code area}: the private memory of the handler this runner serves ({@link MissionSizes}). */
+    JobRunner(Robot robot, JobGate gate, ImmortalEntry entry, MissionClock clock, MclMission mission,
+            MissionOutput output, int area) {
         this.robot = robot;
         this.gate = gate;
         this.entry = entry;
         this.clock = clock;
         this.mission = mission;
+        this.output = output;
+        this.area = area;
     }
 
     // when a poll of this job first answered true, ns from the mission start; -1 not yet
@@ -106,6 +112,11 @@ final class JobRunner implements AbortSignal {
         }
         ended();
         return end;
+    }
+
+    /** The handler's release is ending: the output may measure its private memory. */
+    void releaseEnding() {
+        output.releaseEnding(area);
     }
 
     private void ended() {

@@ -37,6 +37,11 @@ public class LaserSensor extends OneShotEventHandler {
 
     @Override
     public void handleAsyncEvent() {
+        handleRelease();
+        runner.releaseEnding();
+    }
+
+    private void handleRelease() {
         int j = next++;
         int[] laser = entry.laserEvent;
         if (j >= laser.length) {

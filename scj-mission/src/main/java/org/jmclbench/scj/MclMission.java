@@ -42,6 +42,7 @@ public class MclMission extends Mission {
         records.setInitialEstimate(localizer.estimateX(), localizer.estimateY(), localizer.estimateTheta());
         Robot robot = config.newRobot(localizer, entry);
         JobGate gate = config.newGate(entry.size());
+        MissionOutput output = safelet.output();
         gate.recordAbortsIn(records);
 
         // The sensor stands for an interrupt: above the two tasks, which share one priority.
@@ -55,17 +56,17 @@ public class MclMission extends Mission {
         PredictHandler predict = new PredictHandler(taskPriority,
                 new PeriodicParameters(relative(firstOdo), period, period, null),
                 privateMemory(sizes.size(MissionSizes.PREDICT)), stack, entry, gate,
-                new JobRunner(robot, gate, entry, clock, this));
+                new JobRunner(robot, gate, entry, clock, this, output, MissionSizes.PREDICT));
         predict.register();
         if (entry.laserEvent.length > 0) {
             ReleaseQueue queue = new ReleaseQueue(entry.laserEvent.length);
             UpdateHandler update = new UpdateHandler(taskPriority, new AperiodicParameters(),
                     privateMemory(sizes.size(MissionSizes.UPDATE)), stack, queue,
-                    new JobRunner(robot, gate, entry, clock, this));
+                    new JobRunner(robot, gate, entry, clock, this, output, MissionSizes.UPDATE));
             update.register();
             LaserSensor sensor = new LaserSensor(sensorPriority, relative(entry.releaseNs[entry.laserEvent[0]]),
                     new AperiodicParameters(), privateMemory(sizes.size(MissionSizes.SENSOR)), stack, entry, gate,
-                    queue, update, new JobRunner(robot, gate, entry, clock, this), clock);
+                    queue, update, new JobRunner(robot, gate, entry, clock, this, output, MissionSizes.SENSOR), clock);
             sensor.register();
         }
         // Last: the handlers' relative start times count from here.

@@ -15,15 +15,22 @@ public final class MissionRunFile {
     public static final long OUTPUT_MAGIC = 0x314F56484C434D4AL;
     /**
      * The layout's version, in both files; a change of layout changes it (2: the result file's abort
-     * section; 3: when each job saw its abort request, in that section).
+     * section; 3: when each job saw its abort request, in that section; 4: the private memories'
+     * use, the largest release among the areas' uses and the releases in their own section).
      */
-    public static final long VERSION = 3;
+    public static final long VERSION = 4;
     /**
      * The result file's code ("ABORTNS" read as a little-endian long) that opens its abort section:
      * each event's abort request (JobRecords.abortNs), then when its job saw it (JobRecords.abortSeenNs),
      * after the outcomes.
      */
     public static final long ABORT_SECTION = 0x00534E54524F4241L;
+    /**
+     * The result file's code ("RELEASES" read as a little-endian long) that opens its last section,
+     * after the areas' uses: for each handler's private memory (from {@link MissionSizes#PREDICT} on),
+     * its releases, how many of them allocated, and the bytes they allocated in all.
+     */
+    public static final long RELEASE_SECTION = 0x53455341454C4552L;
 
     // The run file's header, by word: the filter, the policy (OverrunPolicy.code), the time scale.
     public static final int MAGIC_WORD = 0;

@@ -27,6 +27,11 @@ public class PredictHandler extends PeriodicEventHandler {
 
     @Override
     public void handleAsyncEvent() {
+        handleRelease();
+        runner.releaseEnding();
+    }
+
+    private void handleRelease() {
         int i = released++;
         if (i >= entry.odoEvent.length) {
             return; // the odometry has ended; the mission terminates when the last event ends

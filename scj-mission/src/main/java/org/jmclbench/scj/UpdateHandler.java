@@ -24,6 +24,11 @@ public class UpdateHandler extends AperiodicEventHandler {
 
     @Override
     public void handleAsyncEvent() {
+        handleRelease();
+        runner.releaseEnding();
+    }
+
+    private void handleRelease() {
         int k = queue.take();
         if (k < 0) {
             return; // nothing released (not expected: one release per offered event)

@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import java.util.concurrent.atomic.AtomicIntegerArray;
+
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.DelegatingLocalizer;
 import org.jmclbench.core.mcl.Localizer;
@@ -31,15 +33,27 @@ import org.junit.jupiter.params.provider.EnumSource;
  */
 class MissionTest {
     /** One finished launch: the safelet (its mission and entry), the records handed over and compat's report. */
-    static final class Launch {
+    static final class Launch implements MissionOutput {
         MclSafelet safelet;
         JobRecords records;
         RunReport report;
+        /** The releases that reported their end to the output, per area (MissionSizes). */
+        final AtomicIntegerArray releasesEnding = new AtomicIntegerArray(MissionSizes.AREA_COUNT);
+
+        @Override
+        public void missionEnded(JobRecords r) {
+            records = r;
+        }
+
+        @Override
+        public void releaseEnding(int area) {
+            releasesEnding.incrementAndGet(area);
+        }
     }
 
     static Launch launch(MissionConfiguration c, MissionInput input) {
         Launch l = new Launch();
-        l.safelet = new MclSafelet(c, input, r -> l.records = r);
+        l.safelet = new MclSafelet(c, input, l);
         l.report = ScjRuntime.launch(l.safelet, 1);
         return l;
     }
@@ -268,6 +282,21 @@ class MissionTest {
             }
         }
         fail("three missions in a row allocated; the last: " + allocated);
+    }
+
+    @Test
+    void everyReleaseOfAHandlerReportsItsEndToTheOutputUnderItsOwnArea() {
+        // what an SCJ VM that keeps no peak of a private memory measures by (HvmOutput)
+        Launch l = launch(config(100, MclConfig.Memory.SCOPED, OverrunPolicy.SKIP, 1.0), new SyntheticInput(1.0));
+        assertTrue(l.report.succeeded(), () -> String.valueOf(l.report.failure()));
+        assertEquals(0, l.releasesEnding.get(MissionSizes.IMMORTAL));
+        assertEquals(0, l.releasesEnding.get(MissionSizes.MISSION));
+        for (int area = MissionSizes.PREDICT; area < MissionSizes.AREA_COUNT; area++) {
+            String handler = MissionSizes.AREA_NAMES[area];
+            long cycles = privateArea(l.report, handler).cycles();
+            assertTrue(cycles > 0, handler);
+            assertEquals(cycles, l.releasesEnding.get(area), handler + ": releases rtsj-compat counted against those reported");
+        }
     }
 
     @Test

@@ -266,7 +266,7 @@ final class EvaluationData {
      * one-off (rtsj-compat/README.md) does not read as a release style that allocates.
      */
     static String areaText(ReportModel.MemoryArea a) {
-        // the HVM reports its handlers' private memories by size only, not their use
+        // HVM runs before result-file version 4 (docs/HVM.md) stored their private memories by size only
         StringBuilder t = new StringBuilder(a.name()).append(' ').append(a.peakBytes() == null ? "use not measured" : bytes(a.peakBytes()));
         List<String> notes = new ArrayList<>();
         if (a.releases() != null && a.allocatingReleases() != null) {

@@ -12,6 +12,11 @@ public final class RecordCapture implements MissionOutput {
         this.records = r;
     }
 
+    @Override
+    public void releaseEnding(int area) {
+        // rtsj-compat measures every area itself (AreaUsage)
+    }
+
     /** The records the mission handed over, or null when it never ended. */
     public JobRecords records() {
         return records;

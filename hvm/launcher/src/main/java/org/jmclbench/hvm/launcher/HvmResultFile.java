@@ -10,6 +10,7 @@ import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.scj.MissionRunFile;
 import org.jmclbench.scj.MissionSizes;
 import org.jmclbench.workload.RunFailure;
+import org.jmclbench.workload.output.MemoryArea;
 
 /**
  * The reader of the HVM's result file (docs/HVM.md, "Result file"): the job records the
@@ -17,8 +18,9 @@ import org.jmclbench.workload.RunFailure;
  * behind is recorded as a valid run. Anything but exactly the layout of
  * {@link MissionRunFile} for the run's events is a {@link RunFailure} with one line naming the
  * file: a wrong magic or version, another event count or covariance flag, an outcome that is not
- * a code of an ended job, a missing abort section code, a time below -1, a completed job without a start or ending before it, a
- * negative duration, an area use below -1, a file cut short or one with bytes after its end.
+ * a code of an ended job, a missing abort or release section code, a time below -1, a completed job without a start or ending before it, a
+ * negative duration, an area use below -1, a private memory's releases that do not agree with its use, a file cut short or one
+ * with bytes after its end.
  */
 final class HvmResultFile {
     private final DataInputStream in;
@@ -29,18 +31,38 @@ final class HvmResultFile {
         this.name = name;
     }
 
+    /** Each memory area's use as the executable measured it, by {@link MissionSizes} index. */
+    static final class AreaUse {
+        /** Immortal and mission memory: what they held when the mission ended (their peak); a private memory: its largest release. */
+        final long[] peakBytes = new long[MissionSizes.AREA_COUNT];
+        /** A private memory's releases, those that allocated, and the bytes they allocated in all (0 for immortal and mission). */
+        final long[] releases = new long[MissionSizes.AREA_COUNT];
+        final long[] allocatingReleases = new long[MissionSizes.AREA_COUNT];
+        final long[] allocatedBytes = new long[MissionSizes.AREA_COUNT];
+
+        /** Area {@code a} for summary.json, given the size icecap was given. */
+        MemoryArea area(int a, long size) {
+            Long peak = peakBytes[a] < 0 ? null : Long.valueOf(peakBytes[a]);
+            if (releases[a] == 0) {
+                return new MemoryArea(MissionSizes.AREA_NAMES[a], size, peak, null);
+            }
+            return new MemoryArea(MissionSizes.AREA_NAMES[a], size, peak, Math.round((double) allocatedBytes[a] / releases[a]),
+                    releases[a], allocatingReleases[a]);
+        }
+    }
+
     /**
      * The records of the events of {@code timeline}, read from {@code in}; each area's use as the
-     * executable measured it goes into {@code peaks} (-1: not measurable on icecap).
+     * executable measured it goes into {@code use}.
      *
      * @param name what messages call the file
      */
-    static JobRecords read(InputStream in, String name, Timeline timeline, boolean covariance, long[] peaks)
+    static JobRecords read(InputStream in, String name, Timeline timeline, boolean covariance, AreaUse use)
             throws RunFailure, IOException {
-        return new HvmResultFile(in, name).records(timeline, covariance, peaks);
+        return new HvmResultFile(in, name).records(timeline, covariance, use);
     }
 
-    private JobRecords records(Timeline timeline, boolean covariance, long[] peaks) throws RunFailure, IOException {
+    private JobRecords records(Timeline timeline, boolean covariance, AreaUse use) throws RunFailure, IOException {
         JobRecords r = new JobRecords(timeline, covariance);
         try {
             if (word() != MissionRunFile.OUTPUT_MAGIC || word() != MissionRunFile.VERSION) {
@@ -90,10 +112,25 @@ final class HvmResultFile {
             if (r.durationNs < 0) {
                 throw fail("negative duration " + r.durationNs);
             }
+            long[] peaks = use.peakBytes;
             for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
                 peaks[a] = word();
                 if (peaks[a] < -1) {
                     throw fail("area " + MissionSizes.AREA_NAMES[a] + " used " + peaks[a] + " bytes");
+                }
+            }
+            section = word();
+            if (section != MissionRunFile.RELEASE_SECTION) {
+                throw fail("word " + Long.toHexString(section) + " where the release section's code belongs");
+            }
+            for (int a = MissionSizes.PREDICT; a < MissionSizes.AREA_COUNT; a++) {
+                use.releases[a] = word();
+                use.allocatingReleases[a] = word();
+                use.allocatedBytes[a] = word();
+                if (!agree(peaks[a], use.releases[a], use.allocatingReleases[a], use.allocatedBytes[a])) {
+                    throw fail("area " + MissionSizes.AREA_NAMES[a] + ": " + use.releases[a] + " releases, "
+                            + use.allocatingReleases[a] + " of them allocating " + use.allocatedBytes[a]
+                            + " bytes, the largest " + peaks[a] + " bytes: these do not agree");
                 }
             }
         } catch (EOFException e) {
@@ -103,6 +140,22 @@ final class HvmResultFile {
             throw fail("bytes after the end of the records");
         }
         return r;
+    }
+
+    /**
+     * Whether a private memory's counts can come from one run: none negative, the allocating releases
+     * among the releases, bytes only from allocating releases, each of them between 1 byte and the
+     * largest release.
+     */
+    static boolean agree(long largest, long releases, long allocating, long bytes) {
+        if (largest < 0 || releases < 0 || allocating < 0 || allocating > releases || bytes < 0) {
+            return false;
+        }
+        if (allocating == 0) {
+            return bytes == 0 && largest == 0;
+        }
+        // allocating <= bytes <= allocating * largest, without overflowing the product
+        return largest > 0 && bytes >= allocating && bytes / allocating + (bytes % allocating == 0 ? 0 : 1) <= largest;
     }
 
     private long time(int k) throws IOException, RunFailure {

@@ -98,12 +98,11 @@ public final class HvmRun {
                 throw new RunFailure("the HVM executable failed (exit status " + p.exitValue() + "): "
                         + lastLines(output, 3) + " (log: " + log + ")");
             }
-            long[] peaks = new long[MissionSizes.AREA_COUNT];
-            JobRecords records = readRecords(out, dataset, options.covariance, peaks);
+            HvmResultFile.AreaUse use = new HvmResultFile.AreaUse();
+            JobRecords records = readRecords(out, dataset, options.covariance, use);
             List<MemoryArea> areas = new ArrayList<>();
             for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
-                // icecap keeps no peak for private memory (-1): unknown, not a byte count
-                areas.add(new MemoryArea(MissionSizes.AREA_NAMES[a], sizes[a], peaks[a] < 0 ? null : Long.valueOf(peaks[a]), null));
+                areas.add(use.area(a, sizes[a]));
             }
             return new EngineResult(records, areas, new HvmFacts(exe, wallNs));
         } finally {
@@ -216,10 +215,10 @@ public final class HvmRun {
         }
     }
 
-    /** The result file's records (docs/HVM.md), checked by {@link HvmResultFile}; each area's use into peaks. */
-    static JobRecords readRecords(File f, Dataset d, boolean covariance, long[] peaks) throws RunFailure, IOException {
+    /** The result file's records (docs/HVM.md), checked by {@link HvmResultFile}; each area's use into {@code use}. */
+    static JobRecords readRecords(File f, Dataset d, boolean covariance, HvmResultFile.AreaUse use) throws RunFailure, IOException {
         try (InputStream is = new BufferedInputStream(new FileInputStream(f))) {
-            return HvmResultFile.read(is, f.getPath(), d.timeline(), covariance, peaks);
+            return HvmResultFile.read(is, f.getPath(), d.timeline(), covariance, use);
         }
     }
 

@@ -17,6 +17,7 @@ import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.scj.MissionRunFile;
 import org.jmclbench.scj.MissionSizes;
 import org.jmclbench.workload.RunFailure;
+import org.jmclbench.workload.output.MemoryArea;
 import org.junit.jupiter.api.Test;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
@@ -40,10 +41,10 @@ class HvmResultFileFuzzTest {
         }
         boolean covariance = (data[0] & 1) != 0;
         byte[] file = Arrays.copyOfRange(data, 1, data.length);
-        long[] peaks = new long[MissionSizes.AREA_COUNT];
+        HvmResultFile.AreaUse use = new HvmResultFile.AreaUse();
         JobRecords r;
         try {
-            r = HvmResultFile.read(new ByteArrayInputStream(file), "result.bin", TIMELINE, covariance, peaks);
+            r = HvmResultFile.read(new ByteArrayInputStream(file), "result.bin", TIMELINE, covariance, use);
         } catch (RunFailure e) {
             assertTrue(e.getMessage().startsWith("the HVM's result file result.bin: "), e.getMessage());
             assertFalse(e.getMessage().contains("\n"), e.getMessage());
@@ -58,13 +59,19 @@ class HvmResultFileFuzzTest {
         }
         assertTrue(r.durationNs >= 0);
         assertEquals(covariance, r.cov != null);
+        for (int a = MissionSizes.PREDICT; a < MissionSizes.AREA_COUNT; a++) {
+            MemoryArea area = use.area(a, 1 << 20);
+            if (area.releases != null) {
+                assertTrue(area.allocatingReleases <= area.releases && area.bytesPerRelease <= area.peakBytes, area.name);
+            }
+        }
     }
 
     @Test
     void aWellFormedFileIsReadWordForWord() throws Exception {
         byte[] file = valid(false);
-        long[] peaks = new long[MissionSizes.AREA_COUNT];
-        JobRecords r = HvmResultFile.read(new ByteArrayInputStream(file), "result.bin", TIMELINE, false, peaks);
+        HvmResultFile.AreaUse use = new HvmResultFile.AreaUse();
+        JobRecords r = HvmResultFile.read(new ByteArrayInputStream(file), "result.bin", TIMELINE, false, use);
         assertEquals(5, r.size());
         assertEquals(JobRecords.DONE, r.outcome[0]);
         assertEquals(JobRecords.SKIPPED, r.outcome[4]);
@@ -73,7 +80,19 @@ class HvmResultFileFuzzTest {
         assertEquals(-1, r.abortNs[0]);
         assertEquals(50_520_000L, r.abortSeenNs[1]);
         assertEquals(-1, r.abortSeenNs[0]);
-        assertEquals(-1, peaks[MissionSizes.PREDICT]);
+        MemoryArea mission = use.area(MissionSizes.MISSION, 8192);
+        assertEquals(4096L, mission.peakBytes);
+        assertEquals(null, mission.releases, "releases apply to a handler's private memory only");
+        MemoryArea predict = use.area(MissionSizes.PREDICT, 8192);
+        assertEquals(0L, predict.peakBytes);
+        assertEquals(3L, predict.releases);
+        assertEquals(0L, predict.allocatingReleases);
+        assertEquals(0L, predict.bytesPerRelease);
+        MemoryArea update = use.area(MissionSizes.UPDATE, 8192);
+        assertEquals(3204L, update.peakBytes);
+        assertEquals(2L, update.releases);
+        assertEquals(2L, update.allocatingReleases);
+        assertEquals(3100L, update.bytesPerRelease);
     }
 
     @Test
@@ -98,6 +117,31 @@ class HvmResultFileFuzzTest {
         byte[] abort = good.clone();
         putWord(abort, 4 + 5 * 6 + 1 + 3, -2); // event 3's abort request
         assertRefused("event 3: time -2 (ns are >= 0, -1 for none)", abort);
+        int releaseSection = good.length / 8 - 1 - 3 * 3;
+        byte[] releases = good.clone();
+        putWord(releases, releaseSection, 5);
+        assertRefused("word 5 where the release section's code belongs", releases);
+        byte[] allocating = good.clone();
+        putWord(allocating, releaseSection + 1 + 3 + 1, 3); // update: 3 of its 2 releases allocated
+        assertRefused("area update: 2 releases, 3 of them allocating 6200 bytes, the largest 3204 bytes: these do not agree", allocating);
+        byte[] beyondLargest = good.clone();
+        putWord(beyondLargest, releaseSection + 1 + 3 + 2, 6409); // more than two releases of 3204 bytes
+        assertRefused("area update: 2 releases, 2 of them allocating 6409 bytes, the largest 3204 bytes: these do not agree", beyondLargest);
+    }
+
+    @Test
+    void aPrivateMemorysCountsAgreeOnlyWhenOneRunCanHaveMadeThem() {
+        assertTrue(HvmResultFile.agree(0, 5, 0, 0), "no release allocated");
+        assertTrue(HvmResultFile.agree(100, 5, 2, 150));
+        assertTrue(HvmResultFile.agree(100, 5, 2, 200), "both at the largest");
+        assertFalse(HvmResultFile.agree(100, 5, 2, 201), "more than two releases of at most 100 bytes");
+        assertFalse(HvmResultFile.agree(100, 5, 2, 1), "an allocating release allocates at least a byte each");
+        assertFalse(HvmResultFile.agree(0, 5, 1, 10), "a largest release of 0 bytes with an allocating one");
+        assertFalse(HvmResultFile.agree(10, 5, 0, 0), "a largest release of 10 bytes, none allocating");
+        assertFalse(HvmResultFile.agree(-1, 5, 0, 0), "an unknown largest release");
+        // 2 * largest overflows a long; the check must not
+        assertTrue(HvmResultFile.agree(Long.MAX_VALUE, 3, 2, Long.MAX_VALUE));
+        assertFalse(HvmResultFile.agree(Long.MAX_VALUE / 2, 3, 2, Long.MAX_VALUE));
     }
 
     /** Keeps a valid file among the kept inputs (run once by hand after a layout change). */
@@ -121,7 +165,7 @@ class HvmResultFileFuzzTest {
 
     private static void assertRefused(String problem, byte[] file, boolean covariance) {
         RunFailure e = assertThrows(RunFailure.class, () -> HvmResultFile.read(new ByteArrayInputStream(file), "result.bin",
-                TIMELINE, covariance, new long[MissionSizes.AREA_COUNT]));
+                TIMELINE, covariance, new HvmResultFile.AreaUse()));
         assertEquals("the HVM's result file result.bin: " + problem, e.getMessage());
     }
 
@@ -161,8 +205,14 @@ class HvmResultFileFuzzTest {
             word(b, Double.doubleToRawLongBits(0.25 * i));
         }
         word(b, 1_000_000L);
-        for (int a = 0; a < MissionSizes.AREA_COUNT; a++) {
-            word(b, a < MissionSizes.PREDICT ? 4096 : -1);
+        // the areas' uses: immortal and mission at the end, then each private memory's largest release
+        for (long use : new long[] {4096, 4096, 0, 3204, 0}) {
+            word(b, use);
+        }
+        word(b, MissionRunFile.RELEASE_SECTION);
+        // releases, allocating releases, bytes: predict and sensor allocate nothing, update 2996 + 3204
+        for (long w : new long[] {3, 0, 0, 2, 2, 6200, 2, 0, 0}) {
+            word(b, w);
         }
         return b.toByteArray();
     }

@@ -150,6 +150,37 @@ class HvmRunTest {
     }
 
     @Test
+    void eachPrivateMemorysUseIsMeasuredOnTheHvmPerRelease() throws Exception {
+        assumeHvm();
+        // icecap empties a private memory after each release and keeps no peak: the mission's
+        // output reads it as each release ends. Allocation is deterministic, so exact counts hold.
+        int n = 400;
+        File ds = SyntheticDataset.write(new File(tmp, "ds-areas"), 2.0, 3, true, true);
+        Dataset d = DatasetReader.readFolder(ds);
+        for (String memory : new String[] {"scoped", "preallocated"}) {
+            RunOptions o = org.jmclbench.workload.RunOptionsParser.parse(new String[] {"run", "--engine", "hvm", "-p",
+                String.valueOf(n), "--memory", memory, "--policy", "queue", "--dataset", ds.getPath()});
+            File folder = new File(tmp, "areas-" + memory);
+            folder.mkdirs();
+            java.util.Map<String, org.jmclbench.workload.output.MemoryArea> areas = new java.util.HashMap<>();
+            for (org.jmclbench.workload.output.MemoryArea a : HvmRun.run(o, d, folder, System.err).areas) {
+                areas.put(a.name, a);
+            }
+            for (String handler : new String[] {"predict", "update", "sensor"}) {
+                org.jmclbench.workload.output.MemoryArea a = areas.get(handler);
+                assertTrue(a.releases != null && a.releases > 0, memory + " " + handler + ": no release measured");
+                boolean allocates = memory.equals("scoped") && !handler.equals("sensor");
+                // scoped: a predict release allocates three particle arrays, an update release at least five
+                long temporaries = handler.equals("predict") ? 24L * n : 36L * n;
+                assertEquals(allocates ? a.releases : Long.valueOf(0), a.allocatingReleases, memory + " " + handler);
+                assertTrue(allocates ? a.peakBytes >= temporaries && a.peakBytes <= a.size : a.peakBytes == 0,
+                        memory + " " + handler + " largest release " + a.peakBytes);
+            }
+            assertNull(areas.get("mission").releases, "releases apply to private memories only");
+        }
+    }
+
+    @Test
     void aPrivateMemoryTooSmallFailsWithTheAreaNamed() throws Exception {
         assumeHvm();
         File ds = SyntheticDataset.write(new File(tmp, "ds"), 2.0, 3, true, true);

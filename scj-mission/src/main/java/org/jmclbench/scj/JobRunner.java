@@ -9,7 +9,8 @@ import org.jmclbench.core.record.JobRecords;
  * One handler's side of a job: records the event's release, runs the job on the robot (holding
  * its monitor, so the start is when the robot became this job's), records start, end and
  * outcome, and counts the event as ended, the last one requesting the mission's termination.
- * Also the job's abort signal, and where the handler's release ends. One per handler, used by that handler's thread only; no allocation.
+ * Also the job's abort signal, and where the handler's release ends. One per handler, used by
+ * that handler's thread only; no allocation.
  */
 final class JobRunner implements AbortSignal {
     private final Robot robot;

@@ -244,23 +244,20 @@ static int summarise(const jm_run *r, int task, struct task_summary *t)
 
 static void json_stats(jm_json *j, const char *key, const jm_stats *s)
 {
+	static const char *const quantile_keys[] = { "min", "p50", "p90", "p99", "p999", "max" };
+	const int64_t quantiles[] = { s->min, s->p50, s->p90, s->p99, s->p999, s->max };
+	size_t q;
+
 	jm_json_open(j, key, '{');
 	jm_json_i64(j, "count", s->count);
-	if (s->count == 0) {
-		static const char *const keys[] = { "mean", "stdev", "min", "p50", "p90", "p99", "p999", "max" };
-		size_t i;
-
-		for (i = 0; i < sizeof(keys) / sizeof(keys[0]); i++)
-			jm_json_null(j, keys[i]);
-	} else {
-		jm_json_double(j, "mean", s->mean);
-		jm_json_double(j, "stdev", s->stdev);
-		jm_json_i64(j, "min", s->min);
-		jm_json_i64(j, "p50", s->p50);
-		jm_json_i64(j, "p90", s->p90);
-		jm_json_i64(j, "p99", s->p99);
-		jm_json_i64(j, "p999", s->p999);
-		jm_json_i64(j, "max", s->max);
+	/* an empty sample has no statistics, each one null (jm_json_double writes NaN as null) */
+	jm_json_double(j, "mean", s->count ? s->mean : NAN);
+	jm_json_double(j, "stdev", s->count ? s->stdev : NAN);
+	for (q = 0; q < sizeof(quantiles) / sizeof(quantiles[0]); q++) {
+		if (s->count)
+			jm_json_i64(j, quantile_keys[q], quantiles[q]);
+		else
+			jm_json_null(j, quantile_keys[q]);
 	}
 	jm_json_close(j, '}');
 }
@@ -425,10 +422,16 @@ static void json_engine(jm_json *j, const jm_run *r)
 	jm_json_close(j, '}');
 }
 
+/* The mean of deviation q over the real-position times; NaN when there were none. */
+static double deviation_mean(const struct deviation *d, int q)
+{
+	return d->n ? d->sum[q] / (double)d->n : NAN;
+}
+
 static void json_deviation(jm_json *j, const char *key, const struct deviation *d, int q)
 {
 	jm_json_open(j, key, '{');
-	jm_json_double(j, "mean", d->n ? d->sum[q] / (double)d->n : NAN);
+	jm_json_double(j, "mean", deviation_mean(d, q));
 	jm_json_double(j, "max", d->n ? d->max[q] : NAN);
 	jm_json_close(j, '}');
 }
@@ -450,9 +453,10 @@ static const char *shortest(char buf[40], double v)
 	return buf;
 }
 
-static double ms(double ns)
+/* The mean of a sample in milliseconds; NaN when it is empty. */
+static double mean_ms(const jm_stats *s)
 {
-	return ns / 1e6;
+	return s->count ? s->mean / 1e6 : NAN;
 }
 
 int jm_output_write(const jm_run *r, const char *dir, char *err, size_t errlen)
@@ -491,13 +495,13 @@ int jm_output_write(const jm_run *r, const char *dir, char *err, size_t errlen)
 	f = open_out(dir, "data.txt", path, sizeof(path), err, errlen);
 	if (!f)
 		goto out;
-	fprintf(f, "deviationXY %s\n", shortest(num, dev.n ? dev.sum[2] / (double)dev.n : NAN));
-	fprintf(f, "deviationX %s\n", shortest(num, dev.n ? dev.sum[0] / (double)dev.n : NAN));
-	fprintf(f, "deviationY %s\n", shortest(num, dev.n ? dev.sum[1] / (double)dev.n : NAN));
-	fprintf(f, "deviationAngle %s\n", shortest(num, dev.n ? dev.sum[3] / (double)dev.n : NAN));
+	fprintf(f, "deviationXY %s\n", shortest(num, deviation_mean(&dev, 2)));
+	fprintf(f, "deviationX %s\n", shortest(num, deviation_mean(&dev, 0)));
+	fprintf(f, "deviationY %s\n", shortest(num, deviation_mean(&dev, 1)));
+	fprintf(f, "deviationAngle %s\n", shortest(num, deviation_mean(&dev, 3)));
 	fprintf(f, "missCount %ld\n", t[2].miss);
-	fprintf(f, "averageReleaseJitter %s\n", shortest(num, t[2].s.jitter.count ? ms(t[2].s.jitter.mean) : NAN));
-	fprintf(f, "averageTaskTime %s\n", shortest(num, t[2].s.latency.count ? ms(t[2].s.latency.mean) : NAN));
+	fprintf(f, "averageReleaseJitter %s\n", shortest(num, mean_ms(&t[2].s.jitter)));
+	fprintf(f, "averageTaskTime %s\n", shortest(num, mean_ms(&t[2].s.latency)));
 	if (close_out(f, path, err, errlen))
 		goto out;
 

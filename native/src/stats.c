@@ -13,16 +13,22 @@ static int cmp_i64(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
-int64_t jm_percentile(const int64_t *sorted, long n, int per_mille)
+/* The nearest rank's index among n sorted values, q = per_mille / 1000: ceil(q * n) - 1, in [0, n - 1]. */
+static long nearest_rank(long n, int per_mille)
 {
-	/* ceil(q * n) - 1 in integers, so that no rounding of q * n can move the rank */
+	/* in integers, so that no rounding of q * n can move the rank */
 	long i = (long)((per_mille * (long long)n + 999) / 1000) - 1;
 
 	if (i < 0)
 		i = 0;
 	if (i > n - 1)
 		i = n - 1;
-	return sorted[i];
+	return i;
+}
+
+int64_t jm_percentile(const int64_t *sorted, long n, int per_mille)
+{
+	return sorted[nearest_rank(n, per_mille)];
 }
 
 void jm_stats_compute(jm_stats *s, int64_t *values, long n)
@@ -114,12 +120,8 @@ int jm_task_summary_compute(jm_task_summary *s, const jm_timeline *tl, int task)
 	jm_stats_compute(&s->response, v[2], nv[2]); /* sorts v[2] */
 	for (q = 0; q < JM_RELEASED_QUANTILES && s->released > 0; q++) {
 		/* nearest rank among every release; the ranks past the completed ones are +inf */
-		long i = (long)((jm_released_per_mille[q] * (long long)s->released + 999) / 1000) - 1;
+		long i = nearest_rank(s->released, jm_released_per_mille[q]);
 
-		if (i < 0)
-			i = 0;
-		if (i > s->released - 1)
-			i = s->released - 1;
 		s->released_response[q] = i < nv[2] ? v[2][i] : JM_NOT_COMPLETED;
 	}
 	jm_stats_compute(&s->cpu, v[3], nv[3]);

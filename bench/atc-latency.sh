@@ -24,8 +24,8 @@ while [ $# -gt 0 ]; do
         --work) work=$(value_of "$@"); shift 2 ;;
         --java) java=$(value_of "$@"); shift 2 ;;
         --no-build) build=0; shift ;;
-        -h|--help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        *) echo "atc-latency: $1: unknown option (see --help)" >&2; exit 2 ;;
+        -h|--help) usage ;;
+        *) unknown_option "$1" ;;
     esac
 done
 require_count --aborts "$aborts"; require_count --warmup "$warmup"; require_count --work "$work"

@@ -24,7 +24,7 @@ while [ $# -gt 0 ]; do
         --seconds) n=$(value_of "$@"); limit=(-max_total_time="$n"); shift 2 ;;
         --work) work=$(value_of "$@"); work=$(readlink -f "$work"); shift 2 ;;
         --no-build) build=0; shift ;;
-        -h|--help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) usage ;;
         c-dataset|c-options|java-events|java-properties|java-options|java-matrix|java-hvm-result) targets+=("$1"); shift ;;
         *) echo "fuzz: $1: unknown target or option (see --help)" >&2; exit 2 ;;
     esac

@@ -28,8 +28,8 @@ while [ $# -gt 0 ]; do
         --policy) policy=$(value_of "$@"); shift 2 ;;
         --dataset) dataset=$(value_of "$@"); shift 2 ;;
         -O) out=$(value_of "$@"); shift 2 ;;
-        -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        *) echo "hvm-compare: $1: unknown option" >&2; exit 2 ;;
+        -h|--help) usage ;;
+        *) unknown_option "$1" ;;
     esac
 done
 [ -n "$out" ] || out=$(mktemp -d "${TMPDIR:-/tmp}/hvm-compare.XXXXXX")

@@ -28,8 +28,8 @@ while [ $# -gt 0 ]; do
         --out) out=$(value_of "$@"); shift 2 ;;
         --no-build) build=0; shift ;;
         --) shift; jmh_opts=("$@"); break ;;
-        -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        *) echo "kernel-ratio: $1: unknown option (see --help)" >&2; exit 2 ;;
+        -h|--help) usage ;;
+        *) unknown_option "$1" ;;
     esac
 done
 [ -f "$dataset/odometry.txt" ] || { echo "kernel-ratio: --dataset: $dataset: not a dataset folder" >&2; exit 2; }

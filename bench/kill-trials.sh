@@ -31,8 +31,8 @@ while [ $# -gt 0 ]; do
         --command) command=$(value_of "$@"); shift 2 ;;
         --seed) seed=$(value_of "$@"); shift 2 ;;
         --keep) keep=$(value_of "$@"); shift 2 ;;
-        -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        *) echo "kill-trials: $1: unknown option" >&2; exit 2 ;;
+        -h|--help) usage ;;
+        *) unknown_option "$1" ;;
     esac
 done
 require_count --trials "$trials"; require_count --seed "$seed"

@@ -13,3 +13,16 @@ value_of() {
 require_count() {
     [[ "$2" =~ ^[0-9]+$ ]] || { echo "$me: $1: $2: not a count" >&2; exit 2; }
 }
+
+# --help: prints the script's header comment (from line 2 to the first line that is not a
+# comment) without its "# ", and exits 0; read from the script, so it cannot drift from it.
+usage() {
+    awk 'NR > 1 { if (!/^#/) exit; sub(/^# ?/, ""); print }' "$0"
+    exit 0
+}
+
+# Ends the script on an option $1 it does not know, as the jmclbench commands do.
+unknown_option() {
+    echo "$me: $1: unknown option (see --help)" >&2
+    exit 2
+}

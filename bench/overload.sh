@@ -27,8 +27,8 @@ while [ $# -gt 0 ]; do
         --out) out=$(value_of "$@"); shift 2 ;;
         --fifo) prefix=(chrt -f 80); shift ;;
         --) shift; break ;;
-        -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        *) echo "overload: $1: unknown option" >&2; exit 2 ;;
+        -h|--help) usage ;;
+        *) unknown_option "$1" ;;
     esac
 done
 extra=("$@")

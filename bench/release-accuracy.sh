@@ -28,8 +28,8 @@ while [ $# -gt 0 ]; do
         --loops-50ms) loops_50ms=$(value_of "$@"); shift 2 ;;
         --spin-us) spin_us=$(value_of "$@"); shift 2 ;;
         --java) java=$(value_of "$@"); shift 2 ;;
-        -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        *) echo "release-accuracy: $1: unknown option" >&2; exit 2 ;;
+        -h|--help) usage ;;
+        *) unknown_option "$1" ;;
     esac
 done
 require_count --loops-1ms "$loops_1ms"; require_count --loops-50ms "$loops_50ms"; require_count --spin-us "$spin_us"

@@ -7,7 +7,7 @@
 set -euo pipefail
 home=$(cd "$(dirname "$0")/.." && pwd)
 . "$home/bench/options.sh"
-case "${1:-}" in -h|--help) sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;; esac
+case "${1:-}" in -h|--help) usage ;; esac
 runs=${1:-1000}
 require_count RUNS "$runs"
 cd "$home"

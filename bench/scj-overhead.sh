@@ -31,8 +31,8 @@ while [ $# -gt 0 ]; do
         --repeat) repeat=$(value_of "$@"); shift 2 ;;
         --java) java=$(value_of "$@"); shift 2 ;;
         --out) out=$(value_of "$@"); shift 2 ;;
-        -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        *) echo "scj-overhead: $1: unknown option" >&2; exit 2 ;;
+        -h|--help) usage ;;
+        *) unknown_option "$1" ;;
     esac
 done
 require_count --particles "$particles"

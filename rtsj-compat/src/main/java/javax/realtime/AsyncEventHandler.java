@@ -19,9 +19,12 @@ import org.jmclbench.rtsjcompat.Priorities;
 public class AsyncEventHandler extends AsyncBaseEventHandler {
     private static int created;
 
-    // The RTSJ parameters and the thread of control, in one object so that an SCJ handler (built
-    // with the no-argument constructor and never attached to an event) carries one null field.
-    private Binding binding;
+    // The RTSJ parameters and the thread of control, in one object: an SCJ handler (built with the
+    // no-argument constructor and never attached to an event) shares UNBOUND, which holds neither;
+    // bind() replaces it, so UNBOUND never gets a server.
+    private static final Binding UNBOUND = new Binding(null, null, null, null, null);
+
+    private Binding binding = UNBOUND;
 
     /** A handler whose {@link #handleAsyncEvent()} is overridden; default scheduling, no area. */
     public AsyncEventHandler() {
@@ -60,9 +63,9 @@ public class AsyncEventHandler extends AsyncBaseEventHandler {
 
     /** The work of one release: runs the logic given at construction, if any. */
     public void handleAsyncEvent() {
-        Binding b = binding();
-        if (b != null && b.logic != null) {
-            b.logic.run();
+        Runnable logic = binding().logic;
+        if (logic != null) {
+            logic.run();
         }
     }
 
@@ -91,26 +94,22 @@ public class AsyncEventHandler extends AsyncBaseEventHandler {
 
     /** The scheduling parameters (null: the default priority). */
     public SchedulingParameters getSchedulingParameters() {
-        Binding b = binding();
-        return b == null ? null : b.scheduling;
+        return binding().scheduling;
     }
 
     /** The release parameters given at construction, or null. */
     public ReleaseParameters getReleaseParameters() {
-        Binding b = binding();
-        return b == null ? null : b.release;
+        return binding().release;
     }
 
     /** The memory parameters given at construction, or null. */
     public MemoryParameters getMemoryParameters() {
-        Binding b = binding();
-        return b == null ? null : b.memory;
+        return binding().memory;
     }
 
     /** The allocation context of each release (null: the heap). */
     public MemoryArea getMemoryArea() {
-        Binding b = binding();
-        return b == null ? null : b.area;
+        return binding().area;
     }
 
     /** One fire of an event this handler is attached to. */
@@ -120,7 +119,7 @@ public class AsyncEventHandler extends AsyncBaseEventHandler {
 
     /** The handler's thread of control, created (with its name, class#n) if it has none yet. */
     final synchronized HandlerServer bind() {
-        if (binding == null) {
+        if (binding == UNBOUND) {
             binding = new Binding(null, null, null, null, null);
         }
         if (binding.server == null) {
@@ -142,7 +141,7 @@ public class AsyncEventHandler extends AsyncBaseEventHandler {
     }
 
     private synchronized HandlerServer server() {
-        return binding == null ? null : binding.server;
+        return binding.server;
     }
 
     /** A handler's RTSJ parameters and its thread of control. */

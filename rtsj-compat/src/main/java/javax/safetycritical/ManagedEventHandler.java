@@ -79,7 +79,7 @@ public abstract class ManagedEventHandler extends BoundAsyncEventHandler impleme
      */
     final HandlerSetup runtimeSetup() {
         return new HandlerSetup(this, name, priority.getPriority(), privateMemory.bookkeeping(), deadlineOf(release),
-                storage.getMaxBackingStore(), 0);
+                storage.getMaxBackingStore());
     }
 
     /** The deadline of {@code release} in ns, or {@link HandlerRuntime#NO_DEADLINE}. */

@@ -21,7 +21,6 @@ public abstract class HandlerRuntime extends IdleParticipant implements Runnable
     private final Area privateArea;
     private final long deadline;
     private final long backingStore;
-    private final long stackSize;
 
     /** This handler's thread (set at mission start; read by the threads that wake it). */
     protected volatile ScjThread thread;
@@ -43,7 +42,6 @@ public abstract class HandlerRuntime extends IdleParticipant implements Runnable
         this.privateArea = setup.privateArea;
         this.deadline = setup.deadline;
         this.backingStore = setup.backingStore;
-        this.stackSize = setup.stackSize;
         RunState.current().addHandler(this);
     }
 
@@ -80,7 +78,7 @@ public abstract class HandlerRuntime extends IdleParticipant implements Runnable
     final void start(MissionControl mission, long missionStart) {
         this.mission = mission;
         prepare(missionStart);
-        ScjThread st = new ScjThread(this, name, Priorities.toJava(priority), stackSize);
+        ScjThread st = new ScjThread(this, name, Priorities.toJava(priority));
         st.setBackingStore(backingStore);
         this.thread = st;
         time.threadStarted();

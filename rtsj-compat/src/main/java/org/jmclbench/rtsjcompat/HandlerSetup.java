@@ -5,8 +5,8 @@ import javax.realtime.AsyncEventHandler;
 /**
  * What every {@link HandlerRuntime} is made from, whatever its kind: the handler, its name,
  * priority and private memory, its relative deadline in ns ({@link HandlerRuntime#NO_DEADLINE}:
- * none), the bytes for its nested private memories and its thread's stack size (0: the JVM's
- * default). Built once per handler, at mission initialization.
+ * none) and the bytes for its nested private memories. Built once per handler, at mission
+ * initialization.
  */
 public final class HandlerSetup {
     final AsyncEventHandler handler;
@@ -15,17 +15,15 @@ public final class HandlerSetup {
     final Area privateArea;
     final long deadline;
     final long backingStore;
-    final long stackSize;
 
     /** The setup of {@code handler}; see the class comment for the units. */
     public HandlerSetup(AsyncEventHandler handler, String name, int priority, Area privateArea, long deadline,
-            long backingStore, long stackSize) {
+            long backingStore) {
         this.handler = handler;
         this.name = name;
         this.priority = priority;
         this.privateArea = privateArea;
         this.deadline = deadline;
         this.backingStore = backingStore;
-        this.stackSize = stackSize;
     }
 }

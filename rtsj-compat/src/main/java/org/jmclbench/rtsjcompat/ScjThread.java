@@ -73,12 +73,7 @@ public class ScjThread extends Thread {
 
     /** A thread running {@code body}, named {@code name}, at Java priority {@code javaPriority}. */
     public ScjThread(Runnable body, String name, int javaPriority) {
-        this(body, name, javaPriority, 0);
-    }
-
-    /** As {@link #ScjThread(Runnable, String, int)}, with a stack of {@code stackSize} bytes (0: default). */
-    public ScjThread(Runnable body, String name, int javaPriority, long stackSize) {
-        super(null, body, name, stackSize);
+        super(null, body, name);
         this.meter = AllocationMeter.current();
         this.selfCost = meter.selfCost();
         setPriority(javaPriority);

@@ -32,8 +32,8 @@ public final class JpfRunner {
     public static final String PREPEND = "jmclbench.classpath.prepend";
 
     private final JpfHome jpf;
-    private final List<String> hostClassPath;
-    private final List<String> targetClassPath;
+    /** The project's classes and libraries: on the forked JVM's class path (listeners) and JPF's (the program). */
+    private final List<String> classPath;
     private final Path logDir;
     private final int timeoutSeconds;
     private final int heapMegabytes;
@@ -56,8 +56,7 @@ public final class JpfRunner {
                 cp.add(new File(e).getAbsolutePath());
             }
         }
-        this.hostClassPath = cp;
-        this.targetClassPath = cp;
+        this.classPath = cp;
         this.logDir = logDir;
         this.timeoutSeconds = timeoutSeconds;
         this.heapMegabytes = heapMegabytes;
@@ -111,7 +110,7 @@ public final class JpfRunner {
         cmd.add("-cp");
         List<String> host = new ArrayList<>();
         host.add(jpf.jpfJar().toString());
-        host.addAll(hostClassPath);
+        host.addAll(classPath);
         cmd.add(String.join(File.pathSeparator, host));
         cmd.add("gov.nasa.jpf.JPF");
         cmd.add("+site=" + jpf.siteProperties());
@@ -124,7 +123,7 @@ public final class JpfRunner {
         cmd.add("+jmclbench.verdict=" + verdict.toAbsolutePath());
         // A seeded bug that is an edit of a shipped class puts the edited class first.
         String prepend = config.remove(PREPEND);
-        cmd.add("+classpath=" + (prepend == null ? "" : prepend + ",") + String.join(",", targetClassPath));
+        cmd.add("+classpath=" + (prepend == null ? "" : prepend + ",") + String.join(",", classPath));
         for (Map.Entry<String, String> e : config.entrySet()) {
             cmd.add("+" + e.getKey() + "=" + e.getValue());
         }

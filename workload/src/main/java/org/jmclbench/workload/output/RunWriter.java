@@ -15,6 +15,7 @@ import org.jmclbench.workload.engine.EngineFacts;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.core.record.Deviation;
 import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.workload.record.Samples;
 import org.jmclbench.workload.record.Stats;
 
 /**
@@ -220,14 +221,13 @@ public final class RunWriter {
     }
 
     private Stats dispatcherLateness() {
-        long[] v = new long[records.size()];
-        int c = 0;
+        Samples lateness = new Samples(records.size());
         for (int k = 0; k < records.size(); k++) {
             if (records.wakeNs[k] >= 0 && records.releaseNs[k] >= 0) {
-                v[c++] = records.wakeNs[k] - records.releaseNs[k];
+                lateness.add(records.wakeNs[k] - records.releaseNs[k]);
             }
         }
-        return Stats.of(v, c);
+        return lateness.stats();
     }
 
     /** Writes the field {@code name}, a STATS object; every field null when the sample is empty. */

@@ -1,10 +1,9 @@
 package org.jmclbench.workload.output;
 
-import java.util.Arrays;
-
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.RunOptions;
+import org.jmclbench.workload.record.Samples;
 import org.jmclbench.workload.record.Stats;
 
 /**
@@ -58,19 +57,13 @@ public final class TaskSummary {
     public static TaskSummary count(JobRecords r, int task) {
         TaskSummary s = new TaskSummary();
         int n = r.size();
-        long[] jitter = new long[n];
-        long[] latency = new long[n];
-        long[] response = new long[n];
-        long[] cpu = new long[n];
-        long[] abort = new long[n];
-        long[] notice = new long[n];
-        long[] stop = new long[n];
-        int na = 0;
-        int ns = 0;
-        int nj = 0;
-        int nl = 0;
-        int nr = 0;
-        int nc = 0;
+        Samples jitter = new Samples(n);
+        Samples latency = new Samples(n);
+        Samples response = new Samples(n);
+        Samples cpu = new Samples(n);
+        Samples abort = new Samples(n);
+        Samples notice = new Samples(n);
+        Samples stop = new Samples(n);
         for (int k = 0; k < n; k++) {
             if (task >= 0 && r.timeline.task(k) != task) {
                 continue;
@@ -97,24 +90,24 @@ public final class TaskSummary {
                     break;
             }
             if (r.startNs[k] >= 0 && r.releaseNs[k] >= 0) {
-                jitter[nj++] = r.startNs[k] - r.releaseNs[k];
+                jitter.add(r.startNs[k] - r.releaseNs[k]);
             }
             if (r.completed(k) && r.startNs[k] >= 0 && r.endNs[k] >= 0) {
-                latency[nl++] = r.endNs[k] - r.startNs[k];
+                latency.add(r.endNs[k] - r.startNs[k]);
                 if (r.releaseNs[k] >= 0) {
-                    response[nr++] = r.endNs[k] - r.releaseNs[k];
+                    response.add(r.endNs[k] - r.releaseNs[k]);
                 }
             }
             if (r.cpuNs[k] >= 0) {
-                cpu[nc++] = r.cpuNs[k];
+                cpu.add(r.cpuNs[k]);
             }
             long from = r.abortFromNs(k);
             if (from >= 0) {
-                abort[na++] = r.endNs[k] - from;
+                abort.add(r.endNs[k] - from);
                 long seen = r.abortSeenFromNs(k);
                 if (seen >= 0) {
-                    notice[ns] = seen - from;
-                    stop[ns++] = r.endNs[k] - seen;
+                    notice.add(seen - from);
+                    stop.add(r.endNs[k] - seen);
                 }
                 if (r.completed(k)) {
                     s.abortsCompleted++;
@@ -122,16 +115,17 @@ public final class TaskSummary {
             }
         }
         s.completed = s.done + s.late;
-        s.releaseJitter = Stats.of(jitter, nj);
-        s.taskLatency = Stats.of(latency, nl);
-        s.responseTime = Stats.of(response, nr);
-        s.cpu = Stats.of(cpu, nc);
-        s.abortLatency = Stats.of(abort, na);
-        s.abortNotice = Stats.of(notice, ns);
-        s.abortStop = Stats.of(stop, ns);
-        Arrays.sort(response, 0, nr);
+        s.releaseJitter = jitter.stats();
+        s.taskLatency = latency.stats();
+        s.responseTime = response.stats();
+        s.cpu = cpu.stats();
+        s.abortLatency = abort.stats();
+        s.abortNotice = notice.stats();
+        s.abortStop = stop.stats();
+        long[] sortedResponse = response.sorted();
         for (int q = 0; q < RELEASED_QUANTILES.length && s.released > 0; q++) {
-            s.releasedResponse[q] = Stats.rankOfReleases(response, nr, s.released, RELEASED_QUANTILES[q]);
+            s.releasedResponse[q] = Stats.rankOfReleases(sortedResponse, sortedResponse.length, s.released,
+                    RELEASED_QUANTILES[q]);
         }
         return s;
     }

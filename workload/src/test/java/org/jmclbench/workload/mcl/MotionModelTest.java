@@ -41,19 +41,16 @@ class MotionModelTest {
         int n = 20000;
         Localizer l = Localizers.create(MclConfig.of(n), Playground.thesis(), 1.0, 0.5, 0.2);
         double[] p = new double[3];
-        double[] sx = new double[2];
-        double[] st = new double[2];
+        Moments x = new Moments();
+        Moments theta = new Moments();
         for (int i = 0; i < n; i++) {
             l.particle(i, p);
-            sx[0] += p[0] - 1.0;
-            sx[1] += (p[0] - 1.0) * (p[0] - 1.0);
-            double dt = Angles.wrapPi(p[2] - 0.2);
-            st[0] += dt;
-            st[1] += dt * dt;
+            x.add(p[0] - 1.0);
+            theta.add(Angles.wrapPi(p[2] - 0.2));
         }
-        assertEquals(0.0, sx[0] / n, 0.002);
-        assertEquals(MotionModel.INIT_SIGMA, Math.sqrt(sx[1] / n), 0.002);
-        assertEquals(MotionModel.INIT_SIGMA, Math.sqrt(st[1] / n), 0.002);
+        assertEquals(0.0, x.mean(), 0.002);
+        assertEquals(MotionModel.INIT_SIGMA, x.rms(), 0.002);
+        assertEquals(MotionModel.INIT_SIGMA, theta.rms(), 0.002);
     }
 
     @Test
@@ -69,12 +66,9 @@ class MotionModelTest {
         }
         assertTrue(l.predict(dx, dy, dtheta, AbortSignal.NEVER));
         double[] p = new double[3];
-        double sumF = 0;
-        double sumF2 = 0;
-        double sumL = 0;
-        double sumL2 = 0;
-        double sumT = 0;
-        double sumT2 = 0;
+        Moments forward = new Moments();
+        Moments left = new Moments();
+        Moments turn = new Moments();
         for (int i = 0; i < n; i++) {
             l.particle(i, p);
             double c = Math.cos(before[i][2]);
@@ -82,29 +76,20 @@ class MotionModelTest {
             double ex = p[0] - before[i][0];
             double ey = p[1] - before[i][1];
             // The displacement seen in the particle's own frame before the move.
-            double forward = c * ex + s * ey;
-            double left = -s * ex + c * ey;
-            double turn = Angles.wrapPi(p[2] - before[i][2]);
-            sumF += forward;
-            sumF2 += forward * forward;
-            sumL += left;
-            sumL2 += left * left;
-            sumT += turn;
-            sumT2 += turn * turn;
+            forward.add(c * ex + s * ey);
+            left.add(-s * ex + c * ey);
+            turn.add(Angles.wrapPi(p[2] - before[i][2]));
         }
         double d = Math.sqrt(dx * dx + dy * dy);
         double sigmaXY = MotionModel.ALPHA_XY * d + MotionModel.FLOOR_XY;
         double sigmaT = MotionModel.ALPHA_THETA * dtheta + MotionModel.ALPHA_THETA_XY * d + MotionModel.FLOOR_THETA;
-        double mf = sumF / n;
-        double ml = sumL / n;
-        double mt = sumT / n;
         // Means within 5 standard errors, spreads within 5 percent.
-        assertEquals(dx, mf, 5 * sigmaXY / Math.sqrt(n));
-        assertEquals(dy, ml, 5 * sigmaXY / Math.sqrt(n));
-        assertEquals(dtheta, mt, 5 * sigmaT / Math.sqrt(n));
-        assertEquals(sigmaXY, Math.sqrt(sumF2 / n - mf * mf), 0.05 * sigmaXY);
-        assertEquals(sigmaXY, Math.sqrt(sumL2 / n - ml * ml), 0.05 * sigmaXY);
-        assertEquals(sigmaT, Math.sqrt(sumT2 / n - mt * mt), 0.05 * sigmaT);
+        assertEquals(dx, forward.mean(), 5 * sigmaXY / Math.sqrt(n));
+        assertEquals(dy, left.mean(), 5 * sigmaXY / Math.sqrt(n));
+        assertEquals(dtheta, turn.mean(), 5 * sigmaT / Math.sqrt(n));
+        assertEquals(sigmaXY, forward.spread(), 0.05 * sigmaXY);
+        assertEquals(sigmaXY, left.spread(), 0.05 * sigmaXY);
+        assertEquals(sigmaT, turn.spread(), 0.05 * sigmaT);
     }
 
     @Test
@@ -117,15 +102,42 @@ class MotionModelTest {
         assertEquals(1.0, l.estimateY());
         assertEquals(0.0, l.estimateTheta());
         double[] p = new double[3];
-        double mx = 0;
-        double my = 0;
+        Moments x = new Moments();
+        Moments y = new Moments();
         for (int i = 0; i < n; i++) {
             l.particle(i, p);
             assertTrue(p[0] >= 0 && p[0] < 3 && p[1] >= 0 && p[1] < 2 && p[2] >= 0 && p[2] < Angles.TWO_PI);
-            mx += p[0];
-            my += p[1];
+            x.add(p[0]);
+            y.add(p[1]);
         }
-        assertEquals(1.5, mx / n, 0.03);
-        assertEquals(1.0, my / n, 0.02);
+        assertEquals(1.5, x.mean(), 0.03);
+        assertEquals(1.0, y.mean(), 0.02);
+    }
+
+    /** Running sums of a sample, for its mean, its root mean square and its spread about the mean. */
+    private static final class Moments {
+        private int count;
+        private double sum;
+        private double sumOfSquares;
+
+        void add(double v) {
+            count++;
+            sum += v;
+            sumOfSquares += v * v;
+        }
+
+        double mean() {
+            return sum / count;
+        }
+
+        double rms() {
+            return Math.sqrt(sumOfSquares / count);
+        }
+
+        /** The population standard deviation. */
+        double spread() {
+            double m = mean();
+            return Math.sqrt(sumOfSquares / count - m * m);
+        }
     }
 }

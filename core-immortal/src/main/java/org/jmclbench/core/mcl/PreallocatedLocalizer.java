@@ -43,10 +43,8 @@ public final class PreallocatedLocalizer extends CommittedParticles {
         if (!FilterSteps.predict(x, y, theta, spareX, spareY, spareTheta, n, dx, dy, dtheta, r, abort, pollMask)) {
             return false;
         }
-        // Commit: swap the buffers and the generator, then move the estimate without noise.
-        swapBuffers();
-        work = rng;
-        rng = r;
+        // Commit, then move the estimate without noise.
+        commitParticles();
         FilterSteps.moveEstimate(est, dx, dy, dtheta);
         return true;
     }
@@ -66,15 +64,17 @@ public final class PreallocatedLocalizer extends CommittedParticles {
                 spareTheta, abort, pollMask)) {
             return false;
         }
-        // Commit.
-        swapBuffers();
-        work = rng;
-        rng = r;
+        commitParticles();
         commitEstimate(newEst, newCov);
         return true;
     }
 
-    private void swapBuffers() {
+    // A job's commit: its buffers and its generator become the committed ones, by swapping
+    // references, so that the old ones are the next job's spares.
+    private void commitParticles() {
+        Rng r = rng;
+        rng = work;
+        work = r;
         double[] t = x;
         x = spareX;
         spareX = t;

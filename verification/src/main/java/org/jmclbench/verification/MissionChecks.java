@@ -2,6 +2,7 @@ package org.jmclbench.verification;
 
 import org.jmclbench.verification.jpf.AreaReferenceListener;
 import org.jmclbench.verification.jpf.AtomicRuntimeSyncPolicy;
+import org.jmclbench.verification.jpf.ConstructedFinalsSharednessPolicy;
 import org.jmclbench.verification.jpf.JmmRaceDetector;
 import org.jmclbench.verification.jpf.JpfCheck;
 import org.jmclbench.verification.jpf.JpfCheck.Expectation;
@@ -88,6 +89,7 @@ public final class MissionChecks {
         c.put("race.include", RACE_SCOPE);
         c.put("vm.shared.always_break_types", "org.jmclbench.scj.*,org.jmclbench.verification.seeded.*");
         c.put("vm.shared.never_break_types", "java.*,jdk.*,javax.*,org.jmclbench.rtsjcompat.*");
+        c.put("vm.scheduler.sharedness.class", ConstructedFinalsSharednessPolicy.class.getName());
         return c;
     }
 

@@ -18,8 +18,24 @@ import java.util.Map;
  * @param failedRuns null when that count failed by a late job; else how its runs failed (crashed, timed out)
  *                   or why the runtime cannot run it (unsupported, above a count that held), which bounds the
  *                   load by the runtime's limits, not by a deadline
+ * @param late       when that count failed by late jobs, how: a bracket whose upper count was late in one
+ *                   repetition by one job rests on that job, and a repeated search may move it a step
  */
-record BreakdownLoad(Integer holds, Integer fails, String failedRuns) {
+record BreakdownLoad(Integer holds, Integer fails, String failedRuns, Late late) {
+
+    /** The count failed by late jobs in {@code repetitions} of its {@code of} completed repetitions, at most {@code mostJobs} in one. */
+    record Late(int repetitions, int of, int mostJobs) {
+        @Override
+        public String toString() {
+            return repetitions + " of " + of + (of == 1 ? " repetition" : " repetitions") + " late, by "
+                    + (repetitions == 1 ? "" : "at most ") + mostJobs + (mostJobs == 1 ? " job" : " jobs");
+        }
+
+        /** One repetition late by a job or two: the bracket rests on those few jobs. */
+        boolean marginal() {
+            return repetitions == 1 && mostJobs <= 2;
+        }
+    }
 
     /** Per configuration of the queue cells, in the order of {@code configs}. */
     static Map<String, BreakdownLoad> of(List<ReportModel.Cell> queueCells, List<String> configs) {
@@ -33,6 +49,7 @@ record BreakdownLoad(Integer holds, Integer fails, String failedRuns) {
             Integer holds = null;
             Integer fails = null;
             String failedRuns = null;
+            Late late = null;
             for (ReportModel.Cell c : cs) {
                 if (c.unsupported > 0 && c.ok == 0 && holds == null) {
                     continue; // nothing of this configuration has run yet (an engine's memory style it lacks)
@@ -40,11 +57,12 @@ record BreakdownLoad(Integer holds, Integer fails, String failedRuns) {
                 if (!held(c)) {
                     fails = c.particles;
                     failedRuns = failedRuns(c);
+                    late = failedRuns == null ? late(c) : null;
                     break;
                 }
                 holds = c.particles;
             }
-            out.put(config, new BreakdownLoad(holds, fails, failedRuns));
+            out.put(config, new BreakdownLoad(holds, fails, failedRuns, late));
         }
         return out;
     }
@@ -72,6 +90,19 @@ record BreakdownLoad(Integer holds, Integer fails, String failedRuns) {
         int cut = first.indexOf(": ");
         first = cut > 0 ? first.substring(0, cut) : first;
         return bad + " of " + (c.ok + bad) + " runs failed" + (first.isBlank() ? "" : ": " + first);
+    }
+
+    /** How a count's completed repetitions were late; null when none completed. */
+    static Late late(ReportModel.Cell c) {
+        ReportModel.Agg misses = c.metrics.get(Metric.MISS_COUNT.name());
+        if (misses == null || misses.n() == 0) {
+            return null;
+        }
+        int lateRepetitions = 0;
+        for (double v : misses.values()) {
+            lateRepetitions += v > 0 ? 1 : 0;
+        }
+        return new Late(lateRepetitions, misses.n(), (int) Math.round(misses.max()));
     }
 
     private static String firstFailure(ReportModel.Cell c) {

@@ -3,6 +3,7 @@ package org.jmclbench.tooling.report;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.Map;
@@ -20,7 +21,11 @@ class BreakdownLoadTest {
         c.runs = ok + failed;
         c.ok = ok;
         c.failed = failed;
-        c.metrics.put(Metric.MISS_COUNT.name(), new ReportModel.Agg(ok, maxLate / 2, null, null, 0.0, maxLate, new double[0]));
+        double[] late = new double[ok]; // the first repetition has the late jobs, the others none
+        if (ok > 0) {
+            late[0] = maxLate;
+        }
+        c.metrics.put(Metric.MISS_COUNT.name(), new ReportModel.Agg(ok, maxLate / ok, null, null, 0.0, maxLate, late));
         return c;
     }
 
@@ -31,9 +36,9 @@ class BreakdownLoadTest {
                 cell("c", 1600, 3, 0, 1), cell("c", 3200, 3, 0, 0), // held again above a failure: noise, not capacity
                 cell("jvm", 100, 3, 0, 2),
                 cell("all", 100, 3, 0, 0), cell("all", 200, 3, 0, 0)), List.of("c", "jvm", "all", "absent"));
-        assertEquals(new BreakdownLoad(800, 1600, null), b.get("c"));
-        assertEquals(new BreakdownLoad(null, 100, null), b.get("jvm"), "late already at the smallest count");
-        assertEquals(new BreakdownLoad(200, null, null), b.get("all"), "every count held");
+        assertEquals(new BreakdownLoad(800, 1600, null, new BreakdownLoad.Late(1, 3, 1)), b.get("c"));
+        assertEquals(new BreakdownLoad(null, 100, null, new BreakdownLoad.Late(1, 3, 2)), b.get("jvm"), "late already at the smallest count");
+        assertEquals(new BreakdownLoad(200, null, null, null), b.get("all"), "every count held");
         assertFalse(b.containsKey("absent"));
     }
 
@@ -49,7 +54,7 @@ class BreakdownLoadTest {
         crashed.metrics.clear();
         crashed.failures.add(new ReportModel.Failure(1, "failed", 1, "exit code 1: jmclbench: failure: the HVM executable failed"
                 + " (exit status 139): warning: unimplemented function executed", null));
-        assertEquals(new BreakdownLoad(400, 800, "3 of 3 runs failed: the HVM executable failed (exit status 139)"),
+        assertEquals(new BreakdownLoad(400, 800, "3 of 3 runs failed: the HVM executable failed (exit status 139)", null),
                 BreakdownLoad.of(List.of(cell("hvm", 400, 3, 0, 0), crashed), List.of("hvm")).get("hvm"));
         assertNull(BreakdownLoad.of(List.of(cell("c", 100, 2, 1, 3)), List.of("c")).get("c").failedRuns(),
                 "a completed run had a late job: the deadline bounds the load, whatever the failed one did");
@@ -64,9 +69,23 @@ class BreakdownLoadTest {
         past.failures.add(new ReportModel.Failure(1, "unsupported", 3, "--particles 66399: the HVM holds at most 65,535"
                 + " particles (its arrays hold at most 65,535 elements; docs/HVM.md)", null));
         assertEquals(new BreakdownLoad(60888, 66399, "the runtime cannot run it: the HVM holds at most 65,535 particles"
-                + " (its arrays hold at most 65,535 elements; docs/HVM.md)"),
+                + " (its arrays hold at most 65,535 elements; docs/HVM.md)", null),
                 BreakdownLoad.of(List.of(cell("hvm", 60888, 3, 0, 0), past), List.of("hvm")).get("hvm"));
-        assertEquals(new BreakdownLoad(null, null, null), BreakdownLoad.of(List.of(past), List.of("hvm")).get("hvm"),
+        assertEquals(new BreakdownLoad(null, null, null, null), BreakdownLoad.of(List.of(past), List.of("hvm")).get("hvm"),
                 "a configuration none of whose counts ran has no breakdown load to bound");
+    }
+
+    @Test
+    void aLateCountSaysInHowManyRepetitionsAndByHowManyJobs() {
+        ReportModel.Cell c = cell("c", 800, 3, 0, 0);
+        c.metrics.put(Metric.MISS_COUNT.name(), new ReportModel.Agg(3, 7.0 / 3, null, null, 0.0, 5.0, new double[] { 2, 0, 5 }));
+        BreakdownLoad.Late late = BreakdownLoad.of(List.of(cell("c", 400, 3, 0, 0), c), List.of("c")).get("c").late();
+        assertEquals(new BreakdownLoad.Late(2, 3, 5), late);
+        assertEquals("2 of 3 repetitions late, by at most 5 jobs", late.toString());
+        assertFalse(late.marginal(), "late in two repetitions is no single unlucky job");
+        BreakdownLoad.Late one = BreakdownLoad.late(cell("c", 800, 3, 0, 1));
+        assertEquals("1 of 3 repetitions late, by 1 job", one.toString());
+        assertTrue(one.marginal());
+        assertFalse(BreakdownLoad.late(cell("c", 800, 3, 0, 3)).marginal(), "three late jobs are more than a job or two");
     }
 }

@@ -121,6 +121,10 @@ class EvaluationDocumentTest {
 
     /** The rows of the table that follows {@code caption}, as cells (header and rule left out). */
     private List<List<String>> table(String caption) {
+        return table(doc, caption);
+    }
+
+    private static List<List<String>> table(String doc, String caption) {
         int at = doc.indexOf(caption);
         assertTrue(at >= 0, "no " + caption + " in\n" + doc);
         String[] lines = doc.substring(at).split("\n");
@@ -412,6 +416,41 @@ class EvaluationDocumentTest {
         assertTrue(d.contains("none.json` does not exist"), d);
         assertTrue(d.contains("no JVM that ran several collectors"), d);
         assertFalse(d.contains("Table 5b:") || d.contains("Table 13:"));
+    }
+
+    @Test
+    void aBracketSaysHowItsUpperCountWasLateAndALateJobOrTwoIsNoSeparation() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.policies = List.of("queue");
+        f.particles = List.of(10, 100, 400);
+        f.durationS = 6;
+        Path queue = ReportFixtures.write(f, dir, "queue.db");
+        Path out = dir.resolve("queue");
+        EvaluationDocument.write(queue, "queue.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
+        String d = Files.readString(out.resolve("EVALUATION.md"));
+        List<StoredRun> stored;
+        try (StoredRuns store = StoredRuns.open(queue, "--db")) {
+            stored = store.runs();
+        }
+        List<List<String>> rows = table(d, "Table 1:");
+        assertEquals(f.configs.size(), rows.size(), d);
+        List<String> marginal = new ArrayList<>();
+        for (List<String> row : rows) {
+            // the first count at which a run had a late job, straight from the runs
+            int fails = stored.stream().filter(r -> r.config().equals(row.get(0)) && Metric.MISS_COUNT.of(r) > 0)
+                    .mapToInt(r -> r.particles).min().orElseThrow();
+            List<Double> late = stored.stream().filter(r -> r.config().equals(row.get(0)) && r.particles == fails)
+                    .map(Metric.MISS_COUNT::of).toList();
+            long lateRuns = late.stream().filter(v -> v > 0).count();
+            long most = Math.round(late.stream().mapToDouble(Double::doubleValue).max().orElseThrow());
+            assertEquals(fails + " (" + lateRuns + " of " + late.size() + " repetitions late, by " + (lateRuns == 1 ? "" : "at most ")
+                    + most + (most == 1 ? " job)" : " jobs)"), row.get(2), row.get(0));
+            if (lateRuns == 1 && most <= 2) {
+                marginal.add(row.get(0));
+            }
+        }
+        assertFalse(marginal.isEmpty() || marginal.size() == rows.size(), "the fixture should have both kinds: " + rows);
+        assertTrue(d.contains("was late in one repetition by a job or two (" + String.join(", ", marginal) + "), the bracket rests"), d);
     }
 
     @Test

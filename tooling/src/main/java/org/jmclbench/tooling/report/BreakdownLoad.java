@@ -19,7 +19,7 @@ import java.util.Map;
  *                   or why the runtime cannot run it (unsupported, above a count that held), which bounds the
  *                   load by the runtime's limits, not by a deadline
  * @param late       when that count failed by late jobs, how: a bracket whose upper count was late in one
- *                   repetition by one job rests on that job, and a repeated search may move it a step
+ *                   repetition by a job or two rests on those jobs, and a repeated search may move it a step
  */
 record BreakdownLoad(Integer holds, Integer fails, String failedRuns, Late late) {
 

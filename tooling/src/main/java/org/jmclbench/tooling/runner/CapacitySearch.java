@@ -38,8 +38,11 @@ public final class CapacitySearch {
         }
     }
 
-    /** One probed count and whether it held. */
-    public record Probe(int particles, boolean held) {
+    /** One probed count and why it did not hold ({@code notHeld} null: it held). */
+    public record Probe(int particles, String notHeld) {
+        public boolean held() {
+            return notHeld == null;
+        }
     }
 
     private final int from;
@@ -76,17 +79,18 @@ public final class CapacitySearch {
     }
 
     /**
-     * Records the outcome of probing {@code particles}, which must be {@link #next()}.
+     * Records the outcome of probing {@code particles}, which must be {@link #next()}: null when
+     * it held, else why not, in a few words.
      *
      * @throws IllegalStateException for a count the search did not ask for
      */
-    public void record(int particles, boolean held) {
+    public void record(int particles, String notHeld) {
         int expected = next();
         if (particles != expected) {
             throw new IllegalStateException("probed " + particles + ", the search asked for " + expected);
         }
-        probes.add(new Probe(particles, held));
-        if (held) {
+        probes.add(new Probe(particles, notHeld));
+        if (notHeld == null) {
             low = particles;
         } else {
             high = particles;
@@ -105,6 +109,11 @@ public final class CapacitySearch {
     /** The smallest count that did not hold (null: every probe held). */
     public Integer high() {
         return high;
+    }
+
+    /** Why {@link #high()} did not hold (null: no count failed). */
+    public String highNotHeld() {
+        return probes.stream().filter(p -> high != null && p.particles() == high).map(Probe::notHeld).findFirst().orElse(null);
     }
 
     public List<Probe> probes() {
@@ -139,7 +148,7 @@ public final class CapacitySearch {
     public static CapacitySearch run(int from, int max, IntPredicate holds) {
         CapacitySearch s = new CapacitySearch(from, max);
         for (int n = s.next(); n >= 0; n = s.next()) {
-            s.record(n, holds.test(n));
+            s.record(n, holds.test(n) ? null : "failed");
         }
         return s;
     }

@@ -29,10 +29,10 @@ class CapacitySearchTest {
         }
         assertTrue(probes.size() <= CapacitySearch.maxProbes(from, max), probes.size() + " probes");
         if (s.low() != null) {
-            assertTrue(probes.contains(new CapacitySearch.Probe(s.low(), true)), "low held");
+            assertTrue(probes.contains(new CapacitySearch.Probe(s.low(), null)), "low held");
         }
         if (s.high() != null) {
-            assertTrue(probes.contains(new CapacitySearch.Probe(s.high(), false)), "high failed");
+            assertTrue(probes.contains(new CapacitySearch.Probe(s.high(), "failed")), "high failed");
         }
         if (s.status() == CapacitySearch.Status.BRACKETED) {
             assertTrue(s.low() < s.high());
@@ -119,7 +119,7 @@ class CapacitySearchTest {
     @Test
     void aProbeTheSearchDidNotAskForIsRefused() {
         CapacitySearch s = new CapacitySearch(100, 1000);
-        assertThrows(IllegalStateException.class, () -> s.record(200, true));
+        assertThrows(IllegalStateException.class, () -> s.record(200, null));
         assertThrows(IllegalArgumentException.class, () -> new CapacitySearch(0, 10));
         assertThrows(IllegalArgumentException.class, () -> new CapacitySearch(100, 50));
     }

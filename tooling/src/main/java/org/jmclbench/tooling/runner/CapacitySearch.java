@@ -40,9 +40,6 @@ public final class CapacitySearch {
 
     /** One probed count and why it did not hold ({@code notHeld} null: it held). */
     public record Probe(int particles, String notHeld) {
-        public boolean held() {
-            return notHeld == null;
-        }
     }
 
     private final int from;

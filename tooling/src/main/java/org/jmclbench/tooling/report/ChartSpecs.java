@@ -481,7 +481,8 @@ final class ChartSpecs {
         loads.forEach((config, b) -> {
             holds.put(config, b.holds() == null ? 0 : b.holds());
             notes.add(config + ": holds at " + (b.holds() == null ? "no count" : b.holds())
-                    + ", fails at " + (b.fails() == null ? "no count of the store" : b.fails()));
+                    + ", fails at " + (b.fails() == null ? "no count of the store" : b.fails())
+                    + (b.failedRuns() != null ? " (" + b.failedRuns() + ")" : b.late() != null ? " (" + b.late() + ")" : ""));
         });
         return loadBars(s, "breakdown", "Breakdown load: every job by its deadline (" + s.where() + ")",
                 "largest particle count with no late job", holds, notes).withStem(s.stem("breakdown"));

@@ -348,6 +348,30 @@ class ChartSpecsTest {
     }
 
     @Test
+    void theBreakdownBarSaysHowItsUpperCountWasLate() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.policies = List.of("queue");
+        f.particles = List.of(10, 100, 400);
+        f.durationS = 6;
+        Path db = ReportFixtures.write(f, dir, "queue.db");
+        ReportModel queue;
+        try (StoredRuns store = StoredRuns.open(db, "--db")) {
+            queue = ReportModel.build(store, line -> { });
+        }
+        ChartSpec breakdown = queue.charts.stream().filter(c -> c.id().equals("breakdown")).findFirst().orElseThrow();
+        Map<String, BreakdownLoad> loads = BreakdownLoad.of(queue.cells, breakdown.categories().stream().map(ChartSpec.Category::config).toList());
+        List<String> notes = breakdown.series().get(0).notes();
+        assertEquals(loads.size(), notes.size());
+        int i = 0;
+        for (Map.Entry<String, BreakdownLoad> e : loads.entrySet()) {
+            BreakdownLoad b = e.getValue();
+            assertTrue(b.late() != null, "every fixture configuration is late at some count: " + b);
+            assertEquals(e.getKey() + ": holds at " + (b.holds() == null ? "no count" : b.holds()) + ", fails at " + b.fails()
+                    + " (" + b.late() + ")", notes.get(i++));
+        }
+    }
+
+    @Test
     void theRuntimeKindIsDecidedFromTheStoredFacts() throws Exception {
         ObjectMapper json = new ObjectMapper();
         var none = MissingNode.getInstance();

@@ -37,9 +37,14 @@ class ChartSpecsTest {
 
     @BeforeAll
     static void build() throws Exception {
-        Path db = ReportFixtures.write(ReportFixtures.mixed(), dir, "results.db");
+        model = model(ReportFixtures.mixed(), "results.db");
+    }
+
+    /** The report model of a fixture store written to {@code name}. */
+    static ReportModel model(FixtureDb fixture, String name) throws Exception {
+        Path db = ReportFixtures.write(fixture, dir, name);
         try (StoredRuns store = StoredRuns.open(db, "--db")) {
-            model = ReportModel.build(store, line -> { });
+            return ReportModel.build(store, line -> { });
         }
     }
 
@@ -285,11 +290,7 @@ class ChartSpecsTest {
 
     @Test
     void memoryPerReleaseDrawsZeroAsZeroAndSaysWhatTheAreasAre() throws Exception {
-        Path db = ReportFixtures.write(ReportFixtures.engines(), dir, "engines.db");
-        ReportModel m;
-        try (StoredRuns store = StoredRuns.open(db, "--db")) {
-            m = ReportModel.build(store, line -> { });
-        }
+        ReportModel m = model(ReportFixtures.engines(), "engines.db");
         ChartSpec spec = m.charts.stream().filter(c -> c.id().equals("memory-release") && Integer.valueOf(400).equals(c.setting().particles()))
                 .findFirst().orElseThrow();
         assertTrue(spec.title().contains("SCJ budgets on a JVM heap, real HVM areas and a GC heap are different things"), spec.title());
@@ -349,15 +350,7 @@ class ChartSpecsTest {
 
     @Test
     void theBreakdownBarSaysHowItsUpperCountWasLate() throws Exception {
-        FixtureDb f = new FixtureDb();
-        f.policies = List.of("queue");
-        f.particles = List.of(10, 100, 400);
-        f.durationS = 6;
-        Path db = ReportFixtures.write(f, dir, "queue.db");
-        ReportModel queue;
-        try (StoredRuns store = StoredRuns.open(db, "--db")) {
-            queue = ReportModel.build(store, line -> { });
-        }
+        ReportModel queue = model(ReportFixtures.breakdown(), "queue.db");
         ChartSpec breakdown = queue.charts.stream().filter(c -> c.id().equals("breakdown")).findFirst().orElseThrow();
         Map<String, BreakdownLoad> loads = BreakdownLoad.of(queue.cells, breakdown.categories().stream().map(ChartSpec.Category::config).toList());
         List<String> notes = breakdown.series().get(0).notes();

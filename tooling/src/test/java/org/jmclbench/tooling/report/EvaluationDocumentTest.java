@@ -420,10 +420,7 @@ class EvaluationDocumentTest {
 
     @Test
     void aBracketSaysHowItsUpperCountWasLateAndALateJobOrTwoIsNoSeparation() throws Exception {
-        FixtureDb f = new FixtureDb();
-        f.policies = List.of("queue");
-        f.particles = List.of(10, 100, 400);
-        f.durationS = 6;
+        FixtureDb f = ReportFixtures.breakdown();
         Path queue = ReportFixtures.write(f, dir, "queue.db");
         Path out = dir.resolve("queue");
         EvaluationDocument.write(queue, "queue.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));

@@ -53,6 +53,18 @@ final class ReportFixtures {
     }
 
     /**
+     * A breakdown search's store: the default runtimes under queue at 10, 100 and 400 particles,
+     * 3 repetitions; every runtime has a late job at some count, some in one repetition only.
+     */
+    static FixtureDb breakdown() {
+        FixtureDb f = new FixtureDb();
+        f.policies = List.of("queue");
+        f.particles = List.of(10, 100, 400);
+        f.durationS = 6;
+        return f;
+    }
+
+    /**
      * native, and temurin-25 under {@code profile} with both engines and their four memory
      * styles (Java SE preallocated and allocating, SCJ preallocated and scoped).
      */

@@ -230,6 +230,8 @@ class EvaluateCommandTest {
             assertEquals(4, store.runs().size());
         }
         assertTrue(doc.contains("from `evaluation/evaluation.db.gz`"), "the document names the committed data it is written from");
+        // the resume rewrote the document and its data (with the machine's doctor report of now: steal time varies)
+        String resumed = Files.readString(dir.resolve("docs/EVALUATION.md"));
 
         // a fresh clone has the data but not the store: --no-run writes the same document, byte for byte, figures too
         Path data = dir.resolve("evaluation/evaluation.db.gz");
@@ -237,7 +239,7 @@ class EvaluateCommandTest {
         Files.delete(db);
         Path again = dir.resolve("again/evaluation");
         assertEquals(0, JmclbenchCli.execute("evaluate", "--no-run", "--matrix", f.toString(), "--out", again.toString()));
-        assertEquals(doc, Files.readString(dir.resolve("again/EVALUATION.md")));
+        assertEquals(resumed, Files.readString(dir.resolve("again/EVALUATION.md")));
         try (var figures = Files.list(out)) {
             for (Path figure : figures.toList()) {
                 assertEquals(-1L, Files.mismatch(figure, again.resolve(figure.getFileName())), figure.getFileName() + " differs");

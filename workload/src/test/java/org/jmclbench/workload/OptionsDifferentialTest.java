@@ -18,8 +18,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The Java and C command-line parsers against each other on the options they share (the
- * thesis's flags and the long options; not --engine, --area-size, --load-* of Java or
- * --no-fifo, --version of C): generated argument lists, good and bad, must give the same
+ * thesis's flags and the long options; not --engine, --area-size, --load-*, --rtsj-design of
+ * Java or --no-fifo, --version of C): generated argument lists, good and bad, must give the same
  * options or the same one-line message. The C side is native/tests/options_dump.c.
  */
 class OptionsDifferentialTest {

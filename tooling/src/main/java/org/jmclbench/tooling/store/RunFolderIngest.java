@@ -88,10 +88,6 @@ public final class RunFolderIngest {
                 d.histograms.add(new RunDetails.Hdr(e.getKey(), "abortLatencyNs", encode(abort)));
             }
         }
-        Path dispatcher = dir.resolve("dispatcherData.txt");
-        if (Files.isRegularFile(dispatcher)) {
-            d.histograms.add(new RunDetails.Hdr("dispatcher", "latenessNs", encode(readLateness(dispatcher))));
-        }
         for (String task : List.of("predict", "update")) {
             d.series.add(new RunDetails.Series("taskLatency." + task, latencySeries(jobs.get(task))));
         }
@@ -195,15 +191,6 @@ public final class RunFolderIngest {
         return readRows(file, 7, f -> new Job(Long.parseLong(f[0]), Long.parseLong(f[1]), Long.parseLong(f[2]),
                 Long.parseLong(f[3]), Long.parseLong(f[4]), f[5], Long.parseLong(f[6]),
                 f.length > 7 ? Long.parseLong(f[7]) : -1));
-    }
-
-    /** dispatcherData.txt (when a workload writes one): {@code index requested_ns woke_ns} lines. */
-    private static Histogram readLateness(Path file) throws IOException {
-        Histogram h = new Histogram(3);
-        for (double[] r : readNumbers(file, 3)) {
-            h.recordValue(Math.max(0, (long) (r[2] - r[1])));
-        }
-        return h;
     }
 
     static List<double[]> readNumbers(Path file, int columns) throws IOException {

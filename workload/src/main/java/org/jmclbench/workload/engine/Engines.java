@@ -66,7 +66,7 @@ public final class Engines {
         return options.ideal ? IDEAL : named("--engine", options.engine);
     }
 
-    /** The engines' names as messages write them: {@code javase|scj}, and {@code |hvm} with the HVM launcher. */
+    /** The engines' names as messages write them: {@code javase|scj|rtsj}, and {@code |hvm} with the HVM launcher. */
     public static String names() {
         StringBuilder b = new StringBuilder();
         for (Engine e : ALL) {

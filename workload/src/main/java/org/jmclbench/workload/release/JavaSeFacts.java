@@ -19,7 +19,7 @@ public final class JavaSeFacts implements EngineFacts {
     long jvmStartEpochMs = -1;
     /** Bytes the engine's threads allocated in the measured window; null when the JVM cannot tell. */
     Long allocatedBytes;
-    /** The allocation load's settings and bytes, when one ran ({@code --load-alloc-mb-per-s}). */
+    /** The allocation load's settings and bytes, when one ran ({@code --load-alloc MBPS,LIVEMB}). */
     int loadAllocMbPerS;
     int loadAllocLiveMb;
     Long loadAllocatedBytes;

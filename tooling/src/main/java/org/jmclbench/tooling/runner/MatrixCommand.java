@@ -15,7 +15,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "matrix", mixinStandardHelpOptions = true,
         header = "Runs a matrix of configurations into the results store (resumable).", sortOptions = false,
         description = {"Runs a matrix of runtimes x profiles x engines x memory styles x policies x particles x datasets "
-                + "x repetitions, each run a fresh "
+                + "x load scenarios x repetitions, each run a fresh "
                 + "process with a timeout, into a SQLite database (raw run folders beside it under runs/). Rerunning the same "
                 + "command resumes: runs already in the database are skipped. Lists take commas and repeats. "
                 + "Exit code 0 when the matrix completed (failed runs are recorded and listed), 2 for bad input (nothing runs)."},

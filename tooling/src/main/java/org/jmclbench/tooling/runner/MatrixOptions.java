@@ -24,7 +24,7 @@ final class MatrixOptions {
             new Setting("java", true, "PATH", "a JVM by path (java executable or JDK folder), repeatable"),
             new Setting("profiles", true, "LIST", "profiles, components joined by '+': default, serial, parallel, g1, zgc, shenandoah, epsilon, int, c1, pretouch, fifo, pinned, aot (default: default)"),
             new Setting("policies", true, "LIST", "skip, terminate, queue, ideal (default: skip)"),
-            new Setting("engines", true, "LIST", "engines of the JVM runs: javase, scj (default: javase; native runs are engine native)"),
+            new Setting("engines", true, "LIST", "engines of the JVM runs: javase, scj, rtsj, rtsj-atomic (default: javase; native runs are engine native)"),
             new Setting("memory", true, "LIST", "memory styles: preallocated, allocating (javase, native), scoped (scj); one an engine lacks is recorded unsupported (default: preallocated)"),
             new Setting("particles", true, "LIST", "particle counts (default: 400)"),
             new Setting("datasets", true, "LIST", "dataset names under data/ or folders (default: match-short)"),
@@ -37,7 +37,7 @@ final class MatrixOptions {
             new Setting("timeout", false, "S", "timeout of one run in seconds (default: replay duration x 3 + 60)"),
             new Setting("time-scale", false, "F", "the workload's --time-scale (default: 1.0)"),
             new Setting("pin-cpu", false, "CPUS", "CPU list for the pinned profile (default: last isolated CPU, else the last CPU)"),
-            new Setting("workload-arg", true, "ARGS", "more workload options, split at spaces, e.g. \"--memory allocating\" (repeatable)"),
+            new Setting("workload-arg", true, "ARGS", "more workload options, split at spaces, e.g. \"--resample multinomial\" (repeatable; not the options the runner sets itself)"),
             new Setting("db", false, "FILE", "results database (default: results/results.db)"),
             new Setting("native", false, "PATH", "the native baseline binary (default: native/build/jmclbench-native)"));
 

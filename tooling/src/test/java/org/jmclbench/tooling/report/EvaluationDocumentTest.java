@@ -72,7 +72,13 @@ class EvaluationDocumentTest {
                    "kind": "static", "seeded": false, "verdict": "holds", "passed": true, "seconds": 0.1},
                   {"catalog": "seeded", "id": "mission-seeded-lock-inversion", "property": "P1 no deadlock",
                    "policy": "queue", "kind": "jpf", "seeded": true, "verdict": "caught", "passed": true,
-                   "seconds": 3.0, "scope": "1 odometry + 1 laser events", "states": 967}
+                   "seconds": 3.0, "scope": "1 odometry + 1 laser events", "states": 967},
+                  {"catalog": "rtsj", "id": "rtsj-thesis-queue", "property": "P1 no deadlock", "policy": "queue",
+                   "kind": "jpf", "seeded": false, "verdict": "holds", "passed": true, "seconds": 1.0,
+                   "scope": "thesis design, 1 odometry + 1 laser events", "states": 500},
+                  {"catalog": "seeded", "id": "toy-skip", "property": "P1 no deadlock", "policy": "skip",
+                   "kind": "jpf", "seeded": false, "verdict": "holds", "passed": true, "seconds": 0.5,
+                   "scope": "toy", "states": 40}
                 ], "abortBounds": [
                   {"engine": "javase", "memory": "preallocated", "steps": 64, "at": "A.b:1"},
                   {"engine": "scj", "memory": "preallocated", "steps": null, "at": "C.d:2"}
@@ -382,11 +388,14 @@ class EvaluationDocumentTest {
     @Test
     void verificationAndDoctorFindingsAreReported() {
         List<List<String>> rows = table("Table 13:");
-        assertEquals(4, rows.size());
+        assertEquals(6, rows.size());
         assertEquals(List.of("mission-terminate", "mission", "P3 abort leaves robot unchanged", "terminate",
                 "1 odometry + 1 laser events", "FAILS", "34", "2.0"), rows.get(1));
         assertEquals("seeded bug", rows.get(3).get(1));
-        assertTrue(doc.contains("On the real mission 2 of 3 checks hold, over 1234 states; 1 of 1 seeded bugs were caught"), doc);
+        assertEquals("rtsj engine", rows.get(4).get(1), "the rtsj engine's checks are not the toy program's");
+        assertEquals("toy program", rows.get(5).get(1));
+        assertTrue(doc.contains("On the real mission 2 of 3 checks hold, over 1234 states; on the rtsj engine 1 of 1 "
+                + "checks hold, over 500 states; 1 of 1 seeded bugs were caught"), doc);
         assertTrue(doc.contains("| bench-host | virtualization | warn | kvm |"), "the doctor's warning is a threat");
         assertTrue(doc.contains("A 2-processor machine"));
     }

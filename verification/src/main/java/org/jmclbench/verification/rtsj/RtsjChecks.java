@@ -21,9 +21,10 @@ import java.util.Set;
 /**
  * JPF checks of the rtsj engine ({@link RtsjDriver}: the engine's replay, woven, on rtsj-compat's
  * RTSJ layer in virtual time) in both designs under terminate, and under queue (the policy where
- * two jobs contend for the robot's locks). The input: two odometry and two laser events, laser
- * event k at the instant of odometry event k, one particle: under terminate each task's first job
- * is fired at, and its second runs in the same handler after that.
+ * two jobs contend for the robot's locks). The input, one particle: under terminate two odometry
+ * events 50 ms apart and one laser event at the first's instant (the first predict job is fired
+ * at, and the handler runs a second job after it); under queue one odometry and one laser event
+ * at one instant (two jobs contend for the robot's locks).
  *
  * <p>One search per design and policy checks {@link #SEARCH}. The reduction is the mission
  * checks': JPF switches threads at the engine's monitors, its volatiles (the dispatcher's
@@ -40,10 +41,9 @@ public final class RtsjChecks {
     private RtsjChecks() {
     }
 
-    /** The input of the searches: policy and design, 2 + 2 events, one particle, a poll every 64. */
+    /** The input of the searches: policy and design, odometry and laser events, one particle, a poll every 64. */
     public static List<String> args(String policy, String design, Class<?> fault) {
-        // terminate: a predict job fired at, and a later one in the same handler; queue: two jobs contending
-        List<String> a = new ArrayList<>(List.of(policy, design, policy.equals("queue") ? "1" : "2", "1", "1", "64"));
+        List<String> a = new ArrayList<>(List.of(policy, design, String.valueOf(odometryEvents(policy)), "1", "1", "64"));
         if (fault != null) {
             a.add(fault.getName());
         }
@@ -81,11 +81,16 @@ public final class RtsjChecks {
         };
     }
 
+    /** terminate: a predict job fired at, and a later one in the same handler; queue: two jobs contending. */
+    private static int odometryEvents(String policy) {
+        return policy.equals("queue") ? 1 : 2;
+    }
+
     /** A check of the engine with a seeded fault (null: the shipped engine). */
     public static JpfCheck check(String id, Set<Property> properties, String policy, String design,
                                  Map<String, String> config, Expectation expect, Class<?> fault, String what) {
         return new JpfCheck(id, properties, policy, RtsjDriver.class.getName(), args(policy, design, fault), config,
-                expect, design + " design, 2 odometry + 2 laser events (coinciding), 1 particle"
+                expect, design + " design, " + odometryEvents(policy) + " odometry + 1 laser events (coinciding), 1 particle"
                         + (what == null ? "" : ", " + what));
     }
 

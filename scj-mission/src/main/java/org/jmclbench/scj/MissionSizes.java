@@ -58,14 +58,14 @@ public final class MissionSizes {
      *   timeline  double[E] byte[E] int[E]     13 E + 3 * 16 + 8 (padding)
      *   schedule  2 long[E]                    16 E + 2 * 16
      *   event map int[O] int[L]                 4 E + 2 * 16
-     *   records   7 long[E] byte[E] 3 double[E] 81 E + 11 * 16 + 8
+     *   records   8 long[E] byte[E] 3 double[E] 89 E + 12 * 16 + 8
      *             covariance double[6E] (-c)   48 E + 16
      * </pre>
      * plus {@link #IMMORTAL_SLACK}. The particle count does not appear: particles live in mission memory.
      */
     static long immortal(int particles, int odometry, int laser, boolean covariance) {
         long e = (long) odometry + laser;
-        long bytes = 32L * odometry + 16L * laser + 13 * e + 16 * e + 4 * e + 81 * e + 22 * 16 + 16;
+        long bytes = 32L * odometry + 16L * laser + 13 * e + 16 * e + 4 * e + 89 * e + 25 * 16 + 16;
         if (covariance) {
             bytes += 48 * e + 16;
         }

@@ -335,6 +335,21 @@ class MissionTest {
     }
 
     @Test
+    void theImmortalFormulaCountsEveryArrayTheMissionKeeps() {
+        // Immortal memory is arrays sized by the event count E plus about 0.6 KB of objects. A formula
+        // that forgot an array misses 4 E bytes or more, which the 16 KiB slack hides from "peak <= size".
+        SyntheticInput input = new SyntheticInput(30.0);
+        Launch l = launch(config(16, MclConfig.Memory.PREALLOCATED, OverrunPolicy.QUEUE, 0.02), input);
+        assertTrue(l.report.succeeded(), () -> String.valueOf(l.report.failure()));
+        assumeTrue(l.report.allocationMeasured(), "this JVM does not count allocated bytes");
+        long events = input.odometryCount() + input.laserCount();
+        long formula = l.safelet.sizes().size(MissionSizes.IMMORTAL) - MissionSizes.IMMORTAL_SLACK;
+        long peak = area(l.report, "immortal").peakBytes();
+        assertTrue(peak >= formula && peak - formula < 2048, "immortal memory: " + peak + " bytes used, formula "
+                + formula + " for " + events + " events");
+    }
+
+    @Test
     void anOverflowNamesTheArea() {
         MissionConfiguration c = config(500, MclConfig.Memory.SCOPED, OverrunPolicy.QUEUE, 1.0)
                 .areaSize(MissionSizes.UPDATE, 1024);
@@ -364,11 +379,15 @@ class MissionTest {
     }
 
     static AreaUsage mission(RunReport r) {
+        return area(r, "mission");
+    }
+
+    static AreaUsage area(RunReport r, String kind) {
         for (AreaUsage a : r.areas()) {
-            if ("mission".equals(a.kind())) {
+            if (kind.equals(a.kind())) {
                 return a;
             }
         }
-        throw new AssertionError("no mission memory in " + r.areas());
+        throw new AssertionError("no " + kind + " memory in " + r.areas());
     }
 }

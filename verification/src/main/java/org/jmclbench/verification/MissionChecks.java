@@ -29,8 +29,9 @@ import java.util.Set;
  * <p>One search per policy and style checks {@link #SEARCH}: P1 (JPF's deadlock property), P3 and
  * P4 (the {@link org.jmclbench.verification.mission.CheckedRobot} around every job, and the
  * driver's functional oracle), P5 (the driver, from the gate's count and the job records, and the
- * horizon of virtual time) and P6 (in the preallocated style: no allocation in a release; in both:
- * no reference to a shorter-lived area, and the private memory empty after each release). A
+ * horizon of virtual time), P6 (in the preallocated style: no allocation in a release; in both:
+ * no reference to a shorter-lived area, and the private memory empty after each release) and P7
+ * (the driver, from the job records: {@link org.jmclbench.verification.mission.PolicyOracle}). A
  * search per property would explore the same states once per property. A policy's search must
  * also reach the outcome it exists for (terminate: an aborted job of each task; skip: a dropped
  * event of each task), else it passed vacuously. P2 has its own search per policy, on the same two

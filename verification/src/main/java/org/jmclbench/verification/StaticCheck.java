@@ -27,7 +27,7 @@ import java.util.function.Predicate;
 public record StaticCheck(String id, Property property, Kind kind, Predicate<String> classes,
                           Predicate<String> releases, Predicate<String> layer, Set<String> expected) {
 
-    /** The two static rules. */
+    /** The three static rules. */
     public enum Kind {
         ALLOCATION("no allocation reachable from a release"),
         ABORT_POLL("every particle loop polls the abort request within the poll interval"),

@@ -28,7 +28,7 @@ import picocli.CommandLine.Option;
 
 /**
  * {@code ./jmclbench verify}: runs every catalogue's static and JPF checks, prints the table
- * (property, policy, verdict, states, seconds), writes {@code results/verification.json}, and
+ * (check, property, policy, verdict, states, seconds), writes {@code results/verification.json}, and
  * exits 0 only when every property holds and every seeded bug is caught.
  *
  * <p>{@code --only} runs the checks whose id starts with one of the prefixes (a partial run: it

@@ -24,6 +24,8 @@ import org.jmclbench.verification.jpf.Coverage;
  * <ul>
  * <li>P5: the gate counted exactly as many ended events as there are events, and every event has
  * an outcome (done, late, skipped or terminated);
+ * <li>P7: an event was dropped or aborted only as its policy says ({@link PolicyOracle}, on the
+ * job records; a wrong decision is blamed on the gate);
  * <li>P3, the functional oracle: the completed jobs, replayed in the order they committed on a
  * fresh localizer of the shipped style, give the recorded estimates and covariances and, after
  * each job, the mission's particles, bit for bit; an event whose job did not complete has nothing

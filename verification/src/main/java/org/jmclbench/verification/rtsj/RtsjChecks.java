@@ -20,8 +20,9 @@ import java.util.Set;
 
 /**
  * JPF checks of the rtsj engine ({@link RtsjDriver}: the engine's replay, woven, on rtsj-compat's
- * RTSJ layer in virtual time) in both designs under terminate, and under queue (the policy where
- * two jobs contend for the robot's locks). The input, one particle: under terminate two odometry
+ * RTSJ layer in virtual time) under terminate in both designs, and under queue (the policy where
+ * two jobs contend for the robot's locks) in the thesis design only, the one that takes both of
+ * those locks. The input, one particle: under terminate two odometry
  * events 50 ms apart and one laser event at the first's instant (the first predict job is fired
  * at, and the handler runs a second job after it); under queue one odometry and one laser event
  * at one instant (two jobs contend for the robot's locks).

@@ -3,9 +3,10 @@ package org.jmclbench.rtsjcompat;
 import javax.realtime.MemoryArea;
 
 /**
- * The bookkeeping of one SCJ memory area used as a budget: its stable name, its kind and
- * nesting depth (the lifetime order: immortal 0 &lt; mission 1 &lt; private 2 &lt; nested
- * private 3, 4, ...), its size, and the bytes charged to it.
+ * The bookkeeping of one memory area used as a budget (an SCJ area, or an RTSJ scoped memory,
+ * whose parent is immortal memory): its stable name, its kind and nesting depth (the lifetime
+ * order: immortal 0 &lt; mission 1 &lt; private 2 &lt; nested private 3, 4, ...), its size, and
+ * the bytes charged to it.
  *
  * <p>An area is charged by the threads for which it is the current allocation context
  * ({@link ScjThread}); {@link #used} is what it holds since it was last emptied, {@link #peak}
@@ -94,7 +95,7 @@ public final class Area {
         return kindName(kind);
     }
 
-    /** A kind ({@link #IMMORTAL} ...) as a word: immortal, mission, private, nested. */
+    /** A kind ({@link #IMMORTAL} ...) as a word: immortal, mission, private, scoped, or nested (any other). */
     public static String kindName(int kind) {
         switch (kind) {
             case IMMORTAL:

@@ -7,8 +7,9 @@ import org.jmclbench.rtsjcompat.RtsjRuntime;
 import org.jmclbench.rtsjcompat.ScjLauncher;
 
 /**
- * The shim on a JVM: rtsj-compat's runtime (the one class of the engines that names it, left
- * out of {@code ant rtsj-engine}'s build for an RTSJ VM). Created by name from {@link RuntimeShim}.
+ * The shim on a JVM: rtsj-compat's runtime (the one class of the javase and rtsj engines that
+ * names it; the scj engine, which also does, is left out with it of {@code ant rtsj-engine}'s
+ * build for an RTSJ VM). Created by name from {@link RuntimeShim}.
  */
 public final class CompatShim extends RuntimeShim {
     @Override

@@ -3,9 +3,10 @@ package org.jmclbench.workload.shim;
 import java.util.List;
 
 /**
- * The few services the engines need from the real-time layer that are not RTSJ API: whether
- * thread priorities reach the OS, and ending the event handlers' threads after a replay. The
- * one seam between the rtsj engine and rtsj-compat: on a JVM the layer is rtsj-compat
+ * The four services the engines need from the real-time layer that are not RTSJ API: whether
+ * thread priorities reach the OS, forgetting the previous replay before the next, readying the
+ * layer's ATC before a run that fires AIEs, and ending the event handlers' threads after a
+ * replay. The one seam between the rtsj engine and rtsj-compat: on a JVM the layer is rtsj-compat
  * ({@code CompatShim}, present in the Maven build); built for an RTSJ VM by {@code ant rtsj-engine},
  * that class is left out and {@link StandardShim} (RTSJ 1.0.2 API only) takes its place.
  */

@@ -20,7 +20,7 @@ public final class RunOptions {
      */
     public String engineRuntimeName;
     /**
-     * Memory area sizes set with {@code --area-size AREA=BYTES} (scj engine), in the order given;
+     * Memory area sizes set with {@code --area-size AREA=BYTES} (scj and hvm engines), in the order given;
      * empty = every area sized from the workload.
      */
     public final java.util.Map<String, Long> areaSizes = new java.util.LinkedHashMap<>();

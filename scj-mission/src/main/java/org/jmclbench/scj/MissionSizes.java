@@ -76,7 +76,7 @@ public final class MissionSizes {
      * Mission memory: the localizer's particles and the mission's own objects.
      * <pre>
      *   preallocated  6 double[N] (two particle sets) + double[N] weights + int[N] indices
-     *                 (+ double[N] multinomial scratch)       56 N + 4 N (+ 8 N) + 9 * 16
+     *                 (+ double[N] multinomial scratch)       56 N + 4 N + 8 * 16 (+ 8 N + 16)
      *   scoped        3 double[N] (the committed set)        24 N + 3 * 16
      *   both          release queue int[L]                    4 L + 16
      * </pre>
@@ -88,9 +88,9 @@ public final class MissionSizes {
         if (m.memory == MclConfig.Memory.SCOPED) {
             bytes = 24 * n + 3 * 16;
         } else {
-            bytes = 56 * n + (4 * n + 7) / 8 * 8 + 9 * 16;
+            bytes = 56 * n + (4 * n + 7) / 8 * 8 + 8 * 16;
             if (m.resample == MclConfig.Resample.MULTINOMIAL) {
-                bytes += 8 * n;
+                bytes += 8 * n + 16;
             }
         }
         return bytes + 4L * laser + 16 + MISSION_SLACK;

@@ -72,7 +72,8 @@ public final class ImmortalEntry {
         deadlineNs = new long[n];
         for (int i = 0; i < odo; i++) {
             // The periodic handler is released at start + i * period, not at the logged time
-            // (the two agree within Periodicity.TOLERANCE_S, checked before the mission runs).
+            // (each logged interval is within Periodicity.TOLERANCE_S of the period, checked
+            // before the mission runs; the offsets of successive intervals can add up).
             int k = odoEvent[i];
             releaseNs[k] = firstOdoNs + i * periodNs;
             deadlineNs[k] = releaseNs[k] + periodNs;

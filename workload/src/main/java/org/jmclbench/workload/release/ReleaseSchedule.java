@@ -10,7 +10,10 @@ import org.jmclbench.core.timeline.Timeline;
  * its release), everything times the time scale.
  */
 public final class ReleaseSchedule {
-    /** Relative deadline of a predict job (the odometry period), seconds. */
+    /**
+     * Relative deadline of a predict job, seconds: the thesis's odometry period, fixed whatever the
+     * dataset's (the scj mission's periodic handler uses the dataset's mean interval instead).
+     */
     public static final double PREDICT_DEADLINE_S = 0.050;
     /** Relative deadline of the last update job (one laser revolution's longest gap), seconds. */
     public static final double LAST_UPDATE_DEADLINE_S = 0.250;

@@ -2,7 +2,8 @@ package org.jmclbench.core.mcl;
 
 /**
  * Asks a job in progress to stop: the localizer polls it before each block of
- * {@link MotionModel#ABORT_BLOCK} particles and, when it answers true, abandons the job
+ * {@link MclConfig#pollInterval} particles ({@link MotionModel#ABORT_BLOCK}, 64, unless a
+ * verification run makes it smaller) and, when it answers true, abandons the job
  * without changing any state. Implementations must be cheap and allocation-free.
  */
 public interface AbortSignal {

@@ -12,9 +12,9 @@ public final class MclConfig {
     public enum Init { KNOWN, UNIFORM }
 
     /**
-     * Memory style (ALGORITHM 9): {@code preallocated} and {@code allocating} on the Java SE
-     * engine; {@code preallocated} and {@code scoped} (per-job temporaries in the release's private
-     * memory, see {@link ScopedLocalizer}) on the SCJ engine.
+     * Memory style (ALGORITHM 9): {@code preallocated} and {@code allocating} on the Java SE and
+     * rtsj engines; {@code preallocated} and {@code scoped} (per-job temporaries in the release's
+     * private memory, see {@link ScopedLocalizer}) on the SCJ mission (the scj and hvm engines).
      */
     public enum Memory { PREALLOCATED, ALLOCATING, SCOPED }
 

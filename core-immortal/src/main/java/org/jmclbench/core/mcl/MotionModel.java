@@ -9,7 +9,7 @@ public final class MotionModel {
     public static final double ALPHA_THETA = 0.10;
     public static final double ALPHA_THETA_XY = 0.05;
     public static final double FLOOR_THETA = 0.004;
-    /** Particles processed between two polls of the abort signal. */
+    /** Particles processed between two polls of the abort signal: the default of {@link MclConfig#pollInterval}. */
     public static final int ABORT_BLOCK = 64;
 
     private MotionModel() {

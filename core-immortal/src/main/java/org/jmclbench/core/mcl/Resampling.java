@@ -2,9 +2,9 @@ package org.jmclbench.core.mcl;
 
 /**
  * Resampling of normalised weights into particle indices (ALGORITHM 7.5). The variants taking
- * an {@link AbortSignal} poll it before each block of {@link MotionModel#ABORT_BLOCK} steps (an
- * output, or systematic's pass over an old particle) and return false when aborted (the output
- * is then partial and must be discarded).
+ * an {@link AbortSignal} poll it before each block of {@code pollMask + 1} steps (an output, or
+ * systematic's pass over an old particle; {@link MotionModel#ABORT_BLOCK} for the variants without
+ * a mask) and return false when aborted (the output is then partial and must be discarded).
  */
 public final class Resampling {
     private Resampling() {

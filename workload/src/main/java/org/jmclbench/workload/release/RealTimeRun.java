@@ -42,7 +42,7 @@ public final class RealTimeRun {
                                           Localizer localizer, JobRecords records, File runDir, PrintStream err)
             throws IOException {
         JavaSeFacts facts = new JavaSeFacts();
-        // one rule for both engines: the SCJ layer's (HotSpot ignores priorities on Linux without
+        // one rule for every engine on this JVM: the SCJ layer's (HotSpot ignores priorities on Linux without
         // -XX:ThreadPriorityPolicy=1, and under chrt every thread inherits one priority anyway)
         facts.prioritiesApplied = RuntimeShim.get().prioritiesApplied();
         GcLog gcLog = GcLog.startIfAsked(options.gcLog, runDir, err);

@@ -6,8 +6,9 @@ import java.util.concurrent.atomic.AtomicInteger;
  * The thesis's TermTest: a release aborts the job in progress and the new event is processed.
  *
  * <p>Only the most recently released event may run: a job is asked to abort as soon as a later
- * event is released (the abort is cooperative, polled by the MCL loops every 64 particles), and
- * an event superseded while it still waited for the robot never starts (terminated).
+ * event is released (the abort is cooperative, polled by the MCL loops every poll interval, 64
+ * particles by default), and an event superseded while it still waited for the robot never
+ * starts (terminated).
  */
 public final class TerminateGate extends PolicyGate {
     private final AtomicInteger owner = new AtomicInteger(FREE);

@@ -29,8 +29,8 @@ import org.jmclbench.workload.output.MemoryArea;
 
 /**
  * The {@code --engine scj} run on Java SE: checks that the odometry has a period, launches the
- * SCJ mission at Level 1 through rtsj-compat (a short mission first, so that class loading
- * stays out of the measured releases), and turns the compat layer's report into the run's
+ * SCJ mission at Level 1 through rtsj-compat (a warm-up mission, or one or two short
+ * class-loading missions, first, so that class loading stays out of the measured releases), and turns the compat layer's report into the run's
  * memory areas and engine facts. An overflowing area or any other mission failure is a
  * {@link RunFailure} naming it.
  */

@@ -7,8 +7,9 @@ import java.lang.management.MemoryType;
 import org.jmclbench.core.record.JobRecords;
 
 /**
- * The Java SE engine's one memory area, the heap: its maximum size, the peak used over the run
- * (the heap pools' peaks, reset when the run begins) and bytes allocated per release.
+ * The one memory area of the engines that run on the heap (javase, rtsj and the ideal run): its
+ * maximum size, the peak used over the run (the heap pools' peaks, reset when the run begins)
+ * and bytes allocated per release.
  */
 public final class HeapUse {
     private HeapUse() {

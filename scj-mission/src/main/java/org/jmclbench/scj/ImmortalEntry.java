@@ -72,8 +72,8 @@ public final class ImmortalEntry {
         deadlineNs = new long[n];
         for (int i = 0; i < odo; i++) {
             // The periodic handler is released at start + i * period, not at the logged time
-            // (each logged interval is within Periodicity.TOLERANCE_S of the period, checked
-            // before the mission runs; the offsets of successive intervals can add up).
+            // (each logged time is within Periodicity.TOLERANCE_S of it, checked before the
+            // mission runs).
             int k = odoEvent[i];
             releaseNs[k] = firstOdoNs + i * periodNs;
             deadlineNs[k] = releaseNs[k] + periodNs;

@@ -178,17 +178,17 @@ public final class ScjRun {
         return colon >= 0 ? compatName.substring(colon + 1) : compatName.toLowerCase(Locale.ROOT);
     }
 
-    /** A PeriodicEventHandler needs a period: odometry whose intervals vary more than the tolerance is bad input. */
+    /** A PeriodicEventHandler needs a period: odometry a reading of which is off its periodic release by more than the tolerance is bad input. */
     public static void checkPeriodic(Dataset d) throws BadInputException {
         int i = Periodicity.firstIrregular(d.odoTime);
         if (i < 0) {
             return;
         }
-        double period = Periodicity.period(d.odoTime);
         throw BadInputException.atLine(d.odometryFile.getPath(), dataLine(d.odometryFile, i),
-                String.format(Locale.ROOT, "odometry is not periodic: the interval %.6f s differs from the period"
-                        + " %.6f s by more than %.3f s; the scj engine's PeriodicEventHandler needs a period",
-                        d.odoTime[i] - d.odoTime[i - 1], period, Periodicity.TOLERANCE_S));
+                String.format(Locale.ROOT, "odometry is not periodic: the reading at %.6f s is more than %.3f s from its"
+                        + " periodic release %.6f s (first reading + %d * mean interval %.6f s); the scj engine's"
+                        + " PeriodicEventHandler needs a period", d.odoTime[i], Periodicity.TOLERANCE_S,
+                        Periodicity.periodicRelease(d.odoTime, i), i, Periodicity.period(d.odoTime)));
     }
 
     /** The file line (1-based) of data row i, skipping blank and comment lines as the reader does. */

@@ -40,10 +40,10 @@ public final class JavaSeEngine implements Engine {
     public static void checkHeapOptions(String engine, RunOptions o) throws BadInputException {
         if (o.memory == MclConfig.Memory.SCOPED) {
             throw BadInputException.ofOption("--memory", "'scoped' is not a memory style of the " + engine + " engine"
-                    + " (preallocated|allocating; scoped is --engine scj)");
+                    + " (preallocated|allocating; scoped is --engine scj or hvm)");
         }
         if (!o.areaSizes.isEmpty()) {
-            throw BadInputException.ofOption("--area-size", "sets SCJ memory areas: needs --engine scj");
+            throw BadInputException.ofOption("--area-size", "sets SCJ memory areas: needs --engine scj or hvm");
         }
     }
 

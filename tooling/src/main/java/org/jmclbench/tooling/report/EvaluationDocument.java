@@ -275,13 +275,15 @@ public final class EvaluationDocument extends EvaluationSections {
         if (!at.isEmpty()) {
             ReportModel.Cell best = at.get(0);
             ReportModel.Cell worst = at.get(at.size() - 1);
-            String claim = String.format(Locale.ROOT, "At %d particles (the heaviest load of the sweep), **%s** dropped "
-                    + "the fewest jobs (missCount): %s per run; **%s** the most: %s (Table 4, Figure 3). %s", heaviest, best.config,
-                    agg(best, Metric.MISS_COUNT, 1), worst.config, agg(worst, Metric.MISS_COUNT, 1), separation(best, worst, Metric.MISS_COUNT));
+            // a mean over a few runs, not a count of the fewest: which is lower is the test's to say
+            String claim = String.format(Locale.ROOT, "At %d particles (the heaviest load of the sweep), the lowest mean "
+                    + "missCount (dropped jobs per run) is **%s**'s: %s; the highest mean is **%s**'s: %s (Table 4, Figure 3). %s",
+                    heaviest, best.config, agg(best, Metric.MISS_COUNT, 1), worst.config, agg(worst, Metric.MISS_COUNT, 1),
+                    separation(best, worst, Metric.MISS_COUNT));
             line(claim);
             line("");
-            findings.add(String.format(Locale.ROOT, "Fewest dropped jobs (missCount, skip) at %d particles: %s (%s per run); "
-                    + "most: %s (%s); Mann-Whitney U with the ratio's bootstrap interval: %s (2.4).", heaviest, best.config,
+            findings.add(String.format(Locale.ROOT, "Lowest mean missCount (dropped jobs per run, skip) at %d particles: %s (%s); "
+                    + "highest mean: %s (%s); Mann-Whitney U with the ratio's bootstrap interval: %s (2.4).", heaviest, best.config,
                     agg(best, Metric.MISS_COUNT, 1), worst.config, agg(worst, Metric.MISS_COUNT, 1),
                     separate(best, worst, Metric.MISS_COUNT).text(best.config, worst.config)));
         }

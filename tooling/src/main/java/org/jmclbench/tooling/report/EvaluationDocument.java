@@ -335,8 +335,8 @@ public final class EvaluationDocument extends EvaluationSections {
             ReportModel.Cell best = jvms.get(0);
             String vsC = c0 == null || mean(c0, Metric.LATENCY_P99) == null ? "The store has no C baseline run at this count, so "
                     + "the distance to C is not measured."
-                    : String.format(Locale.ROOT, "C's p99 is %s ms, so the best Java configuration's p99 is %sx C's; its mean "
-                            + "latency is %sx C's.", num(mean(c0, Metric.LATENCY_P99), 3),
+                    : String.format(Locale.ROOT, "C's p99 is %s ms, so the p99 of the Java configuration with the lowest mean "
+                            + "p99 is %sx C's; its mean latency is %sx C's.", num(mean(c0, Metric.LATENCY_P99), 3),
                     num(mean(best, Metric.LATENCY_P99) / mean(c0, Metric.LATENCY_P99), 2),
                     num(mean(best, Metric.LATENCY_MEAN) / nativeLatency, 2));
             // the lowest mean is a claim only if it is told apart from the next lowest

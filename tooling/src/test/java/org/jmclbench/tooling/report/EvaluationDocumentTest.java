@@ -297,6 +297,9 @@ class EvaluationDocumentTest {
             assertEquals(num(lat / c, 2) + "x", row.get(6));
         }
         assertTrue(doc.contains("(evaluation/spectrum-skip-" + ref + ".svg)"));
+        // the count is chosen by missCount, under skip the dropped jobs: a late job is no deadline met
+        assertTrue(doc.contains(ref + " particles is the largest count of the sweep at which the C baseline dropped no job"), doc);
+        assertFalse(doc.contains("missed no deadline"), "missCount under skip does not count the late jobs");
     }
 
     @Test

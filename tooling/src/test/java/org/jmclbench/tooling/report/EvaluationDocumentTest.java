@@ -485,6 +485,76 @@ class EvaluationDocumentTest {
         assertTrue(d.contains("was late in one repetition by a job or two (" + String.join(", ", marginal) + "), the bracket rests"), d);
     }
 
+    /**
+     * A scheduling store: temurin-25 under default, fifo and fifo+pinned (the pinned one slower to
+     * release, faster to compute: fewer dropped jobs from later releases), skip and terminate, 100
+     * and 6400 particles, {@code repetitions} each; the document written from it.
+     */
+    private String schedulingDocument(int repetitions) throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.configs = new ArrayList<>(List.of(
+                new FixtureDb.Config("temurin-25", "default", "25+36", 2.0, "ok"),
+                new FixtureDb.Config("temurin-25", "fifo", "25+36", 1.5, "ok"),
+                new FixtureDb.Config("temurin-25", "fifo+pinned", "25+36", 1.0, "ok")));
+        f.jitterScale = Map.of("temurin-25/fifo+pinned", 4.0);
+        f.policies = List.of("skip", "terminate");
+        f.particles = List.of(100, 6400);
+        f.repetitions = repetitions;
+        f.durationS = 6;
+        Path store = ReportFixtures.write(f, dir, "scheduling-" + repetitions + ".db");
+        Path out = dir.resolve("scheduling-" + repetitions);
+        EvaluationDocument.write(store, "scheduling.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(),
+                dir.resolve("none.json"));
+        String d = Files.readString(out.resolve("EVALUATION.md"));
+        return d.substring(d.indexOf("### 2.7"), d.indexOf("### 2.8"));
+    }
+
+    @Test
+    void schedulingSentencesNameTheirCountAndPolicyAndClaimTheSkipEffectOnlyWhereSeparated() throws Exception {
+        Pattern pinned = Pattern.compile("(?m)^At ([0-9]+) particles, policy (\\w+), under fifo\\+pinned every thread of temurin-25 .*$");
+        boolean claimed = false;
+        boolean withheld = false;
+        for (int repetitions : List.of(3, 10)) {
+            String section = schedulingDocument(repetitions);
+            List<List<String>> rows = table(section, "Table 7:");
+            // every sentence before the table speaks of one count and policy, and Table 7 has those rows
+            List<String> sentences = section.substring(0, section.indexOf("Table 7:")).lines()
+                    .filter(l -> !l.isBlank() && !l.startsWith("#")).toList();
+            assertFalse(sentences.isEmpty(), section);
+            for (String s : sentences) {
+                Matcher at = Pattern.compile("^At ([0-9]+) particles, policy (\\w+), ").matcher(s);
+                assertTrue(at.find(), "a sentence of 2.7 without its count and policy: " + s);
+                assertTrue(rows.stream().anyMatch(r -> r.get(1).equals(at.group(1)) && r.get(2).equals(at.group(2))), s);
+            }
+            Matcher m = pinned.matcher(section);
+            int paragraphs = 0;
+            while (m.find()) {
+                paragraphs++;
+                String p = m.group();
+                boolean skip = m.group(2).equals("skip");
+                // the effect on dropped jobs is skip's: under terminate the paragraph says nothing of it
+                assertEquals(skip, p.contains("Skip drops an event"), p);
+                boolean fewer = p.contains("come from later releases");
+                if (skip && repetitions < Separation.MIN_REPETITIONS) {
+                    assertFalse(fewer, "three runs a side separate nothing: " + p);
+                }
+                if (fewer) {
+                    // claimed only with both tests behind it: fewer dropped jobs and a later release
+                    assertTrue(p.contains("(temurin-25/fifo+pinned lower than temurin-25/default (")
+                            && p.contains("(temurin-25/default lower than temurin-25/fifo+pinned ("), p);
+                    claimed = true;
+                } else if (skip) {
+                    assertTrue(p.contains("the data do not show fewer dropped jobs under fifo+pinned")
+                            || p.contains("with no later release to explain them"), p);
+                    withheld = true;
+                }
+            }
+            assertEquals(4, paragraphs, "fifo+pinned at two counts under two policies: " + section);
+        }
+        assertTrue(claimed, "the ten-repetition store separates fewer dropped jobs under fifo+pinned at 6400 particles");
+        assertTrue(withheld, "the three-repetition store separates nothing");
+    }
+
     @Test
     void tableCellsFromTheStoreCannotBreakTheTable() {
         assertEquals("a\\|b &lt;script&gt;", EvaluationDocument.escape("a|b <script>"));

@@ -89,6 +89,8 @@ public final class FixtureDb {
     /** Write deadlineMisses, missRatio and responseTimeReleasedNs in the summaries (a run before them has none). */
     public boolean deadlineAccounting = true;
     public int repetitions = 3;
+    /** Per configuration id, a factor on its release jitter (1 where absent): a runtime slower to release, not to compute. */
+    public java.util.Map<String, Double> jitterScale = java.util.Map.of();
     /** Length of the replayed timeline in seconds (odometry every 50 ms, laser about 3.6 per second). */
     public double durationS = 12.0;
     public long seed = 1;
@@ -248,8 +250,9 @@ public final class FixtureDb {
         int predictJobs = (int) (durationS / 0.05);
         int updateJobs = (int) (durationS * 3.6);
         double costMs = 0.004 * particles * cfg.speed() * (1 + 0.05 * rng.nextDouble());
-        Job[] predict = jobs(rng, predictJobs, costMs * 0.3, cfg.speed(), periodMs);
-        Job[] update = jobs(rng, updateJobs, costMs, cfg.speed(), 1000 / 3.6);
+        double jitterFactor = jitterScale.getOrDefault(cfg.id(), 1.0);
+        Job[] predict = jobs(rng, predictJobs, costMs * 0.3, cfg.speed(), periodMs, jitterFactor);
+        Job[] update = jobs(rng, updateJobs, costMs, cfg.speed(), 1000 / 3.6, jitterFactor);
         Job[] all = concat(predict, update);
         int missPredict = (int) Arrays.stream(predict).filter(j -> j.latencyNs > 45e6 * (0.9 + 0.2 * rng.nextDouble())).count()
                 + (int) Math.round(particles / 400.0 * cfg.speed() * rng.nextDouble() * 2);
@@ -407,13 +410,13 @@ public final class FixtureDb {
     private record Job(double latencyNs, double jitterNs) {
     }
 
-    private static Job[] jobs(SplittableRandom rng, int n, double costMs, double speed, double periodMs) {
+    private static Job[] jobs(SplittableRandom rng, int n, double costMs, double speed, double periodMs, double jitterFactor) {
         Job[] out = new Job[n];
         for (int i = 0; i < n; i++) {
             double spike = rng.nextDouble() < 0.01 * speed ? rng.nextDouble() * 8 * speed : 0;
             double latency = Math.max(0.01, costMs * (1 + 0.1 * gauss(rng)) + spike) * 1e6;
             double jitter = (0.05 + 0.04 * Math.abs(gauss(rng)) * speed + (rng.nextDouble() < 0.02 ? rng.nextDouble() * speed : 0)) * 1e6;
-            out[i] = new Job(Math.min(latency, periodMs * 2e6), jitter);
+            out[i] = new Job(Math.min(latency, periodMs * 2e6), jitter * jitterFactor);
         }
         return out;
     }

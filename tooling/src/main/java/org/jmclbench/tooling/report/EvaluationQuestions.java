@@ -99,8 +99,12 @@ final class EvaluationQuestions extends EvaluationSections {
         List<ReportModel.Cell> compared = data.cells(c -> c.ok > 0 && c.particles == first.particles && c.policy.equals(first.policy)
                 && EvaluationDocument.idle(c) && fifo.stream().anyMatch(f -> data.info(f).runtime().equals(data.info(c).runtime())
                 || data.isNative(c)));
-        figure("scheduling", "Figure 7: release jitter p99 under the default scheduler and under SCHED_FIFO pinned, per runtime "
-                + "(mean, 95% CI cut at zero).", () -> charts.write(TaskCharts.conditions(scope(first.policy, first.particles, compared),
+        // the caption names the profiles the figure draws (a store may have fifo without pinned, or neither beside default)
+        List<String> profiles = compared.stream().map(c -> data.info(c).profile()).map(p -> p == null || p.isEmpty() ? "default" : p)
+                .distinct().sorted().toList();
+        figure("scheduling", String.format(Locale.ROOT, "Figure 7: release jitter p99 per runtime under each of its profiles (%s), "
+                + "%d particles, policy %s (mean [95%% CI], the interval cut at zero).", String.join(", ", profiles), first.particles,
+                first.policy), () -> charts.write(TaskCharts.conditions(scope(first.policy, first.particles, compared),
                 "scheduling", "Generic vs real-time scheduling", Metric.JITTER_P99, c -> data.info(c).profile()).withStem("scheduling")));
     }
 

@@ -550,6 +550,12 @@ class EvaluationDocumentTest {
                 }
             }
             assertEquals(4, paragraphs, "fifo+pinned at two counts under two policies: " + section);
+            // Figure 7 names the profiles it draws, from the store, not a fixed "SCHED_FIFO pinned"
+            Matcher fig = Pattern.compile("\\*Figure 7: release jitter p99 per runtime under each of its profiles \\(([^)]*)\\), "
+                    + "([0-9]+) particles, policy (\\w+) ").matcher(section);
+            assertTrue(fig.find(), section);
+            assertEquals("default, fifo, fifo+pinned", fig.group(1));
+            assertTrue(rows.stream().anyMatch(r -> r.get(1).equals(fig.group(2)) && r.get(2).equals(fig.group(3))), fig.group());
         }
         assertTrue(claimed, "the ten-repetition store separates fewer dropped jobs under fifo+pinned at 6400 particles");
         assertTrue(withheld, "the three-repetition store separates nothing");

@@ -232,8 +232,8 @@ public final class EvaluationDocument extends EvaluationSections {
             }
             rows.add(row);
         }
-        line("Table 4: the thesis's missCount per run (under skip, the dropped jobs), policy skip (mean ± 95% CI over "
-                + "repetitions; empty: not run).");
+        line("Table 4: the thesis's missCount per run (under skip, the dropped jobs), policy skip (mean [95% CI] over "
+                + "repetitions, the percentile-bootstrap interval; empty: not run).");
         line("");
         table(header, rows);
         // The figures show the configurations of the whole sweep; the HVM gets its own panel, as its
@@ -317,7 +317,7 @@ public final class EvaluationDocument extends EvaluationSections {
         List<ReportModel.Cell> at = data.order(data.sweep().stream().filter(c -> c.particles == ref && c.ok > 0).toList());
         ReportModel.Cell c0 = at.stream().filter(data::isNative).findFirst().orElse(null);
         Double nativeLatency = c0 == null ? null : mean(c0, Metric.LATENCY_MEAN);
-        line(String.format(Locale.ROOT, "Table 3: task latency and release jitter at %d particles, policy skip (ms; mean ± 95%% CI "
+        line(String.format(Locale.ROOT, "Table 3: task latency and release jitter at %d particles, policy skip (ms; mean [95%% CI] "
                 + "over repetitions of each run's mean, p99 and max). %s The last column is the mean task latency divided by C's.",
                 ref, referenceReason(ref)));
         line("");

@@ -278,8 +278,8 @@ final class EvaluationQuestions extends EvaluationSections {
         ReportModel.Cell first = loaded.get(0);
         List<ReportModel.Cell> compared = data.cells(c -> c.ok > 0 && c.particles == first.particles && c.policy.equals(first.policy)
                 && bases.contains(c.config.replace(StoredRun.loadLabel(c.load), "")));
-        figure("load", "Figure 8: task latency p99 on an idle machine and beside each load scenario, per configuration (mean, "
-                + "95% CI cut at zero).", () -> charts.write(TaskCharts.conditions(scope(first.policy, first.particles, compared), "load",
+        figure("load", "Figure 8: task latency p99 on an idle machine and beside each load scenario, per configuration (mean "
+                + "[95% CI], the interval cut at zero).", () -> charts.write(TaskCharts.conditions(scope(first.policy, first.particles, compared), "load",
                 "Idle vs loaded machine", Metric.LATENCY_P99, c -> c.load).withStem("load")));
     }
 

@@ -562,6 +562,14 @@ class EvaluationDocumentTest {
     }
 
     @Test
+    void everyIntervalIsWrittenAsTheMethodSaysMeanAndItsBracket() {
+        // the method gives `mean [low, high]`, a percentile-bootstrap interval: never a symmetric "±"
+        assertTrue(doc.contains("(`mean [low, high]`)"), doc);
+        assertFalse(doc.contains("±"), "an interval written as mean ± half-width, which the document does not compute");
+        assertTrue(doc.contains("Table 4: the thesis's missCount per run (under skip, the dropped jobs), policy skip (mean [95% CI]"), doc);
+    }
+
+    @Test
     void tableCellsFromTheStoreCannotBreakTheTable() {
         assertEquals("a\\|b &lt;script&gt;", EvaluationDocument.escape("a|b <script>"));
     }

@@ -60,9 +60,9 @@ final class ChartSpecs {
             new Figure("deviation", "Mean localisation deviation vs particles", "Mean Euclidean xy deviation of the estimate "
                     + "from the ground truth (m), mean over repetitions with 95% CI error bars (cut at 0: a distance is never negative).",
                     false, ChartSpecs::deviation),
-            new Figure("latency-jitter", "Average task latency and release jitter vs particles", "Mean over all jobs, then over "
-                    + "repetitions (ms), on a log particle axis. Solid: task latency (end \u2212 start); dashed: release jitter "
-                    + "(start \u2212 release).", false, true, ChartSpecs::latencyJitter),
+            new Figure("latency-jitter", "Average task latency and release jitter vs particles", "Mean over the jobs that have "
+                    + "the value, then over repetitions (ms), on a log particle axis. Solid: task latency (end \u2212 start), over "
+                    + "the completed jobs; dashed: release jitter (start \u2212 release), over the started jobs.", false, true, ChartSpecs::latencyJitter),
             new Figure("memory", "Memory areas: peak bytes per engine and memory style", "The memory-model experiment at a "
                     + "glance: for each runtime, engine and memory style, the peak use of each memory area (bytes, log axis; the "
                     + "largest over the repetitions); the table gives the peaks and the mean bytes one release allocated in the area "
@@ -91,8 +91,8 @@ final class ChartSpecs {
                     ChartSpecs::deviationTime),
             new Figure("trajectory", "Estimated vs real trajectory", "On the playground (dashed frame, metres); black: ground "
                     + "truth; triangles: the beacons; one estimate per runtime (first repetition).", true, ChartSpecs::trajectory),
-            new Figure("spectrum", "Task latency percentile spectrum", "HdrHistogram style: every job of every repetition "
-                    + "merged; x = 1/(1\u2212p) on a log axis (10 = 90%, 100 = 99%, 1000 = 99.9%), latency (ms) on a log axis. "
+            new Figure("spectrum", "Task latency percentile spectrum (completed jobs)", "HdrHistogram style: every completed "
+                    + "job (done or late; a dropped or aborted job has no task latency) of every repetition merged; x = 1/(1\u2212p) on a log axis (10 = 90%, 100 = 99%, 1000 = 99.9%), latency (ms) on a log axis. "
                     + "Each curve ends at p = 1 \u2212 1/n for its n jobs: past it n jobs say nothing more.",
                     true, ChartSpecs::spectrum),
             new Figure("completion-predict", "Predict: fraction of released jobs completed by a response time", COMPLETION
@@ -126,8 +126,9 @@ final class ChartSpecs {
                     + "both tasks completed by its deadline in every repetition under queue, every smaller count of the store "
                     + "holding too (hover: the smallest count that did not). Only under the queue policy, where no job is dropped: "
                     + "the capacity command searches it (docs/RUNNER.md).", false, ChartSpecs::breakdown),
-            new Figure("jitter-cdf", "CDF of release jitter", "Fraction of jobs released with at most the given jitter (ms, log "
-                    + "axis), every job of every repetition merged.", true, ChartSpecs::jitterCdf));
+            new Figure("jitter-cdf", "CDF of release jitter (started jobs)", "Fraction of the started jobs released with at most "
+                    + "the given jitter (ms, log axis), every started job (aborted ones included; a dropped job never starts, so it "
+                    + "has no jitter) of every repetition merged.", true, ChartSpecs::jitterCdf));
 
     /** The figure of {@link TaskCharts#vsParticlesPerTask}: "Predict: miss ratio vs particles". */
     private static Figure vsParticles(String task, TaskMetric m, String caption) {
@@ -412,13 +413,14 @@ final class ChartSpecs {
     }
 
     static ChartSpec spectrum(Scope s) {
-        return percentiles(s, "spectrum", "Task latency by percentile, all jobs of all repetitions", "task latency (ms, log)",
+        return percentiles(s, "spectrum", "Task latency by percentile, completed jobs of all repetitions",
+                "task latency (ms, log)",
                 c -> c.latencySpectrum);
     }
 
     /** The abort latency spectrum per runtime; null where no run had an abort take hold (every policy but terminate). */
     static ChartSpec abortLatency(Scope s) {
-        ChartSpec c = percentiles(s, "abort-latency", "Abort latency by percentile, every aborted job of every repetition",
+        ChartSpec c = percentiles(s, "abort-latency", "Abort latency by percentile, every job an abort took hold of, all repetitions",
                 "abort latency (ms, log)", cell -> cell.abortSpectrum);
         if (c.series().isEmpty()) {
             return null;
@@ -457,9 +459,9 @@ final class ChartSpecs {
             addIfAny(series, new Series(c.config, c.config, c.engine, s.color(c.config), Style.line(1.5).steps(), c.jitterCdf, null,
                     null, null, null));
         }
-        return s.spec("jitter-cdf", "CDF of release jitter", Kind.LINES, false,
+        return s.spec("jitter-cdf", "CDF of release jitter, started jobs of all repetitions", Kind.LINES, false,
                 new Axis("release jitter (ms, log)", Scale.LOG, Format.NUMBER, null, null),
-                Axis.linear("fraction of jobs").range(0.0, 1.0), null, series);
+                Axis.linear("fraction of started jobs").range(0.0, 1.0), null, series);
     }
 
     /**

@@ -329,7 +329,8 @@ public final class EvaluationDocument extends EvaluationSections {
                     nativeLatency == null || lat == null || nativeLatency == 0 ? "" : num(lat / nativeLatency, 2) + "x"));
         }
         table(List.of("configuration", "latency mean", "latency p99", "latency max", "jitter mean", "jitter p99", "latency / C"), rows);
-        figure("spectrum-skip-" + ref, "Figure 2: task latency by percentile (all jobs of all repetitions, log scales), "
+        figure("spectrum-skip-" + ref, "Figure 2: task latency by percentile (every completed job of every repetition, "
+                + "log scales; a dropped job has no task latency), "
                 + ref + " particles, policy skip.", () -> charts.write(ChartSpecs.spectrum(scope(ref, at)).withStem("spectrum-skip-" + ref)));
         List<ReportModel.Cell> jvms = at.stream().filter(c -> !data.isNative(c) && mean(c, Metric.LATENCY_P99) != null)
                 .sorted(Comparator.comparingDouble(c -> mean(c, Metric.LATENCY_P99))).toList();

@@ -221,8 +221,8 @@ final class EvaluationQuestions extends EvaluationSections {
             line("");
             return;
         }
-        figure("abort-latency-" + n, "Figure 6b: abort latency by percentile under terminate, " + n + " particles (every aborted "
-                + "job of every repetition merged, log scales).", () -> charts.write(spectrum.withStem("abort-latency-" + n)));
+        figure("abort-latency-" + n, "Figure 6b: abort latency by percentile under terminate, " + n + " particles (every job an "
+                + "abort took hold of, aborted or, as in the RTSJ thesis design, run to its end, every repetition merged; log scales).", () -> charts.write(spectrum.withStem("abort-latency-" + n)));
     }
 
     /**

@@ -71,6 +71,22 @@ class ChartSpecsTest {
     }
 
     @Test
+    void eachDistributionSaysWhichJobsItCovers() {
+        // task latency exists for a completed job, release jitter for a started one, abort latency for one an abort took hold of
+        ChartSpec spectrum = chart("spectrum", "skip", 400);
+        assertTrue(spectrum.title().startsWith("Task latency by percentile, completed jobs of all repetitions"), spectrum.title());
+        ChartSpec jitter = chart("jitter-cdf", "skip", 400);
+        assertTrue(jitter.title().startsWith("CDF of release jitter, started jobs of all repetitions"), jitter.title());
+        assertEquals("fraction of started jobs", jitter.y().label());
+        ChartSpec abort = chart("abort-latency", "terminate", 1600);
+        assertTrue(abort.title().startsWith("Abort latency by percentile, every job an abort took hold of"), abort.title());
+        Map<String, ChartSpecs.Figure> figures = ChartSpecs.FIGURES.stream().collect(Collectors.toMap(ChartSpecs.Figure::id, f -> f));
+        assertTrue(figures.get("spectrum").caption().contains("every completed job"), figures.get("spectrum").caption());
+        assertTrue(figures.get("jitter-cdf").caption().contains("every started job"), figures.get("jitter-cdf").caption());
+        assertFalse(figures.get("latency-jitter").caption().contains("all jobs"), figures.get("latency-jitter").caption());
+    }
+
+    @Test
     void abortLatencyIsDrawnWhereAbortsTookHoldFromTheMergedHistograms() {
         assertTrue(model.charts.stream().noneMatch(c -> c.id().equals("abort-latency") && c.setting().policy().equals("skip")),
                 "skip aborts nothing: no chart");

@@ -570,6 +570,14 @@ class EvaluationDocumentTest {
     }
 
     @Test
+    void spectrumAndAbortCaptionsSayWhichJobsTheyCover() {
+        // a dropped job has no task latency, and abort latency is over the jobs an abort took hold of, not over all jobs
+        assertTrue(doc.contains("*Figure 2: task latency by percentile (every completed job of every repetition"), doc);
+        assertTrue(doc.contains("particles (every job an abort took hold of, "), doc);
+        assertFalse(doc.contains("all jobs of all repetitions") || doc.contains("every aborted job"), doc);
+    }
+
+    @Test
     void tableCellsFromTheStoreCannotBreakTheTable() {
         assertEquals("a\\|b &lt;script&gt;", EvaluationDocument.escape("a|b <script>"));
     }

@@ -52,7 +52,7 @@ final class ChartSpecs {
 
     /** The page's figures, in page order. */
     static final List<Figure> FIGURES = List.of(
-            new Figure("misses", "Missed jobs vs particles (the thesis\u2019s missCount)", "missCount per run: the dropped jobs "
+            new Figure("misses", "The thesis\u2019s missCount vs particles: dropped (skip), dropped or aborted (terminate), late (queue) jobs", "missCount per run: the dropped jobs "
                     + "under skip, the dropped or aborted ones under terminate, the late ones under queue (a late job under skip is "
                     + "not counted; the miss-ratio charts count every deadline miss); mean over repetitions with 95% CI error bars "
                     + "(cut at 0: a count is never negative), per runtime. The thesis\u2019s histogram with errors.",

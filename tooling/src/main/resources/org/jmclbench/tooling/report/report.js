@@ -111,14 +111,17 @@
       h.appendChild(el('p', { 'class': 'big' }, 'No completed run at this setting (' + where + ').'));
       return;
     }
-    var best = Math.min.apply(null, withMiss.map(function (c) { return c.metrics.MISS_COUNT.mean; }));
-    var winners = withMiss.filter(function (c) { return c.metrics.MISS_COUNT.mean === best; });
+    var lowest = Math.min.apply(null, withMiss.map(function (c) { return c.metrics.MISS_COUNT.mean; }));
+    var winners = withMiss.filter(function (c) { return c.metrics.MISS_COUNT.mean === lowest; });
     var jobs = missCountJobs();
     var sep = winners[0].missSeparation || {};
     var unseparated = withMiss.filter(function (c) { return winners.indexOf(c) < 0 && sep[c.config] !== 'A_LOWER'; });
-    h.appendChild(el('p', { 'class': 'big', id: 'headline-best' }, 'Fewest ' + jobs + ' at ' + where + ': ' +
-      winners.map(function (c) { return c.config; }).join(', ') + ' (' + fmtCi(winners[0].metrics.MISS_COUNT) +
-      ' per run, ' + winners[0].metrics.MISS_COUNT.n + (winners[0].metrics.MISS_COUNT.n === 1 ? ' run)' : ' runs)') +
+    // a mean over repetitions, not a count: the lowest mean is named as such, and a mean of zero as none in any run
+    var runs = winners[0].metrics.MISS_COUNT.n + (winners[0].metrics.MISS_COUNT.n === 1 ? ' run' : ' runs');
+    h.appendChild(el('p', { 'class': 'big', id: 'headline-best' }, 'Lowest mean ' + jobs + ' at ' + where + ': ' +
+      winners.map(function (c) { return c.config; }).join(', ') +
+      (lowest === 0 ? ' had none (' + runs + (winners.length === 1 ? ')' : ' each)')
+        : ' (' + fmtCi(winners[0].metrics.MISS_COUNT) + ' per run, ' + runs + ')') +
       separationNote(winners, withMiss, unseparated)));
     if (unseparated.length > HEADLINE_NAMES) {
       var which = el('details', { id: 'headline-unseparated' });
@@ -143,7 +146,7 @@
       var lr = ratio(j.metrics.LATENCY_MEAN.mean, nat.metrics.LATENCY_MEAN.mean);
       var mr = ratio(j.metrics.MISS_COUNT.mean, nat.metrics.MISS_COUNT.mean);
       // fewer dropped jobs can come from later releases (a dispatcher that waits for the job), so the jitter stands beside them
-      p.textContent = 'Java vs C: ' + j.config + ', the chosen Java runtime with the fewest ' + jobs + ', has a mean task latency ' + lr + ' that of ' +
+      p.textContent = 'Java vs C: ' + j.config + ', the chosen Java runtime with the lowest mean ' + jobs + ', has a mean task latency ' + lr + ' that of ' +
         nat.config + ' (' + fmt(j.metrics.LATENCY_MEAN.mean) + ' vs ' + fmt(nat.metrics.LATENCY_MEAN.mean) + ' ms), a release jitter p99 of ' +
         fmt(j.metrics.JITTER_P99.mean) + ' vs ' + fmt(nat.metrics.JITTER_P99.mean) + ' ms, and ' +
         fmt(j.metrics.MISS_COUNT.mean) + ' vs ' + fmt(nat.metrics.MISS_COUNT.mean) + ' ' + jobs + ' per run (' + mr + ').';
@@ -166,6 +169,8 @@
     return '; not separated from ' + names + (few ? ' (fewer than 10 runs a side: no ranking)' : '') + ' (docs/REPORT.md).';
   }
   var HEADLINE_NAMES = 4;
+  /** The marked cell's tooltip: the lowest value, which ranks nothing by itself (docs/REPORT.md). */
+  var LOWEST_TITLE = 'lowest value of this column (not a ranking: compare says whether two runtimes are separated)';
   /** What missCount counts under the chosen policy: dropped, dropped or aborted, or late jobs (Metric.missCountJobs). */
   function missCountJobs() { return (DATA.missCountJobs || {})[state.policy] || 'missed jobs'; }
   function isNative(c) { return configById[c.config] && configById[c.config].kind === 'NATIVE'; }
@@ -182,11 +187,17 @@
   }
   function ratio(a, b) {
     if (a === null || b === null || a === undefined || b === undefined) { return 'n/a'; }
-    if (b === 0) { return a === 0 ? '1.00\u00d7 (both zero)' : 'native missed none'; }
+    if (b === 0) { return a === 0 ? '1.00\u00d7 (both zero)' : 'the native baseline had none'; }
     return (a / b).toFixed(2) + '\u00d7';
   }
 
   // ---- table -----------------------------------------------------------------------------
+  /** What a response-time p99 cell is: each run's 99th percentile over its released jobs, then their mean. */
+  function responseP99Title(task) {
+    return task + ': the 99th percentile of the response time (end \u2212 release, ms) over every released job of a run, a '
+      + 'dropped or aborted job counting as never completed (+\u221e); mean over repetitions. \u221e: in at least one run the '
+      + 'p99 fell among the jobs that never completed (about 1% or more of them were dropped or aborted)';
+  }
   var COLUMNS = [
     { key: 'config', label: 'runtime/profile', text: true },
     { key: 'engine', label: 'engine', text: true, title: 'javase: the Java SE release engine (heap, GC); scj: the SCJ mission (immortal, mission, private memory); native: the C baseline' },
@@ -197,8 +208,8 @@
     { key: 'late', label: 'late/run', metric: 'LATE', best: 'min' },
     { key: 'missRatioP', label: 'miss ratio predict', metric: 'predict.MISS_RATIO', ci: true, best: 'min', title: 'predict jobs not completed by their deadline (late, dropped, aborted) over those released, per run' },
     { key: 'missRatioU', label: 'miss ratio update', metric: 'update.MISS_RATIO', ci: true, best: 'min', title: 'update jobs not completed by their deadline (late, dropped, aborted) over those released, per run' },
-    { key: 'respP99P', label: 'response p99 predict', metric: 'predict.RESPONSE_P99', best: 'min', title: 'predict response time (end \u2212 release, ms) p99 over every released job; \u221e: more than 1% never completed' },
-    { key: 'respP99U', label: 'response p99 update', metric: 'update.RESPONSE_P99', best: 'min', title: 'update response time (end \u2212 release, ms) p99 over every released job; \u221e: more than 1% never completed' },
+    { key: 'respP99P', label: 'response p99 predict', metric: 'predict.RESPONSE_P99', best: 'min', title: responseP99Title('predict') },
+    { key: 'respP99U', label: 'response p99 update', metric: 'update.RESPONSE_P99', best: 'min', title: responseP99Title('update') },
     { key: 'latMean', label: 'latency mean', metric: 'LATENCY_MEAN', ci: true, best: 'min' },
     { key: 'latP99', label: 'latency p99', metric: 'LATENCY_P99', best: 'min' },
     { key: 'latMax', label: 'latency max', metric: 'LATENCY_MAX', stat: 'max', best: 'min' },
@@ -287,7 +298,7 @@
           sw.style.background = configById[r.cell.config].color;
           td.insertBefore(sw, td.firstChild);
         }
-        if (best[col.key] !== undefined && r.values[col.key] === best[col.key]) { td.classList.add('best'); td.title = 'best of this column'; }
+        if (best[col.key] !== undefined && r.values[col.key] === best[col.key]) { td.classList.add('best'); td.title = LOWEST_TITLE; }
         if ((col.key === 'failures' && r.values.failures > 0) || (col.key === 'unsupported' && r.values.unsupported > 0)) { td.classList.add('bad'); }
         row.appendChild(td);
       });

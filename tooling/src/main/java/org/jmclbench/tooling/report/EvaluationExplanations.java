@@ -150,7 +150,8 @@ final class EvaluationExplanations extends EvaluationSections {
                 + "missCount and the late jobs per run, task latency (ms) and mean localization deviation (m): what a policy "
                 + "saves in time it may cost in accuracy.");
         line("");
-        table(List.of("configuration", "particles", "policy", "miss ratio", "missCount", "late", "latency mean", "deviation"), rows);
+        table(List.of("configuration", "particles", "policy", "miss ratio", MISS_COUNT_BY_POLICY, "late", "latency mean",
+                "deviation"), rows);
         Integer n = data.compareCount();
         List<ReportModel.Cell> at = rowsCells.stream().filter(c -> n != null && c.particles == n).toList();
         if (!at.isEmpty()) {

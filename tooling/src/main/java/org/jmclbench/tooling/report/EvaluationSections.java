@@ -51,6 +51,12 @@ abstract class EvaluationSections {
         this.findings = document.findings;
     }
 
+    /**
+     * The heading of a missCount column in a table whose rows differ in policy: what it counts
+     * under each (Metric.missCountJobs), as a late job under skip is a miss it does not count.
+     */
+    static final String MISS_COUNT_BY_POLICY = "missCount (skip: dropped; terminate: dropped or aborted; queue: late)";
+
     /** The Markdown written so far. */
     String text() {
         return md.toString();

@@ -578,6 +578,14 @@ class EvaluationDocumentTest {
     }
 
     @Test
+    void aMissCountColumnOverSeveralPoliciesSaysWhatItCountsUnderEach() {
+        for (String caption : List.of("Table 2:", "Table 6:")) {
+            String header = doc.substring(doc.indexOf(caption)).lines().filter(l -> l.startsWith("|")).findFirst().orElseThrow();
+            assertTrue(header.contains("| missCount (skip: dropped; terminate: dropped or aborted; queue: late) |"), header);
+        }
+    }
+
+    @Test
     void tableCellsFromTheStoreCannotBreakTheTable() {
         assertEquals("a\\|b &lt;script&gt;", EvaluationDocument.escape("a|b <script>"));
     }

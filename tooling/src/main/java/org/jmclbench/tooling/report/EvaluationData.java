@@ -84,7 +84,7 @@ final class EvaluationData {
         return out;
     }
 
-    /** The particle count latency is compared at: the largest of the sweep at which the C baseline missed nothing. */
+    /** The particle count latency is compared at: the largest of the sweep at which the C baseline's missCount was 0 in every repetition. */
     Integer referenceCount() {
         List<Integer> counts = sweepCounts();
         if (counts.isEmpty()) {
@@ -102,8 +102,9 @@ final class EvaluationData {
     }
 
     /**
-     * The largest particle count a configuration sustained with no miss in any completed repetition,
-     * every smaller count of its sweep included; 0 when even its smallest count missed.
+     * The largest particle count a configuration sustained with missCount 0 in every completed
+     * repetition (under its policy: no dropped, aborted or, under queue, late job), every smaller
+     * count of its sweep included; 0 when even its smallest count had a miss.
      */
     static int sustained(List<ReportModel.Cell> cellsOfConfig) {
         int best = 0;

@@ -22,7 +22,7 @@ import static org.jmclbench.tooling.report.EvaluationData.*;
  * Writes the evaluation (docs/EVALUATION.md and its SVG figures) from a results store: method,
  * results, threats to validity, conclusions, as the thesis's chapter 5. Every number is read from
  * the store through the report's own aggregation ({@link ReportModel}: mean over repetitions with
- * a 95% Student-t interval); where the store has no data for a question, the document says so.
+ * a 95% percentile-bootstrap interval); where the store has no data for a question, the document says so.
  */
 public final class EvaluationDocument extends EvaluationSections {
 

@@ -1,0 +1,74 @@
+package org.jmclbench.tooling.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Bad usage of the launcher's own commands ({@code run}, {@code run-hvm}) is one line naming the
+ * option and exit code 2, before anything runs: the launcher is copied into a home whose build is
+ * up to date (a stand-in jar, and a stand-in Maven that only says it was called).
+ */
+class LauncherBadInputTest {
+
+    @TempDir
+    Path home;
+
+    private Path out;
+
+    @BeforeEach
+    void upToDateHome() throws Exception {
+        Path repo = Path.of(System.getProperty("user.dir")).toAbsolutePath().getParent();
+        Files.copy(repo.resolve("jmclbench"), home.resolve("jmclbench"));
+        executable(Files.createDirectories(home.resolve("bin")).resolve("mvn"),
+                "#!/bin/sh\necho built >> \"" + home.resolve("builds") + "\"\n");
+        Files.writeString(Files.createDirectories(home.resolve("tooling/target")).resolve("jmclbench-tooling.jar"), "jar");
+        out = home.resolve("out");
+    }
+
+    @Test
+    void runHvmRefusesAnotherEngine() throws Exception {
+        for (String[] engine : List.of(new String[] {"--engine", "javase"}, new String[] {"--engine=scj"})) {
+            List<String> args = new ArrayList<>(List.of("run-hvm", "-p", "50", "-O", out.toString()));
+            args.addAll(List.of(engine));
+            Result r = launch(args);
+            assertEquals(2, r.exit, r.err);
+            assertEquals(1, r.err.strip().lines().count(), "one line: " + r.err);
+            assertTrue(r.err.startsWith("jmclbench: --engine: run-hvm runs the hvm engine, not '"
+                    + (engine.length == 2 ? "javase" : "scj") + "'"), r.err);
+            assertFalse(Files.exists(out), "nothing may run");
+        }
+    }
+
+    private record Result(int exit, String err) {
+    }
+
+    private Result launch(List<String> args) throws Exception {
+        List<String> cmd = new ArrayList<>(List.of(home.resolve("jmclbench").toString()));
+        cmd.addAll(args);
+        ProcessBuilder pb = new ProcessBuilder(cmd).redirectOutput(ProcessBuilder.Redirect.DISCARD);
+        pb.environment().put("PATH", home.resolve("bin") + ":" + System.getenv("PATH"));
+        Process p = pb.start();
+        String err = new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the launcher hung");
+        return new Result(p.exitValue(), err);
+    }
+
+    private static Path executable(Path file, String script) throws Exception {
+        Files.writeString(file, script);
+        Files.setPosixFilePermissions(file, PosixFilePermissions.fromString("rwxr-xr-x"));
+        return file;
+    }
+}

@@ -52,6 +52,30 @@ class LauncherBadInputTest {
         }
     }
 
+    @Test
+    void runRefusesAJvmArgumentTheRuntimeRefuses() throws Exception {
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        Result r = launch(List.of("run", "--java", java, "--jvm-arg", "-XX:+NoSuchFlag", "-p", "50", "-O", out.toString()));
+        assertEquals(2, r.exit, r.err);
+        assertEquals("jmclbench: --jvm-arg: " + java + " refuses -XX:+NoSuchFlag: Unrecognized VM option 'NoSuchFlag'",
+                r.err.strip());
+        assertFalse(Files.exists(out), "nothing may run");
+        assertFalse(Files.exists(home.resolve("builds")), "refused before the build");
+    }
+
+    @Test
+    void runPassesOnAJvmArgumentTheRuntimeAccepts() throws Exception {
+        // a stand-in JVM: accepts everything, and writes down the command line of the run itself
+        Path args = home.resolve("args");
+        Path java = executable(home.resolve("bin/fake-java"),
+                "#!/bin/sh\nfor a; do [ \"$a\" = -version ] && exit 0; done\necho \"$@\" > \"" + args + "\"\n");
+        Result r = launch(List.of("run", "--java", java.toString(), "--jvm-arg", "-Xmx64m", "-p", "50"));
+        assertEquals(0, r.exit, r.err);
+        String run = Files.readString(args).strip();
+        assertTrue(run.startsWith("-Xmx64m -Djmclbench.home="), run);
+        assertTrue(run.endsWith("org.jmclbench.workload.WorkloadMain run -p 50"), run);
+    }
+
     private record Result(int exit, String err) {
     }
 

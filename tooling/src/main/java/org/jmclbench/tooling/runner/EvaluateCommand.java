@@ -13,12 +13,14 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
 
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.report.EvaluationDocument;
 import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.JdkInstaller;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
+import org.jmclbench.tooling.store.ResultsDatabase;
 import org.jmclbench.tooling.store.StoreArchive;
 import org.jmclbench.tooling.runtime.RuntimeKind;
 
@@ -83,6 +85,7 @@ public final class EvaluateCommand implements Callable<Integer> {
         for (EvaluationMatrix.Section s : m.sections) {
             MatrixOptions.apply(s.spec(), "db", db, "--db");
         }
+        refuseBadOptions(Path.of(db).toAbsolutePath().normalize(), data); // as the matrix names it
         PrintStream o = System.out;
         Path document = out.toAbsolutePath().getParent().resolve("EVALUATION.md");
         if (!noRun) {
@@ -167,6 +170,17 @@ public final class EvaluateCommand implements Callable<Integer> {
         }
         o.println("wrote " + document + " and its figures in " + out);
         return 0;
+    }
+
+    /**
+     * Refuses what a run would refuse, before anything is installed or run, and on a dry run too.
+     *
+     * @throws BadUsageException naming the option (exit code 2)
+     */
+    private void refuseBadOptions(Path db, Path data) {
+        if (!noRun) {
+            ResultsDatabase.checkToWrite(db, "--db");
+        }
     }
 
     /** The data file as the document names it: relative to the project when inside it. */

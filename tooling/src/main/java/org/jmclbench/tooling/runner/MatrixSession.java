@@ -16,6 +16,7 @@ import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.runtime.RuntimeInfo;
 import org.jmclbench.tooling.store.MachineInfo;
+import org.jmclbench.tooling.store.ResultsDatabase;
 import org.jmclbench.tooling.store.RunRecorder;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -49,6 +50,7 @@ public final class MatrixSession {
             return new Result(1, m.db());
         }
         if (spec.dryRun) {
+            ResultsDatabase.checkToWrite(m.db(), "--db"); // what the run would refuse, the plan is refused for
             out.printf("%d runs planned%s, order seed %d:%n", m.plan().size(), shardText(m), m.orderSeed());
             for (PlannedRun r : m.plan()) {
                 out.println("  " + r.runKey() + "  " + r.label());

@@ -17,6 +17,7 @@ import java.util.HashSet;
 import java.util.Set;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.cli.OutputPaths;
 import org.sqlite.SQLiteConfig;
 import org.sqlite.SQLiteJDBCLoader;
 
@@ -83,6 +84,7 @@ public final class ResultsDatabase implements AutoCloseable {
         Path abs = file.toAbsolutePath().normalize();
         String where = where(option, file);
         String refusal = "not a usable results store";
+        refuseItsPlace(abs, where, refusal);
         FileChannel lock = lock(abs, where);
         try {
             SQLiteConfig config = new SQLiteConfig();
@@ -102,6 +104,43 @@ public final class ResultsDatabase implements AutoCloseable {
         } catch (RuntimeException e) {
             closeQuietly(lock);
             throw e;
+        }
+    }
+
+    /**
+     * Refuses, as {@link #openToWrite} would, a store that cannot be opened to write, creating and changing
+     * nothing (no folder, no lock, no migration): what a dry run checks. A store another process is writing
+     * is not refused, for the run itself may come after that one has ended.
+     *
+     * @throws BadUsageException when the file is not a store this tool writes or its folder cannot be made
+     */
+    public static void checkToWrite(Path file, String option) {
+        Path abs = file.toAbsolutePath().normalize();
+        String where = where(option, file);
+        String refusal = "not a usable results store";
+        refuseItsPlace(abs, where, refusal);
+        if (!Files.exists(abs)) {
+            return; // to be created
+        }
+        SQLiteConfig config = new SQLiteConfig();
+        config.setReadOnly(true);
+        config.setBusyTimeout(BUSY_TIMEOUT_MS);
+        Connection c = connect(abs, config, where, refusal);
+        try {
+            check(c, where, refusal, true);
+        } finally {
+            closeQuietly(c);
+        }
+    }
+
+    /** Refuses a store whose folder cannot be made or written, or that is itself a folder. */
+    private static void refuseItsPlace(Path abs, String where, String refusal) {
+        String why = OutputPaths.whyNotAFolder(abs.getParent());
+        if (why != null) {
+            throw new BadUsageException(where + "cannot write there (" + why + ")");
+        }
+        if (Files.isDirectory(abs)) {
+            throw new BadUsageException(where + refusal + " (a folder)");
         }
     }
 

@@ -1,11 +1,13 @@
 package org.jmclbench.tooling.runner;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 
 import org.jmclbench.tooling.Fixtures;
 import org.junit.jupiter.api.Test;
@@ -94,6 +96,47 @@ class BadInputTest extends FakeJvmHome {
         assertTrue(r.err().strip().startsWith("jmclbench: --db: " + db + ": not a usable results store"), r.err());
         assertEquals("not a database, just text that happens to sit here", Files.readString(db));
         assertFalse(Files.exists(dir.resolve("out/runs")));
+    }
+
+    /**
+     * A dry run shows what the run would do: a store the run would refuse (its folder below a file, a
+     * file that is no SQLite database, a database without the runs table) is refused by the dry run too,
+     * with the run's own line, and nothing is created or changed.
+     */
+    @Test
+    void aDryRunRefusesTheDatabaseTheRunWouldRefuse() throws Exception {
+        Path file = Files.writeString(dir.resolve("a-file"), "text");
+        Path below = file.resolve("results.db");
+        Path text = Files.writeString(dir.resolve("text.db"), "not a database, just text that happens to sit here");
+        Path other = dir.resolve("other.db");
+        try (java.sql.Connection c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + other);
+             java.sql.Statement s = c.createStatement()) {
+            s.execute("CREATE TABLE notes (text TEXT)");
+        }
+        byte[] otherBytes = Files.readAllBytes(other);
+        Path m = Files.writeString(dir.resolve("e.txt"), "datasets = tiny\n[a]\nruntimes = native\n");
+        String[][] refused = {
+            {below.toString(), "--db: " + below + ": cannot write there (" + file + " is a file)"},
+            {text.toString(), "--db: " + text + ": not a usable results store ("},
+            {other.toString(), "--db: " + other + ": not a usable results store (no runs table)"},
+        };
+        for (String[] r : refused) {
+            Fixtures.CliResult run = Fixtures.cli("matrix", "--java", fake.toString(), "--datasets", "tiny", "--db", r[0]);
+            assertEquals(2, run.exitCode(), run.out() + run.err());
+            assertTrue(run.err().strip().startsWith("jmclbench: " + r[1]), run.err());
+            for (String[] dryRun : List.of(
+                    new String[] {"matrix", "--dry-run", "--java", fake.toString(), "--datasets", "tiny", "--db", r[0]},
+                    new String[] {"evaluate", "--dry-run", "--matrix", m.toString(), "--db", r[0]})) {
+                Fixtures.CliResult dry = Fixtures.cli(dryRun);
+                assertEquals(2, dry.exitCode(), dryRun[0] + ": " + dry.out() + dry.err());
+                assertEquals(run.err().strip(), dry.err().strip(), dryRun[0] + " --dry-run refuses as the run does");
+                assertFalse(dry.out().contains("planned") || dry.out().contains("budget"), "no plan for a refused store: " + dry.out());
+            }
+        }
+        assertEquals("text", Files.readString(file));
+        assertEquals("not a database, just text that happens to sit here", Files.readString(text));
+        assertArrayEquals(otherBytes, Files.readAllBytes(other), "a dry run changes nothing");
+        assertFalse(Files.exists(dir.resolve("out/runs")), "nothing may run");
     }
 
     @Test

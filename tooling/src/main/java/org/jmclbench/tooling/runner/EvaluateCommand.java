@@ -14,6 +14,7 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.cli.OutputPaths;
 import org.jmclbench.tooling.report.EvaluationDocument;
 import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.JdkInstaller;
@@ -23,6 +24,11 @@ import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.store.ResultsDatabase;
 import org.jmclbench.tooling.store.StoreArchive;
 import org.jmclbench.tooling.runtime.RuntimeKind;
+
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -173,13 +179,52 @@ public final class EvaluateCommand implements Callable<Integer> {
     }
 
     /**
-     * Refuses what a run would refuse, before anything is installed or run, and on a dry run too.
+     * Refuses what a run would fail on only at its end, hours later, or what would make it do other
+     * than asked: before anything is installed, run or written, and on a dry run too.
      *
      * @throws BadUsageException naming the option (exit code 2)
      */
     private void refuseBadOptions(Path db, Path data) {
+        if (dryRun && noRun) {
+            throw BadUsageException.ofOption("--no-run", "cannot be combined with --dry-run (--dry-run prints the plan, "
+                    + "--no-run writes the document from the store: give one)");
+        }
+        OutputPaths.checkFolder(out, "--out");
+        if (!noRun || this.db != null) {
+            checkVerification(verification); // read by the document: copied beside --data by a run, or as it is with --no-run --db
+        }
         if (!noRun) {
             ResultsDatabase.checkToWrite(db, "--db");
+            if (Files.isDirectory(data)) {
+                throw BadUsageException.ofOption("--data", data + ": a folder, not a file");
+            }
+            String why = OutputPaths.whyNotAFolder(data.toAbsolutePath().getParent());
+            if (why != null) {
+                throw BadUsageException.ofOption("--data", data + ": cannot write there (" + why + ")");
+            }
+        }
+    }
+
+    /** A verification file that exists must be the JSON object ./jmclbench verify writes; a missing one means no results. */
+    static void checkVerification(Path file) {
+        if (!Files.exists(file)) {
+            return;
+        }
+        if (!Files.isRegularFile(file)) {
+            throw BadUsageException.ofOption("--verification", file + ": not a file");
+        }
+        JsonNode doc;
+        try {
+            doc = new ObjectMapper().readTree(file.toFile());
+        } catch (JsonProcessingException e) {
+            JsonLocation at = e.getLocation();
+            throw BadUsageException.ofOption("--verification", file + (at != null && at.getLineNr() > 0 ? ":" + at.getLineNr() : "")
+                    + ": not JSON (" + String.valueOf(e.getOriginalMessage()).replaceAll("\\s+", " ").strip() + ")");
+        } catch (java.io.IOException e) {
+            throw BadUsageException.ofOption("--verification", file + ": cannot read (" + e.getClass().getSimpleName() + ")");
+        }
+        if (doc == null || !doc.isObject()) {
+            throw BadUsageException.ofOption("--verification", file + ": not the JSON object ./jmclbench verify writes");
         }
     }
 

@@ -1,6 +1,7 @@
 package org.jmclbench.tooling.runner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -245,6 +246,65 @@ class EvaluateCommandTest {
                 assertEquals(-1L, Files.mismatch(figure, again.resolve(figure.getFileName())), figure.getFileName() + " differs");
             }
         }
+    }
+
+    /**
+     * Options a run would fail on only at its end (an --out that is a file, --data below a file, a
+     * --verification that is not JSON) or that contradict each other (--dry-run --no-run) are refused
+     * first: one line naming the option, exit code 2, nothing run or written. A missing --verification
+     * file is no results, not bad input.
+     */
+    @Test
+    void evaluateRefusesItsBadOptionsBeforeItRunsOrWrites() throws Exception {
+        Fixtures.home(dir);
+        Path nat = Fixtures.fakeJava(dir, "nat", "ok", 0, null, 21);
+        Path f = matrix("datasets = tiny\nrepeat = 1\nnative = %s\n[one]\nruntimes = native\nparticles = 100\n".formatted(nat));
+        Path db = dir.resolve("results/evaluation.db");
+        Path data = dir.resolve("data-out/evaluation.db.gz");
+        Path out = dir.resolve("docs/evaluation");
+        Path none = dir.resolve("none.json");
+        Path aFile = Files.writeString(dir.resolve("a-file"), "a file");
+        Path notJson = Files.writeString(dir.resolve("verification.json"), "{\"checks\": [\n  {\"id\": not json}\n]}\n");
+        Files.createDirectories(out.getParent());
+        Path outFile = Files.writeString(dir.resolve("docs/figures"), "a file where the figures would go");
+        String[][] refused = {
+            {"--out: " + outFile + ": a file, not a folder", "--out", outFile.toString(), "--verification", none.toString()},
+            {"--out: " + aFile.resolve("evaluation") + ": cannot write there (" + aFile + " is a file)",
+                "--out", aFile.resolve("evaluation").toString(), "--verification", none.toString()},
+            {"--verification: " + notJson + ":2: not JSON (Unrecognized token 'not'", "--out", out.toString(),
+                "--verification", notJson.toString()},
+            {"--data: " + aFile.resolve("e.db.gz") + ": cannot write there (" + aFile + " is a file)",
+                "--out", out.toString(), "--verification", none.toString(), "--data", aFile.resolve("e.db.gz").toString()},
+            {"--no-run: cannot be combined with --dry-run", "--out", out.toString(), "--verification", none.toString(),
+                "--dry-run", "--no-run"},
+        };
+        for (String[] r : refused) {
+            for (boolean dryRun : new boolean[] {false, true}) {
+                List<String> args = new java.util.ArrayList<>(List.of("evaluate", "--matrix", f.toString(), "--db", db.toString()));
+                args.addAll(List.of(r).subList(1, r.length));
+                if (!args.contains("--data")) {
+                    args.addAll(List.of("--data", data.toString()));
+                }
+                if (dryRun && !args.contains("--dry-run")) {
+                    args.add("--dry-run");
+                }
+                Fixtures.CliResult c = Fixtures.cli(args.toArray(String[]::new));
+                assertEquals(2, c.exitCode(), args + ": " + c.out() + c.err());
+                assertEquals(1, c.err().strip().lines().count(), "one line: " + c.err());
+                assertTrue(c.err().startsWith("jmclbench: " + r[0]), c.err());
+                assertEquals("", c.out(), "refused before the plan is printed or anything runs");
+            }
+        }
+        assertFalse(Files.exists(db), "nothing may run");
+        assertFalse(Files.exists(data), "no data may be written");
+        assertFalse(Files.exists(dir.resolve("docs/EVALUATION.md")), "no document may be written");
+        assertEquals("a file where the figures would go", Files.readString(outFile));
+        assertEquals("a file", Files.readString(aFile));
+
+        // a missing --verification file is no results: the dry run goes on
+        Fixtures.CliResult c = Fixtures.cli("evaluate", "--dry-run", "--matrix", f.toString(), "--db", db.toString(),
+                "--out", out.toString(), "--verification", none.toString());
+        assertEquals(0, c.exitCode(), c.err());
     }
 
     @Test

@@ -36,12 +36,12 @@ public final class OutputPaths {
     /**
      * Refuses a folder option that cannot be one.
      *
-     * @throws BadUsageException {@code option: dir: a file, not a folder} or {@code option: dir: cannot write there (why)}
+     * @throws BadUsageException {@code option: dir: not a folder} or {@code option: dir: cannot write there (why)}
      *                           (exit code 2)
      */
     public static void checkFolder(Path dir, String option) {
         if (Files.isRegularFile(dir)) {
-            throw BadUsageException.ofOption(option, dir + ": a file, not a folder");
+            throw BadUsageException.ofOption(option, dir + ": not a folder");
         }
         String why = whyNotAFolder(dir);
         if (why != null) {

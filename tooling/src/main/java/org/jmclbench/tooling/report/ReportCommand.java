@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.cli.OutputPaths;
 import org.jmclbench.tooling.store.StoredRuns;
 
 import picocli.CommandLine.Command;
@@ -48,9 +49,8 @@ public final class ReportCommand implements Callable<Integer> {
             Path parent = db.toAbsolutePath().getParent();
             out = parent == null ? Path.of("report") : parent.resolve("report");
         }
-        if (Files.exists(out) && !Files.isDirectory(out)) {
-            throw new BadUsageException("--out: " + out + ": not a folder");
-        }
+        // a folder that cannot be made would fail the report only after the store is read and the charts built
+        OutputPaths.checkFolder(out, "--out");
         Path resultsDir = db.toAbsolutePath().getParent();
         ReportModel model;
         try (StoredRuns store = StoredRuns.open(db, "--db")) {

@@ -262,6 +262,23 @@ class ReportCommandTest {
         assertFalse(Files.exists(dir.resolve("r2")), "nothing written for bad input");
     }
 
+    /**
+     * An --out that cannot be made (below a file) is refused at once: without the check the store was read
+     * and the model built, then the folder failed with exit code 1, or, with no store, --db was blamed.
+     */
+    @Test
+    void anOutBelowAFileIsRefusedBeforeTheStoreIsRead() throws Exception {
+        Path file = Files.writeString(dir.resolve("a-file"), "a file");
+        Path below = file.resolve("report");
+        for (Path store : List.of(db, dir.resolve("nope.db"))) {
+            String err = stderrOf(() -> assertEquals(2, JmclbenchCli.execute("report", "--db", store.toString(),
+                    "--out", below.toString())));
+            assertEquals("jmclbench: --out: " + below + ": cannot write there (" + file + " is a file)", err.strip(),
+                    "one line naming --out, and no line of the store being read");
+        }
+        assertEquals("a file", Files.readString(file));
+    }
+
     @Test
     void notADatabaseIsBadInput() throws Exception {
         Path junk = Files.writeString(dir.resolve("junk.db"), "not sqlite");

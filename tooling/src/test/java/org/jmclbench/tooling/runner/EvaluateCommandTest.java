@@ -268,7 +268,7 @@ class EvaluateCommandTest {
         Files.createDirectories(out.getParent());
         Path outFile = Files.writeString(dir.resolve("docs/figures"), "a file where the figures would go");
         String[][] refused = {
-            {"--out: " + outFile + ": a file, not a folder", "--out", outFile.toString(), "--verification", none.toString()},
+            {"--out: " + outFile + ": not a folder", "--out", outFile.toString(), "--verification", none.toString()},
             {"--out: " + aFile.resolve("evaluation") + ": cannot write there (" + aFile + " is a file)",
                 "--out", aFile.resolve("evaluation").toString(), "--verification", none.toString()},
             {"--verification: " + notJson + ":2: not JSON (Unrecognized token 'not'", "--out", out.toString(),

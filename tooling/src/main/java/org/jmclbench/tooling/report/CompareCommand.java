@@ -9,6 +9,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.TreeSet;
 import java.util.concurrent.Callable;
+import java.util.function.Function;
 import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.cli.BadUsageException;
@@ -82,9 +83,9 @@ public final class CompareCommand implements Callable<Integer> {
                 throw new BadUsageException((a == null ? "--a" : "--b") + ": needed with --db (RUNTIME[/PROFILE])");
             }
             try (StoredRuns store = StoredRuns.open(db, "--db")) {
-                List<StoredRun> all = filtered(store.runs());
-                runsA = select(all, a, "--a", db);
-                runsB = select(all, b, "--b", db);
+                List<StoredRun> all = store.runs();
+                runsA = choose(filtered(all), all, a, "--a", db);
+                runsB = choose(filtered(all), all, b, "--b", db);
             }
             nameA = a;
             nameB = b;
@@ -93,20 +94,30 @@ public final class CompareCommand implements Callable<Integer> {
             if (databases.size() != 2) {
                 throw new BadUsageException("compare: give two databases (A.db B.db) or --db FILE --a RUNTIME --b RUNTIME");
             }
+            List<StoredRun> allA;
+            List<StoredRun> allB;
             try (StoredRuns sa = StoredRuns.open(databases.get(0), "A");
                  StoredRuns sb = StoredRuns.open(databases.get(1), "B")) {
-                runsA = filtered(sa.runs());
-                runsB = filtered(sb.runs());
+                allA = sa.runs();
+                allB = sb.runs();
+            }
+            runsA = filtered(allA);
+            runsB = filtered(allB);
+            if (a == null && runsA.isEmpty() && !allA.isEmpty()) {
+                throw noRunUnderTheFilters(allA, "A", databases.get(0));
+            }
+            if (b == null && runsB.isEmpty() && !allB.isEmpty()) {
+                throw noRunUnderTheFilters(allB, "B", databases.get(1));
             }
             // one labelling for both sides, so that a configuration is named alike in A and B
             List<StoredRun> both = new ArrayList<>(runsA);
             both.addAll(runsB);
             StoredRun.labelEngines(both);
             if (a != null) {
-                runsA = select(runsA, a, "--a", databases.get(0));
+                runsA = choose(runsA, allA, a, "--a", databases.get(0));
             }
             if (b != null) {
-                runsB = select(runsB, b, "--b", databases.get(1));
+                runsB = choose(runsB, allB, b, "--b", databases.get(1));
             }
             nameA = databases.get(0) + (a == null ? "" : " " + a);
             nameB = databases.get(1) + (b == null ? "" : " " + b);
@@ -152,14 +163,86 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     /**
+     * The runs of configuration {@code spec} among {@code runs}, those of {@code all} the filters keep. When
+     * none is left the option at fault is named: {@code option} when {@code all} has no such configuration
+     * either, else the filter that leaves it no run.
+     */
+    private List<StoredRun> choose(List<StoredRun> runs, List<StoredRun> all, String spec, String option, Path file) {
+        if (match(runs, spec).isEmpty()) {
+            List<StoredRun> unfiltered = match(all, spec);
+            if (unfiltered.isEmpty()) {
+                return select(all, spec, option, file); // refuses the configuration, naming the option
+            }
+            throw noRunUnderTheFilters(unfiltered, option + " " + spec, file);
+        }
+        return select(runs, spec, option, file);
+    }
+
+    /** A filter of the runs: its option, the field it tests (singular and plural) and the value asked for. */
+    private record Filter(String option, String field, String fields, Object value, Function<StoredRun, Object> of) {
+    }
+
+    private List<Filter> filters() {
+        List<Filter> out = new ArrayList<>();
+        if (policy != null) {
+            out.add(new Filter("--policy", "policy", "policies", policy, r -> r.policy));
+        }
+        if (particles != null) {
+            out.add(new Filter("--particles", "particles", "particle counts", particles, r -> r.particles));
+        }
+        if (dataset != null) {
+            out.add(new Filter("--dataset", "dataset", "datasets", dataset, r -> r.dataset));
+        }
+        return out;
+    }
+
+    /**
+     * The filter that leaves none of {@code runs}, those of one side ({@code who}) in {@code file}, with the
+     * values they have; or the filters given, when each keeps some run but together they keep none.
+     */
+    private BadUsageException noRunUnderTheFilters(List<StoredRun> runs, String who, Path file) {
+        List<Filter> filters = filters();
+        for (Filter f : filters) {
+            if (runs.stream().noneMatch(r -> f.value().equals(f.of().apply(r)))) {
+                TreeSet<String> have = runs.stream().map(r -> String.valueOf(f.of().apply(r)))
+                        .collect(Collectors.toCollection(TreeSet::new));
+                return new BadUsageException(f.option() + ": no run of " + who + " in " + file + " has " + f.field() + " '"
+                        + f.value() + "' (its " + f.fields() + ": " + String.join(", ", have) + ")");
+            }
+        }
+        return new BadUsageException(filters.stream().map(Filter::option).collect(Collectors.joining(", ")) + ": no run of "
+                + who + " in " + file + " has these together");
+    }
+
+    /**
      * The runs of one configuration: an exact label ({@code temurin-25/g1 / scj}), or a runtime
      * followed by any of a profile, an engine and a memory style, separated by {@code /}
      * ({@code temurin-25/scj}, {@code temurin-25/g1/scj/scoped}), which must leave one configuration.
      * What is not named defaults to the Java SE engine and the preallocated style when the runtime
      * has them, so that {@code temurin-25} is the Java SE engine beside {@code temurin-25/scj}.
+     *
+     * @throws BadUsageException naming {@code option} when no run or several configurations match
      */
     static List<StoredRun> select(List<StoredRun> runs, String spec, String option, Path file)
             throws BadUsageException {
+        List<StoredRun> chosen = match(runs, spec);
+        TreeSet<String> configs = chosen.stream().map(StoredRun::config).collect(Collectors.toCollection(TreeSet::new));
+        if (configs.size() > 1) {
+            throw new BadUsageException(option + ": " + spec + " has several configurations in " + file + ", say which: "
+                    + String.join(", ", configs));
+        }
+        if (chosen.isEmpty()) {
+            TreeSet<String> known = runs.stream().map(StoredRun::config).collect(Collectors.toCollection(TreeSet::new));
+            String runtime = spec.split("\\s*/\\s*")[0].strip();
+            boolean runtimeKnown = runs.stream().anyMatch(r -> r.runtime.equals(runtime));
+            throw new BadUsageException(option + ": " + (runtimeKnown ? "no configuration " + spec : "unknown runtime '" + spec + "'")
+                    + " in " + file + (known.isEmpty() ? " (no runs)" : " (known: " + String.join(", ", known) + ")"));
+        }
+        return chosen;
+    }
+
+    /** The runs {@code spec} names ({@link #select}'s rule), of one configuration or of several. */
+    private static List<StoredRun> match(List<StoredRun> runs, String spec) {
         List<StoredRun> exact = runs.stream().filter(r -> r.config().equals(spec)).toList();
         if (!exact.isEmpty()) {
             return exact;
@@ -192,21 +275,11 @@ public final class CompareCommand implements Callable<Integer> {
         if (m == null && byRuntime.stream().anyMatch(r -> "preallocated".equals(r.memory))) {
             byRuntime = byRuntime.stream().filter(r -> "preallocated".equals(r.memory)).toList();
         }
-        TreeSet<String> configs = byRuntime.stream().map(StoredRun::config).collect(Collectors.toCollection(TreeSet::new));
-        if (configs.size() > 1) {
-            throw new BadUsageException(option + ": " + spec + " has several configurations in " + file + ", say which: "
-                    + String.join(", ", configs));
-        }
-        if (byRuntime.isEmpty()) {
-            TreeSet<String> known = runs.stream().map(StoredRun::config).collect(Collectors.toCollection(TreeSet::new));
-            throw new BadUsageException(option + ": unknown runtime '" + spec + "' in " + file
-                    + (known.isEmpty() ? " (no runs match the filters)" : " (known: " + String.join(", ", known) + ")"));
-        }
         return byRuntime;
     }
 
     /** Engines and memory styles a configuration can name (the rest of a name is a profile). */
-    static final List<String> ENGINES = List.of("javase", "scj", "native", "hvm");
+    static final List<String> ENGINES = List.of("javase", "scj", "rtsj", "rtsj-atomic", "native", "hvm");
     static final List<String> MEMORY_STYLES = List.of("preallocated", "allocating", "scoped");
 
     private static Map<String, List<StoredRun>> group(List<StoredRun> runs, boolean withConfig) {

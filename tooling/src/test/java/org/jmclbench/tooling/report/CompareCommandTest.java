@@ -121,6 +121,51 @@ class CompareCommandTest {
         assertTrue(!out.contains("lower than"), out);
     }
 
+    /**
+     * A filter that leaves a side without runs is named: --policy, --particles or --dataset when the
+     * configuration has runs but none under it, --a or --b only when the configuration itself is not
+     * in the store; and a label with an rtsj engine names that engine, as with the other engines.
+     */
+    @Test
+    void aFilterThatMatchesNoRunIsNamedNotBlamedOnA() throws Exception {
+        String err = oneLine("compare", "--db", a.toString(), "--a", "native", "--b", "temurin-17", "--policy", "queue");
+        assertTrue(err.startsWith("jmclbench: --policy: no run of --a native in " + a + " has policy 'queue' (its policies: skip)"), err);
+        err = oneLine("compare", "--db", a.toString(), "--a", "native", "--b", "temurin-17", "--particles", "999");
+        assertTrue(err.startsWith("jmclbench: --particles: no run of --a native in " + a + " has particles '999' (its particle counts: 400)"), err);
+        err = oneLine("compare", "--db", a.toString(), "--a", "native", "--b", "temurin-17/zgc");
+        assertTrue(err.startsWith("jmclbench: --b: no configuration temurin-17/zgc in " + a + " (known: native, temurin-17/g1, "), err);
+
+        // B's store has no queue run: the filter is named, for B, not --a or --b
+        FixtureDb f = new FixtureDb();
+        f.policies = List.of("skip", "queue");
+        f.particles = List.of(400);
+        Path queue = ReportFixtures.write(f, dir, "queue.db");
+        err = oneLine("compare", queue.toString(), b.toString(), "--policy", "queue");
+        assertTrue(err.startsWith("jmclbench: --policy: no run of B in " + b + " has policy 'queue' (its policies: skip)"), err);
+        err = oneLine("compare", queue.toString(), b.toString(), "--a", "native", "--b", "native", "--policy", "queue");
+        assertTrue(err.startsWith("jmclbench: --policy: no run of --b native in " + b + " has policy 'queue' (its policies: skip)"), err);
+
+        // the rtsj engines in a label, as javase and scj are
+        FixtureDb e = new FixtureDb();
+        e.policies = List.of("terminate");
+        e.particles = List.of(400);
+        e.configs = new ArrayList<>(List.of(
+                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.15, "ok", "javase", "preallocated"),
+                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.2, "ok", "rtsj", "preallocated"),
+                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.25, "ok", "rtsj-atomic", "preallocated")));
+        Path engines = ReportFixtures.write(e, dir, "rtsj.db");
+        String out = run(0, "compare", "--db", engines.toString(), "--a", "temurin-25/rtsj", "--b", "temurin-25/rtsj-atomic")[0];
+        assertTrue(out.contains("A: temurin-25/rtsj\nB: temurin-25/rtsj-atomic"), out);
+        out = run(0, "compare", "--db", engines.toString(), "--a", "temurin-25", "--b", "temurin-25/g1 / rtsj-atomic")[0];
+        assertTrue(out.contains("== match-short  terminate  400 particles =="), out);
+    }
+
+    private static String oneLine(String... args) {
+        String err = run(2, args)[1];
+        assertEquals(1, err.strip().lines().count(), err);
+        return err;
+    }
+
     @Test
     void badInputIsOneLineAndExitTwo() {
         String err = run(2, "compare", "--db", a.toString(), "--a", "native", "--b", "no-such-jvm")[1];

@@ -13,6 +13,8 @@ import java.util.stream.Collectors;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 
+import org.jmclbench.tooling.cli.BadUsageException;
+
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -44,6 +46,12 @@ public final class ExplainCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (limit < 0) {
+            throw BadUsageException.ofOption("--limit", "'" + limit + "' is negative (0 shows all)");
+        }
+        if (osThresholdUs < 0) {
+            throw BadUsageException.ofOption("--os-threshold-us", "'" + osThresholdUs + "' is negative");
+        }
         RunEvidence run = RunEvidence.load(runDir);
         Attribution.Settings d = Attribution.Settings.defaults();
         Attribution.Settings settings = new Attribution.Settings(osThresholdUs * 1000, d.minOverlapNs(),

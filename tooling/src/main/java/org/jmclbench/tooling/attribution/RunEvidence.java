@@ -8,9 +8,9 @@ import java.util.List;
 import java.util.stream.Stream;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.cli.JsonFiles;
 
 /**
  * Everything one run folder says about its jobs and its runtime: the job lines of both tasks,
@@ -44,12 +44,7 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
             throw new BadUsageException(dir + ": not a folder");
         }
         Path runDir = findRunDir(dir);
-        JsonNode summary;
-        try {
-            summary = new ObjectMapper().readTree(runDir.resolve("summary.json").toFile());
-        } catch (IOException e) {
-            throw new BadUsageException(runDir.resolve("summary.json") + ": unreadable: " + e.getMessage());
-        }
+        JsonNode summary = JsonFiles.readObject(runDir.resolve("summary.json"), null);
         List<JobRecord> jobs = new ArrayList<>();
         for (String[] f : new String[][] {{PREDICT_FILE, "predict"}, {UPDATE_FILE, "update"}}) {
             Path p = runDir.resolve(f[0]);

@@ -14,6 +14,7 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.cli.JsonFiles;
 import org.jmclbench.tooling.cli.OutputPaths;
 import org.jmclbench.tooling.report.EvaluationDocument;
 import org.jmclbench.tooling.runtime.HvmRuntime;
@@ -24,11 +25,6 @@ import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.store.ResultsDatabase;
 import org.jmclbench.tooling.store.StoreArchive;
 import org.jmclbench.tooling.runtime.RuntimeKind;
-
-import com.fasterxml.jackson.core.JsonLocation;
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -213,19 +209,7 @@ public final class EvaluateCommand implements Callable<Integer> {
         if (!Files.isRegularFile(file)) {
             throw BadUsageException.ofOption("--verification", file + ": not a file");
         }
-        JsonNode doc;
-        try {
-            doc = new ObjectMapper().readTree(file.toFile());
-        } catch (JsonProcessingException e) {
-            JsonLocation at = e.getLocation();
-            throw BadUsageException.ofOption("--verification", file + (at != null && at.getLineNr() > 0 ? ":" + at.getLineNr() : "")
-                    + ": not JSON (" + String.valueOf(e.getOriginalMessage()).replaceAll("\\s+", " ").strip() + ")");
-        } catch (java.io.IOException e) {
-            throw BadUsageException.ofOption("--verification", file + ": cannot read (" + e.getClass().getSimpleName() + ")");
-        }
-        if (doc == null || !doc.isObject()) {
-            throw BadUsageException.ofOption("--verification", file + ": not the JSON object ./jmclbench verify writes");
-        }
+        JsonFiles.readObject(file, "--verification");
     }
 
     /** The data file as the document names it: relative to the project when inside it. */

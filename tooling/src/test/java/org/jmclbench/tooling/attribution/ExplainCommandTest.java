@@ -75,6 +75,34 @@ class ExplainCommandTest {
         assertTrue(!r[1].matches("(?s).*causes:  .*gc \\d+.*"), r[1]);
     }
 
+    /** A summary.json that is not one, or a negative --limit or threshold: one line naming the file or option, exit 2. */
+    @Test
+    void aBadSummaryOrOptionIsOneLineNamingItAndExitTwo(@TempDir Path tmp) throws Exception {
+        Path key = runnerStyleRun(tmp, true);
+        Path summary = key.resolve("local/nocov/400/QueueTest/1/summary.json");
+        String good = Files.readString(summary);
+        for (String[] bad : new String[][] {
+            {"{\"schema\": \"jmclbench-run/1\",\n  \"status\": complete}\n", summary + ":2: not JSON ("},
+            {"{\"schema\": \"jmclbench-run/1\", \"status\": ", summary + ":1: not JSON ("},
+            {"", summary + ": not a JSON object"},
+            {"[1, 2]\n", summary + ": not a JSON object"},
+        }) {
+            Files.writeString(summary, bad[0]);
+            String[] r = run("explain", key.toString());
+            assertEquals("2", r[0], r[1] + r[2]);
+            assertEquals(1, r[2].strip().lines().count(), "one line: " + r[2]);
+            assertTrue(r[2].startsWith("jmclbench: " + bad[1]), r[2]);
+        }
+        Files.writeString(summary, good);
+        for (String[] bad : new String[][] {{"--limit", "-1"}, {"--os-threshold-us", "-5"}}) {
+            String[] r = run("explain", bad[0], bad[1], key.toString());
+            assertEquals("2", r[0], r[1] + r[2]);
+            assertTrue(r[2].strip().startsWith("jmclbench: " + bad[0] + ": '" + bad[1] + "' is negative"), r[2]);
+            assertEquals(1, r[2].strip().lines().count(), r[2]);
+            assertEquals("", r[1], "nothing explained");
+        }
+    }
+
     @Test
     void aFolderWithoutARunIsBadInput(@TempDir Path tmp) {
         String[] r = run("explain", tmp.toString());

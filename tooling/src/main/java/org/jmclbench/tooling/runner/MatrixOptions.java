@@ -25,7 +25,7 @@ final class MatrixOptions {
             new Setting("profiles", true, "LIST", "profiles, components joined by '+': default, serial, parallel, g1, zgc, shenandoah, epsilon, int, c1, pretouch, fifo, pinned, aot (default: default)"),
             new Setting("policies", true, "LIST", "skip, terminate, queue, ideal (default: skip)"),
             new Setting("engines", true, "LIST", "engines of the JVM runs: javase, scj, rtsj, rtsj-atomic (default: javase; native runs are engine native)"),
-            new Setting("memory", true, "LIST", "memory styles: preallocated, allocating (javase, native), scoped (scj); one an engine lacks is recorded unsupported (default: preallocated)"),
+            new Setting("memory", true, "LIST", "memory styles: preallocated, allocating (javase, rtsj, rtsj-atomic, native), scoped (scj, hvm); one an engine lacks is recorded unsupported (default: preallocated)"),
             new Setting("particles", true, "LIST", "particle counts (default: 400)"),
             new Setting("datasets", true, "LIST", "dataset names under data/ or folders (default: match-short)"),
             new Setting("load", true, "LIST", "load scenarios beside each run: none, cpu (stress-ng, else own busy processes), alloc (allocation thread in the JVM under test), mixed (default: none)"),

@@ -1,13 +1,13 @@
 package org.jmclbench.tooling.report;
 
-import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
+
+import org.jmclbench.tooling.cli.JsonFiles;
 
 /**
  * The static side of termination (issue 19): for each engine's job and memory style, the longest
@@ -69,13 +69,17 @@ public final class AbortBounds {
         this.bounds = List.copyOf(bounds);
     }
 
-    /** The bounds in {@code verification}, or {@link #NONE} when the file does not exist or predates them. */
-    public static AbortBounds read(Path verification) throws IOException {
+    /**
+     * The bounds in {@code verification}, or {@link #NONE} when the file does not exist or predates them.
+     *
+     * @throws org.jmclbench.tooling.cli.BadUsageException one line naming the file (and line) when it is not a JSON object
+     */
+    public static AbortBounds read(Path verification) {
         if (verification == null || !Files.isRegularFile(verification)) {
             return NONE;
         }
         List<Bound> bounds = new ArrayList<>();
-        for (JsonNode b : new ObjectMapper().readTree(verification.toFile()).path("abortBounds")) {
+        for (JsonNode b : JsonFiles.readObject(verification, null).path("abortBounds")) {
             JsonNode steps = b.path("steps");
             bounds.add(new Bound(b.path("engine").asText(), b.path("memory").asText(),
                     steps.isNumber() ? steps.asLong() : null, b.path("at").asText(null)));

@@ -280,6 +280,18 @@ class ReportCommandTest {
     }
 
     @Test
+    void aVerificationFileBesideTheStoreThatIsNotJsonIsOneLineNamingIt() throws Exception {
+        Path results = Files.createDirectories(dir.resolve("bad-verification"));
+        Path store = Files.copy(db, results.resolve("results.db"));
+        Path verification = Files.writeString(results.resolve("verification.json"), "{\n  \"checks\": [\n  oops\n");
+        String err = stderrOf(() -> assertEquals(2, JmclbenchCli.execute("report", "--db", store.toString(),
+                "--out", results.resolve("report").toString())));
+        assertEquals(1, err.strip().lines().count(), err);
+        assertTrue(err.startsWith("jmclbench: " + verification + ":3: not JSON"), err);
+        assertFalse(Files.exists(results.resolve("report/index.html")), "no page from a store whose verdicts cannot be read");
+    }
+
+    @Test
     void notADatabaseIsBadInput() throws Exception {
         Path junk = Files.writeString(dir.resolve("junk.db"), "not sqlite");
         String err = stderrOf(() -> assertEquals(2, JmclbenchCli.execute("report", "--db", junk.toString(),

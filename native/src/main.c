@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <stdnoreturn.h>
 #include <string.h>
+#include <limits.h>
 #include <sys/stat.h>
 
 #include "dataset.h"
@@ -109,6 +110,13 @@ int main(int argc, char **argv)
 		printf("jmclbench-native %s (%s)\n", JM_COMPILER, JM_CFLAGS);
 		return 0;
 	}
+	/*
+	 * -j becomes one folder of the run path: a name longer than a folder name may be would fail
+	 * later as "-O: path too long" or "-O: cannot create", blaming the output root for it.
+	 */
+	if (strlen(opt.runtime_name) > NAME_MAX)
+		die(EXIT_BAD_INPUT, "-j: %zu characters, longer than a folder name may be (%d)",
+		    strlen(opt.runtime_name), NAME_MAX);
 	if (!opt.odometry) {
 		dataset_dir = opt.dataset;
 		if (!dataset_dir) {

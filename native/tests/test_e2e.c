@@ -228,6 +228,18 @@ static void test_bad_data(void)
 		snprintf(want2, sizeof(want2), "jmclbench: -O: cannot create %s/native/nocov/400/IdealTest/1.partial: ", file);
 		expect_bad(args, want2);
 	}
+	{
+		/* a -j too long for a folder name is -j's problem, not the output root's */
+		char name[5001];
+		const char *args[] = { "--dataset", dir, "-O", tmp, "--ideal", "-j", name, NULL };
+
+		memset(name, 'j', 300);
+		name[300] = '\0';
+		expect_bad(args, "jmclbench: -j: 300 characters, longer than a folder name may be (255)");
+		memset(name, 'j', 5000);
+		name[5000] = '\0';
+		expect_bad(args, "jmclbench: -j: 5000 characters");
+	}
 	/* nothing was recorded as a result */
 	{
 		char results[160];

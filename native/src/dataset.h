@@ -59,7 +59,8 @@ void jm_dataset_free(jm_dataset *ds);
 
 /*
  * Reads dataset.properties from f into ds (playground, scenario, start pose and start_known),
- * over what ds holds already. Returns 0, or -1 with err holding "<name>:<line>: <problem>".
+ * over what ds holds already. Returns 0, or -1 with err holding "<name>:<line>: <problem>", or
+ * "<name>: <key>: missing" when the start pose is given in part.
  */
 int jm_properties_parse(jm_dataset *ds, FILE *f, const char *name, char *err, size_t errlen);
 

@@ -1,4 +1,4 @@
-/* A small JSON writer with correct string escaping and shortest round-trip doubles. */
+/* A small JSON writer with correct string escaping and doubles that read back the same (15 to 17 digits). */
 #ifndef JM_JSON_H
 #define JM_JSON_H
 

@@ -99,7 +99,10 @@ static jm_particles *job_begin(jm_mcl *m)
 	return dst;
 }
 
-/* Ends a job: swaps the work buffer in when it completed; frees what the job allocated. */
+/*
+ * Ends a job: swaps the work buffer in when it completed. Allocating: frees the buffer no longer
+ * in use (the old one when the job completed, the job's own when it did not) and the scratch.
+ */
 static void job_end(jm_mcl *m, int commit)
 {
 	int work = 1 - m->cur;

@@ -436,7 +436,10 @@ static void json_deviation(jm_json *j, const char *key, const struct deviation *
 	jm_json_close(j, '}');
 }
 
-/* The shortest decimal that reads back as v (NaN when there is no value), as Java prints doubles. */
+/*
+ * The fewest of 15 to 17 significant digits that read back as v (NaN when there is no value), as
+ * Java's shortest digits; in printf's %g notation, not Java's (1e-05 where Java writes 1.0E-5).
+ */
 static const char *shortest(char buf[40], double v)
 {
 	int prec;

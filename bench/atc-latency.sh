@@ -28,7 +28,7 @@ while [ $# -gt 0 ]; do
         *) unknown_option "$1" ;;
     esac
 done
-require_count --aborts "$aborts"; require_count --warmup "$warmup"; require_count --work "$work"
+require_positive --aborts "$aborts"; require_count --warmup "$warmup"; require_count --work "$work"
 command -v "$java" >/dev/null || { echo "atc-latency: --java: $java: not found" >&2; exit 2; }
 if [ $build = 1 ]; then
     echo "atc-latency: building the benchmarks..." >&2

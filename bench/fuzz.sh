@@ -20,9 +20,11 @@ build=1
 targets=()
 while [ $# -gt 0 ]; do
     case "$1" in
-        --runs) n=$(value_of "$@"); limit=(-runs="$n"); shift 2 ;;
-        --seconds) n=$(value_of "$@"); limit=(-max_total_time="$n"); shift 2 ;;
-        --work) work=$(value_of "$@"); work=$(readlink -f "$work"); shift 2 ;;
+        # libFuzzer reads a malformed number as 0, and -max_total_time=0 as "no limit"
+        --runs) n=$(value_of "$@"); require_count --runs "$n"; limit=(-runs="$n"); shift 2 ;;
+        --seconds) n=$(value_of "$@"); require_positive --seconds "$n"; limit=(-max_total_time="$n"); shift 2 ;;
+        # -m: a folder that does not exist yet (readlink -f fails, silently, below a missing parent)
+        --work) work=$(value_of "$@"); require_creatable --work "$work"; work=$(readlink -m "$work"); shift 2 ;;
         --no-build) build=0; shift ;;
         -h|--help) usage ;;
         c-dataset|c-options|java-events|java-properties|java-options|java-matrix|java-hvm-result) targets+=("$1"); shift ;;

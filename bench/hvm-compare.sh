@@ -32,6 +32,12 @@ while [ $# -gt 0 ]; do
         *) unknown_option "$1" ;;
     esac
 done
+# checked now: each run would refuse them only after a build, and the loop goes on past a failed run
+require_counts --particles "$particles" ,
+require_choice --policy "$policy" "skip|terminate|queue" ,
+require_choice --hvm-modes "$hvm_modes" "compiled|interpreted|hot" ,
+[ -d "$ROOT/data/$dataset" ] || { echo "hvm-compare: --dataset: $dataset: no such dataset under $ROOT/data" >&2; exit 2; }
+[ -z "$out" ] || require_creatable -O "$out"
 [ -n "$out" ] || out=$(mktemp -d "${TMPDIR:-/tmp}/hvm-compare.XXXXXX")
 j=$ROOT/jmclbench
 common=(--policy "$policy" --dataset "$ROOT/data/$dataset" -O "$out")

@@ -23,9 +23,10 @@ jmh_opts=(-f 1 -wi 3 -i 5 -w 1s -r 1s)
 while [ $# -gt 0 ]; do
     case "$1" in
         --java) java=$(value_of "$@"); shift 2 ;;
-        --dataset) dataset=$(value_of "$@"); dataset=$(readlink -f "$dataset"); shift 2 ;;
-        --particles) particles=$(value_of "$@"); shift 2 ;;
-        --out) out=$(value_of "$@"); shift 2 ;;
+        # -m: readlink -f fails, silently, below a missing folder; the check below names it
+        --dataset) dataset=$(value_of "$@"); dataset=$(readlink -m "$dataset"); shift 2 ;;
+        --particles) particles=$(value_of "$@"); require_counts --particles "$particles" ,; shift 2 ;;
+        --out) out=$(value_of "$@"); require_creatable --out "$out"; shift 2 ;;
         --no-build) build=0; shift ;;
         --) shift; jmh_opts=("$@"); break ;;
         -h|--help) usage ;;

@@ -35,7 +35,8 @@ while [ $# -gt 0 ]; do
         *) unknown_option "$1" ;;
     esac
 done
-require_count --trials "$trials"; require_count --seed "$seed"
+require_positive --trials "$trials"; require_count --seed "$seed"
+[ -z "$keep" ] || require_creatable --keep "$keep"
 case "$command" in matrix|evaluate|verify) ;; *) echo "kill-trials: --command: matrix, evaluate or verify, not $command" >&2; exit 2 ;; esac
 command -v sqlite3 >/dev/null || { echo "kill-trials: needs the sqlite3 command (apt-get install sqlite3)" >&2; exit 2; }
 if [ -n "$keep" ]; then

@@ -9,9 +9,63 @@ value_of() {
     printf '%s' "$2"
 }
 
-# Ends the script unless option $1's value $2 is a count (digits only).
+# Ends the script unless option $1's value $2 is a count (digits only), at most 2147483647: the
+# Java programs the scripts hand counts to read them as an int, and would refuse a larger one only
+# after the build, naming their own argument rather than the script's option.
 require_count() {
-    [[ "$2" =~ ^[0-9]+$ ]] || { echo "$me: $1: $2: not a count" >&2; exit 2; }
+    [[ "$2" =~ ^[0-9]+$ ]] && [ ${#2} -le 10 ] && (( 10#$2 <= 2147483647 )) ||
+        { echo "$me: $1: $2: not a count (0 to 2147483647)" >&2; exit 2; }
+}
+
+# The same, and not 0 (a loop count of 0 is no measurement; cyclictest reads -l 0 as "forever").
+require_positive() {
+    [[ "$2" =~ ^[0-9]+$ ]] && [ ${#2} -le 10 ] && (( 10#$2 >= 1 && 10#$2 <= 2147483647 )) ||
+        { echo "$me: $1: $2: not a positive count (1 to 2147483647)" >&2; exit 2; }
+}
+
+# Ends the script unless option $1's value $2 is a list of positive counts separated by $3 ("," or
+# " "), such as --particles 100,400: checked here rather than by the first run after a build.
+require_counts() {
+    local n parts
+    IFS="$3" read -ra parts <<< "$2"
+    [ ${#parts[@]} -gt 0 ] || { echo "$me: $1: '$2': no count in it" >&2; exit 2; }
+    for n in "${parts[@]}"; do
+        [[ "$n" =~ ^[0-9]+$ ]] && [ ${#n} -le 10 ] && (( 10#$n >= 1 && 10#$n <= 2147483647 )) ||
+            { echo "$me: $1: '$n': not a positive count (in '$2')" >&2; exit 2; }
+    done
+}
+
+# Ends the script unless each word of option $1's value $2 (one or several, separated by $4: ","
+# or " ") is one of the '|'-separated $3.
+require_choice() {
+    local v parts
+    IFS="$4" read -ra parts <<< "$2"
+    [ ${#parts[@]} -gt 0 ] || { echo "$me: $1: '$2': none of $3" >&2; exit 2; }
+    for v in "${parts[@]}"; do
+        [[ "$v" != *"|"* && "|$3|" == *"|$v|"* ]] || { echo "$me: $1: '$v': not one of $3" >&2; exit 2; }
+    done
+}
+
+# Ends the script unless option $1's value $2 is a decimal number >= 0 (digits, an optional
+# fraction and exponent), such as the workload's --warmup takes.
+require_number() {
+    [[ "$2" =~ ^[0-9]+(\.[0-9]*)?([eE][+-]?[0-9]+)?$|^\.[0-9]+([eE][+-]?[0-9]+)?$ ]] ||
+        { echo "$me: $1: $2: not a number >= 0" >&2; exit 2; }
+}
+
+# Ends the script unless the folder of option $1, $2, exists or can be created: its nearest
+# existing ancestor is a writable folder. Checked before the build, and creates nothing.
+require_creatable() {
+    local d=$2
+    while [ ! -e "$d" ] && [ "$d" != / ] && [ "$d" != . ]; do d=$(dirname "$d"); done
+    [ -d "$d" ] && [ -w "$d" ] ||
+        { echo "$me: $1: $2: cannot be created ($d is not a writable folder)" >&2; exit 2; }
+}
+
+# Ends the script on a leftover argument $1 that is not an option, as the jmclbench commands do.
+unexpected_argument() {
+    echo "$me: $1: unexpected argument (see --help)" >&2
+    exit 2
 }
 
 # --help: prints the script's header comment (from line 2 to the first line that is not a

@@ -32,7 +32,7 @@ while [ $# -gt 0 ]; do
         *) unknown_option "$1" ;;
     esac
 done
-require_count --loops-1ms "$loops_1ms"; require_count --loops-50ms "$loops_50ms"; require_count --spin-us "$spin_us"
+require_positive --loops-1ms "$loops_1ms"; require_positive --loops-50ms "$loops_50ms"; require_count --spin-us "$spin_us"
 command -v cyclictest >/dev/null || { echo "release-accuracy: cyclictest not found (apt-get install rt-tests)" >&2; exit 1; }
 command -v python3 >/dev/null || { echo "release-accuracy: python3 is needed to read cyclictest's JSON" >&2; exit 1; }
 

@@ -7,9 +7,16 @@
 set -euo pipefail
 home=$(cd "$(dirname "$0")/.." && pwd)
 . "$home/bench/options.sh"
-case "${1:-}" in -h|--help) usage ;; esac
-runs=${1:-1000}
-require_count RUNS "$runs"
+runs=
+while [ $# -gt 0 ]; do
+    case "$1" in
+        -h|--help) usage ;;
+        -*) unknown_option "$1" ;;
+        *) [ -z "$runs" ] || unexpected_argument "$1"; runs=$1; shift ;;
+    esac
+done
+runs=${runs:-1000}
+require_positive RUNS "$runs"
 cd "$home"
 java17=/usr/lib/jvm/java-17-openjdk-amd64
 if [ -z "${JAVA_HOME:-}" ] && [ -d "$java17" ]; then export JAVA_HOME=$java17; fi

@@ -35,9 +35,11 @@ while [ $# -gt 0 ]; do
         *) unknown_option "$1" ;;
     esac
 done
-require_count --particles "$particles"
+require_positive --particles "$particles"
+require_choice --policy "$policy" "skip|terminate|queue" ,
 [[ "$repeat" =~ ^[1-9][0-9]*$ ]] || { echo "scj-overhead: --repeat: $repeat: not a positive count" >&2; exit 2; }
 [ -d "$dataset" ] || { echo "scj-overhead: --dataset: $dataset: no such folder" >&2; exit 2; }
+[ -z "$out" ] || require_creatable --out "$out"
 command -v python3 >/dev/null || { echo "scj-overhead: python3 is needed to read summary.json" >&2; exit 1; }
 
 "$home/jmclbench" build

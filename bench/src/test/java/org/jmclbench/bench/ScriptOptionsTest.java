@@ -13,6 +13,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
@@ -41,9 +42,30 @@ class ScriptOptionsTest {
     @ParameterizedTest(name = "{0} {1} {2}")
     @CsvSource({
             "atc-latency, --warmup, -3, not a count",
-            "release-accuracy, --loops-1ms, 1x, not a count",
-            "scj-overhead, --particles, many, not a count",
-            "kill-trials, --seed, x, not a count"})
+            "release-accuracy, --loops-1ms, 1x, not a positive count",
+            "scj-overhead, --particles, many, not a positive count",
+            "kill-trials, --seed, x, not a count",
+            // counts the Java programs would refuse only after the build, or read as 'forever'
+            "atc-latency, --aborts, 0, not a positive count",
+            "atc-latency, --work, 99999999999, not a count",
+            "release-accuracy, --loops-50ms, 0, not a positive count",
+            "fuzz, --seconds, 0, not a positive count",
+            "fuzz, --runs, lots, not a count",
+            // lists and choices each run would refuse only after a build, the loop going on past it
+            "hvm-compare, --particles, '100,x', not a positive count",
+            "hvm-compare, --policy, never, not one of skip|terminate|queue",
+            "hvm-compare, --hvm-modes, 'compiled,jit', not one of compiled|interpreted|hot",
+            "hvm-compare, --dataset, no-such-dataset, no such dataset",
+            "kernel-ratio, --particles, '1000,0', not a positive count",
+            "kernel-ratio, --dataset, /no/such/dataset, not a dataset folder",
+            "overload, --particles, '400 many', not a positive count",
+            "overload, --policies, 'skip never', not one of skip|terminate|queue",
+            "overload, --warmup, -2, not a number",
+            "scj-overhead, --policy, never, not one of skip|terminate|queue",
+            // an output folder below a file
+            "kernel-ratio, --out, pom.xml/out, cannot be created",
+            "fuzz, --work, pom.xml/work, cannot be created",
+            "kill-trials, --keep, pom.xml/keep, cannot be created"})
     void aValueOfTheWrongKindNamesItsOption(String script, String option, String value, String what) throws Exception {
         assertBadInput(script, script + ": " + option + ": ", option, value);
         assertTrue(run(script, option, value).get(0).contains(what), what);
@@ -51,9 +73,16 @@ class ScriptOptionsTest {
 
     @ParameterizedTest(name = "{0}")
     @CsvSource({"atc-latency", "hvm-compare", "kernel-ratio", "kill-trials", "overload", "release-accuracy",
-            "scj-overhead"})
+            "scj-overhead", "report-build"})
     void anUnknownOptionIsOneLineAndExit2(String script) throws Exception {
         assertBadInput(script, script + ": --no-such-option: unknown option", "--no-such-option");
+    }
+
+    /** report-build takes one RUNS: a second one was silently ignored, and 0 built an empty store. */
+    @Test
+    void reportBuildTakesOnePositiveRunCount() throws Exception {
+        assertBadInput("report-build", "report-build: 20: unexpected argument", "10", "20");
+        assertBadInput("report-build", "report-build: RUNS: 0: not a positive count", "0");
     }
 
     private static void assertBadInput(String script, String prefix, String... args) throws Exception {

@@ -24,10 +24,22 @@ static const char *test_name(const jm_options *o)
 
 int jm_run_dir(const jm_options *o, char *buf, size_t len)
 {
-	int n = snprintf(buf, len, "%s/%s/%s/%d/%s/%d", o->out, o->runtime_name,
-			 o->covariance ? "cov" : "nocov", o->particles, test_name(o), o->number);
+	const char *p;
+	size_t k = 0;
+	int n;
 
-	return n < 0 || (size_t)n >= len ? -1 : 0;
+	/* the output root as Java's File writes it (no repeated or trailing '/', but "/" itself), so
+	 * that both print and record the same path: -O out/ is out/native/..., not out//native/... */
+	for (p = o->out; *p && k + 1 < len; p++)
+		if (!(*p == '/' && k > 0 && buf[k - 1] == '/'))
+			buf[k++] = *p;
+	if (*p)
+		return -1;
+	if (k > 1 && buf[k - 1] == '/')
+		k--;
+	n = snprintf(buf + k, len - k, "%s%s/%s/%d/%s/%d", buf[k - 1] == '/' ? "" : "/", o->runtime_name,
+		     o->covariance ? "cov" : "nocov", o->particles, test_name(o), o->number);
+	return n < 0 || (size_t)n >= len - k ? -1 : 0;
 }
 
 int jm_mkdirs(const char *dir)

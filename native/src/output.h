@@ -21,7 +21,8 @@ typedef struct {
 	char **argv;
 } jm_run;
 
-/* <out>/<runtime>/<cov|nocov>/<particles>/<Test>/<n> into buf; -1 when too long. */
+/* <out>/<runtime>/<cov|nocov>/<particles>/<Test>/<n> into buf, out without repeated or trailing
+ * '/' as Java's File writes it; -1 when too long. */
 int jm_run_dir(const jm_options *o, char *buf, size_t len);
 /* Creates dir and its parents. 0, or -1 with errno. */
 int jm_mkdirs(const char *dir);

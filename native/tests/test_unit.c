@@ -616,6 +616,37 @@ static void test_options(void)
 	CHECK_STR_PREFIX(err, "stray: unexpected argument");
 }
 
+/* The run path: the output root as Java's File writes it, whatever slashes -O has. */
+static void test_run_dir(void)
+{
+	static const struct {
+		const char *out, *want;
+	} cases[] = {
+		{ "results", "results/native/nocov/400/SkipTest/1" },
+		{ "out/", "out/native/nocov/400/SkipTest/1" },
+		{ "a//b///", "a/b/native/nocov/400/SkipTest/1" },
+		{ "/", "/native/nocov/400/SkipTest/1" },
+		{ "//", "/native/nocov/400/SkipTest/1" },
+		{ "/tmp//x", "/tmp/x/native/nocov/400/SkipTest/1" },
+	};
+	jm_options o;
+	char err[512], buf[64];
+	size_t i;
+
+	CHECK(parse("run", &o, err, sizeof(err)) == 0);
+	for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		o.out = cases[i].out;
+		CHECK(jm_run_dir(&o, buf, sizeof(buf)) == 0 && !strcmp(buf, cases[i].want));
+	}
+	/* too long for the buffer, in the root or in what follows it */
+	o.out = "a-root-of-forty-characters-for-the-test";
+	CHECK(jm_run_dir(&o, buf, 40) == -1);
+	CHECK(jm_run_dir(&o, buf, 50) == -1);
+	CHECK(jm_run_dir(&o, buf, sizeof(buf)) == -1);
+	o.out = "short";
+	CHECK(jm_run_dir(&o, buf, sizeof(buf)) == 0 && !strcmp(buf, "short/native/nocov/400/SkipTest/1"));
+}
+
 static void test_stats(void)
 {
 	int64_t v[100];
@@ -682,6 +713,7 @@ int main(void)
 	test_reader_grammar();
 	test_dataset_properties();
 	test_options();
+	test_run_dir();
 	test_stats();
 	test_json();
 	if (jm_remove_tree(tmpdir))

@@ -16,6 +16,31 @@
 #include "engine.h"
 #include "mcl.h"
 
+#define USAGE "usage: kernel-bench [--dataset DIR] [--particles N,N,...] [--repetitions R] " \
+	      "[--memory preallocated|allocating]\n"
+
+/* A bad command line: one line naming the option, exit 2 (the usage is --help's). */
+static int bad(const char *option, const char *problem, const char *value)
+{
+	if (value)
+		fprintf(stderr, "kernel-bench: %s: %s: '%s'\n", option, problem, value);
+	else
+		fprintf(stderr, "kernel-bench: %s: %s\n", option, problem);
+	return 2;
+}
+
+/* A count in [1, max]: digits only, no sign, blank or suffix; -1 otherwise. */
+static long count_in(const char *s, long max)
+{
+	char *end;
+	long n;
+
+	if (!*s || strspn(s, "0123456789") != strlen(s) || strlen(s) > 9)
+		return -1;
+	n = strtol(s, &end, 10);
+	return n >= 1 && n <= max ? n : -1;
+}
+
 static int cmp_double(const void *a, const void *b)
 {
 	double x = *(const double *)a, y = *(const double *)b;
@@ -32,30 +57,59 @@ int main(int argc, char **argv)
 	jm_dataset ds;
 	jm_timeline tl;
 
+	/*
+	 * Each option takes a value. It used to be read with atoi and a default for anything else:
+	 * --repetitions x ran 1 repetition, --memory allocatin the preallocated style, a last option
+	 * without its value was an "unknown option", and a bad line printed the usage as a second line.
+	 */
 	for (i = 1; i < argc; i++) {
-		if (!strcmp(argv[i], "--dataset") && i + 1 < argc)
-			dataset = argv[++i];
-		else if (!strcmp(argv[i], "--particles") && i + 1 < argc)
-			plist = argv[++i];
-		else if (!strcmp(argv[i], "--repetitions") && i + 1 < argc)
-			reps = atoi(argv[++i]);
-		else if (!strcmp(argv[i], "--memory") && i + 1 < argc)
-			memory = strcmp(argv[++i], "allocating") ? JM_MEMORY_PREALLOCATED : JM_MEMORY_ALLOCATING;
-		else {
-			fprintf(stderr, "jmclbench: %s: unknown option\n"
-				"usage: kernel-bench [--dataset DIR] [--particles N,N,...] [--repetitions R] "
-				"[--memory preallocated|allocating]\n", argv[i]);
-			return 2;
+		const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+
+		if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+			fputs(USAGE, stdout);
+			return 0;
+		}
+		if (strcmp(a, "--dataset") && strcmp(a, "--particles") && strcmp(a, "--repetitions") &&
+		    strcmp(a, "--memory"))
+			return bad(a, a[0] == '-' ? "unknown option (see --help)" : "unexpected argument (see --help)",
+				   NULL);
+		if (!v)
+			return bad(a, "needs a value", NULL);
+		i++;
+		if (!strcmp(a, "--dataset")) {
+			dataset = v;
+		} else if (!strcmp(a, "--particles")) {
+			plist = v;
+		} else if (!strcmp(a, "--repetitions")) {
+			if ((reps = (int)count_in(v, 1000000)) < 0)
+				return bad(a, "not a count in [1, 1000000]", v);
+		} else if (!strcmp(v, "preallocated") || !strcmp(v, "allocating")) {
+			memory = strcmp(v, "allocating") ? JM_MEMORY_PREALLOCATED : JM_MEMORY_ALLOCATING;
+		} else {
+			return bad(a, "not one of preallocated|allocating", v);
 		}
 	}
-	if (reps < 1)
-		reps = 1;
+	/* the particle counts before the data: each a count, no empty one */
+	if (strlen(plist) >= sizeof(pbuf))
+		return bad("--particles", "too long", NULL);
+	snprintf(pbuf, sizeof(pbuf), "%s", plist);
+	for (tok = pbuf;; tok++) {
+		char *comma = strchr(tok, ',');
+
+		if (comma)
+			*comma = '\0';
+		if (count_in(tok, 100000000) < 0)
+			return bad("--particles", "not a count in [1, 100000000]", tok);
+		if (!comma)
+			break;
+		tok = comma;
+	}
 	if (jm_dataset_load(&ds, dataset, NULL, NULL, NULL, err, sizeof(err))) {
-		fprintf(stderr, "jmclbench: %s\n", err);
+		fprintf(stderr, "kernel-bench: %s\n", err);
 		return 2;
 	}
 	if (jm_timeline_build(&tl, &ds, 1.0, -1.0, 1)) {
-		fprintf(stderr, "jmclbench: out of memory\n");
+		fprintf(stderr, "kernel-bench: out of memory\n");
 		return 1;
 	}
 	printf("# dataset %s: %d predict and %d update jobs a repetition, memory %s, %d repetitions\n",
@@ -63,13 +117,13 @@ int main(int argc, char **argv)
 	printf("# particles  predict_ns_per_particle(best median)  update_ns_per_particle(best median)  checksum\n");
 	snprintf(pbuf, sizeof(pbuf), "%s", plist);
 	for (tok = strtok_r(pbuf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-		int n = atoi(tok), r, k;
+		int n = (int)count_in(tok, 100000000), r, k;
 		double *tp = calloc((size_t)reps, sizeof(double)), *tu = calloc((size_t)reps, sizeof(double));
 		double checksum = 0.0;
 
-		if (n <= 0 || !tp || !tu) {
-			fprintf(stderr, "jmclbench: --particles: %s: not a positive integer\n", tok);
-			return 2;
+		if (!tp || !tu) {
+			fprintf(stderr, "kernel-bench: out of memory\n");
+			return 1;
 		}
 		for (r = 0; r < reps; r++) {
 			jm_mcl_config c = { .particles = n, .memory = memory, .seed = 1,
@@ -80,7 +134,7 @@ int main(int argc, char **argv)
 			double x, y, t;
 
 			if (jm_mcl_init(&m, &c, &ds.pg)) {
-				fprintf(stderr, "jmclbench: out of memory\n");
+				fprintf(stderr, "kernel-bench: out of memory\n");
 				return 1;
 			}
 			for (k = 0; k < tl.n; k++) {

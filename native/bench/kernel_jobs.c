@@ -18,6 +18,7 @@
 #define _POSIX_C_SOURCE 200809L
 #endif
 #include <getopt.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -176,7 +177,12 @@ int main(int argc, char **argv)
 	char err[PATH_MAX + 256];
 	int opt, rc = 0;
 
-	while ((opt = getopt_long(argc, argv, "d:p:m:j:w:i:r:h", longopts, NULL)) != -1) {
+	/*
+	 * ':' first and opterr 0: a missing value or an unknown option is one line of ours, not
+	 * getopt's message followed by the whole usage on stderr.
+	 */
+	opterr = 0;
+	while ((opt = getopt_long(argc, argv, ":d:p:m:j:w:i:r:h", longopts, NULL)) != -1) {
 		char *end = NULL;
 
 		switch (opt) {
@@ -197,29 +203,40 @@ int main(int argc, char **argv)
 			break;
 		case 'w':
 			o.warmup = (int)strtol(optarg, &end, 10);
-			if (*end || o.warmup < 0)
+			if (!*optarg || *end || o.warmup < 0 || o.warmup > 1000000)
 				goto bad;
 			break;
 		case 'i':
 			o.iterations = (int)strtol(optarg, &end, 10);
-			if (*end || o.iterations < 1)
+			if (!*optarg || *end || o.iterations < 1 || o.iterations > 1000000)
 				goto bad;
 			break;
 		case 'r':
+			/* finite: an infinite iteration would never end */
 			o.seconds = strtod(optarg, &end);
-			if (*end || !(o.seconds > 0))
+			if (!*optarg || *end || !(o.seconds > 0) || !isfinite(o.seconds))
 				goto bad;
 			break;
 		case 'h':
 			usage(stdout);
 			return 0;
+		case ':':
+			fprintf(stderr, "kernel-jobs: %s: needs a value\n", argv[optind - 1]);
+			return 2;
 		default:
-			usage(stderr);
+			if (optopt)
+				fprintf(stderr, "kernel-jobs: -%c: unknown option (see --help)\n", optopt);
+			else
+				fprintf(stderr, "kernel-jobs: %s: unknown option (see --help)\n", argv[optind - 1]);
 			return 2;
 		}
 		continue;
 bad:
 		fprintf(stderr, "kernel-jobs: -%c: bad value '%s'\n", opt, optarg);
+		return 2;
+	}
+	if (optind < argc) {
+		fprintf(stderr, "kernel-jobs: %s: unexpected argument (see --help)\n", argv[optind]);
 		return 2;
 	}
 	if (jm_dataset_load(&ds, o.dataset, NULL, NULL, NULL, err, sizeof(err))) {

@@ -1,7 +1,8 @@
 /*
  * Command-line parsing by table. Not getopt_long: the thesis's flags (-odo, -laser, -real)
- * are multi-letter options after a single dash, which getopt_long cannot parse, and
- * getopt_long_only would accept abbreviations the Java workload does not.
+ * are multi-letter options after a single dash, which getopt_long cannot parse; and both it and
+ * getopt_long_only, which could, accept abbreviations (--part for --particles) the Java workload
+ * does not.
  */
 #include <ctype.h>
 #include <errno.h>

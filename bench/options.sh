@@ -2,6 +2,16 @@
 # as in every jmclbench command: one line naming the script and the option, and exit 2.
 me=$(basename "$0" .sh)
 
+# Run on its own rather than sourced, it did nothing and exited 0 whatever it was given.
+if [ "${BASH_SOURCE[0]}" = "$0" ]; then
+    case "${1:-}" in
+        -h|--help) sed -n '1,2s/^# //p' "$0"; exit 0 ;;
+        '') echo "$me: sourced by the benchmark scripts here, not run on its own (see --help)" >&2 ;;
+        *) echo "$me: $1: unknown option (see --help)" >&2 ;;
+    esac
+    exit 2
+fi
+
 # The value given to option $1 (the script's "$@" from that option on). Missing or empty ends
 # the script: call it as  var=$(value_of "$@")  under set -e, which exits with its status.
 value_of() {

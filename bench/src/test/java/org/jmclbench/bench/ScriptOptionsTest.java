@@ -73,7 +73,7 @@ class ScriptOptionsTest {
 
     @ParameterizedTest(name = "{0}")
     @CsvSource({"atc-latency", "hvm-compare", "kernel-ratio", "kill-trials", "overload", "release-accuracy",
-            "scj-overhead", "report-build"})
+            "scj-overhead", "report-build", "options"})
     void anUnknownOptionIsOneLineAndExit2(String script) throws Exception {
         assertBadInput(script, script + ": --no-such-option: unknown option", "--no-such-option");
     }

@@ -21,7 +21,7 @@
 #define JM_DISPATCHER_PRIORITY 80
 #define JM_HANDLER_PRIORITY 70
 #define JM_THREAD_STACK (256 * 1024)
-/* Time between setting the run start and its first release: lets the threads get ready. */
+/* Time between setting the run start and its first release: lets the dispatcher thread get ready. */
 #define JM_START_LEAD_NS 20000000LL
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -428,7 +428,7 @@ int jm_run_realtime(jm_mcl *m, jm_timeline *tl, enum jm_policy policy, int spin_
 	info->dispatcher_priority = JM_DISPATCHER_PRIORITY < pmax ? JM_DISPATCHER_PRIORITY : pmax;
 	info->handler_priority = JM_HANDLER_PRIORITY > pmin ? JM_HANDLER_PRIORITY : pmin;
 
-	e.t0 = jm_now_ns() + JM_START_LEAD_NS;
+	e.t0 = jm_now_ns() + JM_START_LEAD_NS; /* for the failure paths; set again below */
 	for (i = 0; i < 2; i++) {
 		h[i].e = &e;
 		h[i].task = (enum jm_task)i;
@@ -443,6 +443,13 @@ int jm_run_realtime(jm_mcl *m, jm_timeline *tl, enum jm_policy policy, int spin_
 	}
 	if (make_attr(&attr, info->fifo, info->dispatcher_priority))
 		goto out;
+	/*
+	 * The run starts once the handlers exist, so that their stacks are allocated before it even
+	 * when creating them takes longer than the lead on a busy machine; only the dispatcher's own
+	 * creation falls in the lead. The handlers read t0 only under the lock, after a job the
+	 * dispatcher (created after this store) released.
+	 */
+	e.t0 = jm_now_ns() + JM_START_LEAD_NS;
 	if (pthread_create(&th[2], &attr, dispatcher_main, &e)) {
 		pthread_attr_destroy(&attr);
 		goto out;

@@ -115,6 +115,9 @@ class RunOptionsParserTest {
         assertTrue(error("--warmup", "-1").startsWith("--warmup:"));
         assertTrue(error("-j", "../etc").startsWith("-j:"));
         assertTrue(error("-j", "..").startsWith("-j:"));
+        String longName = new String(new char[300]).replace((char) 0, 'j');
+        assertEquals("-j: 300 characters, longer than a folder name may be (255)", error("-j", longName),
+                "as the C baseline says it, not blamed on -O when the run folder is made");
         assertEquals("-laser: missing: -odo, -laser and -real go together", error("-odo", "a", "-real", "c"));
         assertEquals("--dataset: cannot be combined with -odo/-laser/-real",
                 error("--dataset", "d", "-odo", "a", "-laser", "b", "-real", "c"));

@@ -75,7 +75,50 @@ public final class VerifyMain {
         if (out == null && options.only == null) {
             out = Paths.get("results", "verification.json");
         }
+        // Before any check: the results file is written at the end, after minutes of checks.
+        String bad = badOptions(out, options.logs, options.only);
+        if (bad != null) {
+            System.exit(CommandLines.bad(System.err, "verify", bad));
+        }
         System.exit(run(out, options.logs, options.timeout, options.heap, options.only, options.failFast));
+    }
+
+    /**
+     * What is wrong with the options, or null: an empty {@code --only} prefix (it selects every
+     * check, a whole run taken for a partial one), an {@code --out} that is a folder (the results
+     * file would replace it when empty) or below a file, {@code --logs} that is a file or below one.
+     */
+    static String badOptions(Path out, Path logs, List<String> only) {
+        if (only != null && (only.isEmpty() || only.stream().anyMatch(String::isEmpty))) {
+            return "--only: an empty prefix selects every check (give check id prefixes, for example mission-,P4)";
+        }
+        if (out != null) {
+            if (Files.isDirectory(out)) {
+                return "--out: " + out + " is a folder, not a results file";
+            }
+            Path file = fileAbove(out);
+            if (file != null) {
+                return "--out: " + out + ": " + file + " is not a folder";
+            }
+        }
+        if (Files.exists(logs) && !Files.isDirectory(logs)) {
+            return "--logs: " + logs + " is not a folder";
+        }
+        Path file = fileAbove(logs);
+        if (file != null) {
+            return "--logs: " + logs + ": " + file + " is not a folder";
+        }
+        return null;
+    }
+
+    /** The nearest existing ancestor of {@code path} when it is not a folder, else null. */
+    private static Path fileAbove(Path path) {
+        for (Path p = path.toAbsolutePath().getParent(); p != null; p = p.getParent()) {
+            if (Files.exists(p)) {
+                return Files.isDirectory(p) ? null : p;
+            }
+        }
+        return null;
     }
 
     private static void usage(String message) {

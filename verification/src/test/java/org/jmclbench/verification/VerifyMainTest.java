@@ -42,6 +42,41 @@ class VerifyMainTest {
         assertBadInput("jmclbench: verify: Unknown option: '--bogus'", "--bogus");
     }
 
+    @Test
+    void anEmptyOnlyPrefixIsOneLine() throws Exception {
+        // it selected every check: a whole run, written nowhere as a partial one
+        String message = "jmclbench: verify: --only: an empty prefix selects every check"
+                + " (give check id prefixes, for example mission-,P4)";
+        assertBadInput(message, "--only=");
+        assertBadInput(message, "--only", ",");
+    }
+
+    @Test
+    void anOutBelowAFileIsOneLineBeforeAnyCheck() throws Exception {
+        // it was a stack trace and exit 1 after every check had run
+        Files.writeString(dir.resolve("file"), "x");
+        assertBadInput("jmclbench: verify: --out: file/v.json: " + dir.resolve("file").toRealPath() + " is not a folder",
+                "--only", "P2-static", "--out", "file/v.json");
+    }
+
+    @Test
+    void anOutThatIsAFolderIsOneLineAndTheFolderStays() throws Exception {
+        // an empty folder was replaced by the results file
+        Files.createDirectory(dir.resolve("folder"));
+        assertBadInput("jmclbench: verify: --out: folder is a folder, not a results file",
+                "--only", "P2-static", "--out", "folder");
+        assertTrue(Files.isDirectory(dir.resolve("folder")));
+    }
+
+    @Test
+    void logsThatAreAFileAreOneLine() throws Exception {
+        // the first JPF check threw FileAlreadyExistsException, after the static checks
+        Files.writeString(dir.resolve("file"), "x");
+        assertBadInput("jmclbench: verify: --logs: file is not a folder", "--only", "P2-static", "--logs", "file");
+        assertBadInput("jmclbench: verify: --logs: file/logs: " + dir.resolve("file").toRealPath() + " is not a folder",
+                "--only", "P2-static", "--logs", "file/logs");
+    }
+
     private void assertBadInput(String message, String... args) throws Exception {
         Path out = dir.resolve("out.txt");
         Path err = dir.resolve("err.txt");

@@ -34,7 +34,7 @@ for a in "$@"; do
     case "$a" in
         --unpatched) patched=0 ;;
         --check) check=1 ;;
-        -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         *) echo "build-hvm: unknown option: $a" >&2; exit 2 ;;
     esac
 done

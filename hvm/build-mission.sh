@@ -25,7 +25,7 @@ while [ $# -gt 0 ]; do
     case "$1" in
         --heap) heap=$2; shift 2 ;;
         --mode) mode=$2; shift 2 ;;
-        -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         *) echo "build-mission: unknown option: $1" >&2; exit 2 ;;
     esac
 done

@@ -28,7 +28,7 @@ while [ $# -gt 0 ]; do
         --count) count=$2; shift 2 ;;
         --modes) modes=$2; shift 2 ;;
         --keep) keep=$(readlink -f "$2"); shift 2 ;;
-        -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         *) echo "difftest: unknown option: $1" >&2; exit 2 ;;
     esac
 done

@@ -37,7 +37,7 @@ while [ $# -gt 0 ]; do
         --keep-c) keep=$2; shift 2 ;;
         --methods) methods=$2; shift 2 ;;
         -o) out=$2; shift 2 ;;
-        -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         *) echo "hvmc: unknown option: $1" >&2; exit 2 ;;
     esac
 done

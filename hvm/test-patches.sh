@@ -23,7 +23,7 @@ for a in "$@"; do
     case "$a" in
         --unpatched) variants+=(unpatched) ;;
         --only=*) only=${a#--only=} ;;
-        -h|--help) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         *) echo "test-patches: unknown option: $a" >&2; exit 2 ;;
     esac
 done

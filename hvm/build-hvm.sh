@@ -14,7 +14,8 @@
 # (the pinned commit's, for its clone and its tarball alike), our patches and this script;
 # --unpatched builds the upstream VM (to show what the patches fix).
 # --check says whether the tool chain can be built here (exit 0) or why not (exit 1), building
-# nothing.
+# nothing. An HVM_SRC that is not an hvm-scj folder or tarball is bad input: one line, exit 2
+# (with or without --check).
 # The folder holds: src/ (the hvm-scj tree, patched), lib/ (jars), rt.jar, tools/ (compiled
 # compiler), sdk/ (compiled icecapSDK), KEY.
 set -euo pipefail
@@ -50,8 +51,23 @@ done
 if [ "$(uname -m)" != x86_64 ] || [ "$(uname -s)" != Linux ]; then
     problems+=("icecap's only 64-bit POSIX target is x86_64 Linux (this is $(uname -s) $(uname -m))")
 fi
+# HVM_SRC is checked first and alone: a wrong path is the user's input, not this machine's lack.
 if [ -n "${HVM_SRC:-}" ]; then
-    [ -e "$HVM_SRC" ] || problems+=("HVM_SRC=$HVM_SRC does not exist")
+    bad_src() { echo "build-hvm: HVM_SRC=$HVM_SRC: $*" >&2; exit 2; }
+    if [ -d "$HVM_SRC" ]; then
+        [ -d "$HVM_SRC/icecapvm/src" ] || bad_src "not an hvm-scj folder (no icecapvm/src)"
+    elif [ -f "$HVM_SRC" ]; then
+        # the pinned tarball is known good; another is listed (a second or so) before it is keyed
+        if [ "$(sha256sum "$HVM_SRC" | cut -c1-64)" != "$HVM_TARBALL_SHA256" ]; then
+            listing=$(tar -tzf "$HVM_SRC" 2>/dev/null) || bad_src "not a gzip tarball"
+            grep -q '^hvm-scj/icecapvm/src/' <<< "$listing" || bad_src "not an hvm-scj tarball (no hvm-scj/icecapvm/src)"
+            unset listing
+        fi
+    elif [ -e "$HVM_SRC" ]; then
+        bad_src "neither a folder nor a tarball"
+    else
+        bad_src "no such file or folder"
+    fi
 else
     command -v git >/dev/null || problems+=("HVM_SRC is not set and git is not installed to clone $HVM_REPO")
 fi
@@ -80,7 +96,6 @@ src_kind= src_id=
 if [ -n "${HVM_SRC:-}" ]; then
     HVM_SRC=$(readlink -f "$HVM_SRC")
     if [ -d "$HVM_SRC" ]; then
-        [ -d "$HVM_SRC/icecapvm/src" ] || fail "HVM_SRC=$HVM_SRC is not an hvm-scj tree (no icecapvm/src)"
         src_kind=dir
         src_id=$(cd "$HVM_SRC" && find icecaptools/src icecaptoolstest/src icecapSDK/src icecapvm/src -type f -print0 \
             | sort -z | xargs -0 sha256sum | sha256sum | cut -c1-64)

@@ -19,7 +19,10 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** The hvm/*.sh scripts' command lines: --help prints the script's header, the whole of it and nothing else. */
+/**
+ * The hvm/*.sh scripts' command lines: --help prints the script's header, the whole of it and
+ * nothing else; a bad HVM_SRC is one line naming it and exit 2, found before anything is built.
+ */
 class HvmScriptOptionsTest {
     private static final List<String> SCRIPTS = Arrays.asList("build-hvm.sh", "build-mission.sh", "difftest.sh", "hvmc.sh",
             "test-patches.sh", "upstream-scj-tests.sh");
@@ -53,6 +56,34 @@ class HvmScriptOptionsTest {
             assertEquals(String.join("\n", header), r.out.replaceAll("\\s+$", ""), script);
             assertTrue(r.out.contains("hvm/" + script), script + ": its help has no usage line");
         }
+    }
+
+    @Test
+    void aBadHvmSrcIsOneLineAndExit2() throws Exception {
+        // a missing one was exit 1 (with --check: a lack of this machine); a file that is not a
+        // tarball was gzip's and tar's four lines, then "no icecapvm/src in the HVM source"
+        Path notTar = Files.write(dir.resolve("hvm.tar.gz"), bytes("not a tarball"));
+        Files.createDirectory(dir.resolve("empty"));
+        String missing = dir.resolve("missing.tar.gz").toString();
+        for (String script : Arrays.asList("build-hvm.sh", "difftest.sh", "test-patches.sh", "build-mission.sh", "upstream-scj-tests.sh")) {
+            bad(Collections.singletonMap("HVM_SRC", missing), "build-hvm: HVM_SRC=" + missing + ": no such file or folder", script);
+        }
+        bad(Collections.singletonMap("HVM_SRC", notTar.toString()), "build-hvm: HVM_SRC=" + notTar + ": not a gzip tarball",
+                "build-hvm.sh", "--check");
+        bad(Collections.singletonMap("HVM_SRC", dir.resolve("empty").toString()),
+                "build-hvm: HVM_SRC=" + dir.resolve("empty") + ": not an hvm-scj folder (no icecapvm/src)",
+                "build-hvm.sh", "--check");
+    }
+
+    private void bad(String line, String script, String... args) throws Exception {
+        bad(Collections.emptyMap(), line, script, args);
+    }
+
+    private void bad(Map<String, String> env, String line, String script, String... args) throws Exception {
+        Result r = run(env, script, args);
+        assertEquals(2, r.exit, script + " " + String.join(" ", args) + ": " + r.err);
+        assertEquals(line + "\n", r.err, script + " " + String.join(" ", args));
+        assertEquals("", r.out, script + " " + String.join(" ", args));
     }
 
     private static final class Result {

@@ -21,14 +21,20 @@ ROOT=$(dirname "$HERE")
 # memory areas larger than this fail at launch.
 heap=268435456
 mode=${JMCLBENCH_HVM_MODE:-compiled}
+bad() { echo "build-mission: $*" >&2; exit 2; }
 while [ $# -gt 0 ]; do
+    case "$1" in
+        --heap|--mode) [ $# -ge 2 ] || bad "$1: needs a value" ;;
+    esac
     case "$1" in
         --heap) heap=$2; shift 2 ;;
         --mode) mode=$2; shift 2 ;;
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
-        *) echo "build-mission: unknown option: $1" >&2; exit 2 ;;
+        *) bad "unknown option: $1" ;;
     esac
 done
+# hvmc.sh would refuse it too, but after the tool chain's build, and as a failed build (exit 1)
+[[ $heap =~ ^[1-9][0-9]{0,17}$ ]] || bad "--heap: '$heap' is not a positive number of bytes"
 case "$mode" in
     interpreted|compiled|hot) ;;
     *) echo "build-mission: the mode (--mode or JMCLBENCH_HVM_MODE) must be interpreted, compiled or hot: $mode" >&2; exit 2 ;;

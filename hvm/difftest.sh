@@ -21,21 +21,42 @@ count=100
 modes=interpreted,compiled
 keep=
 tc=
+bad() { echo "difftest: $*" >&2; exit 2; }
+# a folder to write into: absent (made when needed) or a folder, below no file
+writable_folder() { # writable_folder OPTION PATH
+    local p=$2
+    [ ! -e "$p" ] || [ -d "$p" ] || bad "$1: $2 is not a folder"
+    while [ ! -e "$p" ]; do p=$(dirname "$p"); done
+    [ -d "$p" ] || bad "$1: $2: $p is not a folder"
+}
 while [ $# -gt 0 ]; do
     case "$1" in
-        --toolchain) tc=$(readlink -f "$2"); shift 2 ;;
+        --toolchain|--seeds|--count|--modes|--keep) [ $# -ge 2 ] || bad "$1: needs a value" ;;
+    esac
+    case "$1" in
+        --toolchain) [ -f "$2/KEY" ] || bad "--toolchain: $2 is not a tool chain built by build-hvm.sh"
+                     tc=$(readlink -f "$2"); shift 2 ;;
         --seeds) seeds=$2; shift 2 ;;
         --count) count=$2; shift 2 ;;
         --modes) modes=$2; shift 2 ;;
-        --keep) keep=$(readlink -f "$2"); shift 2 ;;
+        --keep) writable_folder --keep "$2"; keep=$(realpath -m "$2"); shift 2 ;;
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
-        *) echo "difftest: unknown option: $1" >&2; exit 2 ;;
+        *) bad "unknown option: $1" ;;
     esac
 done
-case "$seeds" in
-    *-*) seed_list=$(seq "${seeds%-*}" "${seeds#*-}") ;;
-    *) seed_list=${seeds//,/ } ;;
-esac
+# Every value is checked before anything is built: a bad one ran nothing, or compared no value, and passed.
+if [[ $seeds =~ ^([0-9]{1,9})-([0-9]{1,9})$ ]]; then
+    [ $((10#${BASH_REMATCH[1]})) -le $((10#${BASH_REMATCH[2]})) ] || bad "--seeds: $seeds is an empty range"
+    seed_list=$(seq "$((10#${BASH_REMATCH[1]}))" "$((10#${BASH_REMATCH[2]}))")
+elif [[ $seeds =~ ^[0-9]{1,9}(,[0-9]{1,9})*$ ]]; then
+    seed_list=
+    for s in ${seeds//,/ }; do seed_list+="$((10#$s)) "; done
+else
+    bad "--seeds: '$seeds' is not a range (1-5) or a list (1,7,9) of seeds"
+fi
+[[ $count =~ ^[1-9][0-9]{0,8}$ ]] || bad "--count: '$count' is not a positive number of values"
+[[ $modes =~ ^(interpreted|compiled)(,(interpreted|compiled))*$ ]] \
+    || bad "--modes: '$modes' is not a list of interpreted and compiled"
 
 [ -n "$tc" ] || tc=$("$HERE/build-hvm.sh")
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-difftest.XXXXXX")

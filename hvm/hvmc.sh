@@ -27,6 +27,10 @@ tc= classes= main= heap=16000000 out= log= mode=interpreted keep= methods=
 natives=()
 while [ $# -gt 0 ]; do
     case "$1" in
+        --toolchain|--classes|--main|--natives|--heap|--log|--mode|--keep-c|--methods|-o)
+            [ $# -ge 2 ] || { echo "hvmc: $1: needs a value" >&2; exit 2; } ;;
+    esac
+    case "$1" in
         --toolchain) tc=$2; shift 2 ;;
         --classes) classes=$2; shift 2 ;;
         --main) main=$2; shift 2 ;;

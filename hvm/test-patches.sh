@@ -19,12 +19,14 @@ HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
 TIMEOUT=15
 variants=(patched)
 only=
+bad() { echo "test-patches: $*" >&2; exit 2; }
 for a in "$@"; do
     case "$a" in
         --unpatched) variants+=(unpatched) ;;
-        --only=*) only=${a#--only=} ;;
+        --only=*) only=${a#--only=}; [ -n "$only" ] || bad "--only: needs a test name (--only=NAME)" ;;
+        --only) bad "--only: needs a test name (--only=NAME)" ;;
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
-        *) echo "test-patches: unknown option: $a" >&2; exit 2 ;;
+        *) bad "unknown option: $a" ;;
     esac
 done
 
@@ -46,6 +48,13 @@ tests=(
     "FloorCeil 21-strictmath-floor-ceil interpreted,compiled"
     "HotMethods 22-aot-listed-methods hot"
 )
+
+# A name no row has ran nothing and passed.
+if [ -n "$only" ]; then
+    names=()
+    for t in "${tests[@]}"; do names+=("${t%% *}"); done
+    [[ " ${names[*]} " == *" $only "* ]] || bad "--only: no test named '$only' (one of: ${names[*]})"
+fi
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-patches.XXXXXX")
 trap 'rm -rf "$work"' EXIT

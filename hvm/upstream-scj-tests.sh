@@ -15,15 +15,23 @@ HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
 timeout_s=60
 modes=interpreted,compiled
 names=()
+bad() { echo "upstream-scj-tests: $*" >&2; exit 2; }
 while [ $# -gt 0 ]; do
+    case "$1" in
+        --timeout|--modes) [ $# -ge 2 ] || bad "$1: needs a value" ;;
+    esac
     case "$1" in
         --timeout) timeout_s=$2; shift 2 ;;
         --modes) modes=$2; shift 2 ;;
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
-        -*) echo "upstream-scj-tests: unknown option: $1" >&2; exit 2 ;;
+        -*) bad "unknown option: $1" ;;
         *) names+=("$1"); shift ;;
     esac
 done
+# A bad value failed every run (timeout refused it, hvmc.sh refused the mode) as the VM's failure.
+[[ $timeout_s =~ ^[1-9][0-9]{0,5}$ ]] || bad "--timeout: '$timeout_s' is not a positive number of seconds"
+[[ $modes =~ ^(interpreted|compiled)(,(interpreted|compiled))*$ ]] \
+    || bad "--modes: '$modes' is not a list of interpreted and compiled"
 # test or test/mode -> why it fails here
 declare -A known_failure=(
     [TestSCJSingleRawMemory_MemoryMapped1]="maps raw device memory at a fixed address"

@@ -21,7 +21,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * The hvm/*.sh scripts' command lines: --help prints the script's header, the whole of it and
- * nothing else; a bad HVM_SRC is one line naming it and exit 2, found before anything is built.
+ * nothing else; a bad option, value or HVM_SRC is one line naming it and exit 2, found before
+ * anything is built (none of these cases needs the tool chain).
  */
 class HvmScriptOptionsTest {
     private static final List<String> SCRIPTS = Arrays.asList("build-hvm.sh", "build-mission.sh", "difftest.sh", "hvmc.sh",
@@ -56,6 +57,39 @@ class HvmScriptOptionsTest {
             assertEquals(String.join("\n", header), r.out.replaceAll("\\s+$", ""), script);
             assertTrue(r.out.contains("hvm/" + script), script + ": its help has no usage line");
         }
+    }
+
+    @Test
+    void difftestValuesAreOneLineAndExit2() throws Exception {
+        // each ran: python's traceback (--seeds x, --count -1), a failed build counted as a
+        // disagreement (--modes foo), bash's "unbound variable" (a missing value), a silent exit 1
+        // (--toolchain), an empty run that passed (--seeds 3-1)
+        bad("difftest: --seeds: 'x' is not a range (1-5) or a list (1,7,9) of seeds", "difftest.sh", "--seeds", "x");
+        bad("difftest: --seeds: 3-1 is an empty range", "difftest.sh", "--seeds", "3-1");
+        bad("difftest: --seeds: needs a value", "difftest.sh", "--seeds");
+        bad("difftest: --count: '-1' is not a positive number of values", "difftest.sh", "--count", "-1");
+        bad("difftest: --modes: 'foo' is not a list of interpreted and compiled", "difftest.sh", "--modes", "foo");
+        bad("difftest: --toolchain: /no/such/chain is not a tool chain built by build-hvm.sh",
+                "difftest.sh", "--toolchain", "/no/such/chain");
+        Files.write(dir.resolve("file"), bytes("x"));
+        bad("difftest: --keep: file/kept: file is not a folder", "difftest.sh", "--keep", "file/kept");
+        bad("difftest: unknown option: --bogus", "difftest.sh", "--bogus");
+    }
+
+    @Test
+    void theOtherScriptsValuesAreOneLineAndExit2() throws Exception {
+        // --only=NAME of no test ran nothing and exited 0
+        String r = run(Collections.emptyMap(), "test-patches.sh", "--only=NoSuchTest").err;
+        assertTrue(r.startsWith("test-patches: --only: no test named 'NoSuchTest' (one of: DoubleSubDiv "), r);
+        bad(r.trim(), "test-patches.sh", "--only=NoSuchTest");
+        bad("test-patches: --only: needs a test name (--only=NAME)", "test-patches.sh", "--only=");
+        bad("build-mission: --heap: 'x' is not a positive number of bytes", "build-mission.sh", "--heap", "x");
+        bad("build-mission: --mode: needs a value", "build-mission.sh", "--mode");
+        bad("upstream-scj-tests: --timeout: '0' is not a positive number of seconds",
+                "upstream-scj-tests.sh", "--timeout", "0");
+        bad("upstream-scj-tests: --modes: 'hot' is not a list of interpreted and compiled",
+                "upstream-scj-tests.sh", "--modes", "hot");
+        bad("hvmc: -o: needs a value", "hvmc.sh", "-o");
     }
 
     @Test

@@ -30,7 +30,10 @@ public final class HvmEngine extends ScjEngine {
         return "hvm"; // a VM of its own, not the JVM that drives it
     }
 
-    /** The scj engine's checks, then the HVM's limits ({@link HvmLimits}): a run past them is unsupported. */
+    /**
+     * The scj engine's checks, then the HVM's limits ({@link HvmLimits}): a run past them is
+     * unsupported; then HVM_SRC ({@link HvmRun#checkSource}).
+     */
     @Override
     public void validate(RunOptions options, Dataset dataset) throws BadInputException, UnsupportedRunException {
         super.validate(options, dataset);
@@ -38,6 +41,7 @@ public final class HvmEngine extends ScjEngine {
         if (beyond != null) {
             throw new UnsupportedRunException(beyond);
         }
+        HvmRun.checkSource();
     }
 
     @Override

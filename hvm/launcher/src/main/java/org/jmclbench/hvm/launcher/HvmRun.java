@@ -24,6 +24,7 @@ import org.jmclbench.scj.MissionConfiguration;
 import org.jmclbench.scj.MissionRunFile;
 import org.jmclbench.scj.MissionSizes;
 import org.jmclbench.workload.scj.ScjRun;
+import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
@@ -144,6 +145,35 @@ public final class HvmRun {
         String area = names.length() == 0 ? "of " + size + " bytes (an icecap-internal area)" : "'" + names + "'";
         return "memory area " + area + " overflowed on the HVM: an allocation of " + needed
                 + " bytes did not fit its " + size + " bytes (--area-size AREA=BYTES)";
+    }
+
+    /**
+     * HVM_SRC as {@code hvm/build-hvm.sh --check} judges it, before the run folder is begun: one
+     * that is not an hvm-scj folder or tarball is bad input (the script's exit 2, its line the
+     * message), not the run's failure. A machine that cannot build the tool chain (exit 1) is left
+     * to {@link #build}, as is a home without the script.
+     */
+    static void checkSource() throws BadInputException {
+        String home = System.getProperty("jmclbench.home", ".");
+        File script = new File(new File(home, "hvm"), "build-hvm.sh");
+        if (!script.isFile()) {
+            return;
+        }
+        try {
+            Process p = new ProcessBuilder(script.getPath(), "--check").redirectErrorStream(true).start();
+            String out;
+            try (InputStream s = p.getInputStream()) {
+                out = new String(readAll(s), StandardCharsets.UTF_8).trim();
+            }
+            if (p.waitFor() == 2) {
+                String line = out.substring(out.lastIndexOf('\n') + 1);
+                throw new BadInputException(line.startsWith("build-hvm: ") ? line.substring("build-hvm: ".length()) : line);
+            }
+        } catch (IOException e) {
+            // the build runs the script again and reports what stops it
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     private static File build(PrintStream err) throws RunFailure, IOException {

@@ -119,6 +119,23 @@ class HvmFailureTest {
     }
 
     @Test
+    void aBadHvmSrcIsBadInputBeforeAnythingIsBuiltOrBegun() throws Exception {
+        // it was build-hvm.sh's line, then "failure: cannot build the HVM executable", exit 1, and
+        // the run folder's parents left behind
+        homeWithExecutable("touch '" + tmp + "/started'");
+        Path h = tmp.toPath().resolve("home/hvm");
+        write(h.resolve("build-mission.sh"), "#!/usr/bin/env bash\ntouch '" + tmp + "/built'\nexit 2\n");
+        write(h.resolve("build-hvm.sh"), "#!/usr/bin/env bash\n[ \"$1\" = --check ] || touch '" + tmp + "/built'\n"
+                + "echo 'build-hvm: HVM_SRC=/no/such.tar.gz: no such file or folder' >&2\nexit 2\n");
+        Files.setPosixFilePermissions(h.resolve("build-hvm.sh"), PosixFilePermissions.fromString("rwxr-xr-x"));
+        assertEquals(WorkloadMain.BAD_INPUT, run(), err());
+        assertEquals("jmclbench: HVM_SRC=/no/such.tar.gz: no such file or folder\n", err());
+        assertFalse(new File(tmp, "built").exists(), "refused before the executable is built");
+        assertFalse(new File(tmp, "started").exists());
+        assertFalse(new File(tmp, "out").exists(), "no run folder begun");
+    }
+
+    @Test
     void aFullMemoryAreaIsNamedAndTheRunsFailure() throws Exception {
         // icecap's words when an allocation does not fit: the area's size and the request, in hex (2000 = 0x7d0)
         homeWithExecutable("echo 'out of memory: 0x7d0, 0x1f40'\nexit 1");

@@ -13,7 +13,8 @@
 #
 # Usage: build-jpf.sh [--quiet] [--link PATH]
 #   prints the JPF home on stdout (progress on stderr), points <cache>/current at it, and
-#   --link PATH also points PATH at it.
+#   --link PATH also points PATH at it. A JPF_CORE_SRC that is no jpf-core folder or tarball
+#   is bad input: one line naming it, exit 2 (a build that fails: exit 1).
 # JPF runs on JDK 17 only: JPF_JAVA_HOME, else JAVA_HOME when it is 17, else the Debian JDK 17.
 set -euo pipefail
 
@@ -28,6 +29,7 @@ while [ $# -gt 0 ]; do
         --quiet) quiet=true; shift ;;
         --link) [ $# -ge 2 ] || { echo "build-jpf: --link: needs a path" >&2; exit 2; }
                 link=$2; shift 2 ;;
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         *) echo "build-jpf: unknown option $1 (usage: build-jpf.sh [--quiet] [--link PATH])" >&2; exit 2 ;;
     esac
 done
@@ -43,6 +45,7 @@ finish() {
 }
 say() { $quiet || echo "build-jpf: $*" >&2; }
 die() { echo "build-jpf: $*" >&2; exit 1; }
+bad_src() { echo "build-jpf: JPF_CORE_SRC=$JPF_CORE_SRC: $*" >&2; exit 2; }
 
 java17_home() {
     local h
@@ -79,15 +82,15 @@ if [ -n "${JPF_CORE_SRC:-}" ]; then
         src=$(cd "$JPF_CORE_SRC" && pwd)
         commit=$(git -C "$src" rev-parse HEAD 2>/dev/null || true)
     elif [ -f "$JPF_CORE_SRC" ]; then
-        tar -xzf "$JPF_CORE_SRC" -C "$work" || die "JPF_CORE_SRC=$JPF_CORE_SRC: not a readable .tar.gz"
+        tar -xzf "$JPF_CORE_SRC" -C "$work" 2>/dev/null || bad_src "not a readable .tar.gz"
         src=$(find "$work" -mindepth 1 -maxdepth 2 -name jpf.properties -printf '%h\n' | head -1)
-        [ -n "$src" ] || die "JPF_CORE_SRC=$JPF_CORE_SRC: no jpf-core folder (jpf.properties) inside"
+        [ -n "$src" ] || bad_src "no jpf-core folder (jpf.properties) inside"
         if [ "$(sha256sum "$JPF_CORE_SRC" | cut -d' ' -f1)" = "$PINNED_TARBALL_SHA256" ]; then
             commit=$PINNED_COMMIT
             pristine=true
         fi
     else
-        die "JPF_CORE_SRC=$JPF_CORE_SRC: no such folder or file"
+        bad_src "no such folder or file"
     fi
 else
     command -v git >/dev/null || die "no JPF_CORE_SRC and no git to clone $UPSTREAM"
@@ -101,7 +104,10 @@ else
     pristine=true
 fi
 for d in src/main src/peers src/classes/modules src/annotations jpf.properties; do
-    [ -e "$src/$d" ] || die "$src: not a jpf-core tree (no $d)"
+    if [ ! -e "$src/$d" ]; then
+        [ -z "${JPF_CORE_SRC:-}" ] || bad_src "not a jpf-core tree (no $d)"
+        die "$src: not a jpf-core tree (no $d)"
+    fi
 done
 
 # --- 2. the cache key: the commit (when known) plus a hash of every source file

@@ -9,6 +9,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
@@ -45,6 +47,38 @@ class BuildJpfScriptTest {
         assertTrue(r.err.contains("set JPF_CORE_SRC to a jpf-core folder or tarball"), r.err);
     }
 
+    @Test
+    void helpPrintsTheHeader() throws Exception {
+        // --help was an unknown option, exit 2
+        Result r = run(null, "--help");
+        assertEquals(0, r.exit, r.err);
+        assertTrue(r.out.startsWith("Builds Java PathFinder"), r.out);
+        assertTrue(r.out.contains("Usage: build-jpf.sh [--quiet] [--link PATH]"), r.out);
+    }
+
+    @Test
+    void aJpfCoreSrcThatIsNoJpfCoreIsOneLineAndExit2() throws Exception {
+        // each was exit 1, and a file that is not a tarball printed gzip's and tar's lines first
+        Path notTar = dir.resolve("jpf.tar.gz");
+        Files.writeString(notTar, "not a tarball");
+        Path empty = Files.createDirectories(dir.resolve("empty"));
+        Path missing = dir.resolve("missing.tar.gz");
+        String[][] cases = {{missing.toString(), "no such folder or file"}, {notTar.toString(), "not a readable .tar.gz"},
+                {empty.toString(), "not a jpf-core tree (no src/main)"}};
+        for (String[] c : cases) {
+            String line = "build-jpf: JPF_CORE_SRC=" + c[0] + ": " + c[1] + "\n";
+            Result r = run(c[0]);
+            assertEquals(2, r.exit, r.err);
+            assertEquals(line, r.err);
+            assertEquals("", r.out);
+            // and ./jmclbench verify passes it on, without a line of its own (it added "cannot build
+            // Java PathFinder" and exit 1)
+            r = run(c[0], SCRIPT.getParent().getParent().resolve("jmclbench").toString(), "verify", "--help");
+            assertEquals(2, r.exit, r.err);
+            assertEquals(line, r.err);
+        }
+    }
+
     private Path fakeHome(String key) throws IOException {
         Path home = dir.resolve("cache/jpf").resolve(key);
         Files.createDirectories(home.resolve("build"));
@@ -58,12 +92,27 @@ class BuildJpfScriptTest {
     }
 
     private Result run() throws Exception {
+        return run(null);
+    }
+
+    /** build-jpf.sh with {@code JPF_CORE_SRC} (none when null) and {@code args}; a first arg naming a file runs that instead. */
+    private Result run(String jpfCoreSrc, String... args) throws Exception {
         Path bin = Files.createDirectories(dir.resolve("bin"));
         Path git = bin.resolve("git");
         Files.writeString(git, "#!/bin/sh\necho 'fatal: unable to access (no network in this test)' >&2\nexit 128\n");
         Files.setPosixFilePermissions(git, PosixFilePermissions.fromString("rwxr-xr-x"));
-        ProcessBuilder pb = new ProcessBuilder("bash", SCRIPT.toString());
+        List<String> cmd = new ArrayList<>();
+        if (args.length > 0 && args[0].startsWith("/")) {
+            cmd.addAll(List.of(args));
+        } else {
+            cmd.addAll(List.of("bash", SCRIPT.toString()));
+            cmd.addAll(List.of(args));
+        }
+        ProcessBuilder pb = new ProcessBuilder(cmd);
         pb.environment().remove("JPF_CORE_SRC");
+        if (jpfCoreSrc != null) {
+            pb.environment().put("JPF_CORE_SRC", jpfCoreSrc);
+        }
         pb.environment().put("JMCLBENCH_CACHE", dir.resolve("cache").toString());
         pb.environment().put("PATH", bin + ":" + System.getenv("PATH"));
         Path out = dir.resolve("out.txt");

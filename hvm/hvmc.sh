@@ -34,7 +34,8 @@ while [ $# -gt 0 ]; do
         --toolchain) tc=$2; shift 2 ;;
         --classes) classes=$2; shift 2 ;;
         --main) main=$2; shift 2 ;;
-        --natives) natives+=("$(readlink -f "$2")"); shift 2 ;;
+        --natives) [ -f "$2" ] || { echo "hvmc: --natives: no such file: $2" >&2; exit 2; }
+                   natives+=("$(readlink -f "$2")"); shift 2 ;;
         --heap) heap=$2; shift 2 ;;
         --log) log=$2; shift 2 ;;
         --mode) mode=$2; shift 2 ;;
@@ -47,10 +48,11 @@ while [ $# -gt 0 ]; do
 done
 [ -n "$tc" ] && [ -n "$classes" ] && [ -n "$main" ] && [ -n "$out" ] \
     || { echo "hvmc: --toolchain, --classes, --main and -o are required" >&2; exit 2; }
-# Paths the script uses after it changes folder.
-out=$(readlink -f "$out")
-[ -z "$log" ] || log=$(readlink -f "$log")
-[ -z "$keep" ] || keep=$(readlink -f "$keep")
+# Paths the script uses after it changes folder (realpath -m: readlink -f fails, and with it the
+# script, silently, for a path two folders below what exists, which -o and --keep-c may name).
+out=$(realpath -m "$out")
+[ -z "$log" ] || log=$(realpath -m "$log")
+[ -z "$keep" ] || keep=$(realpath -m "$keep")
 [ -f "$tc/KEY" ] || { echo "hvmc: $tc is not a tool chain built by build-hvm.sh" >&2; exit 2; }
 case "$heap" in ''|*[!0-9]*) echo "hvmc: --heap must be a number of bytes: $heap" >&2; exit 2 ;; esac
 case "$mode" in
@@ -66,7 +68,10 @@ cls=${main##*.}
 [ "$pkg" != "$main" ] || { echo "hvmc: --main needs a package: $main" >&2; exit 2; }
 abs_cp=
 IFS=: read -ra parts <<< "$classes"
-for p in "${parts[@]}"; do abs_cp+=$(readlink -f "$p"):; done
+for p in "${parts[@]}"; do
+    [ -e "$p" ] || { echo "hvmc: --classes: no such folder or jar: $p" >&2; exit 2; }
+    abs_cp+=$(readlink -f "$p"):
+done
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvmc.XXXXXX")
 trap 'rm -rf "$work"' EXIT

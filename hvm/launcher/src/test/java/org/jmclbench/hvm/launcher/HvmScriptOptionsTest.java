@@ -93,6 +93,19 @@ class HvmScriptOptionsTest {
     }
 
     @Test
+    void hvmcPathsAreOneLineAndExit2() throws Exception {
+        // -o two folders below what exists ended the script silently (exit 1, readlink -f); a
+        // missing --natives file or --classes entry went on to the compiler and gcc (exit 1)
+        Files.createDirectories(dir.resolve("chain"));
+        Files.write(dir.resolve("chain/KEY"), bytes("source test\n"));
+        bad("hvmc: /no/such/chain is not a tool chain built by build-hvm.sh",
+                "hvmc.sh", "--toolchain", "/no/such/chain", "--classes", ".", "--main", "a.B", "-o", "x/y/exe");
+        bad("hvmc: --natives: no such file: none.c", "hvmc.sh", "--natives", "none.c");
+        bad("hvmc: --classes: no such folder or jar: none",
+                "hvmc.sh", "--toolchain", "chain", "--classes", ".:none", "--main", "a.B", "-o", "exe");
+    }
+
+    @Test
     void aBadHvmSrcIsOneLineAndExit2() throws Exception {
         // a missing one was exit 1 (with --check: a lack of this machine); a file that is not a
         // tarball was gzip's and tar's four lines, then "no icecapvm/src in the HVM source"

@@ -76,6 +76,7 @@ done
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvmc.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 [ -n "$log" ] || log=$work/compile.log
+mkdir -p "$(dirname "$log")"
 : > "$log"
 
 # The compiler reads hvm.properties from its working folder for the VM sources to copy.

@@ -31,6 +31,25 @@ public final class HvmEngine extends ScjEngine {
     }
 
     /**
+     * The scj engine's checks, then the options the HVM run has nothing to do with: the executable
+     * replays the dataset once (no warm-up), releases on its own 1 ms tick (no spin) and has no GC
+     * log; given, they were recorded in summary.json's parameters as if they had been applied.
+     */
+    @Override
+    public void checkOptions(RunOptions o) throws BadInputException {
+        super.checkOptions(o);
+        if (o.warmupS > 0) {
+            throw BadInputException.ofOption("--warmup", "the hvm engine has no warm-up (its executable replays the dataset once)");
+        }
+        if (o.spinUs > 0) {
+            throw BadInputException.ofOption("--spin-us", "the hvm engine releases on the HVM's own clock tick, with no spin");
+        }
+        if (o.gcLog) {
+            throw BadInputException.ofOption("--gc-log", "the hvm engine has no GC log (the HVM's memory is SCJ areas)");
+        }
+    }
+
+    /**
      * The scj engine's checks, then the HVM's limits ({@link HvmLimits}): a run past them is
      * unsupported; then HVM_SRC ({@link HvmRun#checkSource}).
      */

@@ -136,6 +136,22 @@ class HvmFailureTest {
     }
 
     @Test
+    void optionsTheHvmRunIgnoresAreBadInputBeforeAnythingIsBuilt() throws Exception {
+        // each ran, and summary.json recorded it among the run's parameters
+        homeWithExecutable("touch '" + tmp + "/started'");
+        String[][] cases = {{"--warmup", "2", "jmclbench: --warmup: the hvm engine has no warm-up"},
+                {"--spin-us", "100", "jmclbench: --spin-us: the hvm engine releases on the HVM's own clock tick"},
+                {"--gc-log", null, "jmclbench: --gc-log: the hvm engine has no GC log"}};
+        for (String[] c : cases) {
+            assertEquals(WorkloadMain.BAD_INPUT, c[1] == null ? run(c[0]) : run(c[0], c[1]), err());
+            assertTrue(err().startsWith(c[2]), err());
+            assertEquals(1, err().trim().split("\n").length, err());
+        }
+        assertFalse(new File(tmp, "started").exists());
+        assertFalse(new File(tmp, "out").exists(), "no run folder begun");
+    }
+
+    @Test
     void aFullMemoryAreaIsNamedAndTheRunsFailure() throws Exception {
         // icecap's words when an allocation does not fit: the area's size and the request, in hex (2000 = 0x7d0)
         homeWithExecutable("echo 'out of memory: 0x7d0, 0x1f40'\nexit 1");

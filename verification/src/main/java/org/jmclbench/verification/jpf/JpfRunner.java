@@ -6,6 +6,7 @@ import java.io.Reader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -90,7 +91,7 @@ public final class JpfRunner {
             p.waitFor();
         }
         double seconds = (System.nanoTime() - start) / 1e9;
-        Files.deleteIfExists(work);
+        keepAndDelete(work, check.id());
         Properties v = new Properties();
         if (Files.isRegularFile(verdict)) {
             try (Reader r = Files.newBufferedReader(verdict, StandardCharsets.UTF_8)) {
@@ -98,6 +99,27 @@ public final class JpfRunner {
             }
         }
         return judge(check, v, finished, p.exitValue(), seconds, log);
+    }
+
+    /**
+     * Deletes JPF's working directory, keeping what was left in it beside the log as
+     * {@code ID.NAME}: a JVM that crashed wrote its hs_err_pid file there, and a directory that
+     * was not empty failed the whole verify (DirectoryNotEmptyException), where the crash is that
+     * check's failure.
+     */
+    private void keepAndDelete(Path work, String id) throws IOException {
+        try (java.util.stream.Stream<Path> left = Files.list(work)) {
+            for (Path f : (Iterable<Path>) left::iterator) {
+                if (Files.isRegularFile(f)) {
+                    Files.move(f, logDir.resolve(id + "." + f.getFileName()), StandardCopyOption.REPLACE_EXISTING);
+                }
+            }
+        }
+        try (java.util.stream.Stream<Path> tree = Files.walk(work)) {
+            for (Path f : (Iterable<Path>) tree.sorted(java.util.Comparator.reverseOrder())::iterator) {
+                Files.deleteIfExists(f);
+            }
+        }
     }
 
     /** The forked JVM's command line: JDK 17, JPF's flags, budgets, then JPF's own arguments. */

@@ -166,10 +166,18 @@ def copy_tree(src, dst):
             shutil.copy(os.path.join(src, f), target)  # a new mtime: Maven recompiles what changed
 
 
+class OneLineParser(argparse.ArgumentParser):
+    """argparse, with bad usage as one line (argparse prints the usage before it) and exit 2."""
+
+    def error(self, message):
+        print(f"mutation-score: {message}", file=sys.stderr)
+        sys.exit(2)
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     repo = os.path.dirname(here)
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p = OneLineParser(description=__doc__.split("\n")[0])
     p.add_argument("--only", help="comma-separated mutant ids")
     p.add_argument("--work", default=os.path.join(os.environ.get("TMPDIR", "/tmp"), "jmclbench-mutants"),
                    help="the folder of the tree's copy (kept, so later runs build incrementally)")
@@ -181,13 +189,23 @@ def main():
             print(f"{m[0]:34} {m[1].split('/')[0]:14} {m[4]}")
         return 0
     chosen = MUTANTS
-    if a.only:
+    if a.only is not None:  # an empty --only chose every mutant: an hour's run for none asked
         wanted = a.only.split(",")
+        if "" in wanted:
+            print("mutation-score: --only: an empty mutant id (give ids, see --list)", file=sys.stderr)
+            return 2
         unknown = [w for w in wanted if w not in ids]
         if unknown:
             print(f"mutation-score: --only: no mutant {', '.join(unknown)} (see --list)", file=sys.stderr)
             return 2
         chosen = [m for m in MUTANTS if m[0] in wanted]
+    work = os.path.abspath(a.work)
+    above = work
+    while not os.path.exists(above):
+        above = os.path.dirname(above)
+    if not os.path.isdir(above):  # os.makedirs below would end in a traceback
+        print(f"mutation-score: --work: {a.work}: {above} is not a folder", file=sys.stderr)
+        return 2
     for mid, path, text, _, _ in chosen:
         n = open(os.path.join(repo, path)).read().count(text)
         if n != 1:
@@ -195,7 +213,6 @@ def main():
                   file=sys.stderr)
             return 2
 
-    work = os.path.abspath(a.work)
     tree = os.path.join(work, "tree")
     logs = os.path.join(work, "logs")
     os.makedirs(tree, exist_ok=True)

@@ -41,6 +41,16 @@ class MutationScoreScriptTest {
                 "--work", "file/copy");
     }
 
+    @Test
+    void everyMutantsTextStillOccursOnceInItsSource() throws Exception {
+        // a refactoring that moves a mutant's line makes the whole score stop (exit 2) until someone runs it
+        Process p = new ProcessBuilder("python3", SCRIPT.toString(), "--check").redirectErrorStream(true).start();
+        String said = new String(p.getInputStream().readAllBytes());
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "mutation-score.py did not end");
+        assertEquals(0, p.exitValue(), said);
+        assertTrue(said.matches("mutation-score: \\d+ mutants, each text found once in its source\n"), said);
+    }
+
     private void assertBad(String line, String... args) throws Exception {
         List<String> cmd = new ArrayList<>(List.of("python3", SCRIPT.toString()));
         cmd.addAll(List.of(args));

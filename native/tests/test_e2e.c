@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "angles.h"
+#include "child.h"
 #include "harness.h"
 #include "output.h"
 #include "rng.h"
@@ -23,25 +24,11 @@ static const char *const *wrapper;
 static char tmp[64];
 static char out_text[1 << 16], err_text[1 << 16];
 
-static void slurp(const char *path, char *buf, size_t len)
-{
-	FILE *f = fopen(path, "r");
-	size_t n = 0;
-
-	if (f) {
-		n = fread(buf, 1, len - 1, f);
-		fclose(f);
-	}
-	buf[n] = '\0';
-}
-
-/* Runs prog with args (NULL-terminated); returns its exit status, -1 when it did not exit. */
+/* Runs prog (through the wrapper, if any) with args (NULL-terminated); returns its exit status, -1 when it did not exit. */
 static int run(const char *const *args)
 {
-	char outp[128], errp[128];
 	const char *argv[64];
-	int n = 0, status;
-	pid_t pid;
+	int n = 0;
 
 	while (wrapper && wrapper[n] && n < 32) {
 		argv[n] = wrapper[n];
@@ -51,32 +38,7 @@ static int run(const char *const *args)
 	while (*args && n < 63)
 		argv[n++] = *args++;
 	argv[n] = NULL;
-	snprintf(outp, sizeof(outp), "%s/stdout", tmp);
-	snprintf(errp, sizeof(errp), "%s/stderr", tmp);
-	pid = fork();
-	if (pid == 0) {
-		int o = open(outp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-		int e = open(errp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-
-		if (o < 0 || e < 0 || dup2(o, 1) < 0 || dup2(e, 2) < 0)
-			_exit(127);
-		execv(argv[0], (char *const *)argv);
-		_exit(127);
-	}
-	if (pid < 0 || waitpid(pid, &status, 0) != pid)
-		return -1;
-	slurp(outp, out_text, sizeof(out_text));
-	slurp(errp, err_text, sizeof(err_text));
-	return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-static int count_lines(const char *s)
-{
-	int n = 0;
-
-	for (; *s; s++)
-		n += *s == '\n';
-	return n;
+	return jt_run_child(argv, tmp, out_text, sizeof(out_text), err_text, sizeof(err_text));
 }
 
 static void write_text(const char *path, const char *text)
@@ -153,7 +115,7 @@ static void expect_bad(const char *const *args, const char *want_prefix)
 {
 	int rc = run(args);
 
-	if (rc != 2 || strncmp(err_text, want_prefix, strlen(want_prefix)) || count_lines(err_text) != 1)
+	if (rc != 2 || strncmp(err_text, want_prefix, strlen(want_prefix)) || jt_count_lines(err_text) != 1)
 		JT_FAIL("%s ...: exit %d, stderr \"%s\", want exit 2 and one line starting \"%s\"",
 			args[0], rc, err_text, want_prefix);
 	else
@@ -272,7 +234,7 @@ static void test_bad_options(void)
 		CHECK_INT(run(version), 0);
 		CHECK_STR_PREFIX(out_text, "jmclbench-native ");
 		CHECK_CONTAINS(out_text, "-ffp-contract=off");
-		CHECK_INT(count_lines(out_text), 1);
+		CHECK_INT(jt_count_lines(out_text), 1);
 	}
 	CHECK_INT(run(help), 0);
 	CHECK_CONTAINS(out_text, "-p, --particles N");
@@ -287,7 +249,7 @@ static int check_columns(const char *dir, const char *name, int ncols, const cha
 	int n = 0, bad = 0;
 
 	snprintf(path, sizeof(path), "%s/%s", dir, name);
-	slurp(path, text, 1 << 22);
+	jt_slurp(path, text, 1 << 22);
 	if (header && strncmp(text, header, strlen(header)))
 		JT_FAIL("%s does not start with \"%s\"", path, header);
 	for (line = strtok_r(text, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
@@ -390,7 +352,7 @@ static double check_run_dir(const char *dir, int ideal, int cov, int nodo, int n
 	check_jobs(dir, "odoData.txt", ideal, c);
 	check_jobs(dir, "laserData.txt", ideal, c);
 	snprintf(path, sizeof(path), "%s/data.txt", dir);
-	slurp(path, text, sizeof(text));
+	jt_slurp(path, text, sizeof(text));
 	for (i = 0; i < 7; i++) {
 		p = strstr(text, data_keys[i]);
 		if (!p || (p != text && p[-1] != '\n')) {
@@ -403,9 +365,9 @@ static double check_run_dir(const char *dir, int ideal, int cov, int nodo, int n
 		if (i == 4)
 			*miss = atoi(p + strlen(data_keys[i]));
 	}
-	CHECK_INT(count_lines(text), 7);
+	CHECK_INT(jt_count_lines(text), 7);
 	snprintf(path, sizeof(path), "%s/summary.json", dir);
-	slurp(path, out_text, sizeof(out_text));
+	jt_slurp(path, out_text, sizeof(out_text));
 	CHECK_CONTAINS(out_text, "\"schema\": \"jmclbench-run/1\"");
 	CHECK_CONTAINS(out_text, "\"status\": \"complete\"");
 	CHECK_CONTAINS(out_text, "\"language\": \"c\"");
@@ -423,7 +385,7 @@ static int count_data_lines(const char *path)
 	int n = 0;
 	char *p;
 
-	slurp(path, text, 1 << 22);
+	jt_slurp(path, text, 1 << 22);
 	for (p = text; *p;) {
 		if (*p != '#' && *p != '\n')
 			n++;
@@ -484,10 +446,10 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 		double dev2;
 
 		snprintf(first, sizeof(first), "%s/positionDeviation.txt", dir);
-		slurp(first, before, sizeof(before));
+		jt_slurp(first, before, sizeof(before));
 		CHECK_INT(run(args), 0);
 		/* the other memory style computes the same bits */
-		slurp(first, after, sizeof(after));
+		jt_slurp(first, after, sizeof(after));
 		CHECK(before[0] != '\0' && strcmp(before, after) == 0);
 		dev2 = check_run_dir(dir, 1, 0, nodo, nlaser, &miss);
 		CHECK_BITS(dev2, dev);
@@ -557,7 +519,7 @@ static void test_fifo_fallback(const char *dataset)
 	CHECK_INT(run(args), 0);
 	wrapper = NULL;
 	snprintf(path, sizeof(path), "%s/native/nocov/50/SkipTest/1/summary.json", out);
-	slurp(path, out_text, sizeof(out_text));
+	jt_slurp(path, out_text, sizeof(out_text));
 	CHECK_CONTAINS(out_text, "\"policy\": \"SCHED_OTHER\"");
 	CHECK_CONTAINS(out_text, "\"fifoRequested\": true");
 }

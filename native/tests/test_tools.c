@@ -11,61 +11,23 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "child.h"
 #include "harness.h"
 
 static char tmp[64];
 static char out_text[1 << 14], err_text[1 << 14];
 
-static void slurp(const char *path, char *buf, size_t len)
-{
-	FILE *f = fopen(path, "r");
-	size_t n = 0;
-
-	if (f) {
-		n = fread(buf, 1, len - 1, f);
-		fclose(f);
-	}
-	buf[n] = '\0';
-}
-
 /* Runs prog with args (NULL-terminated); returns its exit status, -1 when it did not exit. */
 static int run(const char *prog, const char *const *args)
 {
-	char outp[128], errp[128];
 	const char *argv[32];
-	int n = 0, status;
-	pid_t pid;
+	int n = 0;
 
 	argv[n++] = prog;
 	while (*args && n < 31)
 		argv[n++] = *args++;
 	argv[n] = NULL;
-	snprintf(outp, sizeof(outp), "%s/stdout", tmp);
-	snprintf(errp, sizeof(errp), "%s/stderr", tmp);
-	pid = fork();
-	if (pid == 0) {
-		int o = open(outp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-		int e = open(errp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-
-		if (o < 0 || e < 0 || dup2(o, 1) < 0 || dup2(e, 2) < 0)
-			_exit(127);
-		execv(argv[0], (char *const *)argv);
-		_exit(127);
-	}
-	if (pid < 0 || waitpid(pid, &status, 0) != pid)
-		return -1;
-	slurp(outp, out_text, sizeof(out_text));
-	slurp(errp, err_text, sizeof(err_text));
-	return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-static int count_lines(const char *s)
-{
-	int n = 0;
-
-	for (; *s; s++)
-		n += *s == '\n';
-	return n;
+	return jt_run_child(argv, tmp, out_text, sizeof(out_text), err_text, sizeof(err_text));
 }
 
 /* One line on stderr that starts with want, nothing on stdout, exit status 2. */
@@ -73,7 +35,7 @@ static void expect_bad(const char *prog, const char *const *args, const char *wa
 {
 	int rc = run(prog, args);
 
-	if (rc != 2 || strncmp(err_text, want, strlen(want)) || count_lines(err_text) != 1 || *out_text)
+	if (rc != 2 || strncmp(err_text, want, strlen(want)) || jt_count_lines(err_text) != 1 || *out_text)
 		JT_FAIL("%s %s ...: exit %d, stderr \"%s\", stdout \"%.80s\"; want exit 2 and one line starting \"%s\"",
 			prog, args[0] ? args[0] : "", rc, err_text, out_text, want);
 	else

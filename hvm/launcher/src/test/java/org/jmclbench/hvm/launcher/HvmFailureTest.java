@@ -113,9 +113,7 @@ class HvmFailureTest {
             assertTrue(err().startsWith("jmclbench: unsupported: --particles " + past[1] + ": the HVM "), err());
             assertEquals(1, err().trim().split("\n").length, err());
         }
-        assertFalse(new File(tmp, "built").exists(), "refused before the executable is built");
-        assertFalse(new File(tmp, "started").exists());
-        assertFalse(new File(tmp, "out").exists(), "no run folder begun");
+        assertNothingBuiltStartedOrBegun();
     }
 
     @Test
@@ -130,9 +128,7 @@ class HvmFailureTest {
         Files.setPosixFilePermissions(h.resolve("build-hvm.sh"), PosixFilePermissions.fromString("rwxr-xr-x"));
         assertEquals(WorkloadMain.BAD_INPUT, run(), err());
         assertEquals("jmclbench: HVM_SRC=/no/such.tar.gz: no such file or folder\n", err());
-        assertFalse(new File(tmp, "built").exists(), "refused before the executable is built");
-        assertFalse(new File(tmp, "started").exists());
-        assertFalse(new File(tmp, "out").exists(), "no run folder begun");
+        assertNothingBuiltStartedOrBegun();
     }
 
     @Test
@@ -147,7 +143,13 @@ class HvmFailureTest {
             assertTrue(err().startsWith(c[2]), err());
             assertEquals(1, err().trim().split("\n").length, err());
         }
-        assertFalse(new File(tmp, "started").exists());
+        assertNothingBuiltStartedOrBegun();
+    }
+
+    /** Refused before the executable is built or started, and before the run folder is begun. */
+    private void assertNothingBuiltStartedOrBegun() {
+        assertFalse(new File(tmp, "built").exists(), "refused before the executable is built");
+        assertFalse(new File(tmp, "started").exists(), "the executable was started");
         assertFalse(new File(tmp, "out").exists(), "no run folder begun");
     }
 

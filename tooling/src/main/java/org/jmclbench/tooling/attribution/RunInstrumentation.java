@@ -21,11 +21,15 @@ import org.jmclbench.tooling.load.LoadSettings;
 public record RunInstrumentation(EventCapture capture, LoadSession load, boolean jvm) implements AutoCloseable {
 
     /**
-     * Why a runtime cannot run under a load scenario, or null when it can: the {@code alloc}
-     * part runs inside a JVM, so the native runtime has no {@code alloc} or {@code mixed}.
+     * Why a run cannot run under a load scenario, or null when it can: the {@code alloc} part is a
+     * thread of the Java SE engine's release loop, so the native runtime and the other engines (scj,
+     * rtsj, which would ignore it and still record it) have no {@code alloc} or {@code mixed}.
+     *
+     * @param javaSeEngine whether the run is the Java SE engine on a JVM
      */
-    public static String unsupported(boolean jvm, LoadScenario scenario) {
-        return !jvm && scenario.alloc() ? "load " + scenario.label() + ": the allocation load runs inside a JVM" : null;
+    public static String unsupported(boolean javaSeEngine, LoadScenario scenario) {
+        return !javaSeEngine && scenario.alloc()
+                ? "load " + scenario.label() + ": the allocation load runs only in the Java SE engine (javase on a JVM)" : null;
     }
 
     /**

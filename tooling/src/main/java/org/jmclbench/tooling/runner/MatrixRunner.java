@@ -150,7 +150,8 @@ public final class MatrixRunner {
         // a folder without a row is the remains of a runner killed mid-run: start it afresh
         ForkedRun.killOrphan(folder);
         StoreMerger.deleteTree(folder);
-        String loadProblem = RunInstrumentation.unsupported(run.runtime().isJvm(), run.load());
+        String loadProblem = RunInstrumentation.unsupported(run.runtime().isJvm() && Engines.JAVASE.equals(run.engine()),
+                run.load());
         if (support.supported() && loadProblem != null) {
             support = ProfileProbe.Support.no(loadProblem);
         }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
+import java.nio.file.Path;
 import java.sql.Connection;
 import java.sql.DriverManager;
 import java.sql.ResultSet;
@@ -43,6 +44,28 @@ class LoadMatrixTest extends FakeJvmHome {
         assertTrue(r.out().startsWith("3 runs planned"), r.out());
         assertTrue(r.out().contains("fake-21 default skip 400p tiny load=cpu #1"), r.out());
         assertTrue(r.out().contains("fake-21 default skip 400p tiny #1"), r.out());
+    }
+
+    @Test
+    void theAllocationLoadIsUnsupportedOutsideTheJavaSeEngine() throws Exception {
+        // the scj and rtsj engines ran without it and recorded the run under load alloc
+        Path store = db.resolveSibling("engines.db");
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--engines", "javase,scj,rtsj",
+                "--load", "alloc", "--load-alloc", "50,8", "--datasets", "tiny", "--db", store.toString());
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+        Map<String, String> statusByEngine = new HashMap<>();
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + store);
+             Statement s = c.createStatement();
+             ResultSet rs = s.executeQuery("SELECT engine, status, failure FROM runs")) {
+            while (rs.next()) {
+                statusByEngine.put(rs.getString(1), rs.getString(2) + (rs.getString(3) == null ? "" : ": " + rs.getString(3)));
+            }
+        }
+        assertEquals("ok", statusByEngine.get("javase"), statusByEngine.toString());
+        for (String engine : new String[] {"scj", "rtsj"}) {
+            assertEquals("unsupported: load alloc: the allocation load runs only in the Java SE engine (javase on a JVM)",
+                    statusByEngine.get(engine), statusByEngine.toString());
+        }
     }
 
     @Test

@@ -123,6 +123,12 @@ class RunOptionsParserTest {
                 error("--dataset", "d", "-odo", "a", "-laser", "b", "-real", "c"));
         assertEquals("-T: contradicts --policy queue", error("--policy", "queue", "-T"));
         assertEquals("--ideal: takes no value", error("--ideal=yes"));
+        // only the Java SE release loop applies these; the scj and rtsj runs recorded them unapplied
+        assertEquals("--spin-us: the scj engine does not spin before a release (only javase does)",
+                error("--engine", "scj", "--spin-us", "100"));
+        assertEquals("--gc-log: the rtsj engine writes no GC log (only javase does)", error("--engine", "rtsj", "--gc-log"));
+        assertEquals("--load-alloc: the scj engine starts no allocation load (only javase does)",
+                error("--engine", "scj", "--load-alloc", "50,8"));
         assertEquals("stray: unexpected argument (see --help)", error("stray"));
     }
 

@@ -36,6 +36,24 @@ public final class JavaSeEngine implements Engine {
         checkHeapOptions(name(), o);
     }
 
+    /**
+     * Refuses the options only the Java SE release loop ({@link RealTimeRun}) applies: another
+     * engine would run without them and still record the spin and the load among its parameters.
+     */
+    public static void checkReleaseLoopOptions(String engine, RunOptions o) throws BadInputException {
+        if (o.spinUs > 0) {
+            throw BadInputException.ofOption("--spin-us", "the " + engine + " engine does not spin before a release"
+                    + " (only javase does)");
+        }
+        if (o.gcLog) {
+            throw BadInputException.ofOption("--gc-log", "the " + engine + " engine writes no GC log (only javase does)");
+        }
+        if (o.loadAllocMbPerS > 0) {
+            throw BadInputException.ofOption("--load-alloc", "the " + engine + " engine starts no allocation load"
+                    + " (only javase does)");
+        }
+    }
+
     /** The options of an engine whose one memory area is the heap: no scoped style, no SCJ areas. */
     public static void checkHeapOptions(String engine, RunOptions o) throws BadInputException {
         if (o.memory == MclConfig.Memory.SCOPED) {

@@ -49,6 +49,7 @@ public final class RtsjEngine implements Engine {
     @Override
     public void checkOptions(RunOptions o) throws BadInputException {
         JavaSeEngine.checkHeapOptions(name(), o);
+        JavaSeEngine.checkReleaseLoopOptions(name(), o);
     }
 
     @Override

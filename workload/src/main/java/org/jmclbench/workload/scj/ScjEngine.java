@@ -11,6 +11,7 @@ import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.engine.Engine;
 import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
+import org.jmclbench.workload.release.JavaSeEngine;
 
 /** {@code --engine scj}: the SCJ mission (scj-mission) on this JVM through rtsj-compat ({@link ScjRun}). */
 public class ScjEngine implements Engine {
@@ -20,13 +21,14 @@ public class ScjEngine implements Engine {
         return "scj";
     }
 
-    /** The mission's memory styles are preallocated and scoped; it has no allocating style. */
+    /** The mission's memory styles are preallocated and scoped; it has no allocating style, and no Java SE release loop. */
     @Override
     public void checkOptions(RunOptions o) throws BadInputException {
         if (o.memory == MclConfig.Memory.ALLOCATING) {
             throw BadInputException.ofOption("--memory", "'allocating' is not a memory style of the "
                     + name() + " engine (preallocated|scoped)");
         }
+        JavaSeEngine.checkReleaseLoopOptions(name(), o);
     }
 
     /** A PeriodicEventHandler needs periodic odometry; the area sizes must fit the mission's areas. */

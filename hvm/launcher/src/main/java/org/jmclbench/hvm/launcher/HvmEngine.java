@@ -37,7 +37,6 @@ public final class HvmEngine extends ScjEngine {
      */
     @Override
     public void checkOptions(RunOptions o) throws BadInputException {
-        super.checkOptions(o);
         if (o.warmupS > 0) {
             throw BadInputException.ofOption("--warmup", "the hvm engine has no warm-up (its executable replays the dataset once)");
         }
@@ -47,6 +46,7 @@ public final class HvmEngine extends ScjEngine {
         if (o.gcLog) {
             throw BadInputException.ofOption("--gc-log", "the hvm engine has no GC log (the HVM's memory is SCJ areas)");
         }
+        super.checkOptions(o); // after the HVM's own reasons for the options the scj engine refuses too
     }
 
     /**

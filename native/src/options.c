@@ -49,7 +49,7 @@ static const struct opt options[] = {
 	{ NULL, "--resample", "R", "systematic|multinomial (default systematic)", OPT_RESAMPLE },
 	{ NULL, "--init", "I", "known|uniform: around the start pose or over the field (default known)", OPT_INIT },
 	{ NULL, "--seed", "N", "generator seed, a signed 64-bit integer (default 1)", OPT_SEED },
-	{ NULL, "--time-scale", "F", "multiplies event times and deadlines; 0.5 = twice as fast (default 1.0)", OPT_TIME_SCALE },
+	{ NULL, "--time-scale", "F", "multiplies event times and deadlines; 0.5 = twice as fast (1e-6 to 1000, default 1.0)", OPT_TIME_SCALE },
 	{ NULL, "--warmup", "S", "first replay the first S seconds and discard them, seconds (default 0)", OPT_WARMUP },
 	{ NULL, "--spin-us", "N", "sleep until N microseconds before each release, then spin, us (default 0)", OPT_SPIN },
 	{ NULL, "--gc-log", NULL, "keep the runtime's GC log (accepted; C has no GC) (default off)", OPT_GC_LOG },
@@ -359,6 +359,12 @@ static int parse(jm_options *o, int argc, char **argv, char *err, size_t errlen)
 		case OPT_TIME_SCALE:
 			if (double_in(name, value, 0, &d, err, errlen))
 				return -1;
+			/* as the Java workload: below, a deadline rounds to its release; above, the
+			 * scaled times leave the clock's range */
+			if (d < 1e-6 || d > 1e3) {
+				snprintf(err, errlen, "%s: '%s' is out of range [1e-6, 1000]", name, value);
+				return -1;
+			}
 			o->time_scale = d;
 			break;
 		case OPT_WARMUP:

@@ -602,6 +602,10 @@ static void test_options(void)
 	CHECK(parse("--time-scale 0", &o, err, sizeof(err)) == -1);
 	CHECK_STR_PREFIX(err, "--time-scale: '0' must be a finite number > 0");
 	CHECK(parse("--warmup 0", &o, err, sizeof(err)) == 0 && o.warmup_s == 0.0);
+	CHECK(parse("--time-scale 1e-320", &o, err, sizeof(err)) == -1);
+	CHECK_STR_PREFIX(err, "--time-scale: '1e-320' is out of range [1e-6, 1000]");
+	CHECK(parse("--time-scale 1e300", &o, err, sizeof(err)) == -1);
+	CHECK_STR_PREFIX(err, "--time-scale: '1e300' is out of range [1e-6, 1000]");
 	CHECK(parse("--time-scale nan", &o, err, sizeof(err)) == -1);
 	CHECK_STR_PREFIX(err, "--time-scale: ");
 	CHECK(parse("--seed 1.5", &o, err, sizeof(err)) == -1);

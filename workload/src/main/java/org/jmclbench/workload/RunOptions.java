@@ -46,6 +46,12 @@ public final class RunOptions {
     public long seed = 1;
     /** Multiplies every event time and deadline: 0.5 replays twice as fast. */
     public double timeScale = 1.0;
+    /**
+     * The time scales a run accepts: below, the predict deadline (50 ms) rounds to its release;
+     * above, an hour of data no longer fits the nanosecond clock's range once scaled.
+     */
+    public static final double TIME_SCALE_MIN = 1e-6;
+    public static final double TIME_SCALE_MAX = 1e3;
     /** Seconds of data replayed first and discarded. */
     public double warmupS = 0.0;
     /** Park until this many microseconds before each release, then spin. */

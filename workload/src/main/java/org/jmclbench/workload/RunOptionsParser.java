@@ -41,7 +41,7 @@ public final class RunOptionsParser {
             "  --resample systematic|multinomial  resampling (default systematic)",
             "  --init known|uniform     initialisation (default known)",
             "  --seed N                 random generator seed (default 1)",
-            "  --time-scale F           multiplies event times and deadlines; 0.5 = twice as fast (default 1.0)",
+            "  --time-scale F           multiplies event times and deadlines; 0.5 = twice as fast (1e-6 to 1000, default 1.0)",
             "  --warmup S               replay the first S seconds of data first and discard them (default 0)",
             "  --spin-us N              park until N us before each release, then spin (default 0)",
             "  --gc-log                 keep the runtime's GC log as gc.log in the run folder",
@@ -158,7 +158,7 @@ public final class RunOptionsParser {
                     o.seed = longValue(name, line.value(name));
                     break;
                 case "--time-scale":
-                    o.timeScale = doubleIn(name, line.value(name), false);
+                    o.timeScale = timeScale(name, line.value(name));
                     break;
                 case "--warmup":
                     o.warmupS = doubleIn(name, line.value(name), true);
@@ -334,6 +334,14 @@ public final class RunOptionsParser {
         } catch (NumberFormatException e) {
             throw BadInputException.ofOption(name, "not an integer: '" + v + "'");
         }
+    }
+
+    private static double timeScale(String name, String v) throws BadInputException {
+        double x = doubleIn(name, v, false);
+        if (x < RunOptions.TIME_SCALE_MIN || x > RunOptions.TIME_SCALE_MAX) {
+            throw BadInputException.ofOption(name, "'" + v + "' is out of range [1e-6, 1000]");
+        }
+        return x;
     }
 
     private static double doubleIn(String name, String v, boolean zeroAllowed) throws BadInputException {

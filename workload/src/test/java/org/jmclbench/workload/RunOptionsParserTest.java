@@ -112,6 +112,9 @@ class RunOptionsParserTest {
         assertEquals("--memory: 'pooled' is not one of preallocated|allocating|scoped", error("--memory", "pooled"));
         assertTrue(error("--time-scale", "0").startsWith("--time-scale:"));
         assertTrue(error("--time-scale", "NaN").startsWith("--time-scale:"));
+        // a deadline that rounds to its release, and releases past the clock's range (they overflowed)
+        assertEquals("--time-scale: '1e-320' is out of range [1e-6, 1000]", error("--time-scale", "1e-320"));
+        assertEquals("--time-scale: '1e300' is out of range [1e-6, 1000]", error("--time-scale", "1e300"));
         assertTrue(error("--warmup", "-1").startsWith("--warmup:"));
         assertTrue(error("-j", "../etc").startsWith("-j:"));
         assertTrue(error("-j", "..").startsWith("-j:"));

@@ -91,7 +91,7 @@ final class MatrixOptions {
             case "order-seed" -> spec.orderSeed = parseLong(value.strip(), at);
             case "seed" -> spec.seed = parseLong(value.strip(), at);
             case "timeout" -> spec.timeoutS = positiveDouble(value.strip(), at);
-            case "time-scale" -> spec.timeScale = positiveDouble(value.strip(), at);
+            case "time-scale" -> spec.timeScale = timeScale(value.strip(), at);
             case "load-alloc" -> {
                 String[] f = value.strip().split(",");
                 if (f.length != 2) {
@@ -170,6 +170,15 @@ final class MatrixOptions {
         } catch (NumberFormatException e) {
             throw new BadUsageException(at + ": '" + v + "' is not an integer");
         }
+    }
+
+    /** The workload's range (RunOptions.TIME_SCALE_MIN/MAX): refused here, not by each run. */
+    private static double timeScale(String v, String at) {
+        double d = positiveDouble(v, at);
+        if (d < 1e-6 || d > 1e3) {
+            throw new BadUsageException(at + ": '" + v + "' is out of range [1e-6, 1000]");
+        }
+        return d;
     }
 
     private static double positiveDouble(String v, String at) {

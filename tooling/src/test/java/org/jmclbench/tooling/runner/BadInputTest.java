@@ -85,6 +85,9 @@ class BadInputTest extends FakeJvmHome {
                 "--datasets", "nosuch", "--db", db.toString());
         assertRejected("--workload-arg: '--seed' is set by the runner", "matrix", "--java", fake.toString(),
                 "--datasets", "tiny", "--workload-arg", "--seed 3", "--db", db.toString());
+        // the workload's range, refused before the matrix rather than by each of its runs
+        assertRejected("--time-scale: '1e-9' is out of range [1e-6, 1000]", "matrix", "--java", fake.toString(),
+                "--time-scale", "1e-9", "--datasets", "tiny", "--db", db.toString());
     }
 
     @Test

@@ -20,6 +20,8 @@ final class AllocatingLocalizer implements Localizer {
     private final int n;
     private final Playground playground;
     private final MclConfig config;
+    /** Poll the abort signal when {@code (i & pollMask) == 0}, as the preallocated style does. */
+    private final int pollMask;
 
     private Particle[] particles;
     private Rng rng;
@@ -31,6 +33,7 @@ final class AllocatingLocalizer implements Localizer {
     AllocatingLocalizer(MclConfig config, Playground playground, double startX, double startY, double startTheta) {
         this.n = config.particles;
         this.config = config;
+        this.pollMask = config.pollMask();
         this.playground = playground;
         rng = new Rng(config.seed);
         particles = new Particle[n];
@@ -65,7 +68,7 @@ final class AllocatingLocalizer implements Localizer {
         double sigmaTheta = MotionModel.sigmaTheta(d, dtheta);
         Particle[] next = new Particle[n];
         for (int i = 0; i < n; i++) {
-            if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+            if ((i & pollMask) == 0 && abort.abortRequested()) {
                 return false;
             }
             Particle p = particles[i];
@@ -92,14 +95,14 @@ final class AllocatingLocalizer implements Localizer {
         Particle[] ps = particles;
         double[] w = new double[n];
         for (int i = 0; i < n; i++) {
-            if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+            if ((i & pollMask) == 0 && abort.abortRequested()) {
                 return false;
             }
             w[i] = Likelihood.of(ps[i].x, ps[i].y, ps[i].theta, angle, playground);
         }
         double total = 0.0;
         for (int i = 0; i < n; i++) {
-            if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+            if ((i & pollMask) == 0 && abort.abortRequested()) {
                 return false;
             }
             total += w[i];
@@ -107,14 +110,14 @@ final class AllocatingLocalizer implements Localizer {
         if (total == 0.0 || Double.isNaN(total) || Double.isInfinite(total)) {
             double uniform = 1.0 / n;
             for (int i = 0; i < n; i++) {
-                if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+                if ((i & pollMask) == 0 && abort.abortRequested()) {
                     return false;
                 }
                 w[i] = uniform;
             }
         } else {
             for (int i = 0; i < n; i++) {
-                if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+                if ((i & pollMask) == 0 && abort.abortRequested()) {
                     return false;
                 }
                 w[i] = w[i] / total;
@@ -130,7 +133,7 @@ final class AllocatingLocalizer implements Localizer {
             double ss = 0.0;
             double sc = 0.0;
             for (int i = 0; i < n; i++) {
-                if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+                if ((i & pollMask) == 0 && abort.abortRequested()) {
                     return false;
                 }
                 Particle p = ps[i];
@@ -145,7 +148,7 @@ final class AllocatingLocalizer implements Localizer {
         } else {
             int best = 0;
             for (int i = 1; i < n; i++) {
-                if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+                if ((i & pollMask) == 0 && abort.abortRequested()) {
                     return false;
                 }
                 if (w[i] > w[best]) {
@@ -160,7 +163,7 @@ final class AllocatingLocalizer implements Localizer {
         double[] c = new double[6];
         if (config.covariance) {
             for (int i = 0; i < n; i++) {
-                if ((i & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+                if ((i & pollMask) == 0 && abort.abortRequested()) {
                     return false;
                 }
                 Particle p = ps[i];
@@ -180,16 +183,16 @@ final class AllocatingLocalizer implements Localizer {
         int[] index = new int[n];
         boolean completed;
         if (config.resample == MclConfig.Resample.SYSTEMATIC) {
-            completed = Resampling.systematic(w, n, r.uniform() / n, index, abort);
+            completed = Resampling.systematic(w, n, r.uniform() / n, index, abort, pollMask);
         } else {
-            completed = Resampling.multinomial(w, n, r, index, new double[n], abort);
+            completed = Resampling.multinomial(w, n, r, index, new double[n], abort, pollMask);
         }
         if (!completed) {
             return false;
         }
         Particle[] next = new Particle[n];
         for (int m = 0; m < n; m++) {
-            if ((m & (MotionModel.ABORT_BLOCK - 1)) == 0 && abort.abortRequested()) {
+            if ((m & pollMask) == 0 && abort.abortRequested()) {
                 return false;
             }
             Particle p = ps[index[m]];

@@ -173,4 +173,35 @@ class LocalizerBehaviourTest {
             }
         }
     }
+
+    /** Counts its polls; never aborts. */
+    static final class PollCounter implements AbortSignal {
+        int polls;
+
+        @Override
+        public boolean abortRequested() {
+            polls++;
+            return false;
+        }
+    }
+
+    @Test
+    void everyMemoryStylePollsAtTheConfiguredInterval() {
+        // MclConfig.pollInterval bounds an abort's notice; the allocating style polled every 64 whatever it said.
+        // The styles' loops differ, so their counts do too; each must poll more often at a smaller interval.
+        for (MclConfig.Memory memory : MclConfig.Memory.values()) {
+            int previous = Integer.MAX_VALUE;
+            for (int interval : new int[] {1, 4, 64}) {
+                MclConfig c = MclConfig.builder().particles(200).memory(memory).pollInterval(interval).build();
+                Localizer l = Localizers.create(c, data.playground, data.startX, data.startY, data.startTheta);
+                PollCounter counter = new PollCounter();
+                for (int k = 0; k < 20; k++) {
+                    assertTrue(job(l, k, counter));
+                }
+                assertTrue(counter.polls < previous, memory + ": " + counter.polls + " polls at interval " + interval
+                        + ", not fewer than " + previous + " at the smaller one");
+                previous = counter.polls;
+            }
+        }
+    }
 }

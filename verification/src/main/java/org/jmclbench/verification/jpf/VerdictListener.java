@@ -25,6 +25,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Properties;
@@ -167,8 +168,15 @@ public final class VerdictListener extends ListenerAdapter {
         p.setProperty("maxDepth", Integer.toString(s.maxDepth));
         p.setProperty("instructions", Long.toString(s.insns));
         p.setProperty("done", "true");
-        try (Writer w = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
+        // written whole or not at all: a JVM killed at the budget mid-write left a verdict without its errors
+        Path partial = out.resolveSibling(out.getFileName() + ".partial");
+        try (Writer w = Files.newBufferedWriter(partial, StandardCharsets.UTF_8)) {
             p.store(w, "jmclbench JPF verdict");
+        } catch (IOException e) {
+            throw new IllegalStateException("cannot write " + out, e);
+        }
+        try {
+            Files.move(partial, out, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
         } catch (IOException e) {
             throw new IllegalStateException("cannot write " + out, e);
         }

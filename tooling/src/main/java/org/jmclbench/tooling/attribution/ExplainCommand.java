@@ -33,6 +33,10 @@ public final class ExplainCommand implements Callable<Integer> {
     @Parameters(paramLabel = "RUN_DIR", description = "a run folder, or a folder holding exactly one (e.g. results/runs/<run_key>)")
     Path runDir;
 
+    @Option(names = "--events", paramLabel = "FILE",
+            description = "the run's JFR recording (*.jfr) or GC log, when it is not recording.jfr or gc.log in the run folder or its parents")
+    Path eventsFile;
+
     @Option(names = "--json", description = "print the attributions as JSON instead of a table")
     boolean json;
 
@@ -52,7 +56,7 @@ public final class ExplainCommand implements Callable<Integer> {
         if (osThresholdUs < 0) {
             throw BadUsageException.ofOption("--os-threshold-us", "'" + osThresholdUs + "' is negative");
         }
-        RunEvidence run = RunEvidence.load(runDir);
+        RunEvidence run = RunEvidence.load(runDir, eventsFile);
         Attribution.Settings d = Attribution.Settings.defaults();
         Attribution.Settings settings = new Attribution.Settings(osThresholdUs * 1000, d.minOverlapNs(),
                 d.preemptionRatio(), d.preemptionMinNs(), d.jobCodePrefix());
@@ -85,7 +89,7 @@ public final class ExplainCommand implements Callable<Integer> {
                 + env.path("version").asText("") + ", GC " + env.path("gcNames") + "; policy "
                 + params.path("policy").asText("?") + ", " + params.path("particles").asText("?") + " particles; load "
                 + params.path("load").path("scenario").asText(params.path("load").asText("none")));
-        out.println("events:  " + run.eventSource() + " (" + run.events().size() + ")");
+        out.println("events:  " + run.eventSource());
         long released = run.jobs().size();
         out.printf(Locale.ROOT, "missed or late: %d of %d jobs%s%n", attributions.size(), released, byOutcome(attributions));
         Map<String, Double> split = new LinkedHashMap<>();

@@ -40,6 +40,17 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
      * one run folder somewhere below it (such as the runner's {@code runs/<run_key>/}).
      */
     public static RunEvidence load(Path dir) throws IOException, BadUsageException {
+        return load(dir, null);
+    }
+
+    /**
+     * {@link #load(Path)} with the runtime's events read from {@code eventsFile} (a JFR recording
+     * when its name ends in {@code .jfr}, else a GC log) instead of looked for by name; null looks.
+     */
+    public static RunEvidence load(Path dir, Path eventsFile) throws IOException, BadUsageException {
+        if (eventsFile != null && !Files.isRegularFile(eventsFile)) {
+            throw BadUsageException.ofOption("--events", eventsFile + ": no such file");
+        }
         if (!Files.isDirectory(dir)) {
             throw new BadUsageException(dir + ": not a folder");
         }
@@ -56,10 +67,13 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
         RunClock clock = RunClock.fromSummary(summary);
         List<VmEvent> events = List.of();
         String source;
-        Path jfr = findUp(runDir, JfrFlags.RECORDING);
-        Path gcLog = findUp(runDir, JfrFlags.GC_LOG);
+        boolean given = eventsFile != null;
+        boolean givenJfr = given && eventsFile.getFileName().toString().endsWith(".jfr");
+        Path jfr = given ? (givenJfr ? eventsFile : null) : findUp(runDir, JfrFlags.RECORDING);
+        Path gcLog = given ? (givenJfr ? null : eventsFile) : findUp(runDir, JfrFlags.GC_LOG);
         if (jfr == null && gcLog == null) {
-            source = "none (no " + JfrFlags.RECORDING + " or " + JfrFlags.GC_LOG + "): only os, queued, preemption and compute can be told";
+            source = "none (no " + JfrFlags.RECORDING + " or " + JfrFlags.GC_LOG + " in the run folder or its parents; "
+                    + "--events names another): only os, queued, preemption and compute can be told";
         } else if (clock == null) {
             source = "not used: summary.json has no \"clock\", so the runtime's events cannot be placed on the jobs' timeline";
         } else if (jfr != null) {
@@ -73,6 +87,9 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
         } else {
             events = GcLogParser.parse(gcLog, clock);
             source = "GC log " + gcLog;
+        }
+        if ((jfr != null || gcLog != null) && clock != null) {
+            source += " (" + events.size() + " events)";
         }
         return new RunEvidence(runDir, summary, clock, List.copyOf(jobs), List.copyOf(events), source);
     }

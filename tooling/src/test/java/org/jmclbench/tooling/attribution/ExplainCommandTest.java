@@ -110,4 +110,24 @@ class ExplainCommandTest {
         assertTrue(r[2].startsWith("jmclbench: " + tmp + ": no run folder"), r[2]);
         assertEquals(1, r[2].strip().lines().count());
     }
+
+    /** A recording by another name (a run started by hand with its own -XX:StartFlightRecording) is named by --events. */
+    @Test
+    void eventsNamesARecordingThatIsNotFoundByName(@TempDir Path tmp) throws Exception {
+        Path key = runnerStyleRun(tmp, true);
+        Path mine = tmp.resolve("mine.jfr");
+        Files.move(key.resolve("recording.jfr"), mine);
+        String[] none = run("explain", key.toString());
+        assertEquals("0", none[0], none[2]);
+        assertTrue(none[1].contains("events:  none (no recording.jfr or gc.log in the run folder or its parents; "
+                + "--events names another): only os, queued, preemption and compute can be told\n"), none[1]);
+        String[] given = run("explain", "--events", mine.toString(), key.toString());
+        assertEquals("0", given[0], given[2]);
+        assertTrue(given[1].matches("(?s).*events:  JFR " + java.util.regex.Pattern.quote(mine.toString())
+                + " \\([1-9]\\d* events\\)\n.*"), given[1]);
+        assertTrue(given[1].matches("(?s).*causes:  .*gc \\d+ \\[\\d+\\].*"), given[1]);
+        String[] missing = run("explain", "--events", tmp.resolve("nosuch.jfr").toString(), key.toString());
+        assertEquals("2", missing[0], missing[1] + missing[2]);
+        assertEquals("jmclbench: --events: " + tmp.resolve("nosuch.jfr") + ": no such file", missing[2].strip());
+    }
 }

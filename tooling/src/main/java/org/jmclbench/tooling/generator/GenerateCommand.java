@@ -57,6 +57,12 @@ public final class GenerateCommand implements Callable<Integer> {
         int odometryCount = odometryCount(duration == null ? s.defaultDuration() : duration);
         SensorNoise noise = noNoise ? SensorNoise.NONE : SensorNoise.DEFAULT;
         SimulatedRun run = new Simulator(Playground.thesis(), noise).run(s, seed, odometryCount);
+        if (run.laser().length == 0) {
+            // The workload refuses an empty laser.txt: such a dataset would be written but never run.
+            throw BadUsageException.ofOption("--duration", String.format(java.util.Locale.ROOT,
+                    "%.2f s of %s with seed %d has no laser event (the workload needs one); take a longer duration",
+                    run.duration(), s.name(), seed));
+        }
         try {
             DatasetWriter.write(run, out, force);
         } catch (IOException e) {

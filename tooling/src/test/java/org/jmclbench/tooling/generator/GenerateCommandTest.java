@@ -66,6 +66,14 @@ class GenerateCommandTest {
     }
 
     @Test
+    void aDurationTooShortForALaserEventIsRefusedNotWritten() {
+        // 0.05 s: one odometry reading and no beam crossing; the workload rejects an empty laser.txt.
+        Path out = tmp.resolve("short");
+        assertBadUsage(generate("--scenario", "match", "--duration", "0.05", "--out", out.toString()), "--duration");
+        assertFalse(Files.exists(out), "no dataset the workload cannot read");
+    }
+
+    @Test
     void helpExitsZero() {
         CliResult r = generate("--help");
         assertEquals(0, r.exitCode());

@@ -39,7 +39,8 @@ public final class StoreMerger {
      */
     public static Outcome merge(RunRecorder target, Path source) throws SQLException, IOException {
         Path src = source.toAbsolutePath().normalize();
-        if (src.equals(target.dbFile())) {
+        // the same file by another name (a link) too: attaching it would wait on the target's own write lock
+        if (src.equals(target.dbFile()) || Files.isSameFile(src, target.dbFile())) {
             return new Outcome(0, 0);
         }
         ResultsDatabase.openToRead(source, null).close();

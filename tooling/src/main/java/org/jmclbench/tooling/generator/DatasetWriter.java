@@ -132,7 +132,8 @@ public final class DatasetWriter {
         m.put("laser.noise", Double.toString(n.laserSigma()));
         m.put("laser.missProbability", Double.toString(n.missProbability()));
         m.put("simulation.step", Double.toString(1.0 / (Simulator.ODOMETRY_RATE * Simulator.STEPS_PER_ODOMETRY)));
-        if (s.kidnap() != null) {
+        // only a kidnapping the data contain: one at or after the end never happened in them
+        if (s.kidnap() != null && s.kidnap().time() < run.duration()) {
             m.put("kidnap.time", Double.toString(s.kidnap().time()));
             m.put("kidnap.x", Double.toString(s.kidnap().pose().x()));
             m.put("kidnap.y", Double.toString(s.kidnap().pose().y()));

@@ -74,6 +74,18 @@ class GenerateCommandTest {
     }
 
     @Test
+    void aKidnapPastTheEndOfTheDataIsNotInTheMetadata() throws Exception {
+        // the data end at 20 s, before the kidnapping at 30 s: there is none to describe
+        Path shortRun = tmp.resolve("short");
+        assertEquals(0, generate("--scenario", "kidnap", "--duration", "20", "--out", shortRun.toString()).exitCode());
+        String props = Files.readString(shortRun.resolve("dataset.properties"));
+        assertFalse(props.contains("kidnap."), props);
+        Path longRun = tmp.resolve("long");
+        assertEquals(0, generate("--scenario", "kidnap", "--duration", "31", "--out", longRun.toString()).exitCode());
+        assertTrue(Files.readString(longRun.resolve("dataset.properties")).contains("\nkidnap.time=30.0\n"));
+    }
+
+    @Test
     void helpExitsZero() {
         CliResult r = generate("--help");
         assertEquals(0, r.exitCode());

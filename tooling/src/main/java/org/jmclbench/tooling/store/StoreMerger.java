@@ -56,6 +56,9 @@ public final class StoreMerger {
                 ps.execute();
             }
             conn.setAutoCommit(false);
+            List<String> staged = new ArrayList<>();
+            List<String> take = new ArrayList<>();
+            boolean committed = false;
             try {
                 java.util.Map<String, String> columns = new java.util.HashMap<>();
                 for (String t : Schema.RUN_TABLES) {
@@ -67,7 +70,6 @@ public final class StoreMerger {
                 }
                 s.executeUpdate("INSERT OR IGNORE INTO machines SELECT * FROM src.machines");
                 s.executeUpdate("INSERT OR IGNORE INTO matrices SELECT * FROM src.matrices");
-                List<String> take = new ArrayList<>();
                 int total = 0;
                 try (ResultSet rs = s.executeQuery("SELECT r.run_key FROM src.runs r LEFT JOIN main.runs m ON m.run_key = r.run_key"
                         + " WHERE m.run_key IS NULL OR (m.status <> 'ok' AND r.status = 'ok')")) {
@@ -95,15 +97,31 @@ public final class StoreMerger {
                             ins.executeUpdate();
                         }
                     }
-                    copyTree(srcBase.resolve("runs").resolve(key), target.runFolder(key));
+                    // copied beside the target's folder and swapped in only once the rows are committed, so that a
+                    // merge that fails leaves the target's folders as they were
+                    Path stage = staging(target.runFolder(key));
+                    copyTree(srcBase.resolve("runs").resolve(key), stage);
+                    if (Files.isDirectory(stage)) {
+                        staged.add(key);
+                    }
                 }
                 for (String fill : Schema.FILL_ENGINES) {
                     s.executeUpdate(fill);
                 }
                 conn.commit();
+                committed = true;
+                for (String key : staged) {
+                    deleteTree(target.runFolder(key));
+                    Files.move(staging(target.runFolder(key)), target.runFolder(key));
+                }
                 return new Outcome(take.size(), total - take.size());
             } catch (SQLException | IOException e) {
-                ResultsDatabase.rollBack(conn, e);
+                if (!committed) { // once committed, a staged folder not yet swapped in is the only copy beside its row
+                    ResultsDatabase.rollBack(conn, e);
+                    for (String key : take) {
+                        deleteTree(staging(target.runFolder(key)));
+                    }
+                }
                 throw e;
             } finally {
                 conn.setAutoCommit(true);
@@ -113,6 +131,11 @@ public final class StoreMerger {
                 conn.setAutoCommit(false);
             }
         }
+    }
+
+    /** Where a run folder is copied before it replaces {@code folder}. */
+    private static Path staging(Path folder) {
+        return folder.resolveSibling("." + folder.getFileName() + ".merging");
     }
 
     /** The columns of {@code schema.table}, in order (none when the table does not exist). */

@@ -108,6 +108,44 @@ class StoreTest {
     }
 
     @Test
+    void aMergeThatFailsLeavesTheTargetsRunFoldersAsTheyWere() throws Exception {
+        Fixtures.home(dir);
+        Fixtures.FakeJvms jvms = Fixtures.FakeJvms.in(dir);
+        Path src = dir.resolve("S/results.db");
+        matrix(src, "100,200", jvms.java17());
+        List<String> keys = new ArrayList<>();
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + src); Statement s = c.createStatement();
+                ResultSet rs = s.executeQuery("SELECT run_key FROM runs ORDER BY rowid")) {
+            while (rs.next()) {
+                keys.add(rs.getString(1));
+            }
+        }
+        // the target: the first run failed there (its folder holds its own log), the second not there at all
+        Path into = dir.resolve("T/results.db");
+        Files.createDirectories(into.getParent());
+        Files.copy(src, into);
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + into); Statement s = c.createStatement()) {
+            s.executeUpdate("UPDATE runs SET status = 'failed' WHERE run_key = '" + keys.get(0) + "'");
+            s.executeUpdate("DELETE FROM runs WHERE run_key = '" + keys.get(1) + "'");
+        }
+        Path failedFolder = into.getParent().resolve("runs").resolve(keys.get(0));
+        Files.createDirectories(failedFolder);
+        Files.writeString(failedFolder.resolve("stderr.txt"), "the target's failed run");
+        // the source's second folder cannot be copied (a link to nothing): the merge fails after the first run
+        Files.createSymbolicLink(src.getParent().resolve("runs").resolve(keys.get(1)).resolve("broken"), dir.resolve("nothing"));
+        Fixtures.CliResult r = Fixtures.cli("merge", src.toString(), "--into", into.toString());
+        assertTrue(r.exitCode() != 0, r.out());
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + into); Statement s = c.createStatement();
+                ResultSet rs = s.executeQuery("SELECT status FROM runs WHERE run_key = '" + keys.get(0) + "'")) {
+            assertTrue(rs.next());
+            assertEquals("failed", rs.getString(1), "the rows are rolled back");
+        }
+        assertEquals(List.of("stderr.txt"), Files.list(failedFolder).map(p -> p.getFileName().toString()).toList(),
+                "the failed run's folder is still its own");
+        assertTrue(!Files.exists(into.getParent().resolve("runs").resolve(keys.get(1))), "no folder without its row");
+    }
+
+    @Test
     void latencySeriesKeepsPeaksWhenDownSampled() throws Exception {
         List<RunFolderIngest.Job> jobs = new ArrayList<>();
         for (int i = 0; i < 5000; i++) {

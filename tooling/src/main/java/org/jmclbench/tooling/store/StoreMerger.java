@@ -100,7 +100,14 @@ public final class StoreMerger {
                     // copied beside the target's folder and swapped in only once the rows are committed, so that a
                     // merge that fails leaves the target's folders as they were
                     Path stage = staging(target.runFolder(key));
-                    copyTree(srcBase.resolve("runs").resolve(key), stage);
+                    Path from = srcBase.resolve("runs").resolve(key);
+                    try {
+                        copyTree(from, stage);
+                    } catch (IOException e) {
+                        // a file system exception's message is often only a path: say what failed, and why
+                        throw new IOException("cannot copy the run folder " + from + ": " + e.getClass().getSimpleName() + " "
+                                + e.getMessage(), e);
+                    }
                     if (Files.isDirectory(stage)) {
                         staged.add(key);
                     }

@@ -135,6 +135,7 @@ class StoreTest {
         Files.createSymbolicLink(src.getParent().resolve("runs").resolve(keys.get(1)).resolve("broken"), dir.resolve("nothing"));
         Fixtures.CliResult r = Fixtures.cli("merge", src.toString(), "--into", into.toString());
         assertTrue(r.exitCode() != 0, r.out());
+        assertTrue(r.err().contains("cannot copy the run folder") && r.err().contains("NoSuchFileException"), r.err());
         try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + into); Statement s = c.createStatement();
                 ResultSet rs = s.executeQuery("SELECT status FROM runs WHERE run_key = '" + keys.get(0) + "'")) {
             assertTrue(rs.next());

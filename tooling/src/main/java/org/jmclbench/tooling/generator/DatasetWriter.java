@@ -45,7 +45,7 @@ public final class DatasetWriter {
         }
         checkTarget(target, out, force);
         Files.createDirectories(parent);
-        Path partial = Files.createTempDirectory(parent, "." + target.getFileName() + ".partial-");
+        Path partial = newFolder(parent, "." + target.getFileName() + ".partial-");
         try {
             writeFiles(run, partial);
             if (Files.exists(target)) {
@@ -60,6 +60,21 @@ public final class DatasetWriter {
         } finally {
             if (Files.exists(partial)) {
                 deleteTree(partial);
+            }
+        }
+    }
+
+    /**
+     * A new uniquely named folder with the permissions any new folder gets (the umask's), not the owner-only
+     * ones of a temporary directory: the dataset is read by whoever runs the workload.
+     */
+    private static Path newFolder(Path parent, String prefix) throws IOException {
+        java.util.Random random = new java.security.SecureRandom();
+        while (true) {
+            try {
+                return Files.createDirectory(parent.resolve(prefix + Long.toUnsignedString(random.nextLong(), 36)));
+            } catch (java.nio.file.FileAlreadyExistsException e) {
+                // that name is taken: draw another
             }
         }
     }

@@ -86,6 +86,15 @@ class GenerateCommandTest {
     }
 
     @Test
+    void theDatasetFolderGetsTheUsualPermissions() throws Exception {
+        // others run the workload on it: not the owner-only folder a temporary directory is
+        Path usual = Files.createDirectory(tmp.resolve("usual"));
+        Path dir = tmp.resolve("dataset");
+        assertEquals(0, generate("--scenario", "stay", "--duration", "1", "--out", dir.toString()).exitCode());
+        assertEquals(Files.getPosixFilePermissions(usual), Files.getPosixFilePermissions(dir));
+    }
+
+    @Test
     void helpExitsZero() {
         CliResult r = generate("--help");
         assertEquals(0, r.exitCode());

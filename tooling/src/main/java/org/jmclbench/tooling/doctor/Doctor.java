@@ -179,7 +179,8 @@ public record Doctor(Path root, boolean runCommands) {
     DoctorCheck virtualisation() {
         String virt = null;
         if (runCommands) {
-            ProcessRunner.Result r = ProcessRunner.run(List.of("systemd-detect-virt"), 10_000);
+            // --vm: a container shares the host's scheduler; without it, docker on kvm answers "docker"
+            ProcessRunner.Result r = ProcessRunner.run(List.of("systemd-detect-virt", "--vm"), 10_000);
             if (!r.timedOut() && r.exitCode() != 127 && !r.stdout().isBlank()) {
                 virt = r.stdout().strip();
             }

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.runtime.ProcessRunner;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -61,6 +62,16 @@ class DoctorTest {
                 "every warning says what to do");
         String json = Doctor.toJson(checks);
         assertTrue(json.startsWith("[{\"check\":\"preempt-rt\",\"status\":\"WARN\""), json);
+    }
+
+    @Test
+    void inAContainerTheVirtualisationIsTheMachinesNotTheContainers() {
+        // in docker on kvm, systemd-detect-virt alone answers "docker": a container, which adds no scheduling layer
+        ProcessRunner.Result container = ProcessRunner.run(List.of("systemd-detect-virt", "--container"), 10_000);
+        org.junit.jupiter.api.Assumptions.assumeTrue(container.exitCode() == 0 && !container.stdout().isBlank(),
+                "runs only in a container that systemd-detect-virt recognises");
+        DoctorCheck virt = Doctor.system().virtualisation();
+        assertTrue(!virt.value().equals(container.stdout().strip()), virt.value());
     }
 
     /** Asserts that each of the machine's checks (all but memory) has {@code status}. */

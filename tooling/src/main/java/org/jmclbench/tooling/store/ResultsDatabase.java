@@ -229,6 +229,20 @@ public final class ResultsDatabase implements AutoCloseable {
             if (!tables.contains("runs")) {
                 throw new BadUsageException(where + refusal + " (no runs table)");
             }
+            for (String[] t : Schema.REQUIRED) {
+                Set<String> have = new HashSet<>();
+                try (ResultSet rs = s.executeQuery("PRAGMA table_info(" + t[0] + ")")) {
+                    while (rs.next()) {
+                        have.add(rs.getString("name"));
+                    }
+                }
+                for (int i = 1; i < t.length; i++) {
+                    if (!have.contains(t[i])) {
+                        throw new BadUsageException(where + refusal + (have.isEmpty() ? " (no " + t[0] + " table)"
+                                : " (table " + t[0] + " has no column " + t[i] + ")"));
+                    }
+                }
+            }
             if (version > Schema.VERSION) {
                 throw new BadUsageException(where + refusal + " (schema version " + version + " is newer than this tool's, "
                         + Schema.VERSION + ": a newer jmclbench wrote it)");

@@ -64,6 +64,16 @@ final class Schema {
         org.jmclbench.tooling.attribution.AttributionStore.SCHEMA,
     };
 
+    /**
+     * Tables and columns every version has (the first word is the table): a file that lacks them is not a
+     * store, though it has a runs table, and a merge or report would fail on it part way.
+     */
+    static final String[][] REQUIRED = {
+        {"machines", "machine_id", "hostname", "kernel", "cpu_model", "processors", "doctor_json"},
+        {"matrices", "matrix_id", "machine_id", "command", "order_seed", "started_at", "spec_json"},
+        {"runs", "run_key", "status"},
+    };
+
     /** Tables keyed by run, in the order a run's rows are copied or deleted. */
     static final String[] RUN_TABLES = {"runs", "metrics", "histograms", "series", "attributions", "memory_areas"};
 

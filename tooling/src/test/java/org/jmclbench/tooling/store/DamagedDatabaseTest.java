@@ -105,6 +105,23 @@ class DamagedDatabaseTest {
     }
 
     @Test
+    void aFileWithARunsTableButNotAStoresTablesIsRefused() throws Exception {
+        // a runs table and a known version, but not the tables and columns a merge copies
+        Path db = dir.resolve("other/results.db");
+        Files.createDirectories(db.getParent());
+        try (java.sql.Connection c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + db);
+                java.sql.Statement s = c.createStatement()) {
+            s.execute("CREATE TABLE runs (x)");
+            s.execute("INSERT INTO runs VALUES (1)");
+            s.execute("PRAGMA user_version = 3");
+        }
+        Path into = dir.resolve("merged/results.db");
+        assertRefused(db, "merge", db.toString(), "--into", into.toString());
+        assertFalse(Files.exists(into), "no empty store left as if merged");
+        assertRefused(db, "report", "--db", db.toString(), "--out", dir.resolve("other/report").toString());
+    }
+
+    @Test
     void theUndamagedStoreStillReads() {
         // the control: the same commands on the good store succeed, so the refusals above are the damage's
         Fixtures.CliResult r = Fixtures.cli("report", "--db", good.toString(), "--out", dir.resolve("r").toString(), "--no-export");

@@ -36,9 +36,12 @@ public final class ForkedRun {
     private static final ObjectMapper JSON = new ObjectMapper();
     /** The child in progress, killed by the shutdown hook if the runner is interrupted (Ctrl-C). */
     static final AtomicReference<Process> CURRENT = new AtomicReference<>();
+    /** Set by the shutdown hook before it kills the child: a run ended then was ended by the runner, not the runtime. */
+    private static volatile boolean stopping;
 
     static {
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            stopping = true;
             Process p = CURRENT.get();
             if (p != null) {
                 ProcessTree.kill(p);
@@ -95,6 +98,12 @@ public final class ForkedRun {
                     "timed out after %.0f s: process tree killed", timeoutS), tail, wall, null, null, null);
         }
         int code = p.exitValue();
+        String interruption = interruption(code);
+        if (interruption != null) {
+            // neither the runtime's failure nor a result: no row, so that a rerun runs it again
+            throw new IOException("the run in progress was interrupted (" + interruption + "); it is not recorded: "
+                    + "rerun the same command to resume");
+        }
         if (code == UNSUPPORTED_EXIT) {
             // "jmclbench: unsupported: --particles 65536: the HVM holds at most ..." -> what follows "unsupported: "
             String why = lastLine(tail).replaceFirst("^jmclbench: unsupported: ", "");
@@ -183,6 +192,23 @@ public final class ForkedRun {
         return found.get(0);
     }
 
+    /**
+     * Why a run that ended with {@code code} was interrupted rather than failed, or null: the runner
+     * is stopping (its hook killed the child), or the child got a signal only a user or the system
+     * sends (Ctrl-C reaches the whole process group), never one a runtime's own crash raises.
+     */
+    static String interruption(int code) {
+        if (stopping) {
+            return "the runner was stopped";
+        }
+        return switch (code) {
+            case 128 + 1 -> "SIGHUP";
+            case 128 + 2 -> "SIGINT";
+            case 128 + 15 -> "SIGTERM";
+            default -> null;
+        };
+    }
+
     static String describeExit(int code, String tail) {
         String why = "exit code " + code;
         if (tail.contains("OutOfMemoryError")) {
@@ -194,7 +220,6 @@ public final class ForkedRun {
                 case 6 -> "SIGABRT (JVM crash?)";
                 case 9 -> "SIGKILL (out of memory killer?)";
                 case 11 -> "SIGSEGV (crash)";
-                case 15 -> "SIGTERM";
                 default -> "signal " + sig;
             };
             return why + ": killed by " + name;

@@ -103,6 +103,70 @@ class KillTrialsTest {
         }
     }
 
+    /**
+     * A runner stopped with SIGTERM (or Ctrl-C) kills its run in progress from its shutdown hook; that
+     * run ended by the runner's hand and must not be recorded as the runtime's failure (which a rerun
+     * would keep as final), but be run again by the rerun.
+     */
+    @Test
+    void aRunnerStoppedMidRunRecordsNoFailureForTheRunItStopped() throws Exception {
+        Fixtures.home(dir);
+        Path db = dir.resolve("out/results.db");
+        List<String> cmd = Fixtures.childCli(dir, "matrix", "--java", Fixtures.fakeJava(dir, "g", "gate", 0, null, 21).toString(),
+                "--particles", "100", "--datasets", "tiny", "--timeout", "600", "--db", db.toString());
+        Process runner = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("first.log").toFile()).start();
+        awaitStarted(runner);
+        runner.destroy(); // SIGTERM to the runner only
+        assertTrue(runner.waitFor(60, TimeUnit.SECONDS));
+        assertEquals(Map.of(), rows(db), "the stopped run is not recorded: " + Files.readString(dir.resolve("first.log")));
+        resumesWithTheRunOk(cmd);
+    }
+
+    /**
+     * The run's process ended by SIGTERM or SIGINT from outside (Ctrl-C reaches the whole process
+     * group, the run before the runner): an interruption, not the runtime's failure: nothing is
+     * recorded, the matrix stops with one line, and the rerun runs it.
+     */
+    @Test
+    void aRunInterruptedFromOutsideIsNotRecordedAsTheRuntimesFailure() throws Exception {
+        Fixtures.home(dir);
+        Path db = dir.resolve("out/results.db");
+        List<String> cmd = Fixtures.childCli(dir, "matrix", "--java", Fixtures.fakeJava(dir, "g", "gate", 0, null, 21).toString(),
+                "--particles", "100", "--datasets", "tiny", "--timeout", "600", "--db", db.toString());
+        Path log = dir.resolve("first.log");
+        Process runner = new ProcessBuilder(cmd).redirectOutput(dir.resolve("first.out").toFile()).redirectError(log.toFile()).start();
+        awaitStarted(runner);
+        List<ProcessHandle> run = runner.descendants().toList();
+        run.forEach(ProcessHandle::destroy); // SIGTERM to the run only
+        assertTrue(runner.waitFor(60, TimeUnit.SECONDS));
+        String err = Files.readString(log).strip();
+        assertEquals(1, runner.exitValue(), err);
+        assertEquals(1, err.lines().count(), err);
+        assertTrue(err.contains("interrupted (SIGTERM)") && err.contains("not recorded"), err);
+        assertEquals(Map.of(), rows(db));
+        resumesWithTheRunOk(cmd);
+    }
+
+    /** Waits (generously: the machine is shared) until the gated fake runtime's run has started. */
+    private void awaitStarted(Process runner) throws Exception {
+        Path started = dir.resolve("g/started");
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(240);
+        while (!Files.exists(started) && runner.isAlive() && System.nanoTime() < deadline) {
+            Thread.sleep(100);
+        }
+        assertTrue(Files.exists(started), "the matrix never reached its run");
+    }
+
+    private void resumesWithTheRunOk(List<String> cmd) throws Exception {
+        Files.createFile(dir.resolve("g/open"));
+        Path log = dir.resolve("second.log");
+        Process second = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        assertTrue(second.waitFor(300, TimeUnit.SECONDS));
+        String out = Files.readString(log);
+        assertEquals(0, second.exitValue(), out);
+        assertTrue(out.contains("0 already in") && out.contains("1 ran (1 ok"), out);
+    }
+
     /** run_key -> started_at of every committed run. */
     private static Map<String, String> rows(Path db) {
         Map<String, String> m = new HashMap<>();

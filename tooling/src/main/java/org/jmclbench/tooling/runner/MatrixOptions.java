@@ -93,7 +93,7 @@ final class MatrixOptions {
             case "timeout" -> spec.timeoutS = positiveDouble(value.strip(), at);
             case "time-scale" -> spec.timeScale = timeScale(value.strip(), at);
             case "load-alloc" -> {
-                String[] f = value.strip().split(",");
+                String[] f = value.strip().split(",", -1);
                 if (f.length != 2) {
                     throw new BadUsageException(at + ": '" + value.strip() + "' must be MBPS,LIVEMB (e.g. 100,16)");
                 }
@@ -142,7 +142,7 @@ final class MatrixOptions {
 
     private static List<String> items(String value, String at) {
         List<String> out = new java.util.ArrayList<>();
-        for (String s : value.split(",")) {
+        for (String s : value.split(",", -1)) { // -1: a trailing empty item is one too
             String t = s.strip();
             if (t.isEmpty()) {
                 throw new BadUsageException(at + ": empty item in '" + value + "'");

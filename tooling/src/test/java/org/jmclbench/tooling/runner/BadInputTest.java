@@ -61,6 +61,9 @@ class BadInputTest extends FakeJvmHome {
         Files.writeString(m, "# a matrix\nprofiles = g1\nparticles = 100, many\n");
         assertRejected(m + ":3: particles: 'many' is not a positive integer", "matrix", "--matrix", m.toString(),
                 "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
+        Files.writeString(m, "profiles = g1\npolicies = skip,\n");
+        assertRejected(m + ":2: policies: empty item in 'skip,'", "matrix", "--matrix", m.toString(),
+                "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
         Files.writeString(m, "profiles = g1\n\ncolour = blue\n");
         assertRejected(m + ":3: unknown key 'colour'", "matrix", "--matrix", m.toString(), "--java", fake.toString(),
                 "--datasets", "tiny", "--db", db.toString());
@@ -77,6 +80,13 @@ class BadInputTest extends FakeJvmHome {
     void badOptionValues() {
         assertRejected("--particles: '0' is not a positive integer", "matrix", "--java", fake.toString(),
                 "--particles", "100,0", "--datasets", "tiny", "--db", db.toString());
+        // a trailing empty item is as empty as one between commas (',' alone ran the default 400)
+        assertRejected("--particles: empty item in '100,'", "matrix", "--java", fake.toString(),
+                "--particles", "100,", "--datasets", "tiny", "--db", db.toString());
+        assertRejected("--particles: empty item in ','", "matrix", "--java", fake.toString(),
+                "--particles", ",", "--datasets", "tiny", "--db", db.toString());
+        assertRejected("--load-alloc: '100,16,' must be MBPS,LIVEMB", "matrix", "--java", fake.toString(),
+                "--load-alloc", "100,16,", "--datasets", "tiny", "--db", db.toString());
         assertRejected("--policies: unknown policy 'drop'", "matrix", "--java", fake.toString(),
                 "--policies", "skip,drop", "--datasets", "tiny", "--db", db.toString());
         assertRejected("--shard: '3/2' is not a shard", "matrix", "--java", fake.toString(),

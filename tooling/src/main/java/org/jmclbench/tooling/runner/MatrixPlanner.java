@@ -92,6 +92,10 @@ public final class MatrixPlanner {
                 : org.jmclbench.tooling.load.LoadSettings.defaults();
         List<String> workloadArgs = new ArrayList<>();
         for (Sourced<String> a : spec.workloadArgs) {
+            if (a.value().isBlank()) {
+                // it would pass an empty argument, which the workload refuses, under the run key of no argument
+                throw new BadUsageException(a.where() + ": empty value");
+            }
             for (String w : a.value().strip().split("\\s+")) {
                 if (RESERVED_ARGS.contains(w) || RESERVED_ARGS.contains(w.split("=", 2)[0])) {
                     throw new BadUsageException(a.where() + ": '" + w + "' is set by the runner (use the matrix option)");

@@ -93,6 +93,8 @@ class BadInputTest extends FakeJvmHome {
                 "--shard", "3/2", "--datasets", "tiny", "--db", db.toString());
         assertRejected("--datasets: dataset 'nosuch': no such folder", "matrix", "--java", fake.toString(),
                 "--datasets", "nosuch", "--db", db.toString());
+        assertRejected("--workload-arg: empty value", "matrix", "--java", fake.toString(),
+                "--datasets", "tiny", "--workload-arg", " ", "--db", db.toString());
         assertRejected("--workload-arg: '--seed' is set by the runner", "matrix", "--java", fake.toString(),
                 "--datasets", "tiny", "--workload-arg", "--seed 3", "--db", db.toString());
         // the workload's range, refused before the matrix rather than by each of its runs

@@ -87,6 +87,10 @@ public final class CapacityCommand implements Callable<Integer> {
         if (from < 1 || max < from) {
             throw new org.jmclbench.tooling.cli.BadUsageException("--from/--max: need 1 <= from <= max, got " + from + " and " + max);
         }
+        if (dataset != null && dataset.contains(",")) {
+            // a configuration's probe would hold the runs of every dataset at once, counted as its repetitions
+            throw new org.jmclbench.tooling.cli.BadUsageException("--datasets: a search takes one dataset, got '" + dataset + "'");
+        }
         String command = "jmclbench capacity " + String.join(" ", commandSpec.commandLine().getParseResult().originalArgs());
         print(System.out, search(this::spec, from, max, command, System.out));
         return 0;

@@ -1,8 +1,10 @@
 package org.jmclbench.tooling.runner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -94,6 +96,28 @@ class CapacityCommandTest {
         Fixtures.CliResult r = Fixtures.cli("capacity", "--from", "500", "--max", "100");
         assertEquals(2, r.exitCode());
         assertEquals("jmclbench: --from/--max: need 1 <= from <= max, got 500 and 100", r.err().strip());
+    }
+
+    @Test
+    void aListOfDatasetsIsOneLineAndExitTwo() throws Exception {
+        Fixtures.home(dir);
+        Files.createDirectories(dir.resolve("data"));
+        copyTree(dir.resolve("data/tiny"), dir.resolve("data/tiny2"));
+        Path db = dir.resolve("results/results.db");
+        Fixtures.CliResult r = Fixtures.cli("capacity", "--java", Fixtures.fakeJava(dir, "a", "ok", 0, null, 17).toString(),
+                "--datasets", "tiny,tiny2", "--repeat", "1", "--from", "100", "--max", "100", "--db", db.toString());
+        assertEquals(2, r.exitCode(), r.out() + r.err());
+        assertEquals("jmclbench: --datasets: a search takes one dataset, got 'tiny,tiny2'", r.err().strip());
+        assertFalse(Files.exists(db), "nothing recorded");
+    }
+
+    private static void copyTree(Path from, Path to) throws Exception {
+        Files.createDirectories(to);
+        try (var files = Files.list(from)) {
+            for (Path f : files.toList()) {
+                Files.copy(f, to.resolve(f.getFileName()));
+            }
+        }
     }
 
     private static Pattern row(String runtime) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A fake runtime for the runner's tests: answers like a JVM to probes and, as the workload, does
 # what MODE says (ok, crash, hang, garbage, badjson, oom, badexit, wrongrun: a valid folder for
-# another particle count; unsupported: a count past the runtime's limits, exit 3; limit-at-N: ok
+# another particle count; unsupported: a count past the runtime's limits, exit 3; exitoom: a JVM's
+# exit 3 under -XX:+ExitOnOutOfMemoryError; limit-at-N: ok
 # up to N particles, unsupported above; gate: an ok run that first creates ../started beside its
 # bin/ and waits for ../open, so that a test can act while a matrix is surely mid-run). Tests copy
 # it with the placeholders replaced. Never a real measurement.
@@ -72,6 +73,8 @@ case $MODE in
         echo "jmclbench: something broke" >&2; exit 1 ;;
     unsupported)
         echo "jmclbench: unsupported: --particles $p: the fake VM holds at most 50 particles" >&2; exit 3 ;;
+    exitoom)
+        echo "Terminating due to java.lang.OutOfMemoryError: Java heap space" >&2; exit 3 ;;
     limit-at-*)
         if [ "$p" -gt "${MODE#limit-at-}" ]; then
             echo "jmclbench: unsupported: --particles $p: the fake VM holds at most ${MODE#limit-at-} particles" >&2; exit 3

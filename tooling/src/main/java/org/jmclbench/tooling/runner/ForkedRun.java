@@ -104,10 +104,9 @@ public final class ForkedRun {
             throw new IOException("the run in progress was interrupted (" + interruption + "); it is not recorded: "
                     + "rerun the same command to resume");
         }
-        if (code == UNSUPPORTED_EXIT) {
-            // "jmclbench: unsupported: --particles 65536: the HVM holds at most ..." -> what follows "unsupported: "
-            String why = lastLine(tail).replaceFirst("^jmclbench: unsupported: ", "");
-            return new ForkOutcome(RunRow.UNSUPPORTED, code, why, tail, wall, null, null, null);
+        String unsupported = code == UNSUPPORTED_EXIT ? unsupportedReason(tail) : null;
+        if (unsupported != null) {
+            return new ForkOutcome(RunRow.UNSUPPORTED, code, unsupported, tail, wall, null, null, null);
         }
         if (code != 0) {
             return new ForkOutcome(RunRow.FAILED, code, describeExit(code, tail), tail, wall, null, null, null);
@@ -207,6 +206,17 @@ public final class ForkedRun {
             case 128 + 15 -> "SIGTERM";
             default -> null;
         };
+    }
+
+    /**
+     * What follows "unsupported: " in the workload's last "jmclbench: unsupported: ..." line
+     * ("--particles 65536: the HVM holds at most ..."), or null: exit 3 without that line is the
+     * runtime's own (a JVM under -XX:+ExitOnOutOfMemoryError exits 3), a failure, not a limit.
+     */
+    static String unsupportedReason(String tail) {
+        String prefix = "jmclbench: unsupported: ";
+        List<String> said = tail.lines().map(String::strip).filter(l -> l.startsWith(prefix)).toList();
+        return said.isEmpty() ? null : lastLine(said.get(said.size() - 1)).substring(prefix.length());
     }
 
     static String describeExit(int code, String tail) {

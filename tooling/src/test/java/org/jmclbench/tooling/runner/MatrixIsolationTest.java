@@ -120,4 +120,24 @@ class MatrixIsolationTest {
         assertTrue(again.out().contains("9 already in"), again.out());
         assertTrue(again.out().contains("0 ran"), again.out());
     }
+
+    /**
+     * Exit code 3 is the workload's "unsupported" only with its "jmclbench: unsupported:" line: a JVM
+     * that exits 3 by itself (-XX:+ExitOnOutOfMemoryError) failed, and must not be recorded as a
+     * limit of the runtime, which no --retry-failed reruns and a capacity search takes for its limit.
+     */
+    @Test
+    void anExitThreeWithoutTheWorkloadsLineIsAFailureNotUnsupported() throws Exception {
+        Fixtures.home(dir);
+        Path db = dir.resolve("r/results.db");
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", Fixtures.fakeJava(dir, "oom", "exitoom", 0, null, 21).toString(),
+                "--datasets", "tiny", "--particles", "100", "--db", db.toString());
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
+             ResultSet rs = s.executeQuery("SELECT status, failure FROM runs")) {
+            assertTrue(rs.next());
+            assertEquals("failed", rs.getString(1), rs.getString(2));
+            assertEquals("exit code 3: out of memory (OutOfMemoryError)", rs.getString(2));
+        }
+    }
 }

@@ -38,6 +38,7 @@ public final class MatrixFile {
             throw new BadUsageException("--matrix: " + file + ": cannot read (" + e.getClass().getSimpleName() + ")");
         }
         int n = 0;
+        java.util.Map<String, Integer> oneValue = new java.util.HashMap<>(); // key -> its line
         for (String raw : lines) {
             n++;
             String where = file + ":" + n;
@@ -47,6 +48,12 @@ public final class MatrixFile {
             }
             Setting s = Setting.parse(line, where, "'key = value'");
             MatrixOptions.apply(spec, s.key(), s.value(), where);
+            // a second value would silently replace the first, where the command line refuses it
+            boolean list = MatrixOptions.SETTINGS.stream().anyMatch(x -> x.key().equals(s.key()) && x.list());
+            Integer first = list ? null : oneValue.putIfAbsent(s.key(), n);
+            if (first != null) {
+                throw new BadUsageException(where + ": " + s.key() + ": set twice (also at line " + first + ")");
+            }
         }
     }
 

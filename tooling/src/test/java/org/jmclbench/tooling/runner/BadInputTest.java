@@ -64,6 +64,9 @@ class BadInputTest extends FakeJvmHome {
         Files.writeString(m, "profiles = g1\npolicies = skip,\n");
         assertRejected(m + ":2: policies: empty item in 'skip,'", "matrix", "--matrix", m.toString(),
                 "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
+        Files.writeString(m, "repeat = 2\nparticles = 100\nparticles = 200\nrepeat = 3\n");
+        assertRejected(m + ":4: repeat: set twice (also at line 1)", "matrix", "--matrix", m.toString(),
+                "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
         Files.writeString(m, "profiles = g1\n\ncolour = blue\n");
         assertRejected(m + ":3: unknown key 'colour'", "matrix", "--matrix", m.toString(), "--java", fake.toString(),
                 "--datasets", "tiny", "--db", db.toString());

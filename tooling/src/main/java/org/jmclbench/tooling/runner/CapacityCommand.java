@@ -167,19 +167,35 @@ public final class CapacityCommand implements Callable<Integer> {
     }
 
     static void print(PrintStream out, Map<Configuration, CapacitySearch> searches) {
-        CapacitySearch c = searches.entrySet().stream().filter(e -> e.getKey().runtime().equals("native"))
-                .map(Map.Entry::getValue).findFirst().orElse(null);
         out.println("breakdown load (queue; every job of both tasks by its deadline in every repetition):");
         out.printf(Locale.ROOT, "  %-40s %10s %10s %-14s %-10s %s%n", "configuration", "holds at", "fails at", "search", "vs C",
                 "why it fails there");
         for (Map.Entry<Configuration, CapacitySearch> e : searches.entrySet()) {
             CapacitySearch s = e.getValue();
+            CapacitySearch c = baseline(searches, e.getKey());
             out.println(String.format(Locale.ROOT, "  %-40s %10s %10s %-14s %-10s %s", e.getKey().label(),
                     s.low() == null ? "none" : s.low(), s.high() == null ? "none" : s.high(), s.status().label, ratio(s, c),
                     s.highNotHeld() == null ? "" : s.highNotHeld()).stripTrailing());
         }
         out.println("Where the count above a bracket failed by one late job in one run, a repeated search may move the bracket"
                 + " a step: such brackets, and their ratios to C, are not separated comparisons.");
+    }
+
+    /**
+     * The C baseline's search for {@code of}: native with the OS part of its profile (fifo, pinned)
+     * and its memory style, else preallocated (the SCJ engine's scoped has no C counterpart); null
+     * when native was not searched so.
+     */
+    static CapacitySearch baseline(Map<Configuration, CapacitySearch> searches, Configuration of) {
+        String profile = org.jmclbench.tooling.runtime.Profile.parse(of.profile(), "--profiles")
+                .effectiveFor(org.jmclbench.tooling.runtime.RuntimeKind.NATIVE).name();
+        Map<String, CapacitySearch> byMemory = new LinkedHashMap<>();
+        searches.forEach((k, v) -> {
+            if (k.runtime().equals("native") && k.profile().equals(profile)) {
+                byMemory.putIfAbsent(k.memory(), v);
+            }
+        });
+        return byMemory.getOrDefault(of.memory(), byMemory.get(Engines.PREALLOCATED));
     }
 
     /**

@@ -91,6 +91,41 @@ class CapacityCommandTest {
         assertEquals(">= 2.00x", CapacityCommand.ratio(c, jvm));
     }
 
+    /** A configuration is compared with the C baseline of its own OS profile and memory style, not the first C row. */
+    @Test
+    void eachRowIsComparedWithTheCBaselineOfItsProfileAndMemoryStyle() {
+        java.util.Map<CapacityCommand.Configuration, CapacitySearch> searches = new java.util.LinkedHashMap<>();
+        searches.put(new CapacityCommand.Configuration("native", "default", "native", "preallocated"), bracket(1600));
+        searches.put(new CapacityCommand.Configuration("native", "fifo", "native", "preallocated"), bracket(3200));
+        searches.put(new CapacityCommand.Configuration("native", "default", "native", "allocating"), bracket(800));
+        searches.put(new CapacityCommand.Configuration("fake-17", "g1+fifo", "javase", "preallocated"), bracket(1600));
+        searches.put(new CapacityCommand.Configuration("fake-17", "g1", "javase", "allocating"), bracket(1600));
+        searches.put(new CapacityCommand.Configuration("fake-17", "g1", "scj", "scoped"), bracket(1600));
+        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        CapacityCommand.print(new java.io.PrintStream(bytes, true, java.nio.charset.StandardCharsets.UTF_8), searches);
+        String out = bytes.toString(java.nio.charset.StandardCharsets.UTF_8);
+        assertEquals("0.50x", ratioOf(out, "fake-17/g1+fifo javase preallocated"), "vs native fifo: " + out);
+        assertEquals("2.00x", ratioOf(out, "fake-17/g1 javase allocating"), "vs native allocating: " + out);
+        assertEquals("1.00x", ratioOf(out, "fake-17/g1 scj scoped"), "no C scoped: vs native preallocated: " + out);
+        assertEquals("1.00x", ratioOf(out, "native/fifo native preallocated"), out);
+    }
+
+    private static CapacitySearch bracket(int low) {
+        CapacitySearch s = new CapacitySearch(low, low * 2);
+        s.record(low, null);
+        s.record(low * 2, "a job missed its deadline in 1 of 1 runs");
+        int n;
+        while ((n = s.next()) > 0) {
+            s.record(n, "a job missed its deadline in 1 of 1 runs");
+        }
+        return s;
+    }
+
+    private static String ratioOf(String out, String label) {
+        Matcher m = Pattern.compile("(?m)^  " + Pattern.quote(label) + "\\s+\\S+\\s+\\S+\\s+\\S+\\s+((?:[<>]= )?\\S+x)").matcher(out);
+        return m.find() ? m.group(1) : "no ratio";
+    }
+
     @Test
     void aBadRangeIsOneLineAndExitTwo() {
         Fixtures.CliResult r = Fixtures.cli("capacity", "--from", "500", "--max", "100");

@@ -41,6 +41,9 @@ final class MatrixOptions {
             new Setting("db", false, "FILE", "results database (default: results/results.db)"),
             new Setting("native", false, "PATH", "the native baseline binary (default: native/build/jmclbench-native)"));
 
+    /** The most repetitions a matrix takes. */
+    static final int MAX_REPEAT = 10_000;
+
     /** The keys a matrix file accepts (the long options without dashes). */
     static final List<String> KEYS = SETTINGS.stream().map(Setting::key).toList();
 
@@ -86,7 +89,14 @@ final class MatrixOptions {
                 spec.loads.add(new Sourced<>(v, at));
             });
             case "workload-arg" -> spec.workloadArgs.add(new Sourced<>(value, at));
-            case "repeat" -> spec.repeat = positiveInt(value.strip(), at);
+            case "repeat" -> {
+                int r = positiveInt(value.strip(), at);
+                // the plan holds every repetition (Integer.MAX_VALUE never ended planning): far past any run time
+                if (r > MAX_REPEAT) {
+                    throw new BadUsageException(at + ": '" + value.strip() + "' is more than " + MAX_REPEAT + " repetitions");
+                }
+                spec.repeat = r;
+            }
             case "shard" -> spec.shard = shard(value.strip(), at);
             case "order-seed" -> spec.orderSeed = parseLong(value.strip(), at);
             case "seed" -> spec.seed = parseLong(value.strip(), at);

@@ -90,6 +90,9 @@ class BadInputTest extends FakeJvmHome {
                 "--particles", ",", "--datasets", "tiny", "--db", db.toString());
         assertRejected("--load-alloc: '100,16,' must be MBPS,LIVEMB", "matrix", "--java", fake.toString(),
                 "--load-alloc", "100,16,", "--datasets", "tiny", "--db", db.toString());
+        // planning a repetition count this large never ended (the last one overflowed the loop)
+        assertRejected("--repeat: '2147483647' is more than 10000 repetitions", "matrix", "--java", fake.toString(),
+                "--repeat", "2147483647", "--datasets", "tiny", "--db", db.toString());
         assertRejected("--policies: unknown policy 'drop'", "matrix", "--java", fake.toString(),
                 "--policies", "skip,drop", "--datasets", "tiny", "--db", db.toString());
         assertRejected("--shard: '3/2' is not a shard", "matrix", "--java", fake.toString(),

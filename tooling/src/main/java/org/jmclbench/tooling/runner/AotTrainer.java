@@ -76,6 +76,12 @@ final class AotTrainer {
             }
             long timeoutMs = (long) ((dataset.durationS() * 0.1 * 3 + 120) * 1000);
             ProcessRunner.Result r = ProcessRunner.run(cmd, timeoutMs);
+            String interrupted = r.timedOut() ? null : ForkedRun.interruption(r.exitCode());
+            if (interrupted != null) {
+                // Ctrl-C reaches the training JVM too: not a limit of the runtime, so no unsupported row
+                throw new java.io.UncheckedIOException(new IOException("the AOT training run was interrupted (" + interrupted
+                        + "); the run it trained for is not recorded: rerun the same command to resume"));
+            }
             if (!r.ok() || !Files.isRegularFile(partial)) {
                 return new Result(List.of(), "aot: training run failed (" + (r.timedOut() ? "timed out" : "exit " + r.exitCode())
                         + "): "

@@ -147,6 +147,29 @@ class KillTrialsTest {
         resumesWithTheRunOk(cmd);
     }
 
+    /** The same for the aot profile's training run: an interrupted training is not the runtime's "unsupported". */
+    @Test
+    void anInterruptedAotTrainingIsNotRecordedAsUnsupported() throws Exception {
+        Fixtures.home(dir);
+        Path db = dir.resolve("out/results.db");
+        List<String> cmd = Fixtures.childCli(dir, "matrix", "--java", Fixtures.fakeJava(dir, "g", "gate", 0, null, 21).toString(),
+                "--profiles", "aot", "--particles", "100", "--datasets", "tiny", "--timeout", "600", "--db", db.toString());
+        Path log = dir.resolve("first.log");
+        Process runner = new ProcessBuilder(cmd).redirectOutput(dir.resolve("first.out").toFile()).redirectError(log.toFile()).start();
+        try {
+            awaitStarted(runner);
+            runner.descendants().toList().forEach(ProcessHandle::destroy); // SIGTERM to the training run
+            assertTrue(runner.waitFor(60, TimeUnit.SECONDS));
+        } finally {
+            Files.createFile(dir.resolve("g/open"));
+            runner.destroyForcibly();
+        }
+        String err = Files.readString(log).strip();
+        assertEquals(1, runner.exitValue(), err);
+        assertTrue(err.contains("AOT training run was interrupted (SIGTERM)"), err);
+        assertEquals(Map.of(), rows(db));
+    }
+
     /** Waits (generously: the machine is shared) until the gated fake runtime's run has started. */
     private void awaitStarted(Process runner) throws Exception {
         Path started = dir.resolve("g/started");

@@ -30,7 +30,7 @@ final class MatrixOptions {
             new Setting("datasets", true, "LIST", "dataset names under data/ or folders (default: match-short)"),
             new Setting("load", true, "LIST", "load scenarios beside each run: none, cpu (stress-ng, else own busy processes), alloc (allocation thread in the JVM under test), mixed (default: none)"),
             new Setting("load-alloc", false, "MBPS,LIVEMB", "the alloc load: MB/s allocated and MB kept live (default: 100,16)"),
-            new Setting("repeat", false, "N", "repetitions of each configuration (default: 1)"),
+            new Setting("repeat", false, "N", "repetitions of each configuration, at most 10000 (default: 1)"),
             new Setting("shard", false, "K/N", "run only the K-th of N shares of the matrix (merge the databases afterwards)"),
             new Setting("order-seed", false, "N", "seed of the shuffled run order (default: random, recorded)"),
             new Setting("seed", false, "N", "workload seed of repetition 1; repetition r uses seed+r-1 (default: 1)"),

@@ -446,7 +446,9 @@ final class ChartSpecs {
         List<Series> series = new ArrayList<>();
         for (ReportModel.Cell c : s.ordered()) {
             List<double[]> pts = points.apply(c).stream().map(p -> new double[] {p[0], Math.max(p[1], 1e-4)}).toList();
-            addIfAny(series, new Series(c.config, c.config, c.engine, s.color(c.config), Style.line(1.5), pts, null, null, null, null));
+            // one job (one abort, say) is one point: a line without a mark would draw nothing at all
+            Style style = pts.size() == 1 ? new Style(true, 1.5, null, false, "circle", 4, null) : Style.line(1.5);
+            addIfAny(series, new Series(c.config, c.config, c.engine, s.color(c.config), style, pts, null, null, null, null));
         }
         return s.spec(id, title, Kind.LINES, false,
                 new Axis("percentile (log scale of 1/(1\u2212p))", Scale.LOG, Format.PERCENTILE, 1.0, null),

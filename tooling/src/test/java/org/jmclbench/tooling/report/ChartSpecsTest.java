@@ -105,6 +105,28 @@ class ChartSpecsTest {
     }
 
     @Test
+    void aSpectrumOfOneJobIsAMarkNotAnInvisibleLine() throws Exception {
+        // a run that aborted one job: its abort latency spectrum is one point, and a line through one point draws nothing
+        ReportModel one = model(ReportFixtures.mixed(), "one-abort.db");
+        List<ReportModel.Cell> at = one.cells.stream().filter(c -> c.policy.equals("terminate") && c.particles == 1600).toList();
+        at.forEach(c -> {
+            c.abortSpectrum = new java.util.ArrayList<>(List.of(new double[] {1, 0.16}));
+            c.latencySpectrum = new java.util.ArrayList<>(List.of(new double[] {1, 0.2}));
+        });
+        ChartSpecs.Scope scope = new ChartSpecs.Scope(one, new ChartSpec.Setting("match-short", "terminate", 1600), at);
+        for (ChartSpec c : List.of(ChartSpecs.abortLatency(scope), ChartSpecs.spectrum(scope))) {
+            assertFalse(c.series().isEmpty(), c.id());
+            for (ChartSpec.Series s : c.series()) {
+                if (s.points().size() == 1) {
+                    assertTrue(s.style().marker() != null && s.style().size() > 0, c.id() + " " + s.name() + ": no mark");
+                }
+            }
+        }
+        // a curve of many jobs stays a line
+        assertTrue(chart("spectrum", "terminate", 1600).series().stream().allMatch(s -> s.style().marker() == null));
+    }
+
+    @Test
     void verifysStaticBoundIsDrawnBesideEachBytecodeRuntimesAbortLatency() throws Exception {
         // every engine and memory style of the fixture: 64 steps
         StringBuilder bounds = new StringBuilder();

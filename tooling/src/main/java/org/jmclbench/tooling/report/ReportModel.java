@@ -393,6 +393,9 @@ public final class ReportModel {
      * more than one commit, and a reader must see that before comparing them.
      */
     static String codeVersions(List<StoredRun> runs) {
+        if (runs.isEmpty()) {
+            return "none yet"; // no version at all is not "more than one"
+        }
         Map<String, List<StoredRun>> byVersion = runs.stream().collect(Collectors.groupingBy(
                 r -> r.codeVersion == null ? "" : r.codeVersion, LinkedHashMap::new, Collectors.toList()));
         Comparator<List<StoredRun>> byFirstStart = Comparator.comparing(

@@ -305,7 +305,11 @@ class ReportCommandTest {
         f.configs = List.of();
         Path empty = ReportFixtures.write(f, dir, "empty.db");
         assertEquals(0, JmclbenchCli.execute("report", "--db", empty.toString(), "--out", dir.resolve("r4").toString()));
-        assertTrue(Files.readString(dir.resolve("r4/index.html")).contains("\"runCount\":0"));
+        String page = Files.readString(dir.resolve("r4/index.html"));
+        assertTrue(page.contains("\"runCount\":0"));
+        // no run names no version: the header must not claim runs of several versions of jmclbench
+        assertFalse(page.contains("more than one version"), page.substring(page.indexOf("<p class=\"meta\">"), page.indexOf("</p>", page.indexOf("<p class=\"meta\">"))));
+        assertTrue(page.contains("0 runs (none yet)"));
     }
 
     static String stderrOf(Runnable r) {

@@ -500,7 +500,7 @@
   var ROWS_IN_A_BOX = 12;
   /** Characters a line of a vertical axis's title holds in the smallest chart box (about 160 px). */
   var AXIS_TITLE_LINE = 22;
-  function draw(f, spec, view) {
+  function draw(f, spec, view, settingHasRuns) {
     if (charts[f.id]) { charts[f.id].destroy(); }
     var canvas = document.getElementById('chart-' + f.id);
     var rows = spec && spec.kind !== 'LINES' ? view.categories.length : 0;
@@ -513,7 +513,10 @@
     canvas.parentNode.style.height = height ? height + 'rem' : '';
     document.getElementById('figure-' + f.id).classList.toggle('crowded', rows > ROWS_IN_A_BOX || items > ROWS_IN_A_BOX);
     var config = spec ? chartConfig(spec, view, f) : { type: 'scatter', data: { datasets: [] },
-      options: { responsive: true, maintainAspectRatio: false, plugins: { title: { display: true, text: f.heading + ': no run at this setting' } } } };
+      // a figure of another policy (abort latency, breakdown load) has no chart where the table has runs
+      options: { responsive: true, maintainAspectRatio: false, plugins: { title: { display: true,
+        text: chartText.titleLines(f.heading + (settingHasRuns ? ': nothing to draw at this setting (the caption says where it is drawn)'
+          : ': no run at this setting')) } } } };
     charts[f.id] = new Chart(canvas, config);
     var pts = config.data.datasets.reduce(function (n, d) { return n + d.data.filter(function (v) { return v !== null; }).length; }, 0);
     canvas.setAttribute('data-series', String(config.data.datasets.length));
@@ -527,7 +530,7 @@
     DATA.figures.forEach(function (f) {
       var spec = SPECS[specKey(state.dataset, state.policy, f.perSetting ? state.particles : null, f.id)];
       var view = spec ? shown(spec) : { categories: [], series: [], bands: [] };
-      draw(f, spec, view);
+      draw(f, spec, view, cells.length > 0);
       if (f.id === 'memory') {
         renderMemoryTable(configOrder(cells).filter(function (c) { return c.memoryAreas && c.memoryAreas.length; }),
           view.series.map(function (s) { return s.name; }));

@@ -498,6 +498,24 @@ class ReportBrowserTest {
         }
     }
 
+    /** A chart's title and subtitle, as one line. */
+    static String titles(String id) {
+        return (String) js().executeScript("var p = window.jmclbenchCharts[arguments[0]].options.plugins;"
+                + " return [].concat(p.title.text, p.subtitle && p.subtitle.display ? p.subtitle.text : []).join(' ');", id);
+    }
+
+    @Test
+    void aFigureOnlyAnotherPolicyDrawsDoesNotSayTheSettingHasNoRun() {
+        // skip, 400 particles: the table has runs, but only terminate aborts and only queue has a breakdown load
+        assertFalse(tableConfigs().isEmpty());
+        for (String id : List.of("abort-latency", "breakdown")) {
+            assertEquals("0", driver.findElement(By.id("chart-" + id)).getAttribute("data-series"), id);
+            String t = titles(id);
+            assertFalse(t.contains("no run"), id + ": " + t);
+            assertTrue(t.contains("nothing to draw at this setting"), id + ": " + t);
+        }
+    }
+
     @Test
     void choicesDriveTheTablesAndCharts() {
         String latencyAt400 = cell("native", "latMean");

@@ -199,6 +199,7 @@ final class TaskCharts {
                                         Function<ReportModel.Cell, String> condition) {
         Map<String, Map<String, ReportModel.Cell>> groups = new LinkedHashMap<>();
         Map<String, String> engines = new LinkedHashMap<>();
+        Map<String, String> owners = new LinkedHashMap<>();
         List<String> conditions = new ArrayList<>();
         for (ReportModel.Cell c : s.ordered()) {
             String given = condition.apply(c);
@@ -206,6 +207,12 @@ final class TaskCharts {
             String group = group(c, given == null ? "" : given);
             groups.computeIfAbsent(group, k -> new LinkedHashMap<>()).putIfAbsent(value, c);
             engines.putIfAbsent(group, c.engine);
+            // the page hides a group with the runtime it is named for (the idle one): with no owner it never hid
+            if (baseline(value)) {
+                owners.put(group, c.config);
+            } else {
+                owners.putIfAbsent(group, c.config);
+            }
             if (!conditions.contains(value)) {
                 conditions.add(value);
             }
@@ -229,7 +236,7 @@ final class TaskCharts {
             series.add(new Series(cond, null, null, CONDITION_COLORS.get(i % CONDITION_COLORS.size()), Style.BAR, null, values, errors,
                     null, notes));
         }
-        List<Category> categories = groups.keySet().stream().map(g -> new Category(g, null, engines.get(g))).toList();
+        List<Category> categories = groups.keySet().stream().map(g -> new Category(g, owners.get(g), engines.get(g))).toList();
         return s.spec(id, title, Kind.BARS, false, Axis.linear("configuration"), Axis.linear(yLabel).range(0.0, null),
                 categories, series);
     }

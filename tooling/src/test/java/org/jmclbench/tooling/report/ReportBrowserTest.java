@@ -517,6 +517,23 @@ class ReportBrowserTest {
     }
 
     @Test
+    void theLoadChartLeavesOutTheRuntimesNotChosen() {
+        int before = renderCount();
+        driver.findElement(By.cssSelector("#sel-configs input[value='temurin-17/g1']")).click();
+        waitForRender(before);
+        try {
+            @SuppressWarnings("unchecked")
+            List<String> labels = (List<String>) js().executeScript("return window.jmclbenchCharts['conditions-load'].data.labels");
+            assertFalse(labels.contains("temurin-17/g1"), labels.toString());
+            assertTrue(labels.contains("native"), labels.toString());
+        } finally {
+            before = renderCount();
+            driver.findElement(By.cssSelector("#sel-configs input[value='temurin-17/g1']")).click();
+            waitForRender(before);
+        }
+    }
+
+    @Test
     void choicesDriveTheTablesAndCharts() {
         String latencyAt400 = cell("native", "latMean");
 

@@ -517,6 +517,11 @@
       options: { responsive: true, maintainAspectRatio: false, plugins: { title: { display: true,
         text: chartText.titleLines(f.heading + (settingHasRuns ? ': nothing to draw at this setting (the caption says where it is drawn)'
           : ': no run at this setting')) } } } };
+    if (spec && view.series.length === 0) {
+      // bare axes read as a chart of zeros: say why nothing is on them
+      config.options.plugins.subtitle = { display: true, color: '#a00',
+        text: 'nothing to draw: no completed run of the chosen runtimes has these values' };
+    }
     charts[f.id] = new Chart(canvas, config);
     var pts = config.data.datasets.reduce(function (n, d) { return n + d.data.filter(function (v) { return v !== null; }).length; }, 0);
     canvas.setAttribute('data-series', String(config.data.datasets.length));

@@ -517,6 +517,34 @@ class ReportBrowserTest {
     }
 
     @Test
+    void aChartLeftEmptySaysWhyInsteadOfShowingBareAxes() {
+        // only the runtime whose every run crashed: the setting has runs, none completed, so no chart has a runtime's value
+        int before = renderCount();
+        driver.findElement(By.id("cfg-none")).click();
+        waitForRender(before);
+        before = renderCount();
+        driver.findElement(By.cssSelector("#sel-configs input[value='crashy']")).click();
+        waitForRender(before);
+        try {
+            assertEquals(List.of("crashy"), tableConfigs());
+            int empty = 0;
+            for (Map.Entry<String, Integer> e : seriesPerChart().entrySet()) {
+                if (e.getValue() > 0) {
+                    continue; // the trajectory keeps the ground truth and the beacons, which are no runtime's
+                }
+                empty++;
+                String t = titles(e.getKey());
+                assertTrue(t.contains("nothing to draw"), e.getKey() + ": " + t);
+            }
+            assertTrue(empty >= ChartSpecs.FIGURES.size() - 1, "empty charts: " + empty + " of " + seriesPerChart());
+        } finally {
+            before = renderCount();
+            driver.findElement(By.id("cfg-all")).click();
+            waitForRender(before);
+        }
+    }
+
+    @Test
     void theLoadChartLeavesOutTheRuntimesNotChosen() {
         int before = renderCount();
         driver.findElement(By.cssSelector("#sel-configs input[value='temurin-17/g1']")).click();

@@ -87,6 +87,11 @@ public final class CompareCommand implements Callable<Integer> {
                 runsA = choose(filtered(all), all, a, "--a", db);
                 runsB = choose(filtered(all), all, b, "--b", db);
             }
+            // runs against themselves give a ratio of 1 with a bootstrap interval around it, as if measured twice
+            if (runsA.stream().map(r -> r.runKey).collect(Collectors.toSet())
+                    .equals(runsB.stream().map(r -> r.runKey).collect(Collectors.toSet()))) {
+                throw new BadUsageException("--b: " + b + " names the same runs as --a " + a + " in " + db + ": nothing to compare");
+            }
             nameA = a;
             nameB = b;
             pairByConfig = false;

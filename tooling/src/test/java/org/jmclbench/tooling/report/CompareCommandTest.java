@@ -63,6 +63,14 @@ class CompareCommandTest {
     }
 
     @Test
+    void aConfigurationAgainstItselfIsRefusedNotComparedWithItsOwnRuns() {
+        // the same runs on both sides measured nothing twice: no ratio, interval or verdict to print
+        String err = run(2, "compare", "--db", a.toString(), "--a", "native", "--b", "native")[1];
+        assertTrue(err.contains("--b: native names the same runs as --a native") && err.strip().lines().count() == 1, err);
+        run(2, "compare", "--db", a.toString(), "--a", "temurin-25", "--b", "temurin-25/zgc");
+    }
+
+    @Test
     void missCountIsNamedForTheJobsItCountsUnderEachPolicy() throws Exception {
         FixtureDb f = new FixtureDb();
         f.policies = List.of("skip", "terminate", "queue");

@@ -142,6 +142,8 @@ final class ChartExporter {
         JFreeChart chart = spec.kind() == ChartSpec.Kind.LINES ? lines(spec) : bars(spec);
         chart.setBackgroundPaint(Color.WHITE);
         chart.getPlot().setBackgroundPaint(Color.WHITE);
+        // bare axes read as a chart of zeros (every run at the setting failed, say)
+        chart.getPlot().setNoDataMessage("nothing to draw: no completed run has these values");
         TextTitle t = chart.getTitle();
         t.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 15));
         return chart;

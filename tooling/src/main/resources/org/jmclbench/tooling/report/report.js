@@ -580,11 +580,12 @@
   }
 
   buildControls();
-  buildFigures();
   if (DATA.cells.length === 0) {
+    // no figures: empty boxes with captions would say nothing the headline does not
     document.getElementById('headline').appendChild(el('p', { 'class': 'big' }, 'The database holds no runs yet: run ./jmclbench quick first.'));
     document.body.setAttribute('data-render-count', '1');
   } else {
+    buildFigures();
     render();
   }
 })();

@@ -562,6 +562,28 @@ class ReportBrowserTest {
     }
 
     @Test
+    void anEmptyStoreSaysSoAndShowsNoBlankFigures() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.configs = List.of();
+        Path db = ReportFixtures.write(f, ARTIFACTS, "empty.db");
+        Path out = ARTIFACTS.resolve("empty-report");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", db.toString(), "--out", out.toString(), "--no-export"));
+        driver.get(out.resolve("index.html").toAbsolutePath().toUri().toString());
+        try {
+            waitForRender(0);
+            assertTrue(driver.findElement(By.id("headline")).getText().startsWith("The database holds no runs yet"));
+            // twenty figure boxes of caption and nothing else said nothing the headline had not
+            assertEquals(0, driver.findElements(By.cssSelector("figure.figure")).size());
+            List<LogEntry> severe = driver.manage().logs().get(LogType.BROWSER).getAll().stream()
+                    .filter(e -> e.getLevel().intValue() >= Level.WARNING.intValue()).toList();
+            assertTrue(severe.isEmpty(), "console errors: " + severe);
+        } finally {
+            driver.get(mixedPage);
+            waitForRender(0);
+        }
+    }
+
+    @Test
     void choicesDriveTheTablesAndCharts() {
         String latencyAt400 = cell("native", "latMean");
 

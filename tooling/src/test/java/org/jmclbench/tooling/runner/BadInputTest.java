@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 
 import org.jmclbench.tooling.Fixtures;
@@ -26,22 +27,30 @@ class BadInputTest extends FakeJvmHome {
         assertFalse(Files.exists(dir.resolve("out/runs")), "nothing may run");
     }
 
+    /** {@link #assertRejected} for {@code matrix} on the fake JVM, the tiny dataset unless given, and the test's store. */
+    private void assertMatrixRejected(String expected, String... options) {
+        List<String> args = new ArrayList<>(List.of("matrix", "--java", fake.toString()));
+        args.addAll(List.of(options));
+        if (!args.contains("--datasets")) {
+            args.addAll(List.of("--datasets", "tiny"));
+        }
+        args.addAll(List.of("--db", db.toString()));
+        assertRejected(expected, args.toArray(new String[0]));
+    }
+
     @Test
     void unknownProfile() {
-        assertRejected("--profiles: unknown profile component 'g2'", "matrix", "--java", fake.toString(),
-                "--profiles", "g1,g2+fifo", "--datasets", "tiny", "--db", db.toString());
+        assertMatrixRejected("--profiles: unknown profile component 'g2'", "--profiles", "g1,g2+fifo");
     }
 
     @Test
     void conflictingProfile() {
-        assertRejected("two gc settings: g1 and zgc", "matrix", "--java", fake.toString(),
-                "--profiles", "g1+zgc", "--datasets", "tiny", "--db", db.toString());
+        assertMatrixRejected("two gc settings: g1 and zgc", "--profiles", "g1+zgc");
     }
 
     @Test
     void unknownRuntime() {
-        assertRejected("--runtimes: unknown runtime 'nosuch-99'", "matrix", "--java", fake.toString(),
-                "--runtimes", "nosuch-99", "--datasets", "tiny", "--db", db.toString());
+        assertMatrixRejected("--runtimes: unknown runtime 'nosuch-99'", "--runtimes", "nosuch-99");
     }
 
     @Test
@@ -59,17 +68,13 @@ class BadInputTest extends FakeJvmHome {
     void badMatrixFileNamesFileAndLine() throws Exception {
         Path m = dir.resolve("m.properties");
         Files.writeString(m, "# a matrix\nprofiles = g1\nparticles = 100, many\n");
-        assertRejected(m + ":3: particles: 'many' is not a positive integer", "matrix", "--matrix", m.toString(),
-                "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
+        assertMatrixRejected(m + ":3: particles: 'many' is not a positive integer", "--matrix", m.toString());
         Files.writeString(m, "profiles = g1\npolicies = skip,\n");
-        assertRejected(m + ":2: policies: empty item in 'skip,'", "matrix", "--matrix", m.toString(),
-                "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
+        assertMatrixRejected(m + ":2: policies: empty item in 'skip,'", "--matrix", m.toString());
         Files.writeString(m, "repeat = 2\nparticles = 100\nparticles = 200\nrepeat = 3\n");
-        assertRejected(m + ":4: repeat: set twice (also at line 1)", "matrix", "--matrix", m.toString(),
-                "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
+        assertMatrixRejected(m + ":4: repeat: set twice (also at line 1)", "--matrix", m.toString());
         Files.writeString(m, "profiles = g1\n\ncolour = blue\n");
-        assertRejected(m + ":3: unknown key 'colour'", "matrix", "--matrix", m.toString(), "--java", fake.toString(),
-                "--datasets", "tiny", "--db", db.toString());
+        assertMatrixRejected(m + ":3: unknown key 'colour'", "--matrix", m.toString());
         Files.writeString(m, "java = " + fake + "\nprofiles = g1\nruntimes = fake-21, nosuch-1\ndatasets = tiny\n");
         assertRejected(m + ":3: runtimes: unknown runtime 'nosuch-1'", "matrix", "--matrix", m.toString(),
                 "--db", db.toString());
@@ -81,31 +86,20 @@ class BadInputTest extends FakeJvmHome {
 
     @Test
     void badOptionValues() {
-        assertRejected("--particles: '0' is not a positive integer", "matrix", "--java", fake.toString(),
-                "--particles", "100,0", "--datasets", "tiny", "--db", db.toString());
+        assertMatrixRejected("--particles: '0' is not a positive integer", "--particles", "100,0");
         // a trailing empty item is as empty as one between commas (',' alone ran the default 400)
-        assertRejected("--particles: empty item in '100,'", "matrix", "--java", fake.toString(),
-                "--particles", "100,", "--datasets", "tiny", "--db", db.toString());
-        assertRejected("--particles: empty item in ','", "matrix", "--java", fake.toString(),
-                "--particles", ",", "--datasets", "tiny", "--db", db.toString());
-        assertRejected("--load-alloc: '100,16,' must be MBPS,LIVEMB", "matrix", "--java", fake.toString(),
-                "--load-alloc", "100,16,", "--datasets", "tiny", "--db", db.toString());
+        assertMatrixRejected("--particles: empty item in '100,'", "--particles", "100,");
+        assertMatrixRejected("--particles: empty item in ','", "--particles", ",");
+        assertMatrixRejected("--load-alloc: '100,16,' must be MBPS,LIVEMB", "--load-alloc", "100,16,");
         // planning a repetition count this large never ended (the last one overflowed the loop)
-        assertRejected("--repeat: '2147483647' is more than 10000 repetitions", "matrix", "--java", fake.toString(),
-                "--repeat", "2147483647", "--datasets", "tiny", "--db", db.toString());
-        assertRejected("--policies: unknown policy 'drop'", "matrix", "--java", fake.toString(),
-                "--policies", "skip,drop", "--datasets", "tiny", "--db", db.toString());
-        assertRejected("--shard: '3/2' is not a shard", "matrix", "--java", fake.toString(),
-                "--shard", "3/2", "--datasets", "tiny", "--db", db.toString());
-        assertRejected("--datasets: dataset 'nosuch': no such folder", "matrix", "--java", fake.toString(),
-                "--datasets", "nosuch", "--db", db.toString());
-        assertRejected("--workload-arg: empty value", "matrix", "--java", fake.toString(),
-                "--datasets", "tiny", "--workload-arg", " ", "--db", db.toString());
-        assertRejected("--workload-arg: '--seed' is set by the runner", "matrix", "--java", fake.toString(),
-                "--datasets", "tiny", "--workload-arg", "--seed 3", "--db", db.toString());
+        assertMatrixRejected("--repeat: '2147483647' is more than 10000 repetitions", "--repeat", "2147483647");
+        assertMatrixRejected("--policies: unknown policy 'drop'", "--policies", "skip,drop");
+        assertMatrixRejected("--shard: '3/2' is not a shard", "--shard", "3/2");
+        assertMatrixRejected("--datasets: dataset 'nosuch': no such folder", "--datasets", "nosuch");
+        assertMatrixRejected("--workload-arg: empty value", "--workload-arg", " ");
+        assertMatrixRejected("--workload-arg: '--seed' is set by the runner", "--workload-arg", "--seed 3");
         // the workload's range, refused before the matrix rather than by each of its runs
-        assertRejected("--time-scale: '1e-9' is out of range [1e-6, 1000]", "matrix", "--java", fake.toString(),
-                "--time-scale", "1e-9", "--datasets", "tiny", "--db", db.toString());
+        assertMatrixRejected("--time-scale: '1e-9' is out of range [1e-6, 1000]", "--time-scale", "1e-9");
     }
 
     @Test

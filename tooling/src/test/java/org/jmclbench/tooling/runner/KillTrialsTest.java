@@ -9,6 +9,7 @@ import java.sql.Connection;
 import java.sql.DriverManager;
 import java.sql.ResultSet;
 import java.sql.Statement;
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -110,15 +111,11 @@ class KillTrialsTest {
      */
     @Test
     void aRunnerStoppedMidRunRecordsNoFailureForTheRunItStopped() throws Exception {
-        Fixtures.home(dir);
-        Path db = dir.resolve("out/results.db");
-        List<String> cmd = Fixtures.childCli(dir, "matrix", "--java", Fixtures.fakeJava(dir, "g", "gate", 0, null, 21).toString(),
-                "--particles", "100", "--datasets", "tiny", "--timeout", "600", "--db", db.toString());
-        Process runner = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("first.log").toFile()).start();
-        awaitStarted(runner);
+        List<String> cmd = gatedMatrix();
+        Process runner = startAndAwaitTheRun(cmd);
         runner.destroy(); // SIGTERM to the runner only
         assertTrue(runner.waitFor(60, TimeUnit.SECONDS));
-        assertEquals(Map.of(), rows(db), "the stopped run is not recorded: " + Files.readString(dir.resolve("first.log")));
+        assertEquals(Map.of(), rows(gatedDb()), "the stopped run is not recorded: " + firstErr());
         resumesWithTheRunOk(cmd);
     }
 
@@ -129,33 +126,23 @@ class KillTrialsTest {
      */
     @Test
     void aRunInterruptedFromOutsideIsNotRecordedAsTheRuntimesFailure() throws Exception {
-        Fixtures.home(dir);
-        Path db = dir.resolve("out/results.db");
-        List<String> cmd = Fixtures.childCli(dir, "matrix", "--java", Fixtures.fakeJava(dir, "g", "gate", 0, null, 21).toString(),
-                "--particles", "100", "--datasets", "tiny", "--timeout", "600", "--db", db.toString());
-        Path log = dir.resolve("first.log");
-        Process runner = new ProcessBuilder(cmd).redirectOutput(dir.resolve("first.out").toFile()).redirectError(log.toFile()).start();
-        awaitStarted(runner);
-        List<ProcessHandle> run = runner.descendants().toList();
-        run.forEach(ProcessHandle::destroy); // SIGTERM to the run only
+        List<String> cmd = gatedMatrix();
+        Process runner = startAndAwaitTheRun(cmd);
+        runner.descendants().toList().forEach(ProcessHandle::destroy); // SIGTERM to the run only
         assertTrue(runner.waitFor(60, TimeUnit.SECONDS));
-        String err = Files.readString(log).strip();
+        String err = firstErr();
         assertEquals(1, runner.exitValue(), err);
         assertEquals(1, err.lines().count(), err);
         assertTrue(err.contains("interrupted (SIGTERM)") && err.contains("not recorded"), err);
-        assertEquals(Map.of(), rows(db));
+        assertEquals(Map.of(), rows(gatedDb()));
         resumesWithTheRunOk(cmd);
     }
 
     /** The same for the aot profile's training run: an interrupted training is not the runtime's "unsupported". */
     @Test
     void anInterruptedAotTrainingIsNotRecordedAsUnsupported() throws Exception {
-        Fixtures.home(dir);
-        Path db = dir.resolve("out/results.db");
-        List<String> cmd = Fixtures.childCli(dir, "matrix", "--java", Fixtures.fakeJava(dir, "g", "gate", 0, null, 21).toString(),
-                "--profiles", "aot", "--particles", "100", "--datasets", "tiny", "--timeout", "600", "--db", db.toString());
-        Path log = dir.resolve("first.log");
-        Process runner = new ProcessBuilder(cmd).redirectOutput(dir.resolve("first.out").toFile()).redirectError(log.toFile()).start();
+        Process runner = new ProcessBuilder(gatedMatrix("--profiles", "aot")).redirectOutput(dir.resolve("first.out").toFile())
+                .redirectError(dir.resolve("first.log").toFile()).start();
         try {
             awaitStarted(runner);
             runner.descendants().toList().forEach(ProcessHandle::destroy); // SIGTERM to the training run
@@ -164,10 +151,37 @@ class KillTrialsTest {
             Files.createFile(dir.resolve("g/open"));
             runner.destroyForcibly();
         }
-        String err = Files.readString(log).strip();
+        String err = firstErr();
         assertEquals(1, runner.exitValue(), err);
         assertTrue(err.contains("AOT training run was interrupted (SIGTERM)"), err);
-        assertEquals(Map.of(), rows(db));
+        assertEquals(Map.of(), rows(gatedDb()));
+    }
+
+    /** A matrix of one run on a fake runtime that waits at its start until {@code g/open} exists. */
+    private List<String> gatedMatrix(String... options) throws Exception {
+        Fixtures.home(dir);
+        List<String> args = new ArrayList<>(List.of("matrix", "--java",
+                Fixtures.fakeJava(dir, "g", "gate", 0, null, 21).toString(), "--particles", "100", "--datasets", "tiny",
+                "--timeout", "600", "--db", gatedDb().toString()));
+        args.addAll(List.of(options));
+        return Fixtures.childCli(dir, args.toArray(new String[0]));
+    }
+
+    private Path gatedDb() {
+        return dir.resolve("out/results.db");
+    }
+
+    /** The first runner's standard error, stripped. */
+    private String firstErr() throws Exception {
+        return Files.readString(dir.resolve("first.log")).strip();
+    }
+
+    /** Starts the first runner (output to first.out, errors to first.log) and waits until its run has started. */
+    private Process startAndAwaitTheRun(List<String> cmd) throws Exception {
+        Process runner = new ProcessBuilder(cmd).redirectOutput(dir.resolve("first.out").toFile())
+                .redirectError(dir.resolve("first.log").toFile()).start();
+        awaitStarted(runner);
+        return runner;
     }
 
     /** Waits (generously: the machine is shared) until the gated fake runtime's run has started. */

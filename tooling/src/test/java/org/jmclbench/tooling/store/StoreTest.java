@@ -100,11 +100,7 @@ class StoreTest {
         Fixtures.CliResult r = Fixtures.cli("merge", link.toString(), "--into", db.toString());
         assertEquals(0, r.exitCode(), r.err());
         assertTrue(r.out().contains("0 runs merged, 1 already in"), r.out());
-        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
-                ResultSet rs = s.executeQuery("SELECT count(*) FROM runs")) {
-            rs.next();
-            assertEquals(1, rs.getInt(1));
-        }
+        assertEquals(1, column(db, "SELECT run_key FROM runs").size());
     }
 
     @Test
@@ -113,13 +109,7 @@ class StoreTest {
         Fixtures.FakeJvms jvms = Fixtures.FakeJvms.in(dir);
         Path src = dir.resolve("S/results.db");
         matrix(src, "100,200", jvms.java17());
-        List<String> keys = new ArrayList<>();
-        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + src); Statement s = c.createStatement();
-                ResultSet rs = s.executeQuery("SELECT run_key FROM runs ORDER BY rowid")) {
-            while (rs.next()) {
-                keys.add(rs.getString(1));
-            }
-        }
+        List<String> keys = column(src, "SELECT run_key FROM runs ORDER BY rowid");
         // the target: the first run failed there (its folder holds its own log), the second not there at all
         Path into = dir.resolve("T/results.db");
         Files.createDirectories(into.getParent());
@@ -136,11 +126,8 @@ class StoreTest {
         Fixtures.CliResult r = Fixtures.cli("merge", src.toString(), "--into", into.toString());
         assertTrue(r.exitCode() != 0, r.out());
         assertTrue(r.err().contains("cannot copy the run folder") && r.err().contains("NoSuchFileException"), r.err());
-        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + into); Statement s = c.createStatement();
-                ResultSet rs = s.executeQuery("SELECT status FROM runs WHERE run_key = '" + keys.get(0) + "'")) {
-            assertTrue(rs.next());
-            assertEquals("failed", rs.getString(1), "the rows are rolled back");
-        }
+        assertEquals(List.of("failed"), column(into, "SELECT status FROM runs WHERE run_key = '" + keys.get(0) + "'"),
+                "the rows are rolled back");
         assertEquals(List.of("stderr.txt"), Files.list(failedFolder).map(p -> p.getFileName().toString()).toList(),
                 "the failed run's folder is still its own");
         assertTrue(!Files.exists(into.getParent().resolve("runs").resolve(keys.get(1))), "no folder without its row");
@@ -213,5 +200,17 @@ class StoreTest {
         Histogram back = RunFolderIngest.decode(RunFolderIngest.encode(h));
         assertEquals(1000, back.getTotalCount());
         assertEquals(h.getValueAtPercentile(99), back.getValueAtPercentile(99));
+    }
+
+    /** The first column of {@code query}'s rows in the store {@code db}. */
+    private static List<String> column(Path db, String query) throws Exception {
+        List<String> values = new ArrayList<>();
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
+                ResultSet rs = s.executeQuery(query)) {
+            while (rs.next()) {
+                values.add(rs.getString(1));
+            }
+        }
+        return values;
     }
 }

@@ -57,12 +57,12 @@ public final class JmclbenchCli implements Callable<Integer> {
     public static int execute(String... args) {
         CommandLine cli = new CommandLine(new JmclbenchCli());
         cli.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("jmclbench: " + ex.getMessage());
+            System.err.println("jmclbench: " + oneLine(ex.getMessage()));
             return EXIT_BAD_INPUT;
         });
         cli.setExecutionExceptionHandler((ex, cmd, parsed) -> {
             if (ex instanceof BadUsageException) {
-                System.err.println("jmclbench: " + ex.getMessage());
+                System.err.println("jmclbench: " + oneLine(ex.getMessage()));
                 return EXIT_BAD_INPUT;
             }
             if (ex instanceof java.io.UncheckedIOException u) {
@@ -77,5 +77,34 @@ public final class JmclbenchCli implements Callable<Integer> {
             throw ex;
         });
         return cli.execute(args);
+    }
+
+    /**
+     * A bad-input message as the one line it must be, whatever the paths and values quoted in it
+     * hold: each control character (and each Unicode line or paragraph separator) becomes its Java
+     * string escape ({@code \n}, {@code \t}, {@code \r}, {@code \b}, {@code \f}, else a backslash, u
+     * and four hex digits). A backslash stays as it is, so an ordinary path reads and pastes as typed.
+     */
+    static String oneLine(String message) {
+        String m = String.valueOf(message);
+        StringBuilder b = new StringBuilder(m.length());
+        for (int i = 0; i < m.length(); i++) {
+            char c = m.charAt(i);
+            switch (c) {
+                case '\n' -> b.append("\\n");
+                case '\r' -> b.append("\\r");
+                case '\t' -> b.append("\\t");
+                case '\b' -> b.append("\\b");
+                case '\f' -> b.append("\\f");
+                default -> {
+                    if (Character.isISOControl(c) || c == '\u2028' || c == '\u2029') {
+                        b.append(String.format("\\u%04x", (int) c));
+                    } else {
+                        b.append(c);
+                    }
+                }
+            }
+        }
+        return b.toString();
     }
 }

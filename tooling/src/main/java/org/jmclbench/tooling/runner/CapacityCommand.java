@@ -106,7 +106,9 @@ public final class CapacityCommand implements Callable<Integer> {
                                                      PrintStream out) throws Exception {
         Path home = JmclbenchPaths.home();
         MachineInfo machine = MachineInfo.current();
-        ResolvedMatrix all = MatrixPlanner.resolve(at.apply(from), RuntimeDiscovery::discover, home, machine);
+        MatrixSpec first = at.apply(from);
+        ResolvedMatrix all = MatrixPlanner.resolve(first, RuntimeDiscovery::discover, home, machine);
+        MatrixPlanner.prepareHvm(first, all, home); // every probe's runtimes and profiles are these
         List<Configuration> configurations = all.plan().stream().map(Configuration::of).distinct().toList();
         Map<Configuration, CapacitySearch> searches = new LinkedHashMap<>();
         configurations.forEach(c -> searches.put(c, new CapacitySearch(from, max)));

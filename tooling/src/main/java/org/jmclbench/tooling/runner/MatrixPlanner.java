@@ -110,10 +110,6 @@ public final class MatrixPlanner {
         String pinCpu = spec.pinCpu != null ? spec.pinCpu : LaunchPlan.defaultPinCpu();
         Path db = (spec.db != null ? spec.db : Path.of(MatrixDefaults.DB)).toAbsolutePath().normalize();
 
-        if (runtimes.stream().anyMatch(r -> r.kind() == RuntimeKind.HVM)) {
-            // every HVM executable the profiles ask for is built before the first run, so that no run pays for it
-            HvmRuntime.prepare(home, distinct(profiles.stream().map(p -> p.effectiveFor(RuntimeKind.HVM).hvmMode()).toList()));
-        }
         Map<String, PlannedRun> all = new LinkedHashMap<>();
         for (RuntimeInfo rt : runtimes) {
             // a native program has one engine: one native run per cell, whatever --engines says
@@ -155,6 +151,25 @@ public final class MatrixPlanner {
         List<PlannedRun> ordered = order(mine, repeat, orderSeed);
         return new ResolvedMatrix(runtimes, profiles, engines, memory, policies, particles, datasets, List.copyOf(loads), loadSettings, repeat, seed, orderSeed, timeScale,
                 spec.timeoutS, pinCpu, List.copyOf(workloadArgs), db, nativeBinary, spec.shard, ordered, all.size());
+    }
+
+    /**
+     * Builds (or finds cached) every HVM executable the profiles of {@code m} ask for, before the first
+     * run, so that no run pays for it; nothing when {@code m} has no hvm runtime. Not part of
+     * {@link #resolve}: a dry run plans and prints, and builds nothing.
+     *
+     * @throws BadUsageException when an executable cannot be built, naming where hvm was asked for
+     *     ({@code --runtimes: hvm: ...}, or the matrix file's line)
+     */
+    static void prepareHvm(MatrixSpec spec, ResolvedMatrix m, Path home) {
+        if (m.runtimes().stream().noneMatch(r -> r.kind() == RuntimeKind.HVM)) {
+            return;
+        }
+        String where = spec.runtimes.stream().filter(r -> r.value().equals(HvmRuntime.NAME)).findFirst()
+                .or(() -> spec.runtimes.stream().filter(r -> r.value().equals("all")).findFirst())
+                .map(Sourced::where).orElse("--runtimes");
+        HvmRuntime.prepare(home, distinct(m.profiles().stream().map(p -> p.effectiveFor(RuntimeKind.HVM).hvmMode()).toList()),
+                where);
     }
 
     /** Shuffles each repetition round with {@code orderSeed}; rounds run in order. */
@@ -219,6 +234,8 @@ public final class MatrixPlanner {
         for (Sourced<String> r : spec.runtimes) {
             String name = r.value();
             if (name.equals(HvmRuntime.NAME)) {
+                // a dry run asks too: build-hvm.sh --check builds and writes nothing, and what it refuses
+                // (a bad HVM_SRC, a missing compiler) the run would refuse, so the plan is refused for it
                 HvmRuntime.Availability a = HvmRuntime.check(home);
                 if (!a.buildable()) {
                     throw new BadUsageException(r.where() + ": hvm: the icecap HVM cannot be built here: " + a.detail());

@@ -57,6 +57,7 @@ public final class MatrixSession {
             }
             return new Result(0, m.db());
         }
+        MatrixPlanner.prepareHvm(spec, m, home); // before the store is touched: a build that fails records nothing
         try (RunRecorder store = RunRecorder.open(m.db(), "--db")) {
             store.saveMachine(machine, Doctor.toJson(Doctor.system().run()));
             MatrixRunner runner = MatrixRunner.begin(m, store, machine, commandText, home, jar);

@@ -58,14 +58,15 @@ public final class HvmRuntime {
 
     /**
      * Builds (or finds cached) the mission's executable in each mode ({@link Profile#hvmMode}), so
-     * that no run pays for it; throws when it cannot.
+     * that no run pays for it; throws when it cannot, naming {@code where} the hvm runtime was asked
+     * for (an option, or a matrix file's line).
      */
-    public static void prepare(Path home, List<String> modes) {
+    public static void prepare(Path home, List<String> modes, String where) {
         for (String mode : modes) {
             ProcessRunner.Result r = ProcessRunner.run(List.of(home.resolve("hvm/build-mission.sh").toString(),
                     "--mode", mode), BUILD_TIMEOUT_MS);
             if (!r.ok()) {
-                throw new BadUsageException("hvm: the HVM executable (" + mode + ") cannot be built: "
+                throw new BadUsageException(where + ": " + NAME + ": the HVM executable (" + mode + ") cannot be built: "
                         + lastLine(r.output()) + " (./jmclbench doctor; docs/HVM.md)");
             }
         }

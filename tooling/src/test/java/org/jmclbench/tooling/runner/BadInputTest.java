@@ -154,6 +154,40 @@ class BadInputTest extends FakeJvmHome {
         assertFalse(Files.exists(dir.resolve("out/runs")), "nothing may run");
     }
 
+    /**
+     * The hvm runtime on a machine where its tool chain checks out but the mission's executable does
+     * not build (stand-in build scripts that write down each build): a dry run plans and builds
+     * nothing; a run is refused in one line naming where hvm was asked for, with nothing recorded.
+     */
+    @Test
+    void aDryRunBuildsNoHvmExecutableAndAFailingBuildNamesTheRuntimesOption() throws Exception {
+        Path builds = dir.resolve("builds");
+        Path hvm = Files.createDirectories(dir.resolve("hvm"));
+        script(hvm.resolve("build-hvm.sh"), "echo 'build-hvm: can be built (cached: /c/hvm/toolchain-ab)' >&2\n");
+        script(hvm.resolve("build-mission.sh"), "echo \"$*\" >> '" + builds + "'\n"
+                + "echo 'build-mission: compiling the mission for the HVM' >&2\n"
+                + "echo \"build-mission: the mission does not compile against icecap's SCJ library\" >&2\nexit 1\n");
+
+        Fixtures.CliResult dry = Fixtures.cli("matrix", "--runtimes", "hvm", "--profiles", "default,int", "--datasets", "tiny",
+                "--dry-run", "--db", db.toString());
+        assertEquals(0, dry.exitCode(), dry.out() + dry.err());
+        assertTrue(dry.out().startsWith("2 runs planned"), dry.out());
+        assertFalse(Files.exists(builds), "a dry run builds nothing");
+        assertFalse(Files.exists(db));
+
+        String failed = ": hvm: the HVM executable (compiled) cannot be built: build-mission: the mission does not compile"
+                + " against icecap's SCJ library (./jmclbench doctor; docs/HVM.md)";
+        assertRejected("jmclbench: --runtimes" + failed, "matrix", "--runtimes", "hvm", "--datasets", "tiny", "--db", db.toString());
+        assertEquals("--mode compiled", Files.readString(builds).strip(), "the run builds before it records anything");
+        Path m = Files.writeString(dir.resolve("m.properties"), "datasets = tiny\nruntimes = hvm\n");
+        assertRejected("jmclbench: " + m + ":2: runtimes" + failed, "matrix", "--matrix", m.toString(), "--db", db.toString());
+    }
+
+    private static void script(Path file, String body) throws Exception {
+        Files.writeString(file, "#!/bin/sh\n" + body);
+        Files.setPosixFilePermissions(file, java.nio.file.attribute.PosixFilePermissions.fromString("rwxr-xr-x"));
+    }
+
     @Test
     void matrixFileAndCommandLineCombine() throws Exception {
         Path m = dir.resolve("m.properties");

@@ -11,6 +11,7 @@ import java.util.stream.Stream;
 import org.jmclbench.tooling.runtime.HvmRuntime;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.ProcessRunner;
+import org.jmclbench.tooling.runtime.ProfileComponent;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 
@@ -66,16 +67,22 @@ public record Doctor(Path root, boolean runCommands) {
                 "a SCHED_FIFO run is stopped when it uses its RT budget; to measure without it: echo -1 > /proc/sys/kernel/sched_rt_runtime_us");
     }
 
+    /**
+     * Whether the fifo profile can run: its own priority is tried, since an rtprio limit (RLIMIT_RTPRIO)
+     * below it permits a lower priority and still refuses the profile's.
+     */
     DoctorCheck fifoPermission() {
+        String chrt = "chrt -f " + ProfileComponent.FIFO_PRIORITY + " true";
         if (!runCommands) {
-            return DoctorCheck.warn("sched-fifo", "not tried", "try it: chrt -f 1 true");
+            return DoctorCheck.warn("sched-fifo", "not tried", "try it: " + chrt);
         }
-        ProcessRunner.Result r = ProcessRunner.run(List.of("chrt", "-f", "1", "true"), 10_000);
+        ProcessRunner.Result r = ProcessRunner.run(List.of(chrt.split(" ")), 10_000);
         if (r.ok()) {
-            return DoctorCheck.pass("sched-fifo", "permitted (chrt -f 1 true succeeded)");
+            return DoctorCheck.pass("sched-fifo", "permitted at the fifo profile's priority (" + chrt + " succeeded)");
         }
-        return DoctorCheck.fail("sched-fifo", "not permitted: " + firstLine(r.output()),
-                "the fifo profile needs CAP_SYS_NICE: run as root, or set an rtprio limit in /etc/security/limits.conf");
+        return DoctorCheck.fail("sched-fifo", "not permitted at the fifo profile's priority (" + chrt + "): " + firstLine(r.output()),
+                "the fifo profile needs CAP_SYS_NICE: run as root, or set an rtprio limit of at least "
+                        + ProfileComponent.FIFO_PRIORITY + " in /etc/security/limits.conf");
     }
 
     DoctorCheck memlock() {

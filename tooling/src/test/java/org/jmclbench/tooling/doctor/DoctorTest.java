@@ -3,15 +3,25 @@ package org.jmclbench.tooling.doctor;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.Fixtures;
 import org.jmclbench.tooling.runtime.ProcessRunner;
+import org.jmclbench.tooling.runtime.ProfileComponent;
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
 
 /** The doctor reads the kernel's files; a fake tree shows each verdict. */
 class DoctorTest {
@@ -72,6 +82,67 @@ class DoctorTest {
                 "runs only in a container that systemd-detect-virt recognises");
         DoctorCheck virt = Doctor.system().virtualisation();
         assertTrue(!virt.value().equals(container.stdout().strip()), virt.value());
+    }
+
+    /**
+     * With an rtprio limit between 1 and 79 (and no CAP_SYS_NICE), SCHED_FIFO is permitted at a low
+     * priority and refused at the fifo profile's 80: the doctor tries the profile's priority, and says
+     * FAIL. Here a stand-in chrt on PATH behaves as chrt does under RLIMIT_RTPRIO = 10.
+     */
+    @Test
+    void anRtprioLimitBelowTheFifoProfilesPriorityFails() throws Exception {
+        Path bin = Files.createDirectories(root.resolve("bin"));
+        Path chrt = bin.resolve("chrt");
+        Files.writeString(chrt, "#!/bin/sh\n# chrt under RLIMIT_RTPRIO = 10, without CAP_SYS_NICE\n"
+                + "if [ \"$1\" = -f ] && [ \"$2\" -le 10 ]; then shift 2; exec \"$@\"; fi\n"
+                + "echo \"chrt: failed to set pid 0's policy: Operation not permitted\" >&2\nexit 1\n");
+        Files.setPosixFilePermissions(chrt, PosixFilePermissions.fromString("rwxr-xr-x"));
+        JsonNode fifo = fifoCheckOfAChildDoctor(List.of(), bin + ":" + System.getenv("PATH"));
+        assertEquals("FAIL", fifo.get("status").asText(), fifo.toString());
+        assertTrue(fifo.get("value").asText().startsWith("not permitted at the fifo profile's priority (chrt -f "
+                + ProfileComponent.FIFO_PRIORITY + " true): chrt: failed to set pid 0's policy"), fifo.toString());
+        assertTrue(fifo.get("advice").asText().contains("an rtprio limit of at least " + ProfileComponent.FIFO_PRIORITY),
+                fifo.toString());
+    }
+
+    /**
+     * The same with the kernel's own limit, where this machine can set it: prlimit lowers RLIMIT_RTPRIO
+     * to 10 and setpriv drops CAP_SYS_NICE for the doctor's process and its children (as root,
+     * CAP_SYS_NICE overrides the limit). Skipped unless chrt -f 10 succeeds and chrt -f 80 fails so.
+     */
+    @Test
+    void theKernelsRtprioLimitBelowTheFifoProfilesPriorityFails() throws Exception {
+        List<String> limited = List.of("prlimit", "--rtprio=10", "--", "setpriv", "--inh-caps=-sys_nice",
+                "--bounding-set=-sys_nice");
+        Assumptions.assumeTrue(exitCode(limited, "chrt", "-f", "10", "true") == 0
+                        && exitCode(limited, "chrt", "-f", String.valueOf(ProfileComponent.FIFO_PRIORITY), "true") != 0,
+                "needs prlimit and setpriv that can lower the rtprio limit and drop CAP_SYS_NICE here");
+        JsonNode fifo = fifoCheckOfAChildDoctor(limited, System.getenv("PATH"));
+        assertEquals("FAIL", fifo.get("status").asText(), fifo.toString());
+    }
+
+    private static int exitCode(List<String> prefix, String... command) {
+        List<String> cmd = new ArrayList<>(prefix);
+        cmd.addAll(List.of(command));
+        return ProcessRunner.run(cmd, 10_000).exitCode();
+    }
+
+    /** The sched-fifo check of {@code doctor --json} run in a child JVM behind {@code prefix}, with {@code path} as PATH. */
+    private JsonNode fifoCheckOfAChildDoctor(List<String> prefix, String path) throws Exception {
+        List<String> cmd = new ArrayList<>(prefix);
+        cmd.addAll(Fixtures.childCli(root, "doctor", "--json"));
+        ProcessBuilder pb = new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.DISCARD);
+        pb.environment().put("PATH", path);
+        Process p = pb.start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "the doctor hung");
+        assertEquals(0, p.exitValue(), out);
+        for (JsonNode c : new ObjectMapper().readTree(out)) {
+            if (c.get("check").asText().equals("sched-fifo")) {
+                return c;
+            }
+        }
+        throw new AssertionError("no sched-fifo check in " + out);
     }
 
     /** Asserts that each of the machine's checks (all but memory) has {@code status}. */

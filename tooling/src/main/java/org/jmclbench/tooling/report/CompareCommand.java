@@ -1,6 +1,8 @@
 package org.jmclbench.tooling.report;
 
+import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -130,6 +132,12 @@ public final class CompareCommand implements Callable<Integer> {
         }
         Map<String, List<StoredRun>> groupsA = group(runsA, pairByConfig);
         Map<String, List<StoredRun>> groupsB = group(runsB, pairByConfig);
+        if (db == null && sameFile(databases.get(0), databases.get(1)) && sameRuns(groupsA, groupsB)) {
+            // as --db X --a C --b C: each configuration would meet its own runs, a ratio of 1 as if measured twice
+            throw new BadUsageException("compare: A " + databases.get(0) + " and B " + databases.get(1) + " are the same store"
+                    + " and each side would hold the same runs: nothing to compare (two configurations of one store:"
+                    + " --db FILE --a CONFIG --b CONFIG)");
+        }
         out.println("A: " + nameA);
         out.println("B: " + nameB);
         int compared = 0;
@@ -153,6 +161,32 @@ public final class CompareCommand implements Callable<Integer> {
                 + " runs a side, two-sided Mann-Whitney U p < " + Stats.ALPHA + " and the B/A interval excluding 1"
                 + " (docs/REPORT.md); n = completed runs.");
         return 0;
+    }
+
+    /** Whether two paths name one file (the same path, another spelling of it, a link to it). */
+    private static boolean sameFile(Path x, Path y) {
+        try {
+            return Files.isSameFile(x, y);
+        } catch (IOException e) {
+            return false; // StoredRuns.open has read both: a path that cannot be resolved now is not known to be the other
+        }
+    }
+
+    /** Whether every setting both sides have holds the very same runs on each (by run key). */
+    private static boolean sameRuns(Map<String, List<StoredRun>> groupsA, Map<String, List<StoredRun>> groupsB) {
+        boolean any = false;
+        for (Map.Entry<String, List<StoredRun>> e : groupsA.entrySet()) {
+            List<StoredRun> gb = groupsB.get(e.getKey());
+            if (gb == null) {
+                continue;
+            }
+            if (!e.getValue().stream().map(r -> r.runKey).collect(Collectors.toSet())
+                    .equals(gb.stream().map(r -> r.runKey).collect(Collectors.toSet()))) {
+                return false;
+            }
+            any = true;
+        }
+        return any;
     }
 
     private boolean hasFilter() {

@@ -71,6 +71,27 @@ class CompareCommandTest {
     }
 
     @Test
+    void oneStoreGivenAsBothDatabasesIsRefusedNotComparedWithItsOwnRuns() throws Exception {
+        // the same file twice, or two paths to it: each configuration would meet its own runs
+        Path other = dir.resolve("sub");
+        java.nio.file.Files.createDirectories(other);
+        String viaDots = other.resolve("..").resolve(a.getFileName()).toString();
+        Path link = java.nio.file.Files.createSymbolicLink(dir.resolve("link-to-a.db"), a);
+        for (String[] args : new String[][] {{a.toString(), a.toString()}, {a.toString(), viaDots}, {link.toString(), a.toString()},
+                {a.toString(), a.toString(), "--a", "native"}, {a.toString(), a.toString(), "--a", "native", "--b", "native"}}) {
+            List<String> cmd = new ArrayList<>(List.of("compare"));
+            cmd.addAll(List.of(args));
+            String[] r = run(2, cmd.toArray(String[]::new));
+            assertTrue(r[1].contains("are the same store") && r[1].contains("the same runs") && r[1].strip().lines().count() == 1,
+                    String.join(" ", args) + ": " + r[1]);
+            assertTrue(r[0].isEmpty(), "nothing compared: " + r[0]);
+        }
+        // two configurations of that one store are two measurements, as with --db
+        String out = run(0, "compare", a.toString(), a.toString(), "--a", "native", "--b", "temurin-17")[0];
+        assertTrue(out.contains("task latency mean"), out);
+    }
+
+    @Test
     void missCountIsNamedForTheJobsItCountsUnderEachPolicy() throws Exception {
         FixtureDb f = new FixtureDb();
         f.policies = List.of("skip", "terminate", "queue");

@@ -5,6 +5,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
+import org.jmclbench.tooling.cli.Counts;
+
 /**
  * A configuration's breakdown load read from its queue runs in the store (the runs the
  * {@code capacity} command's search or a matrix made): the largest particle count at which every
@@ -89,7 +91,7 @@ record BreakdownLoad(Integer holds, Integer fails, String failedRuns, Late late)
         first = first.replaceFirst("^exit code -?\\d+: ", "").replaceFirst("^jmclbench: (failure: )?", "");
         int cut = first.indexOf(": ");
         first = cut > 0 ? first.substring(0, cut) : first;
-        return bad + " of " + (c.ok + bad) + " runs failed" + (first.isBlank() ? "" : ": " + first);
+        return bad + " of " + Counts.of(c.ok + bad, "run") + " failed" + (first.isBlank() ? "" : ": " + first);
     }
 
     /** How a count's completed repetitions were late; null when none completed. */

@@ -14,6 +14,7 @@ import java.util.Objects;
 import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.cli.Counts;
 import org.jmclbench.tooling.store.StoredRuns;
 
 import static org.jmclbench.tooling.report.EvaluationData.*;
@@ -155,13 +156,14 @@ public final class EvaluationDocument extends EvaluationSections {
         int total = model.cells.stream().mapToInt(c -> c.runs).sum();
         int ok = model.cells.stream().mapToInt(c -> c.ok).sum();
         IntSummary reps = data.repetitions();
-        line(String.format(Locale.ROOT, "**Runs.** %d runs in the store, %d completed. Each configuration and setting "
-                + "completed %s repetitions; runs were shuffled within each repetition round so that drift of the machine spreads over "
+        line(String.format(Locale.ROOT, "**Runs.** %s in the store, %d completed. Each configuration and setting "
+                + "completed %s %s; runs were shuffled within each repetition round so that drift of the machine spreads over "
                 + "every configuration. Values are means over the completed repetitions with a 95%% percentile-bootstrap "
                 + "interval (`mean [low, high]`), which never leaves the range of the quantity; a miss ratio is pooled over the "
                 + "repetitions with a 95%% Wilson interval. Two configurations are called different only by one rule (docs/REPORT.md): "
                 + "at least 10 runs a side, the Mann-Whitney U test at 0.05, and the bootstrap interval of the ratio of their means "
-                + "wholly on one side of 1; anything else is said as not separated. Each run is a fresh process.", total, ok, reps.text()));
+                + "wholly on one side of 1; anything else is said as not separated. Each run is a fresh process.", Counts.of(total, "run"), ok,
+                reps.text(), Counts.noun(reps.max(), "repetition")));
         line("");
         line("**What was cut to fit the time budget.**");
         line("");

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
 
+import org.jmclbench.tooling.cli.Counts;
 import org.jmclbench.tooling.store.StoredRun;
 
 import static org.jmclbench.tooling.report.EvaluationData.*;
@@ -346,7 +347,7 @@ final class EvaluationQuestions extends EvaluationSections {
             return "n/a";
         }
         if (a.max() != null && a.max().isInfinite()) {
-            return "∞ (in at least one of " + a.n() + " runs)";
+            return "∞ (in at least one of " + Counts.of(a.n(), "run") + ")";
         }
         return a.interval().text(3);
     }

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.cli.Counts;
 import org.jmclbench.tooling.cli.OutputPaths;
 import org.jmclbench.tooling.store.StoredRuns;
 
@@ -64,7 +65,7 @@ public final class ReportCommand implements Callable<Integer> {
             int files = new ChartExporter(out.resolve("charts")).exportAll(model.charts, ReportCommand::progress);
             progress("wrote " + files + " chart files to " + out.resolve("charts"));
         }
-        System.out.printf(java.util.Locale.ROOT, "report: %s (%d runs, %.1f s)%n", index, model.runCount,
+        System.out.printf(java.util.Locale.ROOT, "report: %s (%s, %.1f s)%n", index, Counts.of(model.runCount, "run"),
                 (System.nanoTime() - t0) / 1e9);
         return index;
     }

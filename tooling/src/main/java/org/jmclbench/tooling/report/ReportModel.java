@@ -17,6 +17,7 @@ import java.util.function.Consumer;
 import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.attribution.JfrFlags;
+import org.jmclbench.tooling.cli.Counts;
 import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
@@ -273,7 +274,7 @@ public final class ReportModel {
         m.codeVersions = codeVersions(runs);
         List<String> starts = runs.stream().map(r -> r.startedAt).filter(Objects::nonNull).sorted().toList();
         m.runPeriod = starts.isEmpty() ? "no runs" : "runs started " + starts.get(0) + " to " + starts.get(starts.size() - 1);
-        progress.accept("read " + runs.size() + " runs");
+        progress.accept("read " + Counts.of(runs.size(), "run"));
 
         Map<String, StoredRuns.Machine> machineRows = store.machines();
         if (runs.stream().map(r -> String.valueOf(r.machineId)).distinct().count() > 1) {

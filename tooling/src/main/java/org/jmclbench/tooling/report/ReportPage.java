@@ -9,6 +9,8 @@ import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import org.jmclbench.tooling.cli.Counts;
+
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 
@@ -34,7 +36,7 @@ final class ReportPage {
                 "VERIFICATION", resultsDir == null ? "" : VerificationSection.html(resultsDir),
                 "CSS", resource("report.css"),
                 "DB", escapeHtml(model.database),
-                "RUNS", Integer.toString(model.runCount),
+                "RUNS", Counts.of(model.runCount, "run"),
                 "GENERATED", escapeHtml(model.generatedAt),
                 "CODE", escapeHtml(model.codeVersions),
                 "DATA", json(model),

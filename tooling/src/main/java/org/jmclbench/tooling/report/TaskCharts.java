@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.function.Function;
 
+import org.jmclbench.tooling.cli.Counts;
 import org.jmclbench.tooling.report.ChartSpec.Axis;
 import org.jmclbench.tooling.report.ChartSpec.Category;
 import org.jmclbench.tooling.report.ChartSpec.Format;
@@ -158,8 +159,8 @@ final class TaskCharts {
             series.add(new Series(name, c.config, c.engine, s.color(c.config),
                     Style.marks(POLICY_MARKERS.getOrDefault(c.policy, "circle"), 5, null),
                     List.of(new double[] {miss.mean(), dev.mean()}), null, yErr, null,
-                    List.of(String.format(Locale.ROOT, "%s: miss ratio %.4f, deviation %.4f m (%d runs)", name, miss.mean(), dev.mean(),
-                            miss.n())), xErr));
+                    List.of(String.format(Locale.ROOT, "%s: miss ratio %.4f, deviation %.4f m (%s)", name, miss.mean(), dev.mean(),
+                            Counts.of(miss.n(), "run"))), xErr));
         }
         return s.spec("accuracy", "Accuracy vs timeliness of the policies" + without("no miss ratio or deviation", missing),
                 Kind.LINES, false,
@@ -231,7 +232,7 @@ final class TaskCharts {
                 values.add(has ? a.mean() : null);
                 errors.add(has ? interval(a, ratio) : null);
                 notes.add(c == null ? g.getKey() + ": no run under " + cond : c.config + ": " + (has ? String.format(Locale.ROOT, "%.4g", a.mean())
-                        : a != null && a.mean() != null ? "+\u221e" : "no value") + " (" + (a == null ? 0 : a.n()) + " runs)");
+                        : a != null && a.mean() != null ? "+\u221e" : "no value") + " (" + Counts.of(a == null ? 0 : a.n(), "run") + ")");
             }
             series.add(new Series(cond, null, null, CONDITION_COLORS.get(i % CONDITION_COLORS.size()), Style.BAR, null, values, errors,
                     null, notes));

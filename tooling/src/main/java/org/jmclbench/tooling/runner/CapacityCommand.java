@@ -11,6 +11,7 @@ import java.util.concurrent.Callable;
 import java.util.function.IntFunction;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.cli.Counts;
 import org.jmclbench.tooling.doctor.Doctor;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
@@ -142,7 +143,7 @@ public final class CapacityCommand implements Callable<Integer> {
     static String notHeld(Path db, Set<String> runKeys) {
         try (StoredRuns stored = StoredRuns.open(db, "--db")) {
             List<StoredRun> runs = stored.runs().stream().filter(r -> runKeys.contains(r.runKey)).toList();
-            String of = " of " + runKeys.size() + " runs";
+            String of = " of " + Counts.of(runKeys.size(), "run");
             if (runs.size() < runKeys.size()) {
                 return (runKeys.size() - runs.size()) + of + " not in the store";
             }

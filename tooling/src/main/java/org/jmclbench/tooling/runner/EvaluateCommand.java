@@ -14,6 +14,7 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.cli.Counts;
 import org.jmclbench.tooling.cli.JsonFiles;
 import org.jmclbench.tooling.cli.OutputPaths;
 import org.jmclbench.tooling.report.EvaluationDocument;
@@ -22,9 +23,9 @@ import org.jmclbench.tooling.runtime.JdkInstaller;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.store.ResultsDatabase;
 import org.jmclbench.tooling.store.StoreArchive;
-import org.jmclbench.tooling.runtime.RuntimeKind;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -268,9 +269,9 @@ public final class EvaluateCommand implements Callable<Integer> {
     /** The matrix's size and time: runs per section and the replay time they take. */
     record Budget(List<String> lines, List<Double> sectionSeconds, int runs, double seconds) {
         void print(PrintStream o, Path file) {
-            o.printf(Locale.ROOT, "evaluate: %s, %d sections%n", file, lines.size());
+            o.printf(Locale.ROOT, "evaluate: %s, %s%n", file, Counts.of(lines.size(), "section"));
             lines.forEach(l -> o.println("  " + l));
-            o.printf(Locale.ROOT, "budget: %d runs, about %.0f s (%.1f min) of replay and start-up; the limit is %.0f min%s%n", runs,
+            o.printf(Locale.ROOT, "budget: %s, about %.0f s (%.1f min) of replay and start-up; the limit is %.0f min%s%n", Counts.of(runs, "run"),
                     seconds, seconds / 60, BUDGET_S / 60, seconds > BUDGET_S ? " (OVER: cut the matrix)" : "");
         }
     }
@@ -331,9 +332,9 @@ public final class EvaluateCommand implements Callable<Integer> {
                 }
             }
             double durationS = durations.values().stream().mapToDouble(Double::doubleValue).sum();
-            lines.add(String.format(Locale.ROOT, "[%s] %s%d runs (%d JVM or hvm, %d native%s) of %.0f s x %.2f: about %.0f s", s.name(),
-                    s.breakdown() != null ? "breakdown search, at most " : "", jvmRuns + nativeRuns, jvmRuns, nativeRuns,
-                    shared == 0 ? "" : "; " + shared + " more are earlier sections' runs", durationS, scale, t));
+            lines.add(String.format(Locale.ROOT, "[%s] %s%s (%d JVM or hvm, %d native%s) of %.0f s x %.2f: about %.0f s", s.name(),
+                    s.breakdown() != null ? "breakdown search, at most " : "", Counts.of(jvmRuns + nativeRuns, "run"), jvmRuns, nativeRuns,
+                    shared == 0 ? "" : "; " + shared + (shared == 1 ? " more is an earlier section's run" : " more are earlier sections' runs"), durationS, scale, t));
             runs += jvmRuns + nativeRuns;
             seconds += t;
             perSection.add(t);

@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.function.Supplier;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.cli.Counts;
 import org.jmclbench.tooling.doctor.Doctor;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.Profile;
@@ -51,7 +52,7 @@ public final class MatrixSession {
         }
         if (spec.dryRun) {
             ResultsDatabase.checkToWrite(m.db(), "--db"); // what the run would refuse, the plan is refused for
-            out.printf("%d runs planned%s, order seed %d:%n", m.plan().size(), shardText(m), m.orderSeed());
+            out.printf("%s planned%s, order seed %d:%n", Counts.of(m.plan().size(), "run"), shardText(m), m.orderSeed());
             for (PlannedRun r : m.plan()) {
                 out.println("  " + r.runKey() + "  " + r.label());
             }
@@ -62,8 +63,8 @@ public final class MatrixSession {
             store.saveMachine(machine, Doctor.toJson(Doctor.system().run()));
             MatrixRunner runner = MatrixRunner.begin(m, store, machine, commandText, home, jar);
             List<PlannedRun> todo = runner.remaining(spec.retryFailed);
-            out.printf("matrix %s: %d runs%s, %d already in %s, %d to run (order seed %d)%n", runner.matrixId().substring(0, 8),
-                    m.plan().size(), shardText(m), m.plan().size() - todo.size(), m.db(), todo.size(), m.orderSeed());
+            out.printf("matrix %s: %s%s, %d already in %s, %d to run (order seed %d)%n", runner.matrixId().substring(0, 8),
+                    Counts.of(m.plan().size(), "run"), shardText(m), m.plan().size() - todo.size(), m.db(), todo.size(), m.orderSeed());
             out.flush();
             MatrixRunner.Summary s = runner.run(todo, Progress.forConsole(out));
             out.printf("matrix done: %d ran (%d ok, %d failed, %d timed out, %d unsupported); results in %s%n", s.ran(),

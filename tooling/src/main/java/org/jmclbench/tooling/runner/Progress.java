@@ -3,6 +3,8 @@ package org.jmclbench.tooling.runner;
 import java.io.PrintStream;
 import java.util.Locale;
 
+import org.jmclbench.tooling.cli.Counts;
+
 /**
  * Shows a matrix's progress: on a terminal one bar redrawn in place (runs done/total, failures, ETA,
  * the run in progress), elsewhere (a pipe, a CI log) one plain line per finished run.
@@ -138,7 +140,7 @@ public abstract class Progress {
         private void draw() {
             int filled = total == 0 ? WIDTH : done * WIDTH / total;
             String bar = "#".repeat(filled) + "-".repeat(WIDTH - filled);
-            String line = String.format(Locale.ROOT, "[%s] %d/%d runs, %d failed, ETA %s  %s", bar, done, total, failed,
+            String line = String.format(Locale.ROOT, "[%s] %d/%d %s, %d failed, ETA %s  %s", bar, done, total, Counts.noun(total, "run"), failed,
                     eta(), current);
             out.print("\r\033[K" + (line.length() > 150 ? line.substring(0, 150) : line));
             out.flush();

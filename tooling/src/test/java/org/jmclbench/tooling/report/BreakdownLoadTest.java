@@ -56,6 +56,11 @@ class BreakdownLoadTest {
                 + " (exit status 139): warning: unimplemented function executed", null));
         assertEquals(new BreakdownLoad(400, 800, "3 of 3 runs failed: the HVM executable failed (exit status 139)", null),
                 BreakdownLoad.of(List.of(cell("hvm", 400, 3, 0, 0), crashed), List.of("hvm")).get("hvm"));
+        ReportModel.Cell once = cell("hvm", 800, 0, 1, 0);
+        once.metrics.clear();
+        once.failures.add(new ReportModel.Failure(1, "failed", 1, "exit code 1: jmclbench: failure: the HVM executable failed", null));
+        assertEquals("1 of 1 run failed: the HVM executable failed",
+                BreakdownLoad.of(List.of(cell("hvm", 400, 1, 0, 0), once), List.of("hvm")).get("hvm").failedRuns());
         assertNull(BreakdownLoad.of(List.of(cell("c", 100, 2, 1, 3)), List.of("c")).get("c").failedRuns(),
                 "a completed run had a late job: the deadline bounds the load, whatever the failed one did");
     }

@@ -442,6 +442,24 @@ class EvaluationDocumentTest {
     }
 
     @Test
+    void aStoreOfOneRunAndOneRepetitionSaysSoInTheSingular() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.configs = List.of(f.configs.get(0));
+        f.policies = List.of("skip");
+        f.particles = List.of(400);
+        f.repetitions = 1;
+        Path one = ReportFixtures.write(f, dir, "one.db");
+        Path out = dir.resolve("one");
+        EvaluationDocument.write(one, "one.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
+        String d = Files.readString(out.resolve("EVALUATION.md"));
+        assertTrue(d.contains("**Runs.** 1 run in the store, 1 completed. Each configuration and setting completed 1 repetition;"), d);
+        ReportModel.Cell c = new ReportModel.Cell();
+        c.metrics.put(TaskMetric.RESPONSE_P99.key("all"),
+                new ReportModel.Agg(1, Double.POSITIVE_INFINITY, null, null, 1.0, Double.POSITIVE_INFINITY, new double[] {Double.POSITIVE_INFINITY}));
+        assertEquals("∞ (in at least one of 1 run)", EvaluationQuestions.response(c, "all"));
+    }
+
+    @Test
     void missingHvmAndVerificationAreSaidNotInvented() throws Exception {
         Path small = ReportFixtures.write(ReportFixtures.engines(), dir, "small.db");
         Path out = dir.resolve("small");

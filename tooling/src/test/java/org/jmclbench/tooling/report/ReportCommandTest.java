@@ -312,6 +312,31 @@ class ReportCommandTest {
         assertTrue(page.contains("0 runs (none yet)"));
     }
 
+    @Test
+    void aStoreOfOneRunSaysOneRunNotOneRuns() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.configs = List.of(f.configs.get(0));
+        f.policies = List.of("skip");
+        f.particles = List.of(400);
+        f.repetitions = 1;
+        Path one = ReportFixtures.write(f, dir, "one.db");
+        PrintStream old = System.out;
+        ByteArrayOutputStream buf = new ByteArrayOutputStream();
+        System.setOut(new PrintStream(buf, true, StandardCharsets.UTF_8));
+        try {
+            assertEquals(0, JmclbenchCli.execute("report", "--db", one.toString(), "--out", dir.resolve("r5").toString(), "--no-export"));
+        } finally {
+            System.setOut(old);
+        }
+        String summary = buf.toString(StandardCharsets.UTF_8);
+        assertTrue(summary.contains(" (1 run, "), summary);
+        String page = Files.readString(dir.resolve("r5/index.html"));
+        String header = page.substring(page.indexOf("<p class=\"meta\">"), page.indexOf("</p>", page.indexOf("<p class=\"meta\">")));
+        assertTrue(header.contains(", 1 run ("), header);
+        Matcher plural = Pattern.compile("\\b1 runs\\b").matcher(page);
+        assertFalse(plural.find(), "a count of one with a plural noun: " + (plural.find(0) ? page.substring(Math.max(0, plural.start() - 80), plural.end()) : ""));
+    }
+
     static String stderrOf(Runnable r) {
         PrintStream old = System.err;
         ByteArrayOutputStream buf = new ByteArrayOutputStream();

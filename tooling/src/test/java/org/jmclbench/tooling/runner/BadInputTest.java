@@ -189,6 +189,14 @@ class BadInputTest extends FakeJvmHome {
     }
 
     @Test
+    void aMatrixOfOneRunSaysOneRun() {
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--profiles", "g1", "--particles", "100",
+                "--policies", "skip", "--datasets", "tiny", "--dry-run", "--db", db.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertTrue(r.out().startsWith("1 run planned,"), r.out());
+    }
+
+    @Test
     void matrixFileAndCommandLineCombine() throws Exception {
         Path m = dir.resolve("m.properties");
         Files.writeString(m, "java = " + fake + "\nprofiles = g1, zgc\nparticles = 100\nparticles = 200\n"

@@ -25,6 +25,17 @@ class CapacityCommandTest {
     Path dir;
 
     @Test
+    void aCountMissedInTheOneRepetitionSaysOneRun() throws Exception {
+        Fixtures.home(dir);
+        String nativeBaseline = Fixtures.fakeJava(dir, "c", "breaks-at-2000", 0, null, 17).toString();
+        Fixtures.CliResult r = Fixtures.cli("capacity", "--runtimes", "native", "--native", nativeBaseline, "--datasets", "tiny",
+                "--repeat", "1", "--from", "1600", "--max", "3200", "--db", dir.resolve("results/one.db").toString());
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+        assertTrue(r.out().contains("at 3200 particles: a job missed its deadline in 1 of 1 run\n"), r.out());
+        assertFalse(r.out().contains("1 of 1 runs"), r.out());
+    }
+
+    @Test
     void bracketsEachBreakdownLoadAndRecordsEveryProbe() throws Exception {
         Fixtures.home(dir);
         String jvm = Fixtures.fakeJava(dir, "a", "breaks-at-1000", 0, null, 17).toString();

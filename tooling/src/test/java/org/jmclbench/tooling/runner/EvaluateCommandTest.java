@@ -102,6 +102,29 @@ class EvaluateCommandTest {
     }
 
     @Test
+    void aBudgetOfOneSectionOrOneRunSaysSoInTheSingular() throws Exception {
+        Fixtures.home(dir);
+        String one = """
+                datasets = tiny
+                runtimes = native
+                particles = 100
+                repeat = 1
+                [one]
+                policies = skip
+                """;
+        java.io.ByteArrayOutputStream buf = new java.io.ByteArrayOutputStream();
+        Path f = matrix(one);
+        EvaluateCommand.budget(EvaluationMatrix.read(f), dir).print(new java.io.PrintStream(buf, true, java.nio.charset.StandardCharsets.UTF_8), f);
+        String printed = buf.toString(java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(printed.startsWith("evaluate: " + f + ", 1 section\n"), printed);
+        assertTrue(printed.contains("  [one] 1 run (0 JVM or hvm, 1 native) of "), printed);
+        assertTrue(printed.contains("budget: 1 run, about "), printed);
+        EvaluateCommand.Budget b = EvaluateCommand.budget(EvaluationMatrix.read(matrix(one + "[two]\npolicies = skip, terminate\n")), dir);
+        assertTrue(b.lines().get(1).startsWith("[two] 1 run (0 JVM or hvm, 1 native; 1 more is an earlier section's run) of "),
+                b.lines().toString());
+    }
+
+    @Test
     void aBreakdownSectionSearchesEachConfigurationUnderQueueIntoTheStore() throws Exception {
         Fixtures.home(dir);
         Path nat = Fixtures.fakeJava(dir, "c", "breaks-at-2000", 0, null, 17);

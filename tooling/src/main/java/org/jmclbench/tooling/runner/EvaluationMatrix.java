@@ -158,10 +158,28 @@ public final class EvaluationMatrix {
                             + " <= " + BREAKDOWN_MAX + ", both given");
                 }
                 breakdown = new Breakdown(from, max);
+                // a search's configuration is runtime, profile, engine and memory style: a probe would hold the runs
+                // of every dataset and load at once and count them as its repetitions, as capacity --datasets a,b did
+                oneOnly(spec.datasets, "dataset", names.get(i));
+                oneOnly(spec.loads, "load scenario", names.get(i));
             }
             m.sections.add(new Section(names.get(i), spec, List.copyOf(applied), breakdown));
         }
         return m;
+    }
+
+    /**
+     * A breakdown section's list that holds more than one value: bad usage at the line that adds the second
+     * ({@link Sourced#where()}: file, line and key).
+     */
+    private static void oneOnly(List<Sourced<String>> values, String noun, String section) {
+        List<String> distinct = values.stream().map(Sourced::value).distinct().toList();
+        if (distinct.size() > 1) {
+            String where = values.stream().filter(v -> !v.value().equals(distinct.get(0))).findFirst().orElseThrow().where();
+            throw new BadUsageException(where + ": the breakdown search of [" + section + "] takes one " + noun
+                    + ", got " + String.join(", ", distinct) + " (each probe would count the runs of all as its repetitions;"
+                    + " give each its own section)");
+        }
     }
 
     /** A breakdown range's particle count: a positive integer, else bad usage at its line. */

@@ -125,6 +125,71 @@ class EvaluateCommandTest {
     }
 
     @Test
+    void aBreakdownSectionOfSeveralDatasetsOrLoadsIsOneLineNamingItsLine() throws Exception {
+        // each probe of a configuration held the runs of both datasets, counted as its repetitions: with repeat = 1
+        // the table said 'a job missed its deadline in 2 of 2 runs', a bracket of neither dataset
+        Fixtures.home(dir);
+        Files.createDirectories(dir.resolve("data/tiny2"));
+        try (var files = Files.list(dir.resolve("data/tiny"))) {
+            for (Path p : files.toList()) {
+                Files.copy(p, dir.resolve("data/tiny2").resolve(p.getFileName()));
+            }
+        }
+        Path nat = Fixtures.fakeJava(dir, "c", "breaks-at-2000", 0, null, 17);
+        Path f = matrix("""
+                repeat = 1
+                native = %s
+                [breakdown]
+                runtimes = native
+                datasets = tiny, tiny2
+                breakdown-from = 1600
+                breakdown-max = 3200
+                """.formatted(nat));
+        Path db = dir.resolve("results/evaluation.db");
+        Fixtures.CliResult r = Fixtures.cli("evaluate", "--matrix", f.toString(), "--db", db.toString(), "--out",
+                dir.resolve("docs/evaluation").toString(), "--verification", dir.resolve("none.json").toString());
+        assertEquals(2, r.exitCode(), r.out() + r.err());
+        assertEquals("jmclbench: " + f + ":5: datasets: the breakdown search of [breakdown] takes one dataset, got tiny, tiny2"
+                + " (each probe would count the runs of all as its repetitions; give each its own section)", r.err().strip());
+        assertFalse(Files.exists(db), "nothing run or recorded");
+        // the shared lines count too, and a load list likewise; one dataset under another section stays a matrix
+        BadUsageException e = assertThrows(BadUsageException.class, () -> EvaluationMatrix.read(matrix("""
+                datasets = tiny, tiny2
+                [sweep]
+                runtimes = native
+                [breakdown]
+                runtimes = native
+                breakdown-from = 100
+                breakdown-max = 200
+                """)));
+        assertTrue(e.getMessage().startsWith(dir.resolve("m.txt") + ":1: datasets: the breakdown search of [breakdown]"), e.getMessage());
+        e = assertThrows(BadUsageException.class, () -> EvaluationMatrix.read(matrix("""
+                datasets = tiny
+                [breakdown]
+                runtimes = native
+                load = none
+                load = cpu
+                breakdown-from = 100
+                breakdown-max = 200
+                """)));
+        assertTrue(e.getMessage().startsWith(dir.resolve("m.txt") + ":5: load: the breakdown search of [breakdown] takes one load scenario, got none, cpu"),
+                e.getMessage());
+        EvaluationMatrix ok = EvaluationMatrix.read(matrix("""
+                [sweep]
+                runtimes = native
+                datasets = tiny, tiny2
+                load = none, cpu
+                [breakdown]
+                runtimes = native
+                datasets = tiny2
+                load = cpu
+                breakdown-from = 100
+                breakdown-max = 200
+                """));
+        assertEquals(2, ok.sections.size());
+    }
+
+    @Test
     void aBreakdownSectionSearchesEachConfigurationUnderQueueIntoTheStore() throws Exception {
         Fixtures.home(dir);
         Path nat = Fixtures.fakeJava(dir, "c", "breaks-at-2000", 0, null, 17);

@@ -443,12 +443,7 @@ class EvaluationDocumentTest {
 
     @Test
     void aStoreOfOneRunAndOneRepetitionSaysSoInTheSingular() throws Exception {
-        FixtureDb f = new FixtureDb();
-        f.configs = List.of(f.configs.get(0));
-        f.policies = List.of("skip");
-        f.particles = List.of(400);
-        f.repetitions = 1;
-        Path one = ReportFixtures.write(f, dir, "one.db");
+        Path one = ReportFixtures.write(ReportFixtures.oneRun(), dir, "one.db");
         Path out = dir.resolve("one");
         EvaluationDocument.write(one, "one.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
         String d = Files.readString(out.resolve("EVALUATION.md"));

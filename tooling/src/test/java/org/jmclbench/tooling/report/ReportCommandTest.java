@@ -314,12 +314,7 @@ class ReportCommandTest {
 
     @Test
     void aStoreOfOneRunSaysOneRunNotOneRuns() throws Exception {
-        FixtureDb f = new FixtureDb();
-        f.configs = List.of(f.configs.get(0));
-        f.policies = List.of("skip");
-        f.particles = List.of(400);
-        f.repetitions = 1;
-        Path one = ReportFixtures.write(f, dir, "one.db");
+        Path one = ReportFixtures.write(ReportFixtures.oneRun(), dir, "one.db");
         PrintStream old = System.out;
         ByteArrayOutputStream buf = new ByteArrayOutputStream();
         System.setOut(new PrintStream(buf, true, StandardCharsets.UTF_8));

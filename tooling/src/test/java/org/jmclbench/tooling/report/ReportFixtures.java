@@ -31,6 +31,16 @@ final class ReportFixtures {
         return f;
     }
 
+    /** One run: the first runtime of the default fixture, skip, 400 particles, one repetition. */
+    static FixtureDb oneRun() {
+        FixtureDb f = new FixtureDb();
+        f.configs = List.of(f.configs.get(0));
+        f.policies = List.of("skip");
+        f.particles = List.of(400);
+        f.repetitions = 1;
+        return f;
+    }
+
     /** The labels of {@link #engines()}: the engine and memory style are part of each JVM row's name. */
     static final String JAVASE = "temurin-25/g1 / javase preallocated";
     static final String JAVASE_ALLOCATING = "temurin-25/g1 / javase allocating";

@@ -36,6 +36,14 @@ class StoreTest {
         assertEquals(0, r.exitCode(), r.out() + r.err());
     }
 
+    /** A store at {@code name} (below the test's folder) holding fake-17's runs at {@code particles}. */
+    private Path storeOfJava17Runs(String name, String particles) throws Exception {
+        Fixtures.home(dir);
+        Path db = dir.resolve(name);
+        matrix(db, particles, Fixtures.FakeJvms.in(dir).java17());
+        return db;
+    }
+
     @Test
     void mergeKeepsEveryRunOnceAndCopiesFolders() throws Exception {
         Fixtures.home(dir);
@@ -92,10 +100,7 @@ class StoreTest {
 
     @Test
     void mergingAStoreIntoItselfByAnotherNameChangesNothing() throws Exception {
-        Fixtures.home(dir);
-        Fixtures.FakeJvms jvms = Fixtures.FakeJvms.in(dir);
-        Path db = dir.resolve("A/results.db");
-        matrix(db, "100", jvms.java17());
+        Path db = storeOfJava17Runs("A/results.db", "100");
         Path link = Files.createSymbolicLink(dir.resolve("link.db"), db);
         Fixtures.CliResult r = Fixtures.cli("merge", link.toString(), "--into", db.toString());
         assertEquals(0, r.exitCode(), r.err());
@@ -105,10 +110,7 @@ class StoreTest {
 
     @Test
     void aMergeThatFailsLeavesTheTargetsRunFoldersAsTheyWere() throws Exception {
-        Fixtures.home(dir);
-        Fixtures.FakeJvms jvms = Fixtures.FakeJvms.in(dir);
-        Path src = dir.resolve("S/results.db");
-        matrix(src, "100,200", jvms.java17());
+        Path src = storeOfJava17Runs("S/results.db", "100,200");
         List<String> keys = column(src, "SELECT run_key FROM runs ORDER BY rowid");
         // the target: the first run failed there (its folder holds its own log), the second not there at all
         Path into = dir.resolve("T/results.db");

@@ -99,10 +99,20 @@ public final class Fixtures {
             System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
             System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
             int rc = JmclbenchCli.execute(args);
-            return new CliResult(rc, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+            return new CliResult(rc, out.toString(StandardCharsets.UTF_8), withoutFuzzerLines(err.toString(StandardCharsets.UTF_8)));
         } finally {
             System.setOut(oldOut);
             System.setErr(oldErr);
         }
+    }
+
+    /**
+     * {@code err} without the lines Jazzer's agent prints when it instruments a class: once
+     * MatrixFileFuzzTest has run in this test JVM, the first use of a class (say a new record of the
+     * evaluation matrix) adds "INFO: Instrumented ... with custom hooks only" to whatever stderr is
+     * then, which is the test JVM's, not the command's.
+     */
+    static String withoutFuzzerLines(String err) {
+        return err.replaceAll("(?m)^INFO: Instrumented [^\n]*\n", "");
     }
 }

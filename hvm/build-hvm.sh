@@ -21,6 +21,7 @@
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
+. "$HERE/script-options.sh"
 HVM_COMMIT=4d31e231688a7fdaddd464d21a3923b435d11683
 HVM_REPO=https://github.com/scj-devel/hvm-scj
 # The pinned commit's tarball (../shared/vendor/README.md): its build is the clone's, one cache entry.
@@ -35,8 +36,8 @@ for a in "$@"; do
     case "$a" in
         --unpatched) patched=0 ;;
         --check) check=1 ;;
-        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
-        *) echo "build-hvm: unknown option: $a" >&2; exit 2 ;;
+        -h|--help) header_help; exit 0 ;;
+        *) bad "unknown option: $a" ;;
     esac
 done
 
@@ -53,7 +54,7 @@ if [ "$(uname -m)" != x86_64 ] || [ "$(uname -s)" != Linux ]; then
 fi
 # HVM_SRC is checked first and alone: a wrong path is the user's input, not this machine's lack.
 if [ -n "${HVM_SRC:-}" ]; then
-    bad_src() { echo "build-hvm: HVM_SRC=$HVM_SRC: $*" >&2; exit 2; }
+    bad_src() { bad "HVM_SRC=$HVM_SRC: $*"; }
     if [ -d "$HVM_SRC" ]; then
         [ -d "$HVM_SRC/icecapvm/src" ] || bad_src "not an hvm-scj folder (no icecapvm/src)"
     elif [ -f "$HVM_SRC" ]; then

@@ -21,7 +21,7 @@ ROOT=$(dirname "$HERE")
 # memory areas larger than this fail at launch.
 heap=268435456
 mode=${JMCLBENCH_HVM_MODE:-compiled}
-bad() { echo "build-mission: $*" >&2; exit 2; }
+. "$HERE/script-options.sh"
 while [ $# -gt 0 ]; do
     case "$1" in
         --heap|--mode) [ $# -ge 2 ] || bad "$1: needs a value" ;;
@@ -29,7 +29,7 @@ while [ $# -gt 0 ]; do
     case "$1" in
         --heap) heap=$2; shift 2 ;;
         --mode) mode=$2; shift 2 ;;
-        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
+        -h|--help) header_help; exit 0 ;;
         *) bad "unknown option: $1" ;;
     esac
 done

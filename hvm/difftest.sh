@@ -21,7 +21,7 @@ count=100
 modes=interpreted,compiled
 keep=
 tc=
-bad() { echo "difftest: $*" >&2; exit 2; }
+. "$HERE/script-options.sh"
 # a folder to write into: absent (made when needed) or a folder, below no file
 writable_folder() { # writable_folder OPTION PATH
     local p=$2
@@ -40,7 +40,7 @@ while [ $# -gt 0 ]; do
         --count) count=$2; shift 2 ;;
         --modes) modes=$2; shift 2 ;;
         --keep) writable_folder --keep "$2"; keep=$(realpath -m "$2"); shift 2 ;;
-        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
+        -h|--help) header_help; exit 0 ;;
         *) bad "unknown option: $1" ;;
     esac
 done

@@ -22,13 +22,15 @@
 # Steps (about 10 s): main.CompilationManager writes the program and the VM as C into a
 # temporary folder; gcc links it with the flags below.
 set -euo pipefail
+HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
+. "$HERE/script-options.sh"
 
 tc= classes= main= heap=16000000 out= log= mode=interpreted keep= methods=
 natives=()
 while [ $# -gt 0 ]; do
     case "$1" in
         --toolchain|--classes|--main|--natives|--heap|--log|--mode|--keep-c|--methods|-o)
-            [ $# -ge 2 ] || { echo "hvmc: $1: needs a value" >&2; exit 2; } ;;
+            [ $# -ge 2 ] || bad "$1: needs a value" ;;
     esac
     case "$1" in
         --toolchain) tc=$2; shift 2 ;;
@@ -42,7 +44,7 @@ while [ $# -gt 0 ]; do
         --keep-c) keep=$2; shift 2 ;;
         --methods) methods=$2; shift 2 ;;
         -o) out=$2; shift 2 ;;
-        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
+        -h|--help) header_help; exit 0 ;;
         *) echo "hvmc: unknown option: $1" >&2; exit 2 ;;
     esac
 done

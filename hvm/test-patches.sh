@@ -19,13 +19,13 @@ HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
 TIMEOUT=15
 variants=(patched)
 only=
-bad() { echo "test-patches: $*" >&2; exit 2; }
+. "$HERE/script-options.sh"
 for a in "$@"; do
     case "$a" in
         --unpatched) variants+=(unpatched) ;;
         --only=*) only=${a#--only=}; [ -n "$only" ] || bad "--only: needs a test name (--only=NAME)" ;;
         --only) bad "--only: needs a test name (--only=NAME)" ;;
-        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
+        -h|--help) header_help; exit 0 ;;
         *) bad "unknown option: $a" ;;
     esac
 done

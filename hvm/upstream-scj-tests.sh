@@ -15,7 +15,7 @@ HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
 timeout_s=60
 modes=interpreted,compiled
 names=()
-bad() { echo "upstream-scj-tests: $*" >&2; exit 2; }
+. "$HERE/script-options.sh"
 while [ $# -gt 0 ]; do
     case "$1" in
         --timeout|--modes) [ $# -ge 2 ] || bad "$1: needs a value" ;;
@@ -23,7 +23,7 @@ while [ $# -gt 0 ]; do
     case "$1" in
         --timeout) timeout_s=$2; shift 2 ;;
         --modes) modes=$2; shift 2 ;;
-        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
+        -h|--help) header_help; exit 0 ;;
         -*) bad "unknown option: $1" ;;
         *) names+=("$1"); shift ;;
     esac

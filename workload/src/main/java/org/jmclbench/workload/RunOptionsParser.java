@@ -286,10 +286,10 @@ public final class RunOptionsParser {
         return v;
     }
 
-    /** A name used as a folder of the run path: letters, digits and . _ + - only, so it cannot escape the output root. */
     /** The longest folder name the file systems we run on take (NAME_MAX), as the C baseline checks it. */
     private static final int FOLDER_NAME_MAX = 255;
 
+    /** A name used as a folder of the run path: letters, digits and . _ + - only, so it cannot escape the output root. */
     private static String pathComponent(String name, String v) throws BadInputException {
         if (!v.matches("[A-Za-z0-9._+-]+") || v.equals(".") || v.equals("..")) {
             throw BadInputException.ofOption(name, "'" + v + "' must be letters, digits, '.', '_', '+' or '-'");

@@ -72,11 +72,12 @@ public record Doctor(Path root, boolean runCommands) {
      * below it permits a lower priority and still refuses the profile's.
      */
     DoctorCheck fifoPermission() {
-        String chrt = "chrt -f " + ProfileComponent.FIFO_PRIORITY + " true";
+        List<String> command = List.of("chrt", "-f", Integer.toString(ProfileComponent.FIFO_PRIORITY), "true");
+        String chrt = String.join(" ", command);
         if (!runCommands) {
             return DoctorCheck.warn("sched-fifo", "not tried", "try it: " + chrt);
         }
-        ProcessRunner.Result r = ProcessRunner.run(List.of(chrt.split(" ")), 10_000);
+        ProcessRunner.Result r = ProcessRunner.run(command, 10_000);
         if (r.ok()) {
             return DoctorCheck.pass("sched-fifo", "permitted at the fifo profile's priority (" + chrt + " succeeded)");
         }

@@ -9,6 +9,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeSet;
 import java.util.concurrent.Callable;
 import java.util.function.Function;
@@ -90,8 +91,7 @@ public final class CompareCommand implements Callable<Integer> {
                 runsB = choose(filtered(all), all, b, "--b", db);
             }
             // runs against themselves give a ratio of 1 with a bootstrap interval around it, as if measured twice
-            if (runsA.stream().map(r -> r.runKey).collect(Collectors.toSet())
-                    .equals(runsB.stream().map(r -> r.runKey).collect(Collectors.toSet()))) {
+            if (keys(runsA).equals(keys(runsB))) {
                 throw new BadUsageException("--b: " + b + " names the same runs as --a " + a + " in " + db + ": nothing to compare");
             }
             nameA = a;
@@ -180,13 +180,16 @@ public final class CompareCommand implements Callable<Integer> {
             if (gb == null) {
                 continue;
             }
-            if (!e.getValue().stream().map(r -> r.runKey).collect(Collectors.toSet())
-                    .equals(gb.stream().map(r -> r.runKey).collect(Collectors.toSet()))) {
+            if (!keys(e.getValue()).equals(keys(gb))) {
                 return false;
             }
             any = true;
         }
         return any;
+    }
+
+    private static Set<String> keys(List<StoredRun> runs) {
+        return runs.stream().map(r -> r.runKey).collect(Collectors.toSet());
     }
 
     private boolean hasFilter() {

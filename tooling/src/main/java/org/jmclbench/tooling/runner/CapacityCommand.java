@@ -14,7 +14,9 @@ import java.util.stream.Collectors;
 import org.jmclbench.tooling.cli.Counts;
 import org.jmclbench.tooling.doctor.Doctor;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
+import org.jmclbench.tooling.runtime.Profile;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
+import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.store.MachineInfo;
 import org.jmclbench.tooling.store.RunRecorder;
 import org.jmclbench.tooling.store.RunRow;
@@ -190,8 +192,7 @@ public final class CapacityCommand implements Callable<Integer> {
      * when native was not searched so.
      */
     static CapacitySearch baseline(Map<Configuration, CapacitySearch> searches, Configuration of) {
-        String profile = org.jmclbench.tooling.runtime.Profile.parse(of.profile(), "--profiles")
-                .effectiveFor(org.jmclbench.tooling.runtime.RuntimeKind.NATIVE).name();
+        String profile = Profile.parse(of.profile(), "--profiles").effectiveFor(RuntimeKind.NATIVE).name();
         Map<String, CapacitySearch> byMemory = new LinkedHashMap<>();
         searches.forEach((k, v) -> {
             if (k.runtime().equals("native") && k.profile().equals(profile)) {

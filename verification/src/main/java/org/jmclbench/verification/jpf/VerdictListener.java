@@ -170,12 +170,10 @@ public final class VerdictListener extends ListenerAdapter {
         p.setProperty("done", "true");
         // written whole or not at all: a JVM killed at the budget mid-write left a verdict without its errors
         Path partial = out.resolveSibling(out.getFileName() + ".partial");
-        try (Writer w = Files.newBufferedWriter(partial, StandardCharsets.UTF_8)) {
-            p.store(w, "jmclbench JPF verdict");
-        } catch (IOException e) {
-            throw new IllegalStateException("cannot write " + out, e);
-        }
         try {
+            try (Writer w = Files.newBufferedWriter(partial, StandardCharsets.UTF_8)) {
+                p.store(w, "jmclbench JPF verdict");
+            }
             Files.move(partial, out, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
         } catch (IOException e) {
             throw new IllegalStateException("cannot write " + out, e);

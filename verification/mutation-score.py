@@ -117,7 +117,7 @@ MUTANTS = [
      "            if ((m & pollMask) == 0 && abort.abortRequested()) {\n                return false;\n            }\n            int k = index[m];",
      "            int k = index[m];",
      "the resampled particles' copy does not poll"),
-    ("weights-not-normalised", MCL + "FilterSteps.java",
+    ("weights-not-normalised", MCL + "Likelihood.java",
      "w[i] = w[i] / total;", "w[i] = w[i] * total;",
      "the weights are multiplied by their total instead of divided"),
     ("periodic-late-dropped", RT + "PeriodicRuntime.java",

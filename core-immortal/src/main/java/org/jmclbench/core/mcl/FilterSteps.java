@@ -55,23 +55,7 @@ final class FilterSteps {
             w[i] = Likelihood.of(px[i], py[i], pt[i], angle, p);
             total += w[i];
         }
-        if (total == 0.0 || Double.isNaN(total) || Double.isInfinite(total)) {
-            double uniform = 1.0 / n;
-            for (int i = 0; i < n; i++) {
-                if ((i & pollMask) == 0 && abort.abortRequested()) {
-                    return false;
-                }
-                w[i] = uniform;
-            }
-        } else {
-            for (int i = 0; i < n; i++) {
-                if ((i & pollMask) == 0 && abort.abortRequested()) {
-                    return false;
-                }
-                w[i] = w[i] / total;
-            }
-        }
-        return true;
+        return Likelihood.normalise(w, n, total, abort, pollMask);
     }
 
     /**

@@ -21,4 +21,29 @@ public final class Likelihood {
         }
         return w;
     }
+
+    /**
+     * Divides the weights w[0..n) by their total in place; when the total is 0, NaN or infinite
+     * (no particle explains the measurement) every weight becomes 1/n instead. Polls the abort
+     * signal before every block of particles ({@code pollMask + 1}); false when aborted.
+     */
+    public static boolean normalise(double[] w, int n, double total, AbortSignal abort, int pollMask) {
+        if (total == 0.0 || Double.isNaN(total) || Double.isInfinite(total)) {
+            double uniform = 1.0 / n;
+            for (int i = 0; i < n; i++) {
+                if ((i & pollMask) == 0 && abort.abortRequested()) {
+                    return false;
+                }
+                w[i] = uniform;
+            }
+        } else {
+            for (int i = 0; i < n; i++) {
+                if ((i & pollMask) == 0 && abort.abortRequested()) {
+                    return false;
+                }
+                w[i] = w[i] / total;
+            }
+        }
+        return true;
+    }
 }

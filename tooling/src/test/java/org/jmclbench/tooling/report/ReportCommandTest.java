@@ -5,15 +5,13 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import org.jmclbench.tooling.Fixtures;
 import org.jmclbench.tooling.cli.JmclbenchCli;
 import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
@@ -255,8 +253,8 @@ class ReportCommandTest {
 
     @Test
     void missingDatabaseIsOneLineAndExitTwo() {
-        String err = stderrOf(() -> assertEquals(2, JmclbenchCli.execute("report", "--db", dir.resolve("nope.db").toString(),
-                "--out", dir.resolve("r2").toString())));
+        String err = refusal("report", "--db", dir.resolve("nope.db").toString(),
+                "--out", dir.resolve("r2").toString());
         assertEquals(1, err.strip().lines().count(), err);
         assertTrue(err.contains("--db") && err.contains("nope.db"), err);
         assertFalse(Files.exists(dir.resolve("r2")), "nothing written for bad input");
@@ -271,8 +269,8 @@ class ReportCommandTest {
         Path file = Files.writeString(dir.resolve("a-file"), "a file");
         Path below = file.resolve("report");
         for (Path store : List.of(db, dir.resolve("nope.db"))) {
-            String err = stderrOf(() -> assertEquals(2, JmclbenchCli.execute("report", "--db", store.toString(),
-                    "--out", below.toString())));
+            String err = refusal("report", "--db", store.toString(),
+                    "--out", below.toString());
             assertEquals("jmclbench: --out: " + below + ": cannot write there (" + file + " is a file)", err.strip(),
                     "one line naming --out, and no line of the store being read");
         }
@@ -284,8 +282,8 @@ class ReportCommandTest {
         Path results = Files.createDirectories(dir.resolve("bad-verification"));
         Path store = Files.copy(db, results.resolve("results.db"));
         Path verification = Files.writeString(results.resolve("verification.json"), "{\n  \"checks\": [\n  oops\n");
-        String err = stderrOf(() -> assertEquals(2, JmclbenchCli.execute("report", "--db", store.toString(),
-                "--out", results.resolve("report").toString())));
+        String err = refusal("report", "--db", store.toString(),
+                "--out", results.resolve("report").toString());
         assertEquals(1, err.strip().lines().count(), err);
         assertTrue(err.startsWith("jmclbench: " + verification + ":3: not JSON"), err);
         assertFalse(Files.exists(results.resolve("report/index.html")), "no page from a store whose verdicts cannot be read");
@@ -294,8 +292,8 @@ class ReportCommandTest {
     @Test
     void notADatabaseIsBadInput() throws Exception {
         Path junk = Files.writeString(dir.resolve("junk.db"), "not sqlite");
-        String err = stderrOf(() -> assertEquals(2, JmclbenchCli.execute("report", "--db", junk.toString(),
-                "--out", dir.resolve("r3").toString())));
+        String err = refusal("report", "--db", junk.toString(),
+                "--out", dir.resolve("r3").toString());
         assertEquals(1, err.strip().lines().count(), err);
     }
 
@@ -315,15 +313,9 @@ class ReportCommandTest {
     @Test
     void aStoreOfOneRunSaysOneRunNotOneRuns() throws Exception {
         Path one = ReportFixtures.write(ReportFixtures.oneRun(), dir, "one.db");
-        PrintStream old = System.out;
-        ByteArrayOutputStream buf = new ByteArrayOutputStream();
-        System.setOut(new PrintStream(buf, true, StandardCharsets.UTF_8));
-        try {
-            assertEquals(0, JmclbenchCli.execute("report", "--db", one.toString(), "--out", dir.resolve("r5").toString(), "--no-export"));
-        } finally {
-            System.setOut(old);
-        }
-        String summary = buf.toString(StandardCharsets.UTF_8);
+        Fixtures.CliResult r = Fixtures.cli("report", "--db", one.toString(), "--out", dir.resolve("r5").toString(), "--no-export");
+        assertEquals(0, r.exitCode(), r.err());
+        String summary = r.out();
         assertTrue(summary.contains(" (1 run, "), summary);
         String page = Files.readString(dir.resolve("r5/index.html"));
         String header = page.substring(page.indexOf("<p class=\"meta\">"), page.indexOf("</p>", page.indexOf("<p class=\"meta\">")));
@@ -332,15 +324,10 @@ class ReportCommandTest {
         assertFalse(plural.find(), "a count of one with a plural noun: " + (plural.find(0) ? page.substring(Math.max(0, plural.start() - 80), plural.end()) : ""));
     }
 
-    static String stderrOf(Runnable r) {
-        PrintStream old = System.err;
-        ByteArrayOutputStream buf = new ByteArrayOutputStream();
-        System.setErr(new PrintStream(buf, true, StandardCharsets.UTF_8));
-        try {
-            r.run();
-        } finally {
-            System.setErr(old);
-        }
-        return buf.toString(StandardCharsets.UTF_8);
+    /** What the report command printed to stderr, with exit code 2 (bad input) asserted. */
+    static String refusal(String... args) {
+        Fixtures.CliResult r = Fixtures.cli(args);
+        assertEquals(2, r.exitCode(), r.err());
+        return r.err();
     }
 }

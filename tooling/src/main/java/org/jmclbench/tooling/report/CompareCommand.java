@@ -5,6 +5,7 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -16,6 +17,7 @@ import java.util.function.Function;
 import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.cli.Counts;
 import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
 
@@ -138,6 +140,15 @@ public final class CompareCommand implements Callable<Integer> {
                     + " and each side would hold the same runs: nothing to compare (two configurations of one store:"
                     + " --db FILE --a CONFIG --b CONFIG)");
         }
+        if (db == null) {
+            // a copy of a store, or a merge that holds it, brings A's measurements to B: not a second sample
+            long shared = sharedMeasurements(groupsA, groupsB);
+            if (shared > 0) {
+                throw new BadUsageException("compare: B " + databases.get(1) + " holds " + Counts.of(shared, "run")
+                        + " of A " + databases.get(0) + " (the same run key and measured results: a copy of A or a merge"
+                        + " that holds it): each side must be measured apart");
+            }
+        }
         out.println("A: " + nameA);
         out.println("B: " + nameB);
         int compared = 0;
@@ -186,6 +197,24 @@ public final class CompareCommand implements Callable<Integer> {
             any = true;
         }
         return any;
+    }
+
+    /** How many runs the settings both sides have hold on both sides, the very same measurement (key and results). */
+    private static long sharedMeasurements(Map<String, List<StoredRun>> groupsA, Map<String, List<StoredRun>> groupsB) {
+        long shared = 0;
+        for (Map.Entry<String, List<StoredRun>> e : groupsA.entrySet()) {
+            List<StoredRun> gb = groupsB.get(e.getKey());
+            if (gb != null) {
+                Set<List<String>> inB = gb.stream().map(CompareCommand::measurement).collect(Collectors.toSet());
+                shared += e.getValue().stream().map(CompareCommand::measurement).filter(inB::contains).count();
+            }
+        }
+        return shared;
+    }
+
+    /** A run as measured: two runs of one matrix on two machines share the key, never the start and the results. */
+    private static List<String> measurement(StoredRun r) {
+        return Arrays.asList(r.runKey, r.startedAt, r.summaryJson);
     }
 
     private static Set<String> keys(List<StoredRun> runs) {

@@ -91,6 +91,21 @@ class CompareCommandTest {
         assertTrue(out.contains("task latency mean"), out);
     }
 
+    /** A copy of a store, or a merge that holds it, brings A's own measurements to B: a ratio of 1 measured once. */
+    @Test
+    void aCopyOfAOrAMergeHoldingItIsRefusedAsB() throws Exception {
+        Path copy = java.nio.file.Files.copy(a, dir.resolve("copy-of-a.db"));
+        String err = run(2, "compare", a.toString(), copy.toString())[1];
+        assertEquals("jmclbench: compare: B " + copy + " holds 30 runs of A " + a + " (the same run key and measured results:"
+                + " a copy of A or a merge that holds it): each side must be measured apart", err.strip());
+        Path merged = dir.resolve("merged/results.db");
+        run(0, "merge", a.toString(), b.toString(), "--into", merged.toString());
+        err = run(2, "compare", a.toString(), merged.toString())[1];
+        assertTrue(err.contains("holds 30 runs of A"), err);
+        // B's runs share A's keys (one matrix on two machines) but not A's measurements: these compare
+        assertTrue(run(0, "compare", a.toString(), b.toString())[0].contains("task latency mean"));
+    }
+
     @Test
     void missCountIsNamedForTheJobsItCountsUnderEachPolicy() throws Exception {
         FixtureDb f = new FixtureDb();

@@ -159,4 +159,14 @@ public class Samples implements Interruptible {
     }
 
     private volatile boolean firedFlag;
+
+    /** A class whose AI-enabled methods include one without code: nothing to weave there. */
+    public abstract static class WithAbstractStep {
+        protected abstract void step() throws AsynchronouslyInterruptedException;
+
+        public void steps() throws AsynchronouslyInterruptedException {
+            step();
+            step();
+        }
+    }
 }

@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
+import java.util.BitSet;
 import java.util.List;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
@@ -25,11 +26,12 @@ import org.objectweb.asm.tree.TableSwitchInsnNode;
 
 /**
  * Weaves RTSJ delivery points into AI-enabled methods: a call to
- * {@code org.jmclbench.rtsjcompat.Atc.poll()} at the method's entry, before every backward branch
- * and after every call, wherever the instruction is not in a monitor region or a {@code finally}
- * ({@link MethodRegions}). AI-enabled means declaring {@code AsynchronouslyInterruptedException}
- * itself (not a subclass) in the throws clause, as RTSJ defines it; nothing else is touched, so
- * every other method keeps RTSJ's deferral by having no delivery point at all.
+ * {@code org.jmclbench.rtsjcompat.Atc.poll()} at the method's entry, before every backward branch,
+ * after every call and where a synchronized block or a finally ends, wherever the instruction is
+ * not in a monitor region or a {@code finally} ({@link MethodRegions}). AI-enabled means declaring
+ * {@code AsynchronouslyInterruptedException} itself (not a subclass) in the throws clause, as RTSJ
+ * defines it; nothing else is touched, so every other method keeps RTSJ's deferral by having no
+ * delivery point at all.
  *
  * <p>The woven class carries an invisible marker annotation, so weaving twice (an incremental
  * build) changes nothing. {@code main(dirs...)} rewrites the classes under each directory in
@@ -173,19 +175,16 @@ public final class Weaver {
         AbstractInsnNode[] insns = r.instructions();
         int points = 0;
         boolean entryDone = false;
+        BitSet exits = r.deferralExits(i -> deliverable(r, i));
         for (int i = 0; i < insns.length; i++) {
             AbstractInsnNode n = insns[i];
             if (n.getOpcode() < 0) {
                 continue; // labels, line numbers, frames
             }
-            if (!entryDone) {
-                entryDone = true;
-                if (deliverable(r, i)) {
-                    m.instructions.insertBefore(n, poll());
-                    points++;
-                }
-            }
-            if (backwardBranch(r, n, i) && deliverable(r, i)) {
+            boolean entry = !entryDone;
+            entryDone = true;
+            // one delivery point before the instruction, whichever of the rules asks for it
+            if (deliverable(r, i) && (entry || backwardBranch(r, n, i) || exits.get(i))) {
                 m.instructions.insertBefore(n, poll());
                 points++;
             }

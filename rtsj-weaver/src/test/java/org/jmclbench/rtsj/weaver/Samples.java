@@ -55,6 +55,13 @@ public class Samples implements Interruptible {
             case "crossThread":
                 crossThread(aie);
                 break;
+            case "endsInSynchronized":
+                synchronized (lock) {
+                    aie.fire();
+                    log("in monitor");
+                }
+                count = 1; // RTSJ: not reached, the AIE is delivered as the monitor region ends
+                return;
             default:
                 throw new IllegalArgumentException(scenario);
         }

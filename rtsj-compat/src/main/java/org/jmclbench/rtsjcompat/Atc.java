@@ -11,8 +11,9 @@ import javax.realtime.Interruptible;
  * <p>A JVM cannot throw into another thread at an arbitrary instruction without
  * {@code Thread.stop}; so the build rewrites every AI-enabled method (one declaring
  * {@code throws AsynchronouslyInterruptedException}) to call {@link #poll()} at its entry, at
- * each backward branch and after each call that returns into it, except inside a monitor region
- * or a {@code finally} (see the rtsj-weaver module). Code that is not rewritten (non-AI methods,
+ * each backward branch, after each call that returns into it and where a monitor region or a
+ * {@code finally} ends, except inside a monitor region or a {@code finally} (see the rtsj-weaver
+ * module). Code that is not rewritten (non-AI methods,
  * libraries) has no delivery point, which is exactly RTSJ's deferral: a fired AIE stays pending
  * until control is back in AI-enabled code.
  *

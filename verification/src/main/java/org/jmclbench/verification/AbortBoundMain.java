@@ -20,6 +20,8 @@ import org.jmclbench.verification.bytecode.ClassPool;
 import org.objectweb.asm.tree.ClassNode;
 import org.objectweb.asm.tree.MethodNode;
 
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
@@ -82,8 +84,16 @@ public final class AbortBoundMain {
             Path s = runDir.resolve("summary.json");
             try {
                 summary = new ObjectMapper().readTree(Files.readString(s));
+            } catch (JsonProcessingException e) {
+                // Jackson's message puts the source and location on lines of their own
+                JsonLocation at = e.getLocation();
+                return bad(err, "--run: " + s + (at != null && at.getLineNr() > 0 ? ":" + at.getLineNr() : "")
+                        + ": not JSON (" + e.getOriginalMessage().replaceAll("\\s+", " ").strip() + ")");
             } catch (IOException e) {
                 return bad(err, "--run: cannot read " + s + ": " + e.getMessage());
+            }
+            if (summary == null || !summary.isObject()) {
+                return bad(err, "--run: " + s + ": not a run's summary.json (no JSON object)");
             }
             // the run says what ran: an option left out is taken from it, one that contradicts it is an error
             JsonNode ran = summary.path("parameters");

@@ -144,6 +144,23 @@ class AbortBoundTest {
     }
 
     @Test
+    void aRunWhoseSummaryIsNotJsonIsOneLineNamingItsLine(@TempDir Path run) throws Exception {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream e = new PrintStream(err, true, StandardCharsets.UTF_8);
+        PrintStream o = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+        Path summary = run.resolve("summary.json");
+        Files.writeString(summary, "{\"parameters\":\n");
+        assertEquals(2, AbortBoundMain.run(new String[] {"--classes", "x", "--run", run.toString()}, o, e));
+        Files.writeString(summary, "[1, 2]\n");
+        assertEquals(2, AbortBoundMain.run(new String[] {"--classes", "x", "--run", run.toString()}, o, e));
+        String[] lines = err.toString(StandardCharsets.UTF_8).split("\n");
+        assertEquals(2, lines.length, err.toString(StandardCharsets.UTF_8));
+        assertTrue(lines[0].startsWith("jmclbench: abort-bound: --run: " + summary + ":2: not JSON ("), lines[0]);
+        // not "--engine: required": the file is what is wrong
+        assertEquals("jmclbench: abort-bound: --run: " + summary + ": not a run's summary.json (no JSON object)", lines[1]);
+    }
+
+    @Test
     void badInputIsOneLineAndExitTwo() {
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         PrintStream e = new PrintStream(err, true, StandardCharsets.UTF_8);

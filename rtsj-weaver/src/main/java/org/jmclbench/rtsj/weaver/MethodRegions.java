@@ -8,6 +8,7 @@ import java.util.HashMap;
 import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.IntPredicate;
 import org.objectweb.asm.Opcodes;
 import org.objectweb.asm.tree.AbstractInsnNode;
 import org.objectweb.asm.tree.InsnList;
@@ -38,6 +39,8 @@ final class MethodRegions {
     private final int[] depthBefore;
     private final int[] line;
     private final BitSet finallyCode = new BitSet();
+    /** A synchronized block's exception cleanup (release the monitor, rethrow): deferred to its rethrow. */
+    private final BitSet cleanupCode = new BitSet();
     private final Set<Integer> finallyLines = new HashSet<>();
 
     MethodRegions(MethodNode method, String where) {
@@ -62,12 +65,47 @@ final class MethodRegions {
 
     /** Whether an AIE may be delivered just before instruction i (and, for a call, just after it). */
     boolean deliverable(int i) {
-        return depthBefore[i] == 0 && !finallyCode.get(i) && !finallyLines.contains(line[i]);
+        return depthBefore[i] == 0 && !cleanupCode.get(i) && !finallyCode.get(i) && !finallyLines.contains(line[i]);
     }
 
     /** {@link #deliverable(int)} without the finally rule (the weaver's seeded bug for tests). */
     boolean deliverableIgnoringFinally(int i) {
-        return depthBefore[i] == 0;
+        return depthBefore[i] == 0 && !cleanupCode.get(i);
+    }
+
+    /**
+     * The instructions where {@code deliverable} allows a delivery and that normal flow (a
+     * fall-through or a branch, not an exception) reaches from one where it does not: the ends of
+     * synchronized blocks and finally code. RTSJ delivers an AIE that became pending in there as
+     * soon as control leaves it; without a delivery point at the exit it waited for the next call
+     * or backward branch, and was lost when the method returned first to its doInterruptible.
+     */
+    BitSet deferralExits(IntPredicate deliverable) {
+        BitSet exits = new BitSet();
+        for (int p = 0; p < insns.length; p++) {
+            AbstractInsnNode n = insns[p];
+            int op = n.getOpcode();
+            if (op < 0 || depthBefore[p] < 0 || deliverable.test(p)) {
+                continue;
+            }
+            // javac ends neither a monitor region nor a finally with a switch
+            if (n instanceof JumpInsnNode) {
+                exit(nextReal(indexOf(((JumpInsnNode) n).label)), deliverable, exits);
+            }
+            boolean fallsThrough = n instanceof JumpInsnNode ? op != Opcodes.GOTO
+                    : !(n instanceof TableSwitchInsnNode || n instanceof LookupSwitchInsnNode)
+                    && !(op >= Opcodes.IRETURN && op <= Opcodes.RETURN) && op != Opcodes.ATHROW;
+            if (fallsThrough) {
+                exit(nextReal(p + 1), deliverable, exits);
+            }
+        }
+        return exits;
+    }
+
+    private static void exit(int i, IntPredicate deliverable, BitSet exits) {
+        if (i >= 0 && deliverable.test(i)) {
+            exits.set(i);
+        }
     }
 
     /** The instructions, in code order. */
@@ -168,7 +206,10 @@ final class MethodRegions {
             int third = second < 0 ? -1 : nextReal(second + 1);
             if (second >= 0 && insns[second].getOpcode() == Opcodes.ALOAD && third >= 0
                     && insns[third].getOpcode() == Opcodes.MONITOREXIT) {
-                continue; // the monitor's own cleanup of a synchronized block, covered by the depths
+                // the monitor's own cleanup of a synchronized block: the depths cover it up to the
+                // monitorexit; its rethrow is no exit from the block where an AIE should replace it
+                cleanupCode.set(h, rethrowOf(first, slot) + 1);
+                continue;
             }
             int end = rethrowOf(first, slot);
             boolean anyLine = false;

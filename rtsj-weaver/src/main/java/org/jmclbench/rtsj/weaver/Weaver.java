@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
+import java.util.BitSet;
 import java.util.List;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
@@ -25,15 +26,17 @@ import org.objectweb.asm.tree.TableSwitchInsnNode;
 
 /**
  * Weaves RTSJ delivery points into AI-enabled methods: a call to
- * {@code org.jmclbench.rtsjcompat.Atc.poll()} at the method's entry, before every backward branch
- * and after every call, wherever the instruction is not in a monitor region or a {@code finally}
- * ({@link MethodRegions}). AI-enabled means declaring {@code AsynchronouslyInterruptedException}
- * itself (not a subclass) in the throws clause, as RTSJ defines it; nothing else is touched, so
- * every other method keeps RTSJ's deferral by having no delivery point at all.
+ * {@code org.jmclbench.rtsjcompat.Atc.poll()} at the method's entry, before every backward branch,
+ * after every call and where a synchronized block or a finally ends, wherever the instruction is
+ * not in a monitor region or a {@code finally} ({@link MethodRegions}). AI-enabled means declaring
+ * {@code AsynchronouslyInterruptedException} itself (not a subclass) in the throws clause, as RTSJ
+ * defines it; nothing else is touched, so every other method keeps RTSJ's deferral by having no
+ * delivery point at all.
  *
  * <p>The woven class carries an invisible marker annotation, so weaving twice (an incremental
  * build) changes nothing. {@code main(dirs...)} rewrites the classes under each directory in
- * place: exit 0 with a one-line summary, 2 on a bad argument, 1 when a method cannot be woven.
+ * place: exit 0 with a one-line summary, 2 on a bad argument or a file that is not a class file,
+ * 1 when a method cannot be woven.
  */
 public final class Weaver {
     /** RTSJ's AIE, in internal form. */
@@ -72,6 +75,15 @@ public final class Weaver {
         }
     }
 
+    /** A file named {@code .class} that ASM cannot read: bad input, not a method the weaver refuses. */
+    public static final class UnreadableClassException extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        UnreadableClassException(RuntimeException cause) {
+            super("not a class file this weaver can read (" + cause + ")", cause);
+        }
+    }
+
     private final boolean deferFinally;
 
     /** A weaver with RTSJ's rules. */
@@ -90,14 +102,20 @@ public final class Weaver {
     /** Weaves one class file. */
     public Result weave(byte[] classFile) {
         ClassNode c = new ClassNode();
-        new ClassReader(classFile).accept(c, 0);
+        try {
+            new ClassReader(classFile).accept(c, 0);
+        } catch (RuntimeException e) {
+            // ASM reports a truncated or foreign file as an index out of bounds, a newer class-file
+            // version as an IllegalArgumentException: either way, nothing to weave
+            throw new UnreadableClassException(e);
+        }
         if (woven(c)) {
             return wovenBefore(classFile, c);
         }
         int ai = 0;
         int points = 0;
         for (MethodNode m : c.methods) {
-            if (aiEnabled(m) && m.instructions.size() > 0) {
+            if (weavable(m)) {
                 ai++;
                 points += weave(m, c.name.replace('/', '.') + "." + m.name + m.desc);
             }
@@ -118,7 +136,7 @@ public final class Weaver {
         int ai = 0;
         int points = 0;
         for (MethodNode m : c.methods) {
-            if (aiEnabled(m)) {
+            if (weavable(m)) {
                 ai++;
                 for (AbstractInsnNode n : m.instructions.toArray()) {
                     points += isPoll(n) ? 1 : 0;
@@ -131,6 +149,14 @@ public final class Weaver {
     /** Whether {@code m} declares the AIE itself in its throws clause. */
     public static boolean aiEnabled(MethodNode m) {
         return m.exceptions != null && m.exceptions.contains(AIE);
+    }
+
+    /**
+     * An AI-enabled method with code: what the weaver weaves, and what a rebuild counts as woven
+     * (an abstract or native method declaring the AIE has no code to hold a delivery point).
+     */
+    private static boolean weavable(MethodNode m) {
+        return aiEnabled(m) && m.instructions.size() > 0;
     }
 
     private static boolean woven(ClassNode c) {
@@ -149,19 +175,16 @@ public final class Weaver {
         AbstractInsnNode[] insns = r.instructions();
         int points = 0;
         boolean entryDone = false;
+        BitSet exits = r.deferralExits(i -> deliverable(r, i));
         for (int i = 0; i < insns.length; i++) {
             AbstractInsnNode n = insns[i];
             if (n.getOpcode() < 0) {
                 continue; // labels, line numbers, frames
             }
-            if (!entryDone) {
-                entryDone = true;
-                if (deliverable(r, i)) {
-                    m.instructions.insertBefore(n, poll());
-                    points++;
-                }
-            }
-            if (backwardBranch(r, n, i) && deliverable(r, i)) {
+            boolean entry = !entryDone;
+            entryDone = true;
+            // one delivery point before the instruction, whichever of the rules asks for it
+            if (deliverable(r, i) && (entry || backwardBranch(r, n, i) || exits.get(i))) {
                 m.instructions.insertBefore(n, poll());
                 points++;
             }
@@ -247,7 +270,13 @@ public final class Weaver {
                 }
                 for (Path f : files) {
                     byte[] in = Files.readAllBytes(f);
-                    Result r = w.weave(in);
+                    Result r;
+                    try {
+                        r = w.weave(in);
+                    } catch (UnreadableClassException e) {
+                        err.println("rtsj-weaver: " + f + ": " + e.getMessage());
+                        return 2;
+                    }
                     if (r.bytes != in) {
                         Files.write(f, r.bytes);
                     }

@@ -55,6 +55,13 @@ public class Samples implements Interruptible {
             case "crossThread":
                 crossThread(aie);
                 break;
+            case "endsInSynchronized":
+                synchronized (lock) {
+                    aie.fire();
+                    log("in monitor");
+                }
+                count = 1; // RTSJ: not reached, the AIE is delivered as the monitor region ends
+                return;
             default:
                 throw new IllegalArgumentException(scenario);
         }
@@ -159,4 +166,14 @@ public class Samples implements Interruptible {
     }
 
     private volatile boolean firedFlag;
+
+    /** A class whose AI-enabled methods include one without code: nothing to weave there. */
+    public abstract static class WithAbstractStep {
+        protected abstract void step() throws AsynchronouslyInterruptedException;
+
+        public void steps() throws AsynchronouslyInterruptedException {
+            step();
+            step();
+        }
+    }
 }

@@ -7,6 +7,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -20,6 +23,7 @@ import org.jmclbench.rtsjcompat.Atc;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Assertions;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.objectweb.asm.ClassReader;
 import org.objectweb.asm.tree.AbstractInsnNode;
 import org.objectweb.asm.tree.ClassNode;
@@ -76,13 +80,20 @@ class WeaverTest {
     @Test
     void inSynchronizedCodeTheAieWaitsForTheEndOfTheMonitorRegion() {
         assertEquals(List.of("start", "in monitor 0", "in monitor 1", "in monitor 2", "end of synchronized",
-                "after synchronized", "interrupted"), run("synchronized"));
+                "interrupted"), run("synchronized"));
+    }
+
+    @Test
+    void anAieFiredInAMonitorRegionThatEndsTheLogicIsDeliveredNotLost() {
+        // without a delivery point where the region ends, run returned into doInterruptible, which
+        // cleared the pending AIE: fire() had said true, yet interruptAction never ran
+        assertEquals(List.of("in monitor", "interrupted"), run("endsInSynchronized"));
     }
 
     @Test
     void inAFinallyTheAieWaitsForItsEnd() {
         assertEquals(List.of("try", "in finally 0", "in finally 1", "in finally 2", "end of finally",
-                "after finally", "interrupted"), run("finally"));
+                "interrupted"), run("finally"));
     }
 
     @Test
@@ -147,6 +158,27 @@ class WeaverTest {
         // a rebuild reports what the class holds, not "0 AI-enabled methods"
         assertEquals(r.aiMethods, again.aiMethodsBefore);
         assertEquals(r.deliveryPoints, again.deliveryPointsBefore);
+    }
+
+    @Test
+    void aRebuildCountsTheMethodsTheBuildWoveNotTheAbstractOnes() throws Exception {
+        Weaver.Result r = new Weaver().weave(WovenLoader.original(Samples.WithAbstractStep.class.getName()));
+        assertEquals(1, r.aiMethods, "steps; step has no code");
+        Weaver.Result again = new Weaver().weave(r.bytes);
+        assertEquals(r.aiMethods, again.aiMethodsBefore);
+        assertEquals(r.deliveryPoints, again.deliveryPointsBefore);
+    }
+
+    @Test
+    void aFileThatIsNotAClassIsOneLineOfBadInputNamingIt(@TempDir Path dir) throws Exception {
+        Path bad = Files.createDirectories(dir.resolve("p")).resolve("Bad.class");
+        Files.write(bad, "not a class\n".getBytes(StandardCharsets.UTF_8));
+        Files.write(dir.resolve("p/Empty.class"), new byte[0]);
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code = Weaver.run(new String[] {dir.toString()}, new PrintStream(new ByteArrayOutputStream()), new PrintStream(err));
+        assertEquals(2, code, err.toString());
+        assertTrue(err.toString().startsWith("rtsj-weaver: " + bad + ": not a class file"), err.toString());
+        assertEquals(1, err.toString().strip().split("\n").length, err.toString());
     }
 
     @Test

@@ -38,7 +38,9 @@ import java.util.TreeMap;
  * <li>{@code compute}: the job's CPU time alone exceeds its relative deadline (for a skipped
  *     job: the blocker's CPU time alone, from its own release, reaches past this release);</li>
  * <li>{@code overlap}: a skipped job whose blocker ran normally: the two events came closer
- *     together than the blocker's ordinary response time (no anomaly: the timeline's own collision);</li>
+ *     together than the blocker's ordinary response time (no anomaly: the timeline's own collision);
+ *     or a terminated job superseded by the next release before its handler started it, over the
+ *     window between the two releases;</li>
  * <li>{@code unknown}: none of these.</li>
  * </ul>
  * Without runtime events (the C baseline, or a JVM run without capture) only
@@ -136,9 +138,16 @@ public final class Attribution {
                             blockedBy, ms(b.endNs() - b.releaseNs()))));
                 }
             } else {
+                // terminate: the next release may have come before the job's handler started it
+                JobRecord s = supersededBy(j);
                 ws = j.releaseNs();
-                we = j.deadlineNs() >= 0 ? j.deadlineNs() : j.releaseNs();
+                we = s != null ? s.releaseNs() : j.deadlineNs() >= 0 ? j.deadlineNs() : j.releaseNs();
                 vmCauses(null, ws, we, causes);
+                if (s != null && causes.isEmpty()) {
+                    causes.add(new Cause("overlap", we - ws, String.format(Locale.ROOT,
+                            "superseded by %s#%d, released %s later, before its handler started it", s.task(), s.index(),
+                            ms(we - ws))));
+                }
             }
         } else {
             ws = j.releaseNs();
@@ -178,6 +187,22 @@ public final class Attribution {
             }
         }
         return found;
+    }
+
+    /**
+     * The release that superseded a terminated job before it started: the first job released
+     * after it, by its deadline; null for a job of any other outcome, or when there is none.
+     */
+    private JobRecord supersededBy(JobRecord j) {
+        if (!j.outcome().equals("terminated")) {
+            return null;
+        }
+        for (JobRecord b : byRelease) {
+            if (b.releaseNs() > j.releaseNs()) {
+                return j.deadlineNs() < 0 || b.releaseNs() <= j.deadlineNs() ? b : null;
+            }
+        }
+        return null;
     }
 
     /** {@code queued} and {@code os}: why a job that ran started late. */

@@ -157,6 +157,21 @@ class AttributionTest {
     }
 
     @Test
+    void aTerminatedJobSupersededBeforeItStartedIsTheOverlapOfTheTwoReleases() {
+        // terminate: predict#14 released at 225 ms, update#6 at 225.086 ms, before predict#14's
+        // handler had started it; the robot was free (predict#13 ended at 212 ms)
+        List<JobRecord> jobs = List.of(new JobRecord("predict", 13, 210 * MS, 211 * MS, 212 * MS, 225 * MS, "done", -1),
+                new JobRecord("predict", 14, 225 * MS, -1, -1, 240 * MS, "terminated", -1),
+                new JobRecord("update", 6, 225_086_000, 225_190_000, 226_500_000, 237 * MS, "done", -1));
+        JobAttribution a = Attribution.attribute(jobs, List.of(), DEFAULTS).get(0);
+        assertEquals(List.of("overlap"), a.causes().stream().map(Cause::kind).toList());
+        // not 15 ms of "unknown" up to its deadline: it was over when update#6 was released
+        assertEquals(86_000, a.primary().ns());
+        assertEquals(225_086_000, a.windowEndNs());
+        assertTrue(a.primary().detail().contains("update#6"), a.primary().detail());
+    }
+
+    @Test
     void aSkippedJobBehindABlockerStalledByAPauseIsTheGc() {
         List<JobRecord> jobs = List.of(job("update", 0, 0, 0, 70, 200, "done", 5),
                 job("predict", 1, 50, -1, -1, 100, "skipped", -1));

@@ -1,5 +1,6 @@
 package org.jmclbench.workload.release;
 
+import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
 
 /**
@@ -23,6 +24,15 @@ public final class AbortRehearsal {
         long[] deadline = {Long.MAX_VALUE, Long.MAX_VALUE, Long.MAX_VALUE};
         int[] task = {Timeline.PREDICT, Timeline.UPDATE, Timeline.PREDICT};
         return ReleaseSchedule.of(release, deadline, task);
+    }
+
+    /**
+     * Scratch records for the {@link #schedule()}'s three events, whatever the dataset: records
+     * of the run's own timeline are too short for them when the dataset has fewer events.
+     */
+    public static JobRecords records() {
+        double spacingS = SPACING_NS / 1e9;
+        return new JobRecords(Timeline.merge(new double[] {0, 2 * spacingS}, new double[] {spacingS}), false);
     }
 
     /** A job that polls until aborted, for at most two spacings; it commits nothing. */

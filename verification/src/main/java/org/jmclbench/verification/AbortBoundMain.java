@@ -17,6 +17,8 @@ import org.jmclbench.core.mcl.MotionModel;
 import org.jmclbench.verification.bytecode.AbortBound;
 import org.jmclbench.verification.bytecode.AbortPollCheck;
 import org.jmclbench.verification.bytecode.ClassPool;
+import org.jmclbench.workload.BadInputException;
+import org.jmclbench.workload.RunOptionsParser;
 import org.objectweb.asm.tree.ClassNode;
 import org.objectweb.asm.tree.MethodNode;
 
@@ -126,6 +128,10 @@ public final class AbortBoundMain {
             return bad(err, "--engine: '" + engine + "' is not one of javase|scj|hvm|rtsj"
                     + (engine.equals("native") ? " (the C baseline has no bytecode to analyse)" : ""));
         }
+        String unrunnable = unrunnable(engine, memory, this.design != null ? design : null);
+        if (unrunnable != null) {
+            return bad(err, unrunnable);
+        }
         if (classes == null) {
             return bad(err, "--classes: required (the workload jar)");
         }
@@ -148,6 +154,24 @@ public final class AbortBoundMain {
             return 0;
         } catch (IOException e) {
             return bad(err, "--classes: cannot read " + classes + ": " + e.getMessage());
+        }
+    }
+
+    /**
+     * The workload's own refusal of an engine, memory style and design that no run has (the rtsj
+     * engine's scoped style, a design without the rtsj engine), or null: no job to bound. The hvm
+     * runs the scj engine's mission, so it has the scj engine's styles.
+     */
+    private static String unrunnable(String engine, String memory, String design) {
+        List<String> line = new ArrayList<>(List.of("--engine", engine.equals("hvm") ? "scj" : engine, "--memory", memory));
+        if (design != null) {
+            line.addAll(List.of("--rtsj-design", design));
+        }
+        try {
+            RunOptionsParser.parse(line.toArray(new String[0]));
+            return null;
+        } catch (BadInputException e) {
+            return engine.equals("hvm") ? e.getMessage().replace("the scj engine", "the SCJ mission the hvm runs") : e.getMessage();
         }
     }
 

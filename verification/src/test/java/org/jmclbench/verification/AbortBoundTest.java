@@ -160,6 +160,23 @@ class AbortBoundTest {
         assertEquals("jmclbench: abort-bound: --run: " + summary + ": not a run's summary.json (no JSON object)", lines[1]);
     }
 
+    /** A bound for a job no run has would stand beside no measurement: the workload's own refusal, one line. */
+    @Test
+    void anEngineMemoryStyleOrDesignNoRunHasIsRefusedAsTheWorkloadRefusesIt() {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream e = new PrintStream(err, true, StandardCharsets.UTF_8);
+        PrintStream o = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+        assertEquals(2, AbortBoundMain.run(new String[] {"--engine", "rtsj", "--memory", "scoped", "--classes", "x"}, o, e));
+        assertEquals(2, AbortBoundMain.run(new String[] {"--engine", "javase", "--rtsj-design", "atomic", "--classes", "x"}, o, e));
+        assertEquals(2, AbortBoundMain.run(new String[] {"--engine", "hvm", "--memory", "allocating", "--classes", "x"}, o, e));
+        String[] lines = err.toString(StandardCharsets.UTF_8).split("\n");
+        assertEquals(3, lines.length, err.toString(StandardCharsets.UTF_8));
+        assertTrue(lines[0].startsWith("jmclbench: abort-bound: --memory: 'scoped' is not a memory style of the rtsj engine"), lines[0]);
+        assertEquals("jmclbench: abort-bound: --rtsj-design: chooses the rtsj engine's design: needs --engine rtsj", lines[1]);
+        assertTrue(lines[2].startsWith("jmclbench: abort-bound: --memory: 'allocating' is not a memory style of the SCJ mission the hvm runs"),
+                lines[2]);
+    }
+
     @Test
     void badInputIsOneLineAndExitTwo() {
         ByteArrayOutputStream err = new ByteArrayOutputStream();

@@ -1,5 +1,6 @@
 package org.jmclbench.workload.release;
 
+import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
 
 /**
@@ -23,6 +24,15 @@ public final class AbortRehearsal {
         long[] deadline = {Long.MAX_VALUE, Long.MAX_VALUE, Long.MAX_VALUE};
         int[] task = {Timeline.PREDICT, Timeline.UPDATE, Timeline.PREDICT};
         return ReleaseSchedule.of(release, deadline, task);
+    }
+
+    /**
+     * Records for the rehearsal's own three releases: the dataset's timeline can hold fewer events
+     * (a laser and an odometry line make a dataset of two), which the run must not fail on.
+     */
+    public static JobRecords records() {
+        double s = SPACING_NS / 1e9;
+        return new JobRecords(Timeline.merge(new double[] {0, 2 * s}, new double[] {s}), false);
     }
 
     /** A job that polls until aborted, for at most two spacings; it commits nothing. */

@@ -67,7 +67,7 @@ public final class RealTimeRun {
             if (options.policy == OverrunPolicy.TERMINATE) {
                 // first: before any replay compiles the job's loops with the gate's answer inlined
                 new ReleaseEngine(AbortRehearsal.schedule(), PolicyGate.of(OverrunPolicy.TERMINATE), AbortRehearsal.job(),
-                        new JobRecords(timeline, false), cpuClock, 0).run();
+                        AbortRehearsal.records(), cpuClock, 0).run();
             }
             int warmupEvents = options.warmupS > 0 ? schedule.countBefore(options.warmupS, options.timeScale) : 0;
             facts.warmupEvents = warmupEvents;

@@ -117,8 +117,8 @@ public final class RtsjEngine implements Engine {
      */
     private static void rehearseAborts(EngineInput in) throws RunFailure, InterruptedException {
         ReleaseSchedule schedule = AbortRehearsal.schedule();
-        JobRecords scratch = new JobRecords(in.dataset.timeline(), false);
-        new RtsjReplay(schedule, OverrunPolicy.TERMINATE, in.options.rtsjDesign, AbortRehearsal.job(), scratch)
+        new RtsjReplay(schedule, OverrunPolicy.TERMINATE, in.options.rtsjDesign, AbortRehearsal.job(),
+                AbortRehearsal.records())
                 .run(hangNs(schedule));
     }
 

@@ -10,12 +10,15 @@ import org.jmclbench.workload.engine.Engine;
 import org.jmclbench.workload.engine.EngineFacts;
 import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
+import org.jmclbench.workload.load.AllocationNoise;
 import org.jmclbench.workload.output.HeapUse;
 import org.jmclbench.workload.release.GcLog;
 
 /**
  * {@code --ideal}, whatever {@code --engine} names: the {@link IdealRun} on the calling thread,
- * the reference for localisation accuracy. Its one memory area is the heap.
+ * the reference for localisation accuracy. Its one memory area is the heap. With
+ * {@code --load-alloc} the allocation load runs beside it as beside a real-time run, since the
+ * run records that load among its parameters.
  */
 public final class IdealEngine implements Engine {
 
@@ -35,20 +38,30 @@ public final class IdealEngine implements Engine {
         Dataset dataset = in.dataset;
         Timeline timeline = dataset.timeline();
         JobRecords records = new JobRecords(timeline, options.covariance);
-        if (options.warmupS > 0) {
-            IdealRun.warmup(dataset, timeline, in.newLocalizer(), options.warmupS);
-        }
-        Localizer localizer = in.newLocalizer();
-        HeapUse heap = HeapUse.begin();
-        // The GC log covers the measured replay only, as in real-time runs.
-        GcLog gcLog = GcLog.startIfAsked(options.gcLog, in.folder, in.err);
+        AllocationNoise noise = options.loadAllocMbPerS > 0
+                ? AllocationNoise.start(options.loadAllocMbPerS, options.loadAllocLiveMb) : null;
+        HeapUse heap;
         try {
-            IdealRun.run(dataset, timeline, localizer, records);
+            if (options.warmupS > 0) {
+                IdealRun.warmup(dataset, timeline, in.newLocalizer(), options.warmupS);
+            }
+            Localizer localizer = in.newLocalizer();
+            heap = HeapUse.begin();
+            // The GC log covers the measured replay only, as in real-time runs.
+            GcLog gcLog = GcLog.startIfAsked(options.gcLog, in.folder, in.err);
+            try {
+                IdealRun.run(dataset, timeline, localizer, records);
+            } finally {
+                if (gcLog != null) {
+                    gcLog.stop();
+                }
+            }
         } finally {
-            if (gcLog != null) {
-                gcLog.stop();
+            if (noise != null) {
+                noise.stop();
             }
         }
-        return new EngineResult(records, Collections.singletonList(heap.end(null, records)), EngineFacts.NONE);
+        EngineFacts facts = noise == null ? EngineFacts.NONE : noise::writeFacts;
+        return new EngineResult(records, Collections.singletonList(heap.end(null, records)), facts);
     }
 }

@@ -17,7 +17,7 @@ import org.jmclbench.workload.output.RunWriter;
 
 
 /**
- * Entry point of the workload process: {@code run [options]} reads a dataset, runs one test
+ * Entry point of the workload process: {@code [run] [options]} reads a dataset, runs one test
  * (ideal or real-time), writes its run folder and exits 0 (success), 2 (bad usage or input),
  * 3 (a configuration the runtime under test cannot run) or 1 (a failure of the benchmark
  * itself). A folder left behind by a failure is {@code .partial}.
@@ -38,17 +38,12 @@ public final class WorkloadMain {
         System.exit(code);
     }
 
-    /** Runs the command line; returns the exit code (for tests: no System.exit). */
+    /**
+     * Runs the command line, {@code [run] [options]} as the C baseline takes it (the thesis's
+     * {@code -p 400 -n 1 ...} has no {@code run}); returns the exit code (for tests: no System.exit).
+     */
     public static int run(String[] args, PrintStream out, PrintStream err) {
         try {
-            if (args.length == 0 || !"run".equals(args[0])) {
-                if (args.length > 0 && ("-h".equals(args[0]) || "--help".equals(args[0]))) {
-                    out.println(RunOptionsParser.USAGE);
-                    return OK;
-                }
-                throw BadInputException.ofOption(args.length == 0 ? "command" : args[0],
-                        args.length == 0 ? "missing (expected: run [options])" : "unknown command (expected: run)");
-            }
             RunOptions options = RunOptionsParser.parse(args);
             if (options.help) {
                 out.println(RunOptionsParser.USAGE);

@@ -1,5 +1,7 @@
 package org.jmclbench.workload.load;
 
+import org.jmclbench.workload.output.Json;
+
 /**
  * Background allocation load inside the runtime under test (the idea of the CDx benchmark's
  * noise generator): a daemon thread allocates byte arrays at a set rate and keeps a set live
@@ -18,6 +20,8 @@ public final class AllocationNoise implements Runnable {
     private static final int MAX_SIZE = 8192;
     private static final long PACE_NS = 1_000_000L;
 
+    private final int mbPerSecond;
+    private final int liveMb;
     private final long bytesPerSecond;
     private final Object[] live;
     private final Thread thread;
@@ -26,6 +30,8 @@ public final class AllocationNoise implements Runnable {
     private long state = 0x9E3779B97F4A7C15L;
 
     private AllocationNoise(int mbPerSecond, int liveMb) {
+        this.mbPerSecond = mbPerSecond;
+        this.liveMb = liveMb;
         this.bytesPerSecond = mbPerSecond * 1024L * 1024L;
         long slots = liveMb * 1024L * 1024L / ((MIN_SIZE + MAX_SIZE) / 2);
         this.live = new Object[(int) Math.max(1, Math.min(Integer.MAX_VALUE - 8, slots))];
@@ -64,6 +70,15 @@ public final class AllocationNoise implements Runnable {
     /** Bytes allocated by the background thread so far (not counting the initial live set). */
     public long allocatedBytes() {
         return allocated;
+    }
+
+    /** Writes summary.json's {@code engine.loadAlloc}: the settings and what the thread achieved (call after {@link #stop}). */
+    public void writeFacts(Json j) {
+        j.name("loadAlloc").beginObject();
+        j.name("allocMbPerS").value(mbPerSecond);
+        j.name("allocLiveMb").value(liveMb);
+        j.name("allocatedBytes").value(allocated);
+        j.endObject();
     }
 
     @Override

@@ -1,6 +1,7 @@
 package org.jmclbench.workload.release;
 
 import org.jmclbench.workload.engine.EngineFacts;
+import org.jmclbench.workload.load.AllocationNoise;
 import org.jmclbench.workload.output.Json;
 
 /** summary.json's {@code engine} object of a javase run (docs/FORMATS.md section 4), filled by {@link RealTimeRun}. */
@@ -19,10 +20,8 @@ public final class JavaSeFacts implements EngineFacts {
     long jvmStartEpochMs = -1;
     /** Bytes the engine's threads allocated in the measured window; null when the JVM cannot tell. */
     Long allocatedBytes;
-    /** The allocation load's settings and bytes, when one ran ({@code --load-alloc MBPS,LIVEMB}). */
-    int loadAllocMbPerS;
-    int loadAllocLiveMb;
-    Long loadAllocatedBytes;
+    /** The allocation load, stopped, when one ran ({@code --load-alloc MBPS,LIVEMB}); else null. */
+    AllocationNoise loadAlloc;
 
     /** Bytes allocated on the engine's threads in the measured window, or null (unknown). */
     public Long allocatedBytes() {
@@ -48,12 +47,8 @@ public final class JavaSeFacts implements EngineFacts {
         j.name("jvmStartEpochMs").value(jvmStartEpochMs);
         j.endObject();
         j.name("allocatedBytes").any(allocatedBytes);
-        if (loadAllocatedBytes != null) {
-            j.name("loadAlloc").beginObject();
-            j.name("allocMbPerS").value(loadAllocMbPerS);
-            j.name("allocLiveMb").value(loadAllocLiveMb);
-            j.name("allocatedBytes").value(loadAllocatedBytes);
-            j.endObject();
+        if (loadAlloc != null) {
+            loadAlloc.writeFacts(j);
         }
     }
 }

@@ -103,9 +103,7 @@ public final class RealTimeRun {
         } finally {
             if (noise != null) {
                 noise.stop();
-                facts.loadAllocMbPerS = options.loadAllocMbPerS;
-                facts.loadAllocLiveMb = options.loadAllocLiveMb;
-                facts.loadAllocatedBytes = noise.allocatedBytes();
+                facts.loadAlloc = noise;
             }
             if (gcLog != null) {
                 gcLog.stop();

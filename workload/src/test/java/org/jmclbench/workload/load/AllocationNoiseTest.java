@@ -5,12 +5,21 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.File;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.RunOptionsParser;
+import org.jmclbench.workload.testing.SyntheticDataset;
+import org.jmclbench.workload.testing.WorkloadCall;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 class AllocationNoiseTest {
+    @TempDir
+    File tmp;
 
     @Test
     void allocatesInTheBackgroundUntilStopped() throws Exception {
@@ -44,5 +53,19 @@ class AllocationNoiseTest {
             assertTrue(e.getMessage().startsWith("--load-alloc: "), e.getMessage());
         }
         assertThrows(BadInputException.class, () -> RunOptionsParser.parse(new String[] {"--load-name", "../x"}));
+    }
+
+    /** An ideal run records the load it was asked for, so the load must run beside it (it ran under none). */
+    @Test
+    void anIdealRunRunsTheLoadItRecords() throws Exception {
+        File ds = SyntheticDataset.write(new File(tmp, "ds"), 1.0, 3, true, true);
+        WorkloadCall call = new WorkloadCall();
+        assertEquals(0, call.run("run", "--ideal", "-p", "50", "--load-alloc", "20,1", "--dataset", ds.getPath(), "-O",
+                new File(tmp, "out").getPath()), call.err());
+        String s = new String(Files.readAllBytes(new File(call.out().trim(), "summary.json").toPath()),
+                StandardCharsets.UTF_8);
+        String compact = s.replaceAll("\\s+", "");
+        assertTrue(compact.contains("\"load\":{\"scenario\":\"alloc\""), s);
+        assertTrue(compact.contains("\"loadAlloc\":{\"allocMbPerS\":20,\"allocLiveMb\":1,\"allocatedBytes\":"), s);
     }
 }

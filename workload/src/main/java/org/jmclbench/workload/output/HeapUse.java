@@ -29,7 +29,7 @@ public final class HeapUse {
      * The heap area after the run.
      *
      * @param allocatedBytes bytes the engine's threads allocated in the measured window, or null (unknown, ideal runs)
-     * @param records        the run's jobs: those released in the window share the allocation
+     * @param records        the run's jobs: those started share the allocation (a dropped job never ran)
      */
     public MemoryArea end(Long allocatedBytes, JobRecords records) {
         int releases = 0;

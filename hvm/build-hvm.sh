@@ -132,11 +132,19 @@ trap 'rm -rf "$tmp"' EXIT
 
 # ---- 1. the hvm-scj tree, patched ----
 log "unpacking the icecap sources ($src_kind)"
+# Each step's own words go to a log, and its last line into ours: a failed step is one line naming
+# it (under set -e, `a && b` went on past a failed a, to a misleading "no icecapvm/src").
+said() { local l; l=$(grep -v '^[[:space:]]*$' "$tmp/step.log" | tail -n1) || true; echo "${l:-no message}"; }
 case $src_kind in
-    dir) mkdir "$tmp/src" && (cd "$HVM_SRC" && tar cf - icecaptools icecaptoolstest icecapSDK icecapvm) | tar xf - -C "$tmp/src" ;;
-    tar) tar xzf "$HVM_SRC" -C "$tmp" && mv "$tmp/hvm-scj" "$tmp/src" ;;
-    git) git clone -q "$HVM_REPO" "$tmp/src" && git -C "$tmp/src" checkout -q "$HVM_COMMIT" ;;
+    dir) { mkdir "$tmp/src" && (cd "$HVM_SRC" && tar cf - icecaptools icecaptoolstest icecapSDK icecapvm) \
+           | tar xf - -C "$tmp/src"; } 2> "$tmp/step.log" || fail "cannot copy the HVM source from $HVM_SRC: $(said)" ;;
+    tar) { tar xzf "$HVM_SRC" -C "$tmp" && mv "$tmp/hvm-scj" "$tmp/src"; } 2> "$tmp/step.log" \
+           || fail "cannot unpack $HVM_SRC: $(said)" ;;
+    git) git clone -q "$HVM_REPO" "$tmp/src" 2> "$tmp/step.log" || fail "cannot clone $HVM_REPO: $(said)"
+         git -C "$tmp/src" checkout -q "$HVM_COMMIT" 2> "$tmp/step.log" \
+             || fail "cannot check out commit $HVM_COMMIT of $HVM_REPO: $(said)" ;;
 esac
+rm -f "$tmp/step.log"
 [ -d "$tmp/src/icecapvm/src" ] || fail "no icecapvm/src in the HVM source"
 if [ $patched = 1 ]; then
     for p in "$HERE"/patches/*.patch; do

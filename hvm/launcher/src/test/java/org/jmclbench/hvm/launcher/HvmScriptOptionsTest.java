@@ -3,7 +3,6 @@ package org.jmclbench.hvm.launcher;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.File;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -12,9 +11,8 @@ import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.TimeUnit;
 
-import org.junit.jupiter.api.Assumptions;
+import org.jmclbench.hvm.launcher.HvmScripts.Result;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -31,12 +29,12 @@ class HvmScriptOptionsTest {
     @TempDir
     Path dir;
     private Path hvm;
+    private HvmScripts scripts;
 
     @BeforeEach
     void findScripts() {
-        File home = HvmRunTest.projectHome();
-        Assumptions.assumeTrue(home != null, "no hvm/ folder above the working directory");
-        hvm = home.toPath().resolve("hvm");
+        scripts = new HvmScripts(dir);
+        hvm = scripts.hvm();
     }
 
     @Test
@@ -133,43 +131,11 @@ class HvmScriptOptionsTest {
         assertEquals("", r.out, script + " " + String.join(" ", args));
     }
 
-    private static final class Result {
-        final int exit;
-        final String out;
-        final String err;
-
-        Result(int exit, String out, String err) {
-            this.exit = exit;
-            this.out = out;
-            this.err = err;
-        }
-    }
-
     private static byte[] bytes(String s) {
         return s.getBytes(StandardCharsets.UTF_8);
     }
 
-    private static String read(Path f) throws Exception {
-        return new String(Files.readAllBytes(f), StandardCharsets.UTF_8);
-    }
-
     private Result run(Map<String, String> env, String script, String... args) throws Exception {
-        List<String> cmd = new ArrayList<>(Collections.singletonList(hvm.resolve(script).toString()));
-        cmd.addAll(Arrays.asList(args));
-        Path out = dir.resolve("stdout");
-        Path err = dir.resolve("stderr");
-        ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile()).redirectOutput(out.toFile())
-                .redirectError(err.toFile());
-        // a bad option must be found before the tool chain is built: a cache of its own stays empty
-        pb.environment().put("JMCLBENCH_CACHE", dir.resolve("cache").toString());
-        // and no source to build it from, so that a case that is not found fails fast
-        pb.environment().put("HVM_SRC", dir.resolve("no-hvm-src").toString());
-        pb.environment().putAll(env);
-        Process p = pb.start();
-        if (!p.waitFor(60, TimeUnit.SECONDS)) {
-            p.destroyForcibly();
-            throw new AssertionError(script + " " + String.join(" ", args) + " did not end");
-        }
-        return new Result(p.exitValue(), read(out), read(err));
+        return scripts.run(env, script, args);
     }
 }

@@ -1,0 +1,87 @@
+package org.jmclbench.hvm.launcher;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.File;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.HashMap;
+import java.util.Map;
+
+import org.jmclbench.hvm.launcher.HvmScripts.Result;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The hvm/*.sh scripts' failures (not bad input): a step that fails ends the script with one line
+ * naming what failed, exit 1, and nothing left in the cache. Stand-in tools on PATH fail as the
+ * real ones do without network, so none of these needs the network or the tool chain.
+ */
+class HvmScriptFailureTest {
+    private static final String REPO = "https://github.com/scj-devel/hvm-scj";
+    private static final String COMMIT = "4d31e231688a7fdaddd464d21a3923b435d11683";
+
+    @TempDir
+    Path dir;
+    private HvmScripts scripts;
+    private Path bin;
+
+    @BeforeEach
+    void toolsThatAreNeverReached() throws Exception {
+        // build-hvm.sh only asks whether these exist before it fetches the source; each stand-in
+        // fails loudly, should it be run
+        Assumptions.assumeTrue("Linux".equals(System.getProperty("os.name")) && "amd64".equals(System.getProperty("os.arch")),
+                "build-hvm.sh builds on x86_64 Linux only");
+        scripts = new HvmScripts(dir);
+        bin = Files.createDirectory(dir.resolve("bin"));
+        for (String tool : new String[] {"javac", "java", "gcc", "mvn", "patch", "pip3"}) {
+            tool(tool, "echo 'a stand-in that should not have run: " + tool + "' >&2; exit 97");
+        }
+    }
+
+    private void tool(String name, String body) throws Exception {
+        Path p = bin.resolve(name);
+        Files.write(p, ("#!/bin/sh\n" + body + "\n").getBytes(StandardCharsets.UTF_8));
+        Files.setPosixFilePermissions(p, PosixFilePermissions.fromString("rwxr-xr-x"));
+    }
+
+    /** build-hvm.sh without HVM_SRC (so it clones), the stand-ins first on PATH. */
+    private Result buildFromAClone() throws Exception {
+        Map<String, String> env = new HashMap<>();
+        env.put("HVM_SRC", null);
+        env.put("JAVA8_HOME", null);
+        env.put("PATH", bin + File.pathSeparator + System.getenv("PATH"));
+        return scripts.run(env, "build-hvm.sh");
+    }
+
+    @Test
+    void aFailedCloneIsOneLineNamingTheRepository() throws Exception {
+        // it went on past the failed clone (set -e does not stop `clone && checkout`) to
+        // "no icecapvm/src in the HVM source"
+        tool("git", "echo \"fatal: unable to access '" + REPO + "/': Could not resolve host: github.com\" >&2; exit 128");
+        assertFailed(buildFromAClone(), "build-hvm: cannot clone " + REPO + ": fatal: unable to access '" + REPO
+                + "/': Could not resolve host: github.com");
+    }
+
+    @Test
+    void aFailedCheckoutIsOneLineNamingTheCommit() throws Exception {
+        // it ended with git's exit status 128 and git's words only
+        tool("git", "if [ \"$1\" = clone ]; then mkdir -p \"$4\"; exit 0; fi\n"
+                + "echo 'fatal: reference is not a tree: " + COMMIT + "' >&2; exit 128");
+        assertFailed(buildFromAClone(), "build-hvm: cannot check out commit " + COMMIT + " of " + REPO
+                + ": fatal: reference is not a tree: " + COMMIT);
+    }
+
+    /** Exit 1, {@code line} the one line of error after the progress line, no output, nothing left in the cache. */
+    private void assertFailed(Result r, String line) {
+        assertEquals(1, r.exit, r.err);
+        assertEquals("build-hvm: unpacking the icecap sources (git)\n" + line + "\n", r.err);
+        assertEquals("", r.out);
+        String[] left = dir.resolve("cache/hvm").toFile().list();
+        assertEquals(0, left == null ? 0 : left.length, "the cache holds nothing of the failed build");
+    }
+}

@@ -18,6 +18,8 @@
 # (with or without --check).
 # The folder holds: src/ (the hvm-scj tree, patched), lib/ (jars), rt.jar, tools/ (compiled
 # compiler), sdk/ (compiled icecapSDK), KEY.
+# Exit codes: 0 built (or cached); 1 the build failed, or this machine cannot build it (a line says
+# what failed: a missing tool, the clone, a step); 2 bad usage (an unknown option, a bad HVM_SRC).
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)

@@ -21,6 +21,8 @@
 # --keep-c DIR keeps the generated C (for reading or profiling).
 # Steps (about 10 s): main.CompilationManager writes the program and the VM as C into a
 # temporary folder; gcc links it with the flags below.
+# Exit codes: 0 built; 1 the compiler or gcc failed (a line names the log); 2 bad usage (an option,
+# or a --methods LIST entry that names no method of the program).
 set -euo pipefail
 HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
 . "$HERE/script-options.sh"

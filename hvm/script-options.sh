@@ -1,5 +1,6 @@
 # Sourced by the hvm scripts (not run on their own): the parts of their command lines they share.
-# Bad input is one line naming the script and the option, and exit 2, as in every jmclbench command.
+# Bad input is one line naming the script and the option, and exit 2, as in every jmclbench command;
+# a failure (a build, a tool, a run) is exit 1. Each script's --help lists its exit codes.
 me=$(basename "$0" .sh)
 
 # Ends the script: bad input, one line.

@@ -1,6 +1,7 @@
 package org.jmclbench.hvm.launcher;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.File;
 import java.nio.charset.StandardCharsets;
@@ -51,11 +52,16 @@ class HvmScriptFailureTest {
 
     /** build-hvm.sh without HVM_SRC (so it clones), the stand-ins first on PATH. */
     private Result buildFromAClone() throws Exception {
+        return scripts.run(cloningEnvironment(), "build-hvm.sh");
+    }
+
+    /** No HVM_SRC (so build-hvm.sh clones) and no JAVA8_HOME; the stand-ins first on PATH. */
+    private Map<String, String> cloningEnvironment() {
         Map<String, String> env = new HashMap<>();
         env.put("HVM_SRC", null);
         env.put("JAVA8_HOME", null);
         env.put("PATH", bin + File.pathSeparator + System.getenv("PATH"));
-        return scripts.run(env, "build-hvm.sh");
+        return env;
     }
 
     @Test
@@ -74,6 +80,28 @@ class HvmScriptFailureTest {
                 + "echo 'fatal: reference is not a tree: " + COMMIT + "' >&2; exit 128");
         assertFailed(buildFromAClone(), "build-hvm: cannot check out commit " + COMMIT + " of " + REPO
                 + ": fatal: reference is not a tree: " + COMMIT);
+    }
+
+    @Test
+    void theScriptsThatBuildTheToolChainFailWithItsLine() throws Exception {
+        tool("git", "echo 'fatal: unable to access: Could not resolve host: github.com' >&2; exit 128");
+        for (String script : new String[] {"build-mission.sh", "difftest.sh", "test-patches.sh", "upstream-scj-tests.sh"}) {
+            Result r = scripts.run(cloningEnvironment(), script);
+            assertEquals(1, r.exit, script + ": " + r.err);
+            assertTrue(r.err.endsWith("\nbuild-hvm: cannot clone " + REPO + ": fatal: unable to access: Could not resolve host:"
+                    + " github.com\n"), script + ": " + r.err);
+        }
+    }
+
+    @Test
+    void aGeneratedProgramThatDoesNotCompileIsAFailureNotBadUsage() throws Exception {
+        // it was exit 2, as if an option had been wrong; here the tool chain has no class library
+        Path chain = Files.createDirectory(dir.resolve("chain"));
+        Files.write(chain.resolve("KEY"), "source test\n".getBytes(StandardCharsets.UTF_8));
+        Result r = scripts.run(new HashMap<>(), "difftest.sh", "--toolchain", chain.toString(), "--seeds", "1", "--count", "2");
+        assertEquals(1, r.exit, r.err);
+        assertTrue(r.err.trim().matches("(?s).*\ndifftest: the generated program \\S+/G1\\.java does not compile against "
+                + chain.toRealPath() + " \\(gen.py's bug, or the tool chain's\\)"), r.err);
     }
 
     /** Exit 1, {@code line} the one line of error after the progress line, no output, nothing left in the cache. */

@@ -54,6 +54,8 @@ class HvmScriptOptionsTest {
             assertEquals(0, r.exit, script + ": " + r.err);
             assertEquals(String.join("\n", header), r.out.replaceAll("\\s+$", ""), script);
             assertTrue(r.out.contains("hvm/" + script), script + ": its help has no usage line");
+            // a caller tells bad usage from a failure by the code alone
+            assertTrue(r.out.matches("(?s).*\nExit codes: 0 .*;\\s+1 .*;\\s+2 bad\\s+usage .*"), script + ": its help names no exit codes");
         }
     }
 

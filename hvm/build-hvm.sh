@@ -74,6 +74,13 @@ if [ -n "${HVM_SRC:-}" ]; then
 else
     command -v git >/dev/null || problems+=("HVM_SRC is not set and git is not installed to clone $HVM_REPO")
 fi
+# A cache that cannot be written failed the build with mkdir's words after --check said it could be
+# built: the user's JMCLBENCH_CACHE is bad input, the default one this machine's lack.
+cache_why=$(why_not_writable "$CACHE")
+if [ -n "$cache_why" ]; then
+    [ -z "${JMCLBENCH_CACHE:-}" ] || bad "JMCLBENCH_CACHE=$JMCLBENCH_CACHE: cannot write there ($cache_why)"
+    problems+=("the cache $CACHE cannot be written ($cache_why)")
+fi
 rt_jar_of_java8() {
     local h=${JAVA8_HOME:-}
     [ -n "$h" ] || return 1

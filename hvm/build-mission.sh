@@ -45,6 +45,7 @@ hot_list=$HERE/mission/hot-methods.txt
 list=()
 [ "$mode" != hot ] || list=(--methods "$hot_list")
 
+need_tools javac
 tc=$("$HERE/build-hvm.sh")
 srcs=("$ROOT/core-immortal/src/main/java" "$ROOT/scj-mission/src/main/java" "$HERE/mission/src")
 key=$( { find "${srcs[@]}" -name '*.java' -print0 | sort -z | xargs -0 sha256sum | sed "s|$ROOT/||";

@@ -24,13 +24,6 @@ modes=interpreted,compiled
 keep=
 tc=
 . "$HERE/script-options.sh"
-# a folder to write into: absent (made when needed) or a folder, below no file
-writable_folder() { # writable_folder OPTION PATH
-    local p=$2
-    [ ! -e "$p" ] || [ -d "$p" ] || bad "$1: $2 is not a folder"
-    while [ ! -e "$p" ]; do p=$(dirname "$p"); done
-    [ -d "$p" ] || bad "$1: $2: $p is not a folder"
-}
 while [ $# -gt 0 ]; do
     case "$1" in
         --toolchain|--seeds|--count|--modes|--keep) [ $# -ge 2 ] || bad "$1: needs a value" ;;
@@ -59,6 +52,7 @@ fi
 [[ $count =~ ^[1-9][0-9]{0,8}$ ]] || bad "--count: '$count' is not a positive number of values"
 [[ $modes =~ ^(interpreted|compiled)(,(interpreted|compiled))*$ ]] \
     || bad "--modes: '$modes' is not a list of interpreted and compiled"
+need_tools python3 java javac timeout
 
 [ -n "$tc" ] || tc=$("$HERE/build-hvm.sh")
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-difftest.XXXXXX")

@@ -58,6 +58,7 @@ if [ -n "$only" ]; then
     [[ " ${names[*]} " == *" $only "* ]] || bad "--only: no test named '$only' (one of: ${names[*]})"
 fi
 
+need_tools javac timeout
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-patches.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 failures=0

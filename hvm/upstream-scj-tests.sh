@@ -39,6 +39,7 @@ declare -A known_failure=(
     [TestSCJSingleRawMemory_MemoryMapped1]="maps raw device memory at a fixed address"
 )
 
+need_tools javac timeout
 tc=$("$HERE/build-hvm.sh")
 tests_src=$tc/src/icecaptoolstest/src
 if [ ${#names[@]} -eq 0 ]; then

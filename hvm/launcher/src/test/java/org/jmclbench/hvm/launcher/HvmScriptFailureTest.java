@@ -104,6 +104,54 @@ class HvmScriptFailureTest {
                 + chain.toRealPath() + " \\(gen.py's bug, or the tool chain's\\)"), r.err);
     }
 
+    @Test
+    void aMissingToolIsOneLineAndExit1BeforeAnythingRuns() throws Exception {
+        // bash's "command not found" mid-way, exit 127 (difftest.sh after compiling its runner,
+        // test-patches.sh after building the tool chain)
+        Path chain = Files.createDirectory(dir.resolve("chain"));
+        Files.write(chain.resolve("KEY"), "source test\n".getBytes(StandardCharsets.UTF_8));
+        Path few = Files.createDirectory(dir.resolve("few"));
+        for (String tool : new String[] {"bash", "dirname", "readlink", "basename", "realpath", "seq"}) {
+            Files.createSymbolicLink(few.resolve(tool), onPath(tool));
+        }
+        Map<String, String> env = new HashMap<>();
+        env.put("PATH", few.toString());
+        String[][] cases = {{"difftest.sh", "python3 java javac timeout", "--toolchain", chain.toString()},
+                {"hvmc.sh", "java gcc", "--toolchain", chain.toString(), "--classes", ".", "--main", "a.B", "-o", "exe"},
+                {"build-mission.sh", "javac"}, {"test-patches.sh", "javac timeout"}, {"upstream-scj-tests.sh", "javac timeout"}};
+        for (String[] c : cases) {
+            Result r = scripts.run(env, c[0], java.util.Arrays.copyOfRange(c, 2, c.length));
+            assertEquals(1, r.exit, c[0] + ": " + r.err);
+            assertEquals(c[0].replace(".sh", "") + ": not installed: " + c[1] + "\n", r.err, c[0]);
+        }
+    }
+
+    private static Path onPath(String tool) {
+        for (String d : System.getenv("PATH").split(File.pathSeparator)) {
+            Path p = java.nio.file.Paths.get(d, tool);
+            if (Files.isExecutable(p)) {
+                return p;
+            }
+        }
+        throw new AssertionError(tool + " is not on PATH");
+    }
+
+    @Test
+    void aFailedCompilerNamesNoLogItRemoves() throws Exception {
+        // it named the temporary log, which the script removed as it ended
+        Path chain = Files.createDirectory(dir.resolve("chain"));
+        Files.write(chain.resolve("KEY"), "source test\n".getBytes(StandardCharsets.UTF_8));
+        Result r = scripts.run(new HashMap<>(), "hvmc.sh", "--toolchain", chain.toString(), "--classes", ".", "--main", "a.B",
+                "-o", "exe");
+        assertEquals(1, r.exit, r.err);
+        assertTrue(r.err.startsWith("hvmc: the icecap compiler failed for a.B (no log kept: --log FILE keeps it):\n"), r.err);
+        Path log = dir.resolve("logs/c.log");
+        r = scripts.run(new HashMap<>(), "hvmc.sh", "--toolchain", chain.toString(), "--classes", ".", "--main", "a.B",
+                "-o", "exe", "--log", log.toString());
+        assertTrue(r.err.startsWith("hvmc: the icecap compiler failed for a.B (log: " + log + "):\n"), r.err);
+        assertTrue(Files.isRegularFile(log), "the named log is there");
+    }
+
     /** Exit 1, {@code line} the one line of error after the progress line, no output, nothing left in the cache. */
     private void assertFailed(Result r, String line) {
         assertEquals(1, r.exit, r.err);

@@ -106,6 +106,33 @@ class HvmScriptOptionsTest {
     }
 
     @Test
+    void foldersThatCannotBeWrittenAreOneLineAndExit2BeforeAnythingRuns() throws Exception {
+        // hvmc.sh ran the compiler, then failed with mkdir's or mv's words (exit 1); build-hvm.sh's
+        // --check said the tool chain could be built, then the build failed with mkdir's words
+        Files.write(dir.resolve("file"), bytes("x"));
+        Files.createDirectories(dir.resolve("chain"));
+        Files.write(dir.resolve("chain/KEY"), bytes("source test\n"));
+        String[] hvmc = {"--toolchain", "chain", "--classes", ".", "--main", "a.B"};
+        bad("hvmc: -o: file/exe: file is not a folder", "hvmc.sh", concat(hvmc, "-o", "file/exe"));
+        bad("hvmc: --log: file/x/c.log: file is not a folder", "hvmc.sh", concat(hvmc, "-o", "exe", "--log", "file/x/c.log"));
+        bad("hvmc: --keep-c: file: file is not a folder", "hvmc.sh", concat(hvmc, "-o", "exe", "--keep-c", "file"));
+        String cache = dir.resolve("file/cache").toString();
+        Map<String, String> env = new java.util.HashMap<>();
+        env.put("JMCLBENCH_CACHE", cache);
+        env.put("HVM_SRC", Files.createDirectories(dir.resolve("hvm-scj/icecapvm/src")).getParent().getParent().toString());
+        for (String[] args : new String[][] {{"--check"}, {}}) {
+            bad(env, "build-hvm: JMCLBENCH_CACHE=" + cache + ": cannot write there (" + dir.resolve("file") + " is not a folder)",
+                    "build-hvm.sh", args);
+        }
+    }
+
+    private static String[] concat(String[] a, String... b) {
+        String[] all = Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, all, a.length, b.length);
+        return all;
+    }
+
+    @Test
     void aBadHvmSrcIsOneLineAndExit2() throws Exception {
         // a missing one was exit 1 (with --check: a lack of this machine); a file that is not a
         // tarball was gzip's and tar's four lines, then "no icecapvm/src in the HVM source"

@@ -18,6 +18,8 @@
 # (with or without --check).
 # The folder holds: src/ (the hvm-scj tree, patched), lib/ (jars), rt.jar, tools/ (compiled
 # compiler), sdk/ (compiled icecapSDK), KEY.
+# Exit codes: 0 built (or cached); 1 the build failed, or this machine cannot build it (a line says
+# what failed: a missing tool, the clone, a step); 2 bad usage (an unknown option, a bad HVM_SRC).
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
@@ -71,6 +73,13 @@ if [ -n "${HVM_SRC:-}" ]; then
     fi
 else
     command -v git >/dev/null || problems+=("HVM_SRC is not set and git is not installed to clone $HVM_REPO")
+fi
+# A cache that cannot be written failed the build with mkdir's words after --check said it could be
+# built: the user's JMCLBENCH_CACHE is bad input, the default one this machine's lack.
+cache_why=$(why_not_writable "$CACHE")
+if [ -n "$cache_why" ]; then
+    [ -z "${JMCLBENCH_CACHE:-}" ] || bad "JMCLBENCH_CACHE=$JMCLBENCH_CACHE: cannot write there ($cache_why)"
+    problems+=("the cache $CACHE cannot be written ($cache_why)")
 fi
 rt_jar_of_java8() {
     local h=${JAVA8_HOME:-}
@@ -132,11 +141,19 @@ trap 'rm -rf "$tmp"' EXIT
 
 # ---- 1. the hvm-scj tree, patched ----
 log "unpacking the icecap sources ($src_kind)"
+# Each step's own words go to a log, and its last line into ours: a failed step is one line naming
+# it (under set -e, `a && b` went on past a failed a, to a misleading "no icecapvm/src").
+said() { local l; l=$(grep -v '^[[:space:]]*$' "$tmp/step.log" | tail -n1) || true; echo "${l:-no message}"; }
 case $src_kind in
-    dir) mkdir "$tmp/src" && (cd "$HVM_SRC" && tar cf - icecaptools icecaptoolstest icecapSDK icecapvm) | tar xf - -C "$tmp/src" ;;
-    tar) tar xzf "$HVM_SRC" -C "$tmp" && mv "$tmp/hvm-scj" "$tmp/src" ;;
-    git) git clone -q "$HVM_REPO" "$tmp/src" && git -C "$tmp/src" checkout -q "$HVM_COMMIT" ;;
+    dir) { mkdir "$tmp/src" && (cd "$HVM_SRC" && tar cf - icecaptools icecaptoolstest icecapSDK icecapvm) \
+           | tar xf - -C "$tmp/src"; } 2> "$tmp/step.log" || fail "cannot copy the HVM source from $HVM_SRC: $(said)" ;;
+    tar) { tar xzf "$HVM_SRC" -C "$tmp" && mv "$tmp/hvm-scj" "$tmp/src"; } 2> "$tmp/step.log" \
+           || fail "cannot unpack $HVM_SRC: $(said)" ;;
+    git) git clone -q "$HVM_REPO" "$tmp/src" 2> "$tmp/step.log" || fail "cannot clone $HVM_REPO: $(said)"
+         git -C "$tmp/src" checkout -q "$HVM_COMMIT" 2> "$tmp/step.log" \
+             || fail "cannot check out commit $HVM_COMMIT of $HVM_REPO: $(said)" ;;
 esac
+rm -f "$tmp/step.log"
 [ -d "$tmp/src/icecapvm/src" ] || fail "no icecapvm/src in the HVM source"
 if [ $patched = 1 ]; then
     for p in "$HERE"/patches/*.patch; do

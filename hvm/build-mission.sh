@@ -13,6 +13,8 @@
 # the profile hot). The mode (and hot's list) is part of the cache key and is written to MODE
 # beside the executable (summary.json's engine.mode).
 # Needs what build-hvm.sh needs (HVM_SRC, ...).
+# Exit codes: 0 built (or cached); 1 the build failed (the tool chain's, javac's or hvmc.sh's, a
+# line says which); 2 bad usage (an option, JMCLBENCH_HVM_MODE, a bad HVM_SRC).
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
@@ -43,6 +45,7 @@ hot_list=$HERE/mission/hot-methods.txt
 list=()
 [ "$mode" != hot ] || list=(--methods "$hot_list")
 
+need_tools javac
 tc=$("$HERE/build-hvm.sh")
 srcs=("$ROOT/core-immortal/src/main/java" "$ROOT/scj-mission/src/main/java" "$HERE/mission/src")
 key=$( { find "${srcs[@]}" -name '*.java' -print0 | sort -z | xargs -0 sha256sum | sed "s|$ROOT/||";

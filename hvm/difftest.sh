@@ -10,8 +10,10 @@
 #
 # --count: values (methods) per program. --keep DIR: copy each program that disagreed there
 # (with the indices) to keep as a regression program. --toolchain: another tool chain than
-# build-hvm.sh's (e.g. one built without some patches). Exit 0 when every value agreed.
+# build-hvm.sh's (e.g. one built without some patches).
 # Needs what build-hvm.sh needs (HVM_SRC, ...).
+# Exit codes: 0 every value agreed; 1 a value disagreed or a program did not build or run, or the
+# tool chain failed to build; 2 bad usage (an option, a bad HVM_SRC).
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
@@ -22,13 +24,6 @@ modes=interpreted,compiled
 keep=
 tc=
 . "$HERE/script-options.sh"
-# a folder to write into: absent (made when needed) or a folder, below no file
-writable_folder() { # writable_folder OPTION PATH
-    local p=$2
-    [ ! -e "$p" ] || [ -d "$p" ] || bad "$1: $2 is not a folder"
-    while [ ! -e "$p" ]; do p=$(dirname "$p"); done
-    [ -d "$p" ] || bad "$1: $2: $p is not a folder"
-}
 while [ $# -gt 0 ]; do
     case "$1" in
         --toolchain|--seeds|--count|--modes|--keep) [ $# -ge 2 ] || bad "$1: needs a value" ;;
@@ -57,6 +52,7 @@ fi
 [[ $count =~ ^[1-9][0-9]{0,8}$ ]] || bad "--count: '$count' is not a positive number of values"
 [[ $modes =~ ^(interpreted|compiled)(,(interpreted|compiled))*$ ]] \
     || bad "--modes: '$modes' is not a list of interpreted and compiled"
+need_tools python3 java javac timeout
 
 [ -n "$tc" ] || tc=$("$HERE/build-hvm.sh")
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-difftest.XXXXXX")
@@ -81,8 +77,9 @@ javac -d "$work/runner" "$work/runner/Runner.java"
 jc() {
     if ! javac -nowarn -source 8 -target 8 -bootclasspath "$tc/rt.jar" -cp "$tc/sdk" -d "$1" "$2" > "$1.log" 2>&1; then
         grep -v '^warning\|^Note' "$1.log" >&2
-        echo "difftest: the generated program does not compile (a bug of gen.py)" >&2
-        exit 2
+        # a bug of gen.py or a broken tool chain, not the user's input
+        echo "difftest: the generated program $2 does not compile against $tc (gen.py's bug, or the tool chain's)" >&2
+        exit 1
     fi
 }
 

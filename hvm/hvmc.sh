@@ -21,6 +21,9 @@
 # --keep-c DIR keeps the generated C (for reading or profiling).
 # Steps (about 10 s): main.CompilationManager writes the program and the VM as C into a
 # temporary folder; gcc links it with the flags below.
+# Exit codes: 0 built; 1 the compiler or gcc failed (a line says which; --log keeps the log), or a
+# tool is missing; 2 bad usage (an option, or a --methods LIST entry that names no method of the
+# program).
 set -euo pipefail
 HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
 . "$HERE/script-options.sh"
@@ -50,6 +53,10 @@ while [ $# -gt 0 ]; do
 done
 [ -n "$tc" ] && [ -n "$classes" ] && [ -n "$main" ] && [ -n "$out" ] \
     || { echo "hvmc: --toolchain, --classes, --main and -o are required" >&2; exit 2; }
+# before the compiler runs: an output that cannot be written failed after it, with mkdir's or mv's words
+writable_folder -o "$out" "$(dirname "$out")"
+[ -z "$log" ] || writable_folder --log "$log" "$(dirname "$log")"
+[ -z "$keep" ] || writable_folder --keep-c "$keep"
 # Paths the script uses after it changes folder (realpath -m: readlink -f fails, and with it the
 # script, silently, for a path two folders below what exists, which -o and --keep-c may name).
 out=$(realpath -m "$out")
@@ -74,10 +81,13 @@ for p in "${parts[@]}"; do
     [ -e "$p" ] || { echo "hvmc: --classes: no such folder or jar: $p" >&2; exit 2; }
     abs_cp+=$(readlink -f "$p"):
 done
+need_tools java gcc
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvmc.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-[ -n "$log" ] || log=$work/compile.log
+# the failure lines name the log only when it outlives the script (the temporary one is removed)
+where="log: $log"
+[ -n "$log" ] || { log=$work/compile.log; where="no log kept: --log FILE keeps it"; }
 mkdir -p "$(dirname "$log")"
 : > "$log"
 
@@ -92,7 +102,7 @@ mkdir "$work/c"
 if ! (cd "$work" && java -cp "$tc/tools:$tc/lib/bcel-6.0.jar" main.CompilationManager \
         "$abs_cp$tc/sdk:$tc/rt.jar" "$pkg" "$cls" "$work/c/" "${aot[@]}") >> "$log" 2>&1 \
         || grep -q "Couldn't find" "$log" || [ ! -f "$work/c/classes.c" ]; then
-    echo "hvmc: the icecap compiler failed for $main (log: $log):" >&2
+    echo "hvmc: the icecap compiler failed for $main ($where):" >&2
     grep -m1 -A4 "Couldn't find\|Exception in thread" "$log" >&2 || tail -5 "$log" >&2
     exit 1
 fi
@@ -124,7 +134,7 @@ if ! gcc -O3 -w -fno-strict-aliasing -fwrapv -ffp-contract=off -DPC64 -DPRINTFSU
         classes.c icecapvm.c methodinterpreter.c methods.c gc.c natives_allOS.c natives_i86.c \
         rom_heap.c allocation_point.c rom_access.c print.c x86_64_interrupt.s "${natives[@]}" \
         -Wl,-z,noexecstack -lpthread -lrt -lm >> "$log" 2>&1; then
-    echo "hvmc: gcc failed for $main (log: $log):" >&2
+    echo "hvmc: gcc failed for $main ($where):" >&2
     grep -m10 "error" "$log" >&2 || tail -10 "$log" >&2
     exit 1
 fi

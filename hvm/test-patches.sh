@@ -12,7 +12,9 @@
 #
 #   hvm/test-patches.sh [--unpatched] [--only=NAME]
 #
-# Needs what build-hvm.sh needs (HVM_SRC, ...). Exit 0 when every expectation holds.
+# Needs what build-hvm.sh needs (HVM_SRC, ...).
+# Exit codes: 0 every expectation holds; 1 one does not, or the tool chain failed to build; 2 bad
+# usage (an option, a bad HVM_SRC).
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
@@ -56,6 +58,7 @@ if [ -n "$only" ]; then
     [[ " ${names[*]} " == *" $only "* ]] || bad "--only: no test named '$only' (one of: ${names[*]})"
 fi
 
+need_tools javac timeout
 work=$(mktemp -d "${TMPDIR:-/tmp}/hvm-patches.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 failures=0

@@ -7,8 +7,10 @@
 #   hvm/upstream-scj-tests.sh [--timeout SECONDS] [--modes interpreted,compiled] [TestName...]
 #
 # Known failures (listed below, not counted): TestSCJSingleRawMemory_MemoryMapped1 maps raw
-# device memory at a fixed address, which a Linux process cannot do (both modes). Exit 0 when
-# every other test passes and only known failures fail. Takes about 10 s a test and mode.
+# device memory at a fixed address, which a Linux process cannot do (both modes). Takes about
+# 10 s a test and mode.
+# Exit codes: 0 every other test passes and only known failures fail; 1 an unexpected failure, or
+# the tool chain failed to build; 2 bad usage (an option, a bad HVM_SRC).
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
@@ -37,6 +39,7 @@ declare -A known_failure=(
     [TestSCJSingleRawMemory_MemoryMapped1]="maps raw device memory at a fixed address"
 )
 
+need_tools javac timeout
 tc=$("$HERE/build-hvm.sh")
 tests_src=$tc/src/icecaptoolstest/src
 if [ ${#names[@]} -eq 0 ]; then

@@ -232,11 +232,29 @@ public record Doctor(Path root, boolean runCommands) {
             steal = a[7];
         }
         double pct = total == 0 ? 0 : 100.0 * steal / total;
-        String v = String.format(Locale.ROOT, "%.2f%% %s", pct, sampled ? "over 250 ms" : "since boot");
+        String v = stealShare(steal, total) + " " + (sampled ? "over 250 ms" : "since boot") + " (" + total + " ticks)";
         if (pct < 1.0) {
             return DoctorCheck.pass("steal-time", v);
         }
         return DoctorCheck.warn("steal-time", v, "the hypervisor is taking CPU time from this machine: expect latency outliers");
+    }
+
+    /**
+     * {@code steal} ticks of {@code ticks} as a percentage with no more digits than one tick can
+     * tell apart (250 ms on 2 CPUs is about 50 ticks: 2% a tick, so "0.00%" claimed a precision it
+     * did not have); none is "&lt; one tick", rounded up.
+     */
+    static String stealShare(long steal, long ticks) {
+        if (ticks <= 0) {
+            return "unknown";
+        }
+        double tick = 100.0 / ticks;
+        int digits = (int) Math.max(0, Math.min(2, Math.ceil(-Math.log10(tick))));
+        if (steal == 0) {
+            double scale = Math.pow(10, digits);
+            return "< " + String.format(Locale.ROOT, "%." + digits + "f%%", Math.max(Math.ceil(tick * scale - 1e-9), 1) / scale);
+        }
+        return String.format(Locale.ROOT, "%." + digits + "f%%", tick * steal);
     }
 
     DoctorCheck cyclictest() {

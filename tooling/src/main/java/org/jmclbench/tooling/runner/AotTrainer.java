@@ -75,7 +75,13 @@ final class AotTrainer {
                 cmd.addAll(List.of("--policy", policy, "--time-scale", "0.1"));
             }
             long timeoutMs = (long) ((dataset.durationS() * 0.1 * 3 + 120) * 1000);
-            ProcessRunner.Result r = ProcessRunner.run(cmd, timeoutMs);
+            ProcessRunner.Result r;
+            try {
+                // the runner's shutdown hook kills the training as it kills a run: stopped, it ran on to its timeout
+                r = ProcessRunner.run(cmd, timeoutMs, ForkedRun.CURRENT::set);
+            } finally {
+                ForkedRun.CURRENT.set(null);
+            }
             String interrupted = r.timedOut() ? null : ForkedRun.interruption(r.exitCode());
             if (interrupted != null) {
                 // Ctrl-C reaches the training JVM too: not a limit of the runtime, so no unsupported row

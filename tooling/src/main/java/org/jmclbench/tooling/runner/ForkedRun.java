@@ -34,7 +34,7 @@ public final class ForkedRun {
     static final int STDERR_TAIL_CHARS = 4000;
 
     private static final ObjectMapper JSON = new ObjectMapper();
-    /** The child in progress, killed by the shutdown hook if the runner is interrupted (Ctrl-C). */
+    /** The child in progress (a run, or the aot profile's training run), killed by the shutdown hook if the runner is interrupted (Ctrl-C). */
     static final AtomicReference<Process> CURRENT = new AtomicReference<>();
     /** Set by the shutdown hook before it kills the child: a run ended then was ended by the runner, not the runtime. */
     private static volatile boolean stopping;

@@ -1,5 +1,6 @@
 package org.jmclbench.tooling.runner;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -158,10 +159,11 @@ public final class MatrixPlanner {
      * run, so that no run pays for it; nothing when {@code m} has no hvm runtime. Not part of
      * {@link #resolve}: a dry run plans and prints, and builds nothing.
      *
-     * @throws BadUsageException when an executable cannot be built, naming where hvm was asked for
-     *     ({@code --runtimes: hvm: ...}, or the matrix file's line)
+     * @throws BadUsageException when the build refuses its input, and {@link IOException} when an
+     *     executable cannot be built, each naming where hvm was asked for ({@code --runtimes: hvm: ...},
+     *     or the matrix file's line)
      */
-    static void prepareHvm(MatrixSpec spec, ResolvedMatrix m, Path home) {
+    static void prepareHvm(MatrixSpec spec, ResolvedMatrix m, Path home) throws IOException {
         if (m.runtimes().stream().noneMatch(r -> r.kind() == RuntimeKind.HVM)) {
             return;
         }

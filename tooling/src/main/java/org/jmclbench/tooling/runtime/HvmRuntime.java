@@ -1,5 +1,6 @@
 package org.jmclbench.tooling.runtime;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -20,6 +21,8 @@ public final class HvmRuntime {
     public static final String MODE_VARIABLE = "JMCLBENCH_HVM_MODE";
     /** Building the tool chain and the mission takes about 70 s on a quiet machine. */
     static final long BUILD_TIMEOUT_MS = 15 * 60 * 1000L;
+    /** The hvm scripts' exit code for bad input (hvm/script-options.sh); 1 is a failed build. */
+    static final int BAD_INPUT_EXIT = 2;
 
     private HvmRuntime() {
     }
@@ -58,17 +61,26 @@ public final class HvmRuntime {
 
     /**
      * Builds (or finds cached) the mission's executable in each mode ({@link Profile#hvmMode}), so
-     * that no run pays for it; throws when it cannot, naming {@code where} the hvm runtime was asked
-     * for (an option, or a matrix file's line).
+     * that no run pays for it, naming {@code where} the hvm runtime was asked for (an option, or a
+     * matrix file's line) when it cannot.
+     *
+     * @throws BadUsageException when the build refuses its input (build-mission.sh's exit 2: a bad HVM_SRC)
+     * @throws IOException when the build fails (its exit 1, or its timeout): the machine's failure, not the user's
      */
-    public static void prepare(Path home, List<String> modes, String where) {
+    public static void prepare(Path home, List<String> modes, String where) throws IOException {
         for (String mode : modes) {
             ProcessRunner.Result r = ProcessRunner.run(List.of(home.resolve("hvm/build-mission.sh").toString(),
                     "--mode", mode), BUILD_TIMEOUT_MS);
-            if (!r.ok()) {
-                throw new BadUsageException(where + ": " + NAME + ": the HVM executable (" + mode + ") cannot be built: "
-                        + lastLine(r.output()) + " (./jmclbench doctor; docs/HVM.md)");
+            if (r.ok()) {
+                continue;
             }
+            String why = where + ": " + NAME + ": the HVM executable (" + mode + ") cannot be built: "
+                    + (r.timedOut() ? "no end after " + BUILD_TIMEOUT_MS / 60_000 + " min" : lastLine(r.output()))
+                    + " (./jmclbench doctor; docs/HVM.md)";
+            if (!r.timedOut() && r.exitCode() == BAD_INPUT_EXIT) {
+                throw new BadUsageException(why);
+            }
+            throw new IOException(why);
         }
     }
 

@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 
 /** Runs a short helper process (a probe) from an argument list, with a timeout, capturing its output. */
 public final class ProcessRunner {
@@ -30,6 +31,14 @@ public final class ProcessRunner {
      * chatty child can never block on a full pipe. A start failure is reported as exit code 127.
      */
     public static Result run(List<String> command, long timeoutMs) {
+        return run(command, timeoutMs, p -> { });
+    }
+
+    /**
+     * {@link #run(List, long)}, handing the process to {@code started} as soon as it runs (for a
+     * caller's shutdown hook to kill it, should the caller be stopped while it waits).
+     */
+    public static Result run(List<String> command, long timeoutMs, Consumer<Process> started) {
         Path out = null;
         Path err = null;
         try {
@@ -45,6 +54,7 @@ public final class ProcessRunner {
             } catch (IOException e) {
                 return new Result(127, "", e.getMessage() == null ? "cannot start" : e.getMessage(), false);
             }
+            started.accept(p);
             boolean finished = p.waitFor(timeoutMs, TimeUnit.MILLISECONDS);
             if (!finished) {
                 ProcessTree.kill(p);

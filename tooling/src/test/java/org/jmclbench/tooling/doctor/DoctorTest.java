@@ -145,6 +145,20 @@ class DoctorTest {
         throw new AssertionError("no sched-fifo check in " + out);
     }
 
+    @Test
+    void stealTimeHasThePrecisionOfItsSample() {
+        // 250 ms on 2 CPUs: about 50 ticks of 2% each; it printed "0.00%" and "2.00%"
+        assertEquals("< 2%", Doctor.stealShare(0, 50));
+        assertEquals("2%", Doctor.stealShare(1, 50));
+        assertEquals("< 0.3%", Doctor.stealShare(0, 400));
+        assertEquals("0.5%", Doctor.stealShare(2, 400));
+        assertEquals("< 0.4%", Doctor.stealShare(0, 333)); // 0.3003% a tick, rounded up: "< 0.3%" would claim too little
+        // since boot: millions of ticks, two digits at most
+        assertEquals("< 0.01%", Doctor.stealShare(0, 12_000_000));
+        assertEquals("0.37%", Doctor.stealShare(44_400, 12_000_000));
+        assertEquals("unknown", Doctor.stealShare(0, 0));
+    }
+
     /** Asserts that each of the machine's checks (all but memory) has {@code status}. */
     private static void assertEvery(String status, Map<String, String> s) {
         for (String c : List.of("preempt-rt", "rt-throttling", "memlock", "cpu-governor", "isolated-cpus",

@@ -157,7 +157,8 @@ class BadInputTest extends FakeJvmHome {
     /**
      * The hvm runtime on a machine where its tool chain checks out but the mission's executable does
      * not build (stand-in build scripts that write down each build): a dry run plans and builds
-     * nothing; a run is refused in one line naming where hvm was asked for, with nothing recorded.
+     * nothing; a run fails (exit 1, the build's failure is not bad usage) in one line naming where
+     * hvm was asked for, with nothing recorded; a build that refuses its input (exit 2) is bad input.
      */
     @Test
     void aDryRunBuildsNoHvmExecutableAndAFailingBuildNamesTheRuntimesOption() throws Exception {
@@ -177,10 +178,26 @@ class BadInputTest extends FakeJvmHome {
 
         String failed = ": hvm: the HVM executable (compiled) cannot be built: build-mission: the mission does not compile"
                 + " against icecap's SCJ library (./jmclbench doctor; docs/HVM.md)";
-        assertRejected("jmclbench: --runtimes" + failed, "matrix", "--runtimes", "hvm", "--datasets", "tiny", "--db", db.toString());
+        // it was exit 2, as if the user had asked for something wrong
+        assertBuildFailed("jmclbench: matrix: --runtimes" + failed, "matrix", "--runtimes", "hvm", "--datasets", "tiny",
+                "--db", db.toString());
         assertEquals("--mode compiled", Files.readString(builds).strip(), "the run builds before it records anything");
         Path m = Files.writeString(dir.resolve("m.properties"), "datasets = tiny\nruntimes = hvm\n");
-        assertRejected("jmclbench: " + m + ":2: runtimes" + failed, "matrix", "--matrix", m.toString(), "--db", db.toString());
+        assertBuildFailed("jmclbench: matrix: " + m + ":2: runtimes" + failed, "matrix", "--matrix", m.toString(),
+                "--db", db.toString());
+
+        script(hvm.resolve("build-mission.sh"), "echo 'build-hvm: HVM_SRC=/no/such.tar.gz: no such file or folder' >&2\nexit 2\n");
+        assertRejected("jmclbench: --runtimes: hvm: the HVM executable (compiled) cannot be built: build-hvm: HVM_SRC="
+                + "/no/such.tar.gz: no such file or folder", "matrix", "--runtimes", "hvm", "--datasets", "tiny", "--db", db.toString());
+    }
+
+    /** The command failed (exit 1) with {@code line} alone on stderr, and nothing ran or was recorded. */
+    private void assertBuildFailed(String line, String... args) {
+        Fixtures.CliResult r = Fixtures.cli(args);
+        assertEquals(1, r.exitCode(), r.out() + r.err());
+        assertEquals(line, r.err().strip());
+        assertFalse(Files.exists(db), "nothing may be recorded");
+        assertFalse(Files.exists(dir.resolve("out/runs")), "nothing may run");
     }
 
     private static void script(Path file, String body) throws Exception {

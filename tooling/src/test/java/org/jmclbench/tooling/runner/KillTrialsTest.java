@@ -1,6 +1,7 @@
 package org.jmclbench.tooling.runner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -155,6 +156,36 @@ class KillTrialsTest {
         assertEquals(1, runner.exitValue(), err);
         assertTrue(err.contains("AOT training run was interrupted (SIGTERM)"), err);
         assertEquals(Map.of(), rows(gatedDb()));
+    }
+
+    /**
+     * A runner stopped with SIGTERM while the aot profile trains its cache kills the training run as
+     * it kills a run (the training ran on until its own timeout, minutes later), and records nothing.
+     */
+    @Test
+    void aRunnerStoppedMidAotTrainingKillsTheTrainingRun() throws Exception {
+        Process runner = new ProcessBuilder(gatedMatrix("--profiles", "aot")).redirectOutput(dir.resolve("first.out").toFile())
+                .redirectError(dir.resolve("first.log").toFile()).start();
+        List<ProcessHandle> training = List.of();
+        try {
+            awaitStarted(runner);
+            training = runner.descendants().toList();
+            assertFalse(training.isEmpty(), "no training run under the runner");
+            runner.destroy(); // SIGTERM to the runner only
+            assertTrue(runner.waitFor(60, TimeUnit.SECONDS));
+            for (ProcessHandle h : training) {
+                try {
+                    h.onExit().get(30, TimeUnit.SECONDS); // generous: the hook has already waited for the kill
+                } catch (java.util.concurrent.TimeoutException e) {
+                    throw new AssertionError("the training run (pid " + h.pid() + ") outlived its runner: " + firstErr());
+                }
+            }
+        } finally {
+            Files.createFile(dir.resolve("g/open"));
+            training.forEach(ProcessHandle::destroyForcibly);
+            runner.destroyForcibly();
+        }
+        assertEquals(Map.of(), rows(gatedDb()), firstErr());
     }
 
     /** A matrix of one run on a fake runtime that waits at its start until {@code g/open} exists. */

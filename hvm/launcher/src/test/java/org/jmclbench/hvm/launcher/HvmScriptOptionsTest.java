@@ -3,7 +3,6 @@ package org.jmclbench.hvm.launcher;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.File;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -12,9 +11,8 @@ import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.TimeUnit;
 
-import org.junit.jupiter.api.Assumptions;
+import org.jmclbench.hvm.launcher.HvmScripts.Result;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -31,12 +29,12 @@ class HvmScriptOptionsTest {
     @TempDir
     Path dir;
     private Path hvm;
+    private HvmScripts scripts;
 
     @BeforeEach
     void findScripts() {
-        File home = HvmRunTest.projectHome();
-        Assumptions.assumeTrue(home != null, "no hvm/ folder above the working directory");
-        hvm = home.toPath().resolve("hvm");
+        scripts = new HvmScripts(dir);
+        hvm = scripts.hvm();
     }
 
     @Test
@@ -56,6 +54,8 @@ class HvmScriptOptionsTest {
             assertEquals(0, r.exit, script + ": " + r.err);
             assertEquals(String.join("\n", header), r.out.replaceAll("\\s+$", ""), script);
             assertTrue(r.out.contains("hvm/" + script), script + ": its help has no usage line");
+            // a caller tells bad usage from a failure by the code alone
+            assertTrue(r.out.matches("(?s).*\nExit codes: 0 .*;\\s+1 .*;\\s+2 bad\\s+usage .*"), script + ": its help names no exit codes");
         }
     }
 
@@ -106,6 +106,33 @@ class HvmScriptOptionsTest {
     }
 
     @Test
+    void foldersThatCannotBeWrittenAreOneLineAndExit2BeforeAnythingRuns() throws Exception {
+        // hvmc.sh ran the compiler, then failed with mkdir's or mv's words (exit 1); build-hvm.sh's
+        // --check said the tool chain could be built, then the build failed with mkdir's words
+        Files.write(dir.resolve("file"), bytes("x"));
+        Files.createDirectories(dir.resolve("chain"));
+        Files.write(dir.resolve("chain/KEY"), bytes("source test\n"));
+        String[] hvmc = {"--toolchain", "chain", "--classes", ".", "--main", "a.B"};
+        bad("hvmc: -o: file/exe: file is not a folder", "hvmc.sh", concat(hvmc, "-o", "file/exe"));
+        bad("hvmc: --log: file/x/c.log: file is not a folder", "hvmc.sh", concat(hvmc, "-o", "exe", "--log", "file/x/c.log"));
+        bad("hvmc: --keep-c: file: file is not a folder", "hvmc.sh", concat(hvmc, "-o", "exe", "--keep-c", "file"));
+        String cache = dir.resolve("file/cache").toString();
+        Map<String, String> env = new java.util.HashMap<>();
+        env.put("JMCLBENCH_CACHE", cache);
+        env.put("HVM_SRC", Files.createDirectories(dir.resolve("hvm-scj/icecapvm/src")).getParent().getParent().toString());
+        for (String[] args : new String[][] {{"--check"}, {}}) {
+            bad(env, "build-hvm: JMCLBENCH_CACHE=" + cache + ": cannot write there (" + dir.resolve("file") + " is not a folder)",
+                    "build-hvm.sh", args);
+        }
+    }
+
+    private static String[] concat(String[] a, String... b) {
+        String[] all = Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, all, a.length, b.length);
+        return all;
+    }
+
+    @Test
     void aBadHvmSrcIsOneLineAndExit2() throws Exception {
         // a missing one was exit 1 (with --check: a lack of this machine); a file that is not a
         // tarball was gzip's and tar's four lines, then "no icecapvm/src in the HVM source"
@@ -133,43 +160,11 @@ class HvmScriptOptionsTest {
         assertEquals("", r.out, script + " " + String.join(" ", args));
     }
 
-    private static final class Result {
-        final int exit;
-        final String out;
-        final String err;
-
-        Result(int exit, String out, String err) {
-            this.exit = exit;
-            this.out = out;
-            this.err = err;
-        }
-    }
-
     private static byte[] bytes(String s) {
         return s.getBytes(StandardCharsets.UTF_8);
     }
 
-    private static String read(Path f) throws Exception {
-        return new String(Files.readAllBytes(f), StandardCharsets.UTF_8);
-    }
-
     private Result run(Map<String, String> env, String script, String... args) throws Exception {
-        List<String> cmd = new ArrayList<>(Collections.singletonList(hvm.resolve(script).toString()));
-        cmd.addAll(Arrays.asList(args));
-        Path out = dir.resolve("stdout");
-        Path err = dir.resolve("stderr");
-        ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile()).redirectOutput(out.toFile())
-                .redirectError(err.toFile());
-        // a bad option must be found before the tool chain is built: a cache of its own stays empty
-        pb.environment().put("JMCLBENCH_CACHE", dir.resolve("cache").toString());
-        // and no source to build it from, so that a case that is not found fails fast
-        pb.environment().put("HVM_SRC", dir.resolve("no-hvm-src").toString());
-        pb.environment().putAll(env);
-        Process p = pb.start();
-        if (!p.waitFor(60, TimeUnit.SECONDS)) {
-            p.destroyForcibly();
-            throw new AssertionError(script + " " + String.join(" ", args) + " did not end");
-        }
-        return new Result(p.exitValue(), read(out), read(err));
+        return scripts.run(env, script, args);
     }
 }

@@ -1,0 +1,124 @@
+package org.jmclbench.tooling.store;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.File;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.ResultSet;
+import java.sql.Statement;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.jar.Attributes;
+import java.util.jar.JarOutputStream;
+import java.util.jar.Manifest;
+
+import org.jmclbench.tooling.Fixtures;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Real runs of the workload through a matrix, then scripts/audit_run.py and scripts/audit_store.py,
+ * which share no code with the project: every number of each run's summary.json and data.txt, of the
+ * store's metrics, histograms and series, of the report's cells and histogram charts and of compare's
+ * table must equal their recomputation from the run folders' job lines and position files.
+ */
+class IndependentAuditTest {
+
+    private static final Path PROJECT = Path.of(System.getProperty("user.dir")).getParent();
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void theRunsTheStoreTheReportAndCompareAgreeWithAnIndependentRecomputation() throws Exception {
+        Assumptions.assumeTrue(python3Available(), "python3 is not installed (scripts/install-deps.sh installs it)");
+        Fixtures.home(dir);
+        workloadJarOfThisClassPath(dir.resolve("workload/target/jmclbench-workload.jar"));
+        Path db = dir.resolve("results/results.db");
+        String java = ProcessHandle.current().info().command().orElse("java");
+        // 3 s of match-quick at 3000 particles: a few drops and aborts on most machines, not needed by the check
+        Fixtures.CliResult m = Fixtures.cli("matrix", "--java", java, "--engines", "javase,rtsj-atomic",
+                "--policies", "skip,terminate", "--particles", "3000", "--datasets", PROJECT.resolve("data/match-quick").toString(),
+                "--time-scale", "0.3", "--db", db.toString());
+        assertEquals(0, m.exitCode(), m.out() + m.err());
+        List<String> runDirs = new ArrayList<>();
+        String runtime = null;
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
+             ResultSet rs = s.executeQuery("SELECT runtime, run_dir, status FROM runs")) {
+            while (rs.next()) {
+                assertEquals("ok", rs.getString(3), m.out() + m.err());
+                runtime = rs.getString(1);
+                runDirs.add(db.getParent().resolve(rs.getString(2)).toString());
+            }
+        }
+        assertEquals(4, runDirs.size());
+
+        List<String> run = new ArrayList<>(List.of(PROJECT.resolve("scripts/audit_run.py").toString()));
+        run.addAll(runDirs);
+        assertAgrees(python(run));
+
+        Fixtures.CliResult report = Fixtures.cli("report", "--db", db.toString(), "--no-export");
+        assertEquals(0, report.exitCode(), report.out() + report.err());
+        Fixtures.CliResult compare = Fixtures.cli("compare", "--db", db.toString(), "--a", runtime, "--b", runtime + "/rtsj-atomic");
+        assertEquals(0, compare.exitCode(), compare.out() + compare.err());
+        Path compareOut = dir.resolve("compare.txt");
+        Files.writeString(compareOut, compare.out());
+        String store = python(List.of(PROJECT.resolve("scripts/audit_store.py").toString(), db.toString(),
+                "--report", db.getParent().resolve("report/index.html").toString(), "--compare", compareOut.toString()));
+        assertAgrees(store);
+        assertTrue(store.contains("report: 4 cells checked of 4"), store);
+        assertTrue(store.matches("(?s).*compare .*: (\\d{2,}) means checked.*"), "compare's table was read: " + store);
+    }
+
+    private static void assertAgrees(String out) {
+        assertTrue(out.contains(", 0 disagree,"), out);
+        assertTrue(!out.contains(" 0 numbers compared"), out);
+    }
+
+    /**
+     * The matrix runs {@code java -cp <workload jar>}: a jar whose manifest puts this test's class path
+     * (the workload and the engines it loads, built by the reactor) behind it.
+     */
+    private static void workloadJarOfThisClassPath(Path jar) throws IOException {
+        StringBuilder cp = new StringBuilder();
+        for (String entry : System.getProperty("java.class.path").split(File.pathSeparator)) {
+            cp.append(Path.of(entry).toUri()).append(' ');
+        }
+        Manifest mf = new Manifest();
+        mf.getMainAttributes().put(Attributes.Name.MANIFEST_VERSION, "1.0");
+        mf.getMainAttributes().put(Attributes.Name.CLASS_PATH, cp.toString().strip());
+        try (OutputStream out = Files.newOutputStream(jar); JarOutputStream j = new JarOutputStream(out, mf)) {
+            j.flush();
+        }
+    }
+
+    /** Runs python3 with {@code args}; its output, failing the test when it exits other than 0. */
+    private String python(List<String> args) throws Exception {
+        List<String> cmd = new ArrayList<>(List.of("python3"));
+        cmd.addAll(args);
+        Path log = Files.createTempFile(dir, "audit", ".txt");
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "the audit did not finish in 120 s");
+        String out = Files.readString(log, StandardCharsets.UTF_8);
+        assertEquals(0, p.exitValue(), out);
+        return out;
+    }
+
+    private static boolean python3Available() {
+        for (String d : System.getenv().getOrDefault("PATH", "").split(File.pathSeparator)) {
+            if (Files.isExecutable(Path.of(d, "python3"))) {
+                return true;
+            }
+        }
+        return false;
+    }
+}

@@ -50,19 +50,18 @@ public final class HvmMain {
             }
         }
         HvmInput input = new HvmInput(MissionRunFile.DATA);
-        if (config.areaSize(MissionSizes.MISSION) == 0) {
-            // icecap allocates each handler's stack (ConfigurationParameters) in mission memory
-            long computed = new MissionSizes(config, input.odometryCount(), input.laserCount())
-                    .size(MissionSizes.MISSION);
-            config.areaSize(MissionSizes.MISSION, computed + MissionRunFile.HANDLER_STACKS);
-        }
+        // icecap's own objects (its scheduler in immortal memory, each handler's stack in mission
+        // memory) are added to computed sizes only, as the launcher reports them
+        MissionSizes computed = new MissionSizes(config, input.odometryCount(), input.laserCount());
+        long immortal = MissionRunFile.icecapSize(config, computed, MissionSizes.IMMORTAL);
+        config.areaSize(MissionSizes.MISSION, MissionRunFile.icecapSize(config, computed, MissionSizes.MISSION));
         HvmOutput output = new HvmOutput();
         MclSafelet safelet = new MclSafelet(config, input, output);
 
         // icecap sizes its backing store and immortal memory from these constants, not from
         // the Safelet; the handlers' private memories are their ScopeParameters' sizes.
         MissionSizes sizes = safelet.sizes();
-        Const.IMMORTAL_MEM = (int) (sizes.size(MissionSizes.IMMORTAL) + MissionRunFile.IMMORTAL_INFRASTRUCTURE);
+        Const.IMMORTAL_MEM = (int) immortal;
         // icecap nests the areas: the mission memory inside the sequencer's private memory
         // (each of the mission's size), the handlers' private memories and their backing
         // stores inside the mission memory's reservation. The backing store is generous so

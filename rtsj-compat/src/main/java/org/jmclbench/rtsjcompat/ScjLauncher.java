@@ -71,6 +71,11 @@ public final class ScjLauncher {
         return report.allocationMeter();
     }
 
+    /** Whether allocation was measured: false, every area's figures are 0 whatever it held, and no budget was enforced. */
+    public boolean allocationMeasured() {
+        return report.allocationMeasured();
+    }
+
     /** The time source of the run: system or virtual. */
     public String timeSource() {
         return report.timeSource();

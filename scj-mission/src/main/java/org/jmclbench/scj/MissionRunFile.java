@@ -65,6 +65,19 @@ public final class MissionRunFile {
     private MissionRunFile() {
     }
 
+    /**
+     * The size icecap is given for {@code area}: the mission's ({@code sizes}), plus icecap's own
+     * room ({@link #IMMORTAL_INFRASTRUCTURE} in immortal, {@link #HANDLER_STACKS} in mission memory)
+     * when the size is computed; a size set in {@code config} (--area-size) is taken as it is.
+     */
+    public static long icecapSize(MissionConfiguration config, MissionSizes sizes, int area) {
+        long room = 0;
+        if (config.areaSize(area) == 0) {
+            room = area == MissionSizes.IMMORTAL ? IMMORTAL_INFRASTRUCTURE : area == MissionSizes.MISSION ? HANDLER_STACKS : 0;
+        }
+        return sizes.size(area) + room;
+    }
+
     /** The code of an estimate choice: mean 0, best 1. */
     public static long code(MclConfig.Estimate e) {
         return e == MclConfig.Estimate.MEAN ? 0 : 1;

@@ -111,6 +111,27 @@ public final class VerifyMain {
         return null;
     }
 
+    /**
+     * Why the results file cannot be written at {@code out}, or null: a scratch file is made and
+     * removed in the nearest existing folder above it, so that a read-only place is bad usage
+     * before the checks, not an exception after all of them.
+     */
+    static String unwritable(Path out) {
+        Path folder = out.toAbsolutePath().getParent();
+        while (folder != null && !Files.isDirectory(folder)) {
+            folder = folder.getParent();
+        }
+        if (folder == null) {
+            return null; // no folder above it at all: badOptions has named the file in the way
+        }
+        try {
+            Files.delete(Files.createTempFile(folder, "verification", ".probe"));
+            return null;
+        } catch (IOException | SecurityException e) {
+            return "--out: " + out + ": cannot write in " + folder + " (" + e.getClass().getSimpleName() + ")";
+        }
+    }
+
     /** The nearest existing ancestor of {@code path} when it is not a folder, else null. */
     private static Path fileAbove(Path path) {
         for (Path p = path.toAbsolutePath().getParent(); p != null; p = p.getParent()) {
@@ -137,9 +158,21 @@ public final class VerifyMain {
         ClassPool pool = ClassPool.of(classPath.stream().filter(e -> !e.isEmpty()).map(Paths::get)
                 .filter(p -> !p.getFileName().toString().startsWith("jpf")).toList());
         JpfRunner runner = null;
-        if (only != null && catalogs.stream().noneMatch(c -> Stream.concat(c.staticChecks().stream().map(StaticCheck::id),
-                c.jpfChecks().stream().map(JpfCheck::id)).anyMatch(id -> selected(id, only)))) {
-            usage("--only: no check id starts with " + String.join(" or ", only));
+        if (only != null) {
+            // Each prefix must select a check: a misspelt one beside a good one ran fewer checks, and passed.
+            List<String> ids = catalogs.stream().flatMap(c -> Stream.concat(c.staticChecks().stream().map(StaticCheck::id),
+                    c.jpfChecks().stream().map(JpfCheck::id))).toList();
+            List<String> unmatched = only.stream().filter(p -> ids.stream().noneMatch(id -> id.startsWith(p)))
+                    .distinct().toList();
+            if (!unmatched.isEmpty()) {
+                usage("--only: no check id starts with " + String.join(" or ", unmatched));
+            }
+        }
+        if (out != null) {
+            String unwritable = unwritable(out);
+            if (unwritable != null) {
+                usage(unwritable);
+            }
         }
         System.out.printf("%-34s %-48s %-9s %-8s %9s %8s%n", "check", "property", "policy", "verdict", "states",
                 "seconds");

@@ -12,6 +12,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -27,6 +28,21 @@ class VerifyMainTest {
     void anOnlyPrefixNoCheckHasIsOneLineAndNoTable() throws Exception {
         assertBadInput("jmclbench: verify: --only: no check id starts with no-such-check or nor-this",
                 "--only", "no-such-check,nor-this");
+    }
+
+    @Test
+    void anOnlyPrefixNoCheckHasIsNamedBesideOneThatHas() throws Exception {
+        // the misspelt prefix selected nothing and the run passed on the other one's checks
+        assertBadInput("jmclbench: verify: --only: no check id starts with P2-statc", "--only", "P2-static,P2-statc");
+    }
+
+    @Test
+    void anOutWhereNothingCanBeWrittenIsOneLineBeforeAnyCheck() throws Exception {
+        // it was a stack trace and exit 1 after every check had run (root writes any ordinary
+        // folder, so the unwritable place is /proc)
+        Assumptions.assumeTrue(Files.isDirectory(Path.of("/proc/self")), "no /proc here");
+        assertBadInput("jmclbench: verify: --out: /proc/verification.json: cannot write in /proc (NoSuchFileException)",
+                "--only", "P2-static", "--out", "/proc/verification.json");
     }
 
     @Test

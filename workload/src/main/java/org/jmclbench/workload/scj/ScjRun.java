@@ -154,14 +154,21 @@ public final class ScjRun {
         return mission;
     }
 
-    /** The compat layer's areas under the mission's names (immortal, mission, the handlers' names). */
+    /**
+     * The compat layer's areas under the mission's names (immortal, mission, the handlers' names).
+     * On a JVM with no allocation counter every figure of use is 0 whatever the area held: null then
+     * (not measured), never a made-up 0 bytes per release.
+     */
     static List<MemoryArea> areas(ScjLauncher mission) {
         List<MemoryArea> out = new ArrayList<>();
+        boolean measured = mission.allocationMeasured();
         for (int a = 0; a < mission.areaCount(); a++) {
             boolean released = mission.areaIsPrivate(a) && mission.areaReleases(a) > 0;
-            Long perRelease = released ? Math.round(mission.areaBytesPerRelease(a)) : null;
-            out.add(new MemoryArea(areaName(mission.areaName(a)), mission.areaSize(a), mission.areaPeakBytes(a), perRelease,
-                    released ? mission.areaReleases(a) : null, released ? mission.areaAllocatingReleases(a) : null));
+            Long peak = measured ? mission.areaPeakBytes(a) : null;
+            Long perRelease = released && measured ? Math.round(mission.areaBytesPerRelease(a)) : null;
+            Long allocating = released && measured ? mission.areaAllocatingReleases(a) : null;
+            out.add(new MemoryArea(areaName(mission.areaName(a)), mission.areaSize(a), peak, perRelease,
+                    released ? mission.areaReleases(a) : null, allocating));
         }
         return out;
     }

@@ -10,6 +10,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.util.List;
 
+import org.jmclbench.rtsjcompat.AllocationMeter;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.testing.SyntheticDataset;
 import org.jmclbench.workload.testing.WorkloadCall;
@@ -60,6 +61,29 @@ class ScjEngineTest {
             assertEquals(60 + 1, odo.size(), "a line per odometry event and the header");
             assertFalse(odo.get(1).contains("pending"));
         }
+    }
+
+    @Test
+    void withoutAnAllocationCounterTheAreasUseIsNullNotZero() throws Exception {
+        // A JVM with no per-thread allocation counter measured nothing, yet summary.json said the
+        // scoped style's releases allocated 0 bytes, the preallocated style's claim.
+        File ds = SyntheticDataset.write(new File(tmp, "ds"), 2.0, 3, true, true);
+        File o = new File(tmp, "out");
+        AllocationMeter installed = AllocationMeter.current();
+        AllocationMeter.install(AllocationMeter.NONE);
+        try {
+            assertEquals(0, call.run("run", "--engine", "scj", "--memory", "scoped", "-p", "100", "--policy", "queue",
+                    "--time-scale", "0.5", "--dataset", ds.getPath(), "-O", o.getPath()), call.err());
+        } finally {
+            AllocationMeter.install(installed);
+        }
+        String s = read(new File(new File(call.out().trim()), "summary.json"));
+        assertTrue(s.contains("\"allocationMeter\": \"none\""), s);
+        java.util.regex.Matcher update = java.util.regex.Pattern.compile("\"name\": \"update\",\\s*\"size\": \\d+,"
+                + "\\s*\"peakBytes\": null,\\s*\"bytesPerRelease\": null,\\s*\"releases\": [1-9]\\d*,"
+                + "\\s*\"allocatingReleases\": null").matcher(s);
+        assertTrue(update.find(), s);
+        assertTrue(s.contains("\"name\": \"mission\",") && !s.matches("(?s).*\"peakBytes\": \\d.*"), s);
     }
 
     @Test

@@ -119,11 +119,7 @@ public final class HvmRun {
         MissionSizes s = new MissionSizes(config, d.odometryCount(), d.laserCount());
         long[] sizes = new long[MissionSizes.AREA_COUNT];
         for (int a = 0; a < sizes.length; a++) {
-            sizes[a] = s.size(a);
-        }
-        sizes[MissionSizes.IMMORTAL] += MissionRunFile.IMMORTAL_INFRASTRUCTURE;
-        if (config.areaSize(MissionSizes.MISSION) == 0) {
-            sizes[MissionSizes.MISSION] += MissionRunFile.HANDLER_STACKS;
+            sizes[a] = MissionRunFile.icecapSize(config, s, a);
         }
         return sizes;
     }

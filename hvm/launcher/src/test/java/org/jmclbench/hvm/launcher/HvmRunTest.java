@@ -15,10 +15,14 @@ import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
+import org.jmclbench.scj.MissionConfiguration;
+import org.jmclbench.scj.MissionRunFile;
+import org.jmclbench.scj.MissionSizes;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.data.DatasetReader;
 import org.jmclbench.workload.mcl.Localizers;
+import org.jmclbench.workload.scj.ScjRun;
 import org.jmclbench.workload.testing.SyntheticDataset;
 import org.jmclbench.workload.testing.WorkloadCall;
 import org.junit.jupiter.api.Assumptions;
@@ -80,6 +84,27 @@ class HvmRunTest {
         assertTrue(HvmRun.overflow("out of memory: 0x00001000, 0x00000010", sizes).contains("'predict or sensor'"));
         assertTrue(HvmRun.overflow("out of memory: 0x00000100, 0x00000010", sizes).contains("icecap-internal"));
         assertNull(HvmRun.overflow("warning: unimplemented function executed [0x02EB]", sizes));
+    }
+
+    @Test
+    void icecapsRoomIsAddedToComputedSizesOnlyAsDocsHvmSays() throws Exception {
+        // An immortal size set with --area-size gained icecap's 1 MiB all the same: immortal=1000
+        // ran, reported as a 1,049,576-byte area, the user's budget never applied.
+        File ds = SyntheticDataset.write(new File(tmp, "ds-sizes"), 2.0, 3, true, true);
+        Dataset d = DatasetReader.readFolder(ds);
+        RunOptions set = org.jmclbench.workload.RunOptionsParser.parse(new String[] {"run", "--engine", "hvm",
+            "--area-size", "immortal=1000", "--area-size", "mission=2000", "--dataset", ds.getPath()});
+        long[] given = HvmRun.areaSizes(ScjRun.configuration(set, set.mclConfig(), 1.0, true), d);
+        assertEquals(1000, given[MissionSizes.IMMORTAL]);
+        assertEquals(2000, given[MissionSizes.MISSION]);
+        RunOptions computed = org.jmclbench.workload.RunOptionsParser.parse(new String[] {"run", "--engine", "hvm",
+            "--dataset", ds.getPath()});
+        MissionConfiguration c = ScjRun.configuration(computed, computed.mclConfig(), 1.0, true);
+        MissionSizes mission = new MissionSizes(c, d.odometryCount(), d.laserCount());
+        long[] sizes = HvmRun.areaSizes(c, d);
+        assertEquals(mission.size(MissionSizes.IMMORTAL) + MissionRunFile.IMMORTAL_INFRASTRUCTURE, sizes[MissionSizes.IMMORTAL]);
+        assertEquals(mission.size(MissionSizes.MISSION) + MissionRunFile.HANDLER_STACKS, sizes[MissionSizes.MISSION]);
+        assertEquals(mission.size(MissionSizes.UPDATE), sizes[MissionSizes.UPDATE]);
     }
 
     @Test
@@ -189,6 +214,17 @@ class HvmRunTest {
                 "-p", "400", "--policy", "queue", "--dataset", ds.getPath(), "-O", o.getPath()), call.err());
         assertTrue(call.err().contains("memory area 'update' overflowed"), call.err());
         assertFalse(new File(o, "hvm/nocov/400/QueueTest/1/summary.json").exists(), "nothing recorded as valid");
+    }
+
+    @Test
+    void anImmortalMemorySetTooSmallFailsWithTheAreaNamed() throws Exception {
+        assumeHvm();
+        File ds = SyntheticDataset.write(new File(tmp, "ds"), 2.0, 3, true, true);
+        File o = new File(tmp, "out");
+        assertEquals(1, call.run("run", "--engine", "hvm", "--area-size", "immortal=1000", "-p", "50", "--policy",
+                "queue", "--dataset", ds.getPath(), "-O", o.getPath()), call.err());
+        assertTrue(call.err().contains("memory area 'immortal' overflowed"), call.err());
+        assertFalse(new File(o, "hvm/nocov/50/QueueTest/1/summary.json").exists(), "nothing recorded as valid");
     }
 
     /** Everything a process wrote on its standard output. */

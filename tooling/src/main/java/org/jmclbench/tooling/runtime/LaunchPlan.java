@@ -23,13 +23,13 @@ public record LaunchPlan(List<String> prefix, List<String> jvmFlags) {
         }
         List<String> flags = new ArrayList<>();
         if (runtime.isJvm()) {
-            int heapMb = 0;
+            int heapMb = profile.heapMb(); // a profile's heap size wins over Epsilon's default
             for (ProfileComponent c : profile.components()) {
                 if ((c == ProfileComponent.ZGC || c == ProfileComponent.SHENANDOAH) && runtime.major() > 0 && runtime.major() < 15) {
                     flags.add("-XX:+UnlockExperimentalVMOptions"); // experimental before JDK 15
                 }
                 flags.addAll(c.flags());
-                if (c == ProfileComponent.EPSILON) {
+                if (c == ProfileComponent.EPSILON && heapMb == 0) {
                     heapMb = ProfileComponent.EPSILON_HEAP_MB;
                 }
             }

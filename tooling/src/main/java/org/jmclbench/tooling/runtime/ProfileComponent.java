@@ -7,7 +7,8 @@ import java.util.Optional;
 
 /**
  * One named building block of a runtime profile: a GC, a JIT mode, heap pre-touch, OS scheduling, AOT.
- * {@link #appliesTo} says which runtime kinds take it: the others drop it from their profile.
+ * {@link #appliesTo} says which runtime kinds take it: the others drop it from their profile. The
+ * heap size, a number, is no constant here: {@link Profile#heapMb()}.
  */
 public enum ProfileComponent {
     SERIAL(Category.GC, "Serial GC", "-XX:+UseSerialGC"),
@@ -31,7 +32,7 @@ public enum ProfileComponent {
 
     /** The heap of an Epsilon run: preallocated runs allocate little; allocating ones ~100 MB a minute. */
     public static final int EPSILON_HEAP_MB = 2048;
-    /** The heap of a pre-touched run when nothing else asks for a size. */
+    /** The heap of a pre-touched run when nothing else (a heap size component, Epsilon) asks for a size. */
     public static final int PRETOUCH_HEAP_MB = 512;
     /** SCHED_FIFO priority of the runtime under test (cyclictest's usual 80, below the kernel's 99 threads). */
     public static final int FIFO_PRIORITY = 80;

@@ -105,14 +105,26 @@ public final class ProfileProbe {
         return Support.no(String.join(" ", prefix) + " not permitted here: " + firstMeaningfulLine(r.output()));
     }
 
+    /**
+     * The line that says why: HotSpot's generic lines ("Error occurred during initialization of VM",
+     * which comes before "Too small maximum heap", and "Could not create the Java Virtual Machine")
+     * only when nothing else is said.
+     */
     static String firstMeaningfulLine(String output) {
+        String generic = null;
         for (String line : output.split("\n")) {
             String l = line.strip();
-            if (!l.isEmpty() && !l.startsWith("OpenJDK 64-Bit Server VM warning: Options -Xverify")) {
-                return l.length() > 300 ? l.substring(0, 300) : l;
+            if (l.isEmpty() || l.startsWith("OpenJDK 64-Bit Server VM warning: Options -Xverify")) {
+                continue;
             }
+            if (l.equals("Error occurred during initialization of VM") || l.startsWith("Error: Could not create the Java Virtual Machine")
+                    || l.startsWith("Error: A fatal exception has occurred")) {
+                generic = generic == null ? l : generic;
+                continue;
+            }
+            return l.length() > 300 ? l.substring(0, 300) : l;
         }
-        return "no message";
+        return generic == null ? "no message" : generic;
     }
 
     private static String cacheKey(Path real, List<String> flags) {

@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.BeforeEach;
@@ -18,8 +19,9 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Bad usage of the launcher's own commands ({@code run}, {@code run-hvm}) is one line naming the
- * option and exit code 2, before anything runs: the launcher is copied into a home whose build is
- * up to date (a stand-in jar, and a stand-in Maven that only says it was called).
+ * option and exit code 2, before anything runs; the thesis's command line (no command word) is a
+ * run. The launcher is copied into a home whose build is up to date (a stand-in jar, and a stand-in
+ * Maven that only says it was called).
  */
 class LauncherBadInputTest {
 
@@ -76,14 +78,35 @@ class LauncherBadInputTest {
         assertTrue(run.endsWith("org.jmclbench.workload.WorkloadMain run -p 50"), run);
     }
 
+    @Test
+    void theThesisCommandLineWithoutACommandIsARun() throws Exception {
+        // the thesis's scripts: java -jar jMCLBench.jar -j sun-java -p $1 -n $i (no command word)
+        Path args = home.resolve("args");
+        Path java = executable(home.resolve("bin/fake-java"), "#!/bin/sh\necho \"$@\" > \"" + args + "\"\n");
+        for (List<String> line : List.of(List.of("-j", "sun-java", "-p", "50", "-n", "2"),
+                List.of("-T", "-c", "-O", "out", "-p", "50"),
+                List.of("-odo", "o.txt", "-laser", "l.txt", "-real", "r.txt"))) {
+            Files.deleteIfExists(args);
+            Result r = launch(line, Map.of("JMCLBENCH_JAVA", java.toString()));
+            assertEquals(0, r.exit, r.err);
+            String run = Files.readString(args).strip();
+            assertTrue(run.endsWith("org.jmclbench.workload.WorkloadMain run " + String.join(" ", line)), run);
+        }
+    }
+
     private record Result(int exit, String err) {
     }
 
     private Result launch(List<String> args) throws Exception {
+        return launch(args, Map.of());
+    }
+
+    private Result launch(List<String> args, Map<String, String> env) throws Exception {
         List<String> cmd = new ArrayList<>(List.of(home.resolve("jmclbench").toString()));
         cmd.addAll(args);
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectOutput(ProcessBuilder.Redirect.DISCARD);
         pb.environment().put("PATH", home.resolve("bin") + ":" + System.getenv("PATH"));
+        pb.environment().putAll(env);
         Process p = pb.start();
         String err = new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8);
         assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the launcher hung");

@@ -102,4 +102,30 @@ class ProfileProbeTest {
         assertThrows(BadUsageException.class, () -> Profile.parse("fifo+fifo", "t"));
         assertEquals("zgc+fifo", Profile.parse(" zgc + fifo ", "t").name());
     }
+    @Test
+    void heapSizeIsAProfileComponentOfJvmsOnly() {
+        RuntimeInfo jvm = new RuntimeInfo("x-21", RuntimeKind.JVM, "x", "21", 21, Path.of("/j"), Path.of("/j"));
+        assertEquals(List.of("-XX:+UseZGC", "-Xmx256m"), LaunchPlan.of(jvm, Profile.parse("zgc+heap256m", "t"), "0").jvmFlags());
+        // with pretouch the heap is fixed at that size; Epsilon's 2048 MB gives way to the asked one
+        assertEquals(List.of("-XX:+AlwaysPreTouch", "-Xms4096m", "-Xmx4096m"),
+                LaunchPlan.of(jvm, Profile.parse("heap4g+pretouch", "t"), "0").jvmFlags());
+        assertEquals(List.of("-XX:+UnlockExperimentalVMOptions", "-XX:+UseEpsilonGC", "-Xmx8192m"),
+                LaunchPlan.of(jvm, Profile.parse("epsilon+heap8g", "t"), "0").jvmFlags());
+        Profile p = Profile.parse("g1+heap1024m+fifo", "t");
+        assertEquals("g1+heap1g+fifo", p.name(), "one size, one name");
+        assertEquals(1024, p.heapMb());
+        assertEquals("g1+heap1g+fifo", p.effectiveFor(RuntimeKind.JVM).name());
+        assertEquals("fifo", p.effectiveFor(RuntimeKind.NATIVE).name());
+        assertEquals(0, p.effectiveFor(RuntimeKind.NATIVE).heapMb());
+        assertEquals("default", Profile.parse("heap64m", "t").effectiveFor(RuntimeKind.HVM).name());
+        // a heap the JVM refuses is unsupported with HotSpot's reason, not its generic first line
+        assertEquals("Too small maximum heap",
+                ProfileProbe.firstMeaningfulLine("Error occurred during initialization of VM\nToo small maximum heap\n"));
+        assertEquals("Error occurred during initialization of VM",
+                ProfileProbe.firstMeaningfulLine("\nError occurred during initialization of VM\n"));
+        for (String bad : List.of("heap1g+heap2g", "heap0m", "heap2000g", "heap9999999g", "heap512", "heap1t")) {
+            BadUsageException e = assertThrows(BadUsageException.class, () -> Profile.parse(bad, "--profiles"), bad);
+            assertTrue(e.getMessage().startsWith("--profiles: "), e.getMessage());
+        }
+    }
 }

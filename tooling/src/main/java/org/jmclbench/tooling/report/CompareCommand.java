@@ -298,6 +298,12 @@ public final class CompareCommand implements Callable<Integer> {
             throws BadUsageException {
         List<StoredRun> chosen = match(runs, spec);
         TreeSet<String> configs = chosen.stream().map(StoredRun::config).collect(Collectors.toCollection(TreeSet::new));
+        Set<String> measured = chosen.stream().filter(StoredRun::ok).map(StoredRun::config).collect(Collectors.toSet());
+        if (configs.size() > 1 && measured.size() == 1) {
+            // a configuration of unsupported or failed runs only has nothing to compare: no second candidate
+            chosen = chosen.stream().filter(r -> measured.contains(r.config())).toList();
+            configs.retainAll(measured);
+        }
         if (configs.size() > 1) {
             throw new BadUsageException(option + ": " + spec + " has several configurations in " + file + ", say which: "
                     + String.join(", ", configs));

@@ -106,6 +106,25 @@ class CompareCommandTest {
         assertTrue(run(0, "compare", a.toString(), b.toString())[0].contains("task latency mean"));
     }
 
+    /** A profile the JVM refused (its runs all unsupported) has nothing to compare: the runtime's name still chooses one. */
+    @Test
+    void aConfigurationWithoutACompletedRunDoesNotMakeARuntimeAmbiguous() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.policies = List.of("skip");
+        f.particles = List.of(400);
+        f.configs = List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("openjdk-17", "default", "17.0.9", 1.3, "ok"),
+                new FixtureDb.Config("openjdk-17", "shenandoah", "17.0.9", 1.3, "unsupported"));
+        Path db = ReportFixtures.write(f, dir, "refused-profile.db");
+        String out = run(0, "compare", "--db", db.toString(), "--a", "native", "--b", "openjdk-17")[0];
+        assertTrue(out.contains("B: openjdk-17") && out.contains("task latency mean"), out);
+        // two measured profiles are still two candidates
+        f.configs = List.of(f.configs.get(0), f.configs.get(1), new FixtureDb.Config("openjdk-17", "zgc", "17.0.9", 1.2, "ok"));
+        Path two = ReportFixtures.write(f, dir, "two-profiles.db");
+        String err = run(2, "compare", "--db", two.toString(), "--a", "native", "--b", "openjdk-17")[1];
+        assertTrue(err.contains("say which: openjdk-17/default, openjdk-17/zgc"), err);
+    }
+
     @Test
     void missCountIsNamedForTheJobsItCountsUnderEachPolicy() throws Exception {
         FixtureDb f = new FixtureDb();

@@ -141,5 +141,17 @@ if known:
           % (most, "zero" if most == 0 else "NOT zero"))
 else:
     print("SPEC 11, preallocated style: this JVM has no per-thread allocation counter; see JMH's column")
+# SPEC 11, cost linear in the particle count: the thread CPU time per particle of each job kind
+# at every count measured (CPU time: on a busy machine wall time holds preemption); linear means
+# the same at each, cache effects show as growth at large counts
+for job, memory in sorted({(k[0], k[2]) for k in java}):
+    counts = sorted(k[1] for k in java if k[0] == job and k[2] == memory)
+    if len(counts) < 2:
+        continue
+    jp = [jcpu.get((job, n, memory), nan) / n for n in counts]
+    cp = [c.get((job, n, memory), (nan,) * 5)[4] / n for n in counts]
+    print("SPEC 11, CPU time per particle, %s %s: %s; largest/smallest Java %.2f, C %.2f"
+          % (job, memory, ", ".join("N=%d Java %.1f ns C %.1f ns" % (n, a, b) for n, a, b in zip(counts, jp, cp)),
+             max(jp) / min(jp), max(cp) / min(cp)))
 print("raw outputs: %s/{jmh.txt,jmh-*.json,alloc.txt,c.txt}" % out)
 PY

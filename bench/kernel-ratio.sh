@@ -45,15 +45,7 @@ mkdir -p "$out"
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 
 # The C loop takes the iteration shape from the JMH options (-wi, -i, -r in seconds).
-c_warmup=3 c_iterations=5 c_time=1
-for ((k = 0; k < ${#jmh_opts[@]} - 1; k++)); do
-    v=${jmh_opts[k+1]}
-    case "${jmh_opts[k]}" in
-        -wi) c_warmup=$v ;;
-        -i) c_iterations=$v ;;
-        -r) case "$v" in *ms) c_time=$(awk "BEGIN{print ${v%ms}/1000}") ;; *s) c_time=${v%s} ;; *) c_time=$v ;; esac ;;
-    esac
-done
+c_loop_shape "${jmh_opts[@]}"
 
 # Each configuration runs in Java and then at once in C, so that on a shared machine both sides
 # meet about the same load; the same counts and iteration shape for both.

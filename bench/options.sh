@@ -72,6 +72,20 @@ require_creatable() {
         { echo "$me: $1: $2: cannot be created ($d is not a writable folder)" >&2; exit 2; }
 }
 
+# Sets c_warmup, c_iterations and c_time (seconds) of a C timing loop from the JMH options "$@"
+# (-wi, -i, -r as 1s or 500ms), defaulting to JMH's short run of these scripts: 3, 5 and 1.
+c_loop_shape() {
+    c_warmup=3 c_iterations=5 c_time=1
+    while [ $# -ge 2 ]; do
+        case "$1" in
+            -wi) c_warmup=$2 ;;
+            -i) c_iterations=$2 ;;
+            -r) case "$2" in *ms) c_time=$(awk "BEGIN{print ${2%ms}/1000}") ;; *s) c_time=${2%s} ;; *) c_time=$2 ;; esac ;;
+        esac
+        shift
+    done
+}
+
 # Ends the script on a leftover argument $1 that is not an option, as the jmclbench commands do.
 unexpected_argument() {
     echo "$me: $1: unexpected argument (see --help)" >&2

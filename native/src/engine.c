@@ -17,6 +17,7 @@
 
 #include "clock.h"
 #include "engine.h"
+#include "record.h"
 
 #define JM_DISPATCHER_PRIORITY 80
 #define JM_HANDLER_PRIORITY 70
@@ -175,34 +176,34 @@ void jm_lock_memory(jm_sched_info *info)
 #endif
 }
 
-int jm_run_ideal(jm_mcl *m, jm_timeline *tl, jm_sched_info *info)
+int jm_run_ideal(jm_mcl *m, jm_timeline *tl, int cpu_time, jm_sched_info *info)
 {
 	struct sched_param sp;
-	int64_t t0 = jm_now_ns(), end = t0;
+	int64_t t0 = jm_now_ns();
 	int k, pol = sched_getscheduler(0);
+	jm_recorder rec;
 
 	info->fifo = pol == SCHED_FIFO || pol == SCHED_RR;
 	info->policy_name = policy_name(pol);
 	info->dispatcher_priority = info->handler_priority =
 		sched_getparam(0, &sp) == 0 ? sp.sched_priority : 0;
+	jm_recorder_init(&rec, cpu_time, t0);
+	rec.end = t0;
 	for (k = 0; k < tl->n; k++) {
 		jm_job *j = &tl->jobs[k];
-		int64_t c0 = jm_thread_cpu_ns(), start = jm_now_ns();
-		int r = run_job(m, &tl->events[k], NULL);
-		int64_t c1;
+		int r;
 
-		end = jm_now_ns();
-		c1 = jm_thread_cpu_ns();
+		jm_recorder_start(&rec);
+		r = run_job(m, &tl->events[k], NULL);
+		jm_recorder_end(&rec);
 		if (r == JM_JOB_NOMEM)
 			return -1;
-		j->release_ns = j->start_ns = start - t0;
-		j->end_ns = end - t0;
 		j->deadline_ns = -1;
-		j->cpu_ns = c0 >= 0 && c1 >= 0 ? c1 - c0 : -1;
-		j->outcome = JM_OUTCOME_DONE;
+		jm_recorder_record(&rec, j, 1); /* no deadline: done */
+		j->release_ns = j->start_ns;
 		record_commit(m, j);
 	}
-	info->duration_ns = end - t0;
+	info->duration_ns = rec.end - t0;
 	return 0;
 }
 
@@ -221,6 +222,7 @@ struct engine {
 	enum jm_policy policy;
 	int64_t t0;
 	int64_t spin_ns;
+	int cpu_time;             /* the handlers read the thread CPU clock per job */
 	int *fifo;                /* released events waiting for the robot, in release order */
 	int head, tail;
 	int running;              /* event whose job is on the robot, or -1 */
@@ -251,11 +253,13 @@ static void *handler_main(void *arg)
 {
 	struct handler *h = arg;
 	struct engine *e = h->e;
+	jm_recorder rec;
 
+	jm_recorder_init(&rec, e->cpu_time, 0);
 	pthread_mutex_lock(&e->lock);
 	for (;;) {
 		jm_job *j;
-		int64_t c0, c1, start, end;
+		int64_t seen;
 		int k, r;
 
 		while (!ready_for(e, h->task) && !(e->dispatch_done && e->head == e->tail))
@@ -266,31 +270,29 @@ static void *handler_main(void *arg)
 		e->running = k;
 		atomic_store_explicit(&e->abort.requested, 0, memory_order_relaxed);
 		e->abort.seen_ns = -1;
+		rec.t0 = e->t0;
 		pthread_mutex_unlock(&e->lock);
 
-		c0 = jm_thread_cpu_ns();
-		start = jm_now_ns();
+		jm_recorder_start(&rec);
 		r = run_job(e->m, &e->tl->events[k], &e->abort);
-		end = jm_now_ns();
-		c1 = jm_thread_cpu_ns();
+		jm_recorder_end(&rec);
 
 		pthread_mutex_lock(&e->lock);
 		j = &e->tl->jobs[k];
-		j->start_ns = start - e->t0;
-		j->end_ns = end - e->t0;
-		j->cpu_ns = c0 >= 0 && c1 >= 0 ? c1 - c0 : -1;
-		j->seen_ns = e->abort.seen_ns >= 0 ? e->abort.seen_ns - e->t0 : -1;
-		if (r == JM_JOB_NOMEM) {
+		seen = e->abort.seen_ns; /* the next job resets it */
+		if (r == JM_JOB_NOMEM)
 			e->failed = 1;
-			j->outcome = JM_OUTCOME_TERMINATED;
-		} else if (r == JM_JOB_ABORTED) {
-			j->outcome = JM_OUTCOME_TERMINATED;
-		} else {
-			j->outcome = j->end_ns <= j->deadline_ns ? JM_OUTCOME_DONE : JM_OUTCOME_LATE;
-			record_commit(e->m, j);
-		}
+		else if (r == JM_JOB_DONE)
+			record_commit(e->m, j); /* before the next job moves the particles */
 		e->running = -1;
 		wake_next(e);
+		pthread_mutex_unlock(&e->lock);
+
+		/* after the hand-over, so that the CPU clock's second read keeps no job waiting; only
+		 * this thread writes these fields of job k (the dispatcher may write its abort_ns) */
+		jm_recorder_record(&rec, j, r == JM_JOB_DONE);
+		j->seen_ns = seen >= 0 ? seen - rec.t0 : -1;
+		pthread_mutex_lock(&e->lock);
 	}
 	pthread_mutex_unlock(&e->lock);
 	return NULL;
@@ -398,7 +400,7 @@ static int fifo_permitted(void)
 }
 
 int jm_run_realtime(jm_mcl *m, jm_timeline *tl, enum jm_policy policy, int spin_us, int fifo,
-		    jm_sched_info *info)
+		    int cpu_time, jm_sched_info *info)
 {
 	struct engine e;
 	struct handler h[2];
@@ -411,6 +413,7 @@ int jm_run_realtime(jm_mcl *m, jm_timeline *tl, enum jm_policy policy, int spin_
 	e.tl = tl;
 	e.policy = policy;
 	e.spin_ns = (int64_t)spin_us * 1000;
+	e.cpu_time = cpu_time;
 	e.running = -1;
 	atomic_init(&e.abort.requested, 0);
 	e.abort.seen_ns = -1;

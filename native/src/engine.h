@@ -78,15 +78,18 @@ typedef struct {
 	int warmup_events;       /* events replayed by the warm-up before the measured run */
 } jm_sched_info;
 
-/* The infinitely fast computer: every event in order in this thread. 0, or -1 out of memory. */
-int jm_run_ideal(jm_mcl *m, jm_timeline *tl, jm_sched_info *info);
+/*
+ * The infinitely fast computer: every event in order in this thread. 0, or -1 out of memory.
+ * cpu_time: read the thread CPU clock per job (cpu_ns), else cpu_ns is -1 (--no-cpu-time).
+ */
+int jm_run_ideal(jm_mcl *m, jm_timeline *tl, int cpu_time, jm_sched_info *info);
 /*
  * Replays the timeline in real time: a dispatcher thread releasing each event at its
  * absolute time and one handler thread per task, with the policy deciding what happens to an
  * event released while a job is on the robot. 0, or -1 (out of memory, no threads).
  */
 int jm_run_realtime(jm_mcl *m, jm_timeline *tl, enum jm_policy policy, int spin_us, int fifo,
-		    jm_sched_info *info);
+		    int cpu_time, jm_sched_info *info);
 
 /* Locks the process's memory when permitted (never under AddressSanitizer); sets info. */
 void jm_lock_memory(jm_sched_info *info);

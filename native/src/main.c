@@ -80,8 +80,8 @@ static int write_gc_note(const char *dir)
 static int run_timeline(jm_mcl *m, jm_timeline *tl, const jm_options *o, jm_sched_info *info)
 {
 	if (o->ideal)
-		return jm_run_ideal(m, tl, info);
-	return jm_run_realtime(m, tl, o->policy, o->spin_us, o->fifo, info);
+		return jm_run_ideal(m, tl, o->cpu_time, info);
+	return jm_run_realtime(m, tl, o->policy, o->spin_us, o->fifo, o->cpu_time, info);
 }
 
 int main(int argc, char **argv)

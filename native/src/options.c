@@ -18,7 +18,7 @@
 enum opt_id {
 	OPT_PARTICLES, OPT_NUMBER, OPT_RUNTIME, OPT_OUT, OPT_ODO, OPT_LASER, OPT_REAL, OPT_DATASET,
 	OPT_T, OPT_POLICY, OPT_IDEAL, OPT_COV, OPT_MEMORY, OPT_ESTIMATE, OPT_RESAMPLE, OPT_INIT,
-	OPT_SEED, OPT_TIME_SCALE, OPT_WARMUP, OPT_SPIN, OPT_GC_LOG, OPT_FORCE, OPT_NO_FIFO, OPT_VERSION, OPT_HELP,
+	OPT_SEED, OPT_TIME_SCALE, OPT_WARMUP, OPT_SPIN, OPT_GC_LOG, OPT_NO_CPU_TIME, OPT_FORCE, OPT_NO_FIFO, OPT_VERSION, OPT_HELP,
 };
 
 struct opt {
@@ -53,6 +53,7 @@ static const struct opt options[] = {
 	{ NULL, "--warmup", "S", "first replay the first S seconds and discard them, seconds (default 0)", OPT_WARMUP },
 	{ NULL, "--spin-us", "N", "sleep until N microseconds before each release, then spin, us (default 0)", OPT_SPIN },
 	{ NULL, "--gc-log", NULL, "keep the runtime's GC log (accepted; C has no GC) (default off)", OPT_GC_LOG },
+	{ NULL, "--no-cpu-time", NULL, "no per-job CPU time (cpu_ns -1), two clock reads per job fewer (default: measured)", OPT_NO_CPU_TIME },
 	{ NULL, "--force", NULL, "overwrite a complete run folder (default off)", OPT_FORCE },
 	{ NULL, "--no-fifo", NULL, "do not ask for SCHED_FIFO and mlockall (C only) (default: ask)", OPT_NO_FIFO },
 	{ NULL, "--version", NULL, "print the build (compiler and flags) on one line and exit", OPT_VERSION },
@@ -249,6 +250,7 @@ static int parse(jm_options *o, int argc, char **argv, char *err, size_t errlen)
 	o->seed = 1;
 	o->time_scale = 1.0;
 	o->fifo = 1;
+	o->cpu_time = 1;
 
 	if (argc > 1 && !strcmp(argv[1], "run"))
 		i = 2;
@@ -379,6 +381,9 @@ static int parse(jm_options *o, int argc, char **argv, char *err, size_t errlen)
 			break;
 		case OPT_GC_LOG:
 			o->gc_log = 1;
+			break;
+		case OPT_NO_CPU_TIME:
+			o->cpu_time = 0;
 			break;
 		case OPT_FORCE:
 			o->force = 1;

@@ -29,6 +29,7 @@ typedef struct {
 	double warmup_s;
 	int spin_us;
 	int gc_log;
+	int cpu_time; /* per-job thread CPU time (the cpu_ns column); --no-cpu-time clears it */
 	int force;
 	int fifo;     /* ask for SCHED_FIFO and mlockall (C only; --no-fifo clears it) */
 	int help;

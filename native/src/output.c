@@ -337,6 +337,7 @@ static void json_parameters(jm_json *j, const jm_run *r)
 	jm_json_double(j, "timeScale", o->time_scale);
 	jm_json_double(j, "warmupS", o->warmup_s);
 	jm_json_i64(j, "spinUs", o->spin_us);
+	jm_json_bool(j, "cpuTime", o->cpu_time);
 	jm_json_bool(j, "gcLog", o->gc_log);
 	jm_json_open(j, "dataset", '{');
 	if (r->ds->dir[0])
@@ -427,7 +428,7 @@ static void json_engine(jm_json *j, const jm_run *r)
 	jm_json_i64(j, "dispatcherPriority", s->dispatcher_priority);
 	jm_json_i64(j, "handlerPriority", s->handler_priority);
 	jm_json_bool(j, "prioritiesApplied", s->fifo);
-	jm_json_str(j, "cpuTime", "used (CLOCK_THREAD_CPUTIME_ID)");
+	jm_json_str(j, "cpuTime", r->opt->cpu_time ? "used (CLOCK_THREAD_CPUTIME_ID)" : "off (--no-cpu-time)");
 	jm_json_str(j, "gcLog", r->opt->gc_log ? "none: the native runtime has no garbage collector" : NULL);
 	jm_json_i64(j, "warmupEvents", s->warmup_events);
 	jm_json_null(j, "allocatedBytes"); /* not counted in C; --memory allocating mallocs per job */

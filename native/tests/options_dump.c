@@ -49,12 +49,12 @@ static void answer(char *buf, size_t len, int count)
 	else
 		printf("ok p=%d n=%d j=%s O=%s odo=%s laser=%s real=%s dataset=%s policy=%s ideal=%d cov=%d "
 		       "memory=%s estimate=%s resample=%s init=%s seed=%" PRId64 " scale=%016" PRIx64
-		       " warmup=%016" PRIx64 " spin=%d gclog=%d force=%d\n",
+		       " warmup=%016" PRIx64 " spin=%d gclog=%d cputime=%d force=%d\n",
 		       o.particles, o.number, o.runtime_name, o.out, or_none(o.odometry), or_none(o.laser),
 		       or_none(o.real), or_none(o.dataset), jm_policy_name(o.policy), o.ideal, o.covariance,
 		       jm_memory_name(o.memory), jm_estimate_name(o.estimate), jm_resample_name(o.resample),
 		       jm_init_name(o.init), o.seed, bits(o.time_scale), bits(o.warmup_s), o.spin_us, o.gc_log,
-		       o.force);
+		       o.cpu_time, o.force);
 	printf("end\n");
 	fflush(stdout);
 }

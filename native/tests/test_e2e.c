@@ -502,6 +502,66 @@ static void test_runs(const char *dataset, const char *label, int particles, con
 	}
 }
 
+/* The number of job lines of a job file whose cpu_ns is not -1; -1 when the file cannot be read. */
+static int count_cpu_times(const char *dir, const char *name)
+{
+	char path[512], line[256];
+	FILE *f;
+	int n = 0;
+
+	snprintf(path, sizeof(path), "%s/%s", dir, name);
+	f = fopen(path, "r");
+	if (!f)
+		return -1;
+	while (fgets(line, sizeof(line), f)) {
+		long long idx, rel, st, en, dl, cpu;
+		char outcome[32];
+
+		if (line[0] != '#' && sscanf(line, "%lld %lld %lld %lld %lld %31s %lld", &idx, &rel, &st, &en, &dl,
+					     outcome, &cpu) == 7 && cpu != -1)
+			n++;
+	}
+	fclose(f);
+	return n;
+}
+
+/* --no-cpu-time: no job has a CPU time, in the ideal and the real-time engine, and summary.json says so. */
+static void test_no_cpu_time(const char *dataset)
+{
+	char out[160], dir[400], path[500];
+	const char *ideal[] = { "--dataset", dataset, "-O", out, "-p", "50", "--ideal", "--no-cpu-time", NULL };
+	const char *skip[] = { "--dataset", dataset, "-O", out, "-p", "50", "--time-scale", "0.2", "--no-fifo",
+			       "--no-cpu-time", NULL };
+	const char *measured[] = { "--dataset", dataset, "-O", out, "-p", "50", "-n", "2", "--time-scale", "0.2",
+				   "--no-fifo", NULL };
+
+	snprintf(out, sizeof(out), "%s/out-nocpu", tmp);
+	CHECK_INT(run(ideal), 0);
+	snprintf(dir, sizeof(dir), "%s/native/nocov/50/IdealTest/1", out);
+	CHECK_INT(count_cpu_times(dir, "odoData.txt"), 0);
+	CHECK_INT(count_cpu_times(dir, "laserData.txt"), 0);
+	snprintf(path, sizeof(path), "%s/summary.json", dir);
+	jt_slurp(path, out_text, sizeof(out_text));
+	CHECK_CONTAINS(out_text, "\"cpuTime\": false");
+
+	CHECK_INT(run(skip), 0);
+	snprintf(dir, sizeof(dir), "%s/native/nocov/50/SkipTest/1", out);
+	CHECK_INT(count_cpu_times(dir, "odoData.txt"), 0);
+	CHECK_INT(count_cpu_times(dir, "laserData.txt"), 0);
+	snprintf(path, sizeof(path), "%s/summary.json", dir);
+	jt_slurp(path, out_text, sizeof(out_text));
+	CHECK_CONTAINS(out_text, "\"cpuTime\": false");
+	CHECK_CONTAINS(out_text, "\"cpuTime\": \"off (--no-cpu-time)\"");
+
+	/* and without it, every job that ran has one */
+	CHECK_INT(run(measured), 0);
+	snprintf(dir, sizeof(dir), "%s/native/nocov/50/SkipTest/2", out);
+	CHECK(count_cpu_times(dir, "odoData.txt") > 0);
+	snprintf(path, sizeof(path), "%s/summary.json", dir);
+	jt_slurp(path, out_text, sizeof(out_text));
+	CHECK_CONTAINS(out_text, "\"cpuTime\": true");
+}
+
 /* Without the right to real-time scheduling the run still completes, and says what it got. */
 static void test_fifo_fallback(const char *dataset)
 {
@@ -542,6 +602,7 @@ int main(int argc, char **argv)
 	make_dataset(ds, 6.0, 1);
 	test_runs(ds, "tiny", 300, "0.2");
 	test_fifo_fallback(ds);
+	test_no_cpu_time(ds);
 	if (argc > 2 && stat(argv[2], &st) == 0)
 		test_runs(argv[2], "match-short", 1000, "0.05");
 	else

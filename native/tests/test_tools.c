@@ -1,10 +1,11 @@
 /*
- * The command lines of the two C timing loops (bench/kernel_bench.c, bench/kernel_jobs.c): a bad
+ * The command lines of the C timing loops (bench/kernel_bench.c, bench/kernel_jobs.c and
+ * bench/record_cost.c): a bad
  * one is one line on stderr naming the option, exit 2, before any timing, as in every jmclbench
  * command. kernel-bench read numbers with atoi and fell back to a default for a bad word, and
  * both printed their usage (or getopt's message and then it) as more lines.
  *
- *   build/test_tools build/kernel-bench build/kernel-jobs DATASET
+ *   build/test_tools build/kernel-bench build/kernel-jobs DATASET [build/record-cost]
  */
 #define _GNU_SOURCE
 #include <fcntl.h>
@@ -90,16 +91,35 @@ static void test_kernel_jobs(const char *kj, const char *ds)
 	CHECK_CONTAINS(out_text, "predict 10 preallocated ");
 }
 
+static void test_record_cost(const char *rc)
+{
+	const char *help[] = { "-h", NULL };
+	const char *ok[] = { "-w", "0", "-i", "1", "-r", "0.001", NULL };
+
+	BAD(rc, "record-cost: --bogus: unknown option", "--bogus");
+	BAD(rc, "record-cost: stray: unexpected argument", "stray");
+	BAD(rc, "record-cost: --time: needs a value", "--time");
+	BAD(rc, "record-cost: -i: bad value '0'", "--iterations", "0");
+	BAD(rc, "record-cost: -r: bad value 'nan'", "-r", "nan");
+	CHECK_INT(run(rc, help), 0);
+	CHECK_STR_PREFIX(out_text, "usage: record-cost [options]");
+	CHECK_INT(run(rc, ok), 0);
+	CHECK_CONTAINS(out_text, "\nrecord on ");
+	CHECK_CONTAINS(out_text, "\nheld off ");
+}
+
 int main(int argc, char **argv)
 {
 	if (argc < 4) {
-		fprintf(stderr, "usage: test_tools KERNEL-BENCH KERNEL-JOBS DATASET\n");
+		fprintf(stderr, "usage: test_tools KERNEL-BENCH KERNEL-JOBS DATASET [RECORD-COST]\n");
 		return 2;
 	}
 	if (jt_tempdir(tmp, sizeof(tmp), "tools"))
 		return 1;
 	test_kernel_bench(argv[1], argv[3]);
 	test_kernel_jobs(argv[2], argv[3]);
+	if (argc > 4)
+		test_record_cost(argv[4]);
 	unlink(strcat(strcpy(out_text, tmp), "/stdout"));
 	unlink(strcat(strcpy(out_text, tmp), "/stderr"));
 	rmdir(tmp);

@@ -558,18 +558,19 @@ static void test_options(void)
 	CHECK(parse("run", &o, err, sizeof(err)) == 0);
 	CHECK(o.particles == 400 && o.number == 1 && !strcmp(o.runtime_name, "native") &&
 	      !strcmp(o.out, "results") && o.policy == JM_POLICY_SKIP && o.seed == 1 &&
-	      o.time_scale == 1.0 && o.fifo && !o.ideal && !o.covariance);
+	      o.time_scale == 1.0 && o.fifo && o.cpu_time && !o.ideal && !o.covariance);
 	CHECK(parse("-p 100 -n 3 -j c-gcc -O out -odo a -laser b -real c -T -c", &o, err, sizeof(err)) == 0);
 	CHECK(o.particles == 100 && o.number == 3 && !strcmp(o.runtime_name, "c-gcc") &&
 	      !strcmp(o.out, "out") && !strcmp(o.odometry, "a") && !strcmp(o.laser, "b") &&
 	      !strcmp(o.real, "c") && o.policy == JM_POLICY_TERMINATE && o.covariance);
 	CHECK(parse("run --particles=2000 --policy queue --memory allocating --estimate best "
 		    "--resample multinomial --init uniform --seed -5 --time-scale 0.5 --warmup 2 "
-		    "--spin-us 50 --ideal --force --gc-log --no-fifo --dataset d", &o, err, sizeof(err)) == 0);
+		    "--spin-us 50 --ideal --force --gc-log --no-fifo --no-cpu-time --dataset d", &o, err, sizeof(err)) == 0);
 	CHECK(o.particles == 2000 && o.policy == JM_POLICY_QUEUE && o.memory == JM_MEMORY_ALLOCATING &&
 	      o.estimate == JM_ESTIMATE_BEST && o.resample == JM_RESAMPLE_MULTINOMIAL &&
 	      o.init == JM_INIT_UNIFORM && o.seed == -5 && o.time_scale == 0.5 && o.warmup_s == 2.0 &&
-	      o.spin_us == 50 && o.ideal && o.force && o.gc_log && !o.fifo && !strcmp(o.dataset, "d"));
+	      o.spin_us == 50 && o.ideal && o.force && o.gc_log && !o.fifo && !o.cpu_time &&
+	      !strcmp(o.dataset, "d"));
 	CHECK(parse("-h", &o, err, sizeof(err)) == 0 && o.help);
 
 	CHECK(parse("--bogus", &o, err, sizeof(err)) == -1);

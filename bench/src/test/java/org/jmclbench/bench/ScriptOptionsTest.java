@@ -30,6 +30,7 @@ class ScriptOptionsTest {
             "atc-latency, --aborts", "atc-latency, --java",
             "hvm-compare, --particles", "hvm-compare, -O",
             "kernel-ratio, --out",
+            "record-cost, --java", "record-cost, --out",
             "fuzz, --seconds",
             "kill-trials, --keep",
             "overload, --policies",
@@ -65,7 +66,9 @@ class ScriptOptionsTest {
             // an output folder below a file
             "kernel-ratio, --out, pom.xml/out, cannot be created",
             "fuzz, --work, pom.xml/work, cannot be created",
-            "kill-trials, --keep, pom.xml/keep, cannot be created"})
+            "kill-trials, --keep, pom.xml/keep, cannot be created",
+            "record-cost, --out, pom.xml/out, cannot be created",
+            "record-cost, --java, /no/such/java, not found"})
     void aValueOfTheWrongKindNamesItsOption(String script, String option, String value, String what) throws Exception {
         assertBadInput(script, script + ": " + option + ": ", option, value);
         assertTrue(run(script, option, value).get(0).contains(what), what);
@@ -73,7 +76,7 @@ class ScriptOptionsTest {
 
     @ParameterizedTest(name = "{0}")
     @CsvSource({"atc-latency", "hvm-compare", "kernel-ratio", "kill-trials", "overload", "release-accuracy",
-            "scj-overhead", "report-build", "options"})
+            "scj-overhead", "report-build", "record-cost", "options"})
     void anUnknownOptionIsOneLineAndExit2(String script) throws Exception {
         assertBadInput(script, script + ": --no-such-option: unknown option", "--no-such-option");
     }

@@ -13,6 +13,7 @@ import org.jmclbench.workload.engine.EngineResult;
 import org.jmclbench.workload.load.AllocationNoise;
 import org.jmclbench.workload.output.HeapUse;
 import org.jmclbench.workload.release.GcLog;
+import org.jmclbench.workload.release.ThreadCpuClock;
 
 /**
  * {@code --ideal}, whatever {@code --engine} names: the {@link IdealRun} on the calling thread,
@@ -46,11 +47,12 @@ public final class IdealEngine implements Engine {
                 IdealRun.warmup(dataset, timeline, in.newLocalizer(), options.warmupS);
             }
             Localizer localizer = in.newLocalizer();
+            ThreadCpuClock cpuClock = ThreadCpuClock.forRun(options.cpuTime);
             heap = HeapUse.begin();
             // The GC log covers the measured replay only, as in real-time runs.
             GcLog gcLog = GcLog.startIfAsked(options.gcLog, in.folder, in.err);
             try {
-                IdealRun.run(dataset, timeline, localizer, records);
+                IdealRun.run(dataset, timeline, localizer, records, cpuClock);
             } finally {
                 if (gcLog != null) {
                     gcLog.stop();

@@ -1,13 +1,12 @@
 package org.jmclbench.workload;
 
-import java.lang.management.ManagementFactory;
-import java.lang.management.ThreadMXBean;
-
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.workload.release.JobRecorder;
+import org.jmclbench.workload.release.ThreadCpuClock;
 
 /**
  * The "infinitely fast computer" (SPEC section 4): every event of the timeline processed in
@@ -20,27 +19,27 @@ public final class IdealRun {
     private final Timeline timeline;
     private final Localizer localizer;
     private final JobRecords records;
-    private final ThreadMXBean threads;
-    private final boolean cpuTime;
+    private final JobRecorder recorder;
     private final double[] covariance = new double[6];
 
-    public IdealRun(Dataset dataset, Timeline timeline, Localizer localizer, JobRecords records) {
+    /**
+     * @param cpuClock the per-job CPU clock: {@link ThreadCpuClock#probe()}, which also makes its
+     *                 first calls before the measured window, or a disabled one ({@code --no-cpu-time})
+     */
+    public IdealRun(Dataset dataset, Timeline timeline, Localizer localizer, JobRecords records,
+                    ThreadCpuClock cpuClock) {
         this.dataset = dataset;
         this.timeline = timeline;
         this.localizer = localizer;
         this.records = records;
-        threads = ManagementFactory.getThreadMXBean();
-        cpuTime = threads.isCurrentThreadCpuTimeSupported() && threads.isThreadCpuTimeEnabled();
-        // First calls resolve and load what the clocks need: before the measured window.
-        if (cpuTime) {
-            threads.getCurrentThreadCpuTime();
-        }
-        System.nanoTime();
+        this.recorder = new JobRecorder(records, cpuClock, 0);
+        System.nanoTime(); // first call resolves what the clock needs: before the measured window
     }
 
     /** Replays the whole timeline into the records. */
-    public static void run(Dataset dataset, Timeline timeline, Localizer localizer, JobRecords records) {
-        new IdealRun(dataset, timeline, localizer, records).run();
+    public static void run(Dataset dataset, Timeline timeline, Localizer localizer, JobRecords records,
+                           ThreadCpuClock cpuClock) {
+        new IdealRun(dataset, timeline, localizer, records, cpuClock).run();
     }
 
     /** Replays the events up to warmupS seconds on a throwaway localizer, so that the JIT has compiled the jobs. */
@@ -57,17 +56,14 @@ public final class IdealRun {
         r.setInitialEstimate(localizer.estimateX(), localizer.estimateY(), localizer.estimateTheta());
         boolean cov = r.cov != null;
         long t0 = System.nanoTime();
+        JobRecorder recorder = this.recorder;
+        recorder.runStart(t0);
         for (int k = 0; k < timeline.size(); k++) {
-            long cpu0 = cpuTime ? threads.getCurrentThreadCpuTime() : -1;
-            long start = System.nanoTime() - t0;
+            recorder.start();
             job(dataset, timeline, localizer, k);
-            long end = System.nanoTime() - t0;
-            long cpu1 = cpuTime ? threads.getCurrentThreadCpuTime() : -1;
-            r.releaseNs[k] = start;
-            r.startNs[k] = start;
-            r.endNs[k] = end;
-            r.cpuNs[k] = cpuTime ? cpu1 - cpu0 : -1;
-            r.outcome[k] = JobRecords.DONE;
+            recorder.end();
+            recorder.record(k, true, -1); // deadline -1: done
+            r.releaseNs[k] = r.startNs[k];
             r.estX[k] = localizer.estimateX();
             r.estY[k] = localizer.estimateY();
             r.estTheta[k] = localizer.estimateTheta();

@@ -57,6 +57,11 @@ public final class RunOptions {
     /** Park until this many microseconds before each release, then spin. */
     public long spinUs = 0;
     public boolean gcLog;
+    /**
+     * Whether each job's thread CPU time is measured (the cpu_ns column); {@code --no-cpu-time}
+     * clears it, saving the two clock reads per job (system calls on a VM, docs/RELEASE-ENGINE.md).
+     */
+    public boolean cpuTime = true;
     /** Background allocation load in MB/s ({@code --load-alloc}); 0 = none. */
     public int loadAllocMbPerS;
     /** Live set of the background allocation load in MB. */

@@ -13,6 +13,7 @@ import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.workload.mcl.Localizers;
 import org.jmclbench.core.mcl.MclConfig;
 import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.workload.release.ThreadCpuClock;
 import org.jmclbench.workload.testing.SyntheticDataset;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -37,9 +38,10 @@ class IdealRunAllocationTest {
         assumeTrue(bean.isThreadAllocatedMemorySupported() && bean.isThreadAllocatedMemoryEnabled());
         JobRecords records = new JobRecords(t, c.covariance);
         // Warm: the first run loads and initialises classes (which allocates, once).
-        IdealRun.run(d, t, Localizers.create(c, d.playground, d.startX, d.startY, d.startTheta), records);
+        IdealRun.run(d, t, Localizers.create(c, d.playground, d.startX, d.startY, d.startTheta), records,
+                ThreadCpuClock.probe());
         Localizer l = Localizers.create(c, d.playground, d.startX, d.startY, d.startTheta);
-        IdealRun run = new IdealRun(d, t, l, records);
+        IdealRun run = new IdealRun(d, t, l, records, ThreadCpuClock.probe());
         long overhead = -allocated(bean) + allocated(bean);
         long before = allocated(bean);
         run.run();

@@ -23,8 +23,8 @@ import org.junit.jupiter.api.Test;
  * options or the same one-line message. The C side is native/tests/options_dump.c.
  */
 class OptionsDifferentialTest {
-    private static final String[] FLAGS = {"-T", "--ideal", "-c", "--covariance", "--gc-log", "--force", "-h",
-        "--help"};
+    private static final String[] FLAGS = {"-T", "--ideal", "-c", "--covariance", "--gc-log", "--no-cpu-time", "--force",
+        "-h", "--help"};
     private static final String[][] VALUED = {{"-p", "--particles"}, {"-n", "--number"}, {"-j", "--runtime-name"},
         {"-O", "--out"}, {"-odo", "--odo"}, {"-laser", "--laser"}, {"-real", "--real"}, {"--dataset"}, {"--policy"},
         {"--memory"}, {"--estimate"}, {"--resample"}, {"--init"}, {"--seed"}, {"--time-scale"}, {"--warmup"},
@@ -39,7 +39,7 @@ class OptionsDifferentialTest {
     private static final String[] NAMES = {"local", "out", "a/b", "data/match", "", "..", ".", "x+y_1.2-3", "a b",
         "-p", "--force", "run"};
     private static final String[] STRAY = {"run", "foo", "-x", "--bogus", "--bogus=1", "-p=4", "--", "-", "",
-        "--ideal=1", "--covariance=", "-odo=a", "--=x"};
+        "--ideal=1", "--covariance=", "-odo=a", "--=x", "--no-cpu-time=1", "--no-cpu"};
 
     @Test
     void generatedCommandLinesParseAlike() throws IOException {
@@ -142,11 +142,11 @@ class OptionsDifferentialTest {
         }
         return String.format(Locale.ROOT, "ok p=%d n=%d j=%s O=%s odo=%s laser=%s real=%s dataset=%s policy=%s "
                 + "ideal=%d cov=%d memory=%s estimate=%s resample=%s init=%s seed=%d scale=%016x warmup=%016x "
-                + "spin=%d gclog=%d force=%d", o.particles, o.number, o.runtimeName == null ? "native" : o.runtimeName,
+                + "spin=%d gclog=%d cputime=%d force=%d", o.particles, o.number, o.runtimeName == null ? "native" : o.runtimeName,
                 o.out, none(o.odo), none(o.laser), none(o.real), none(o.dataset), o.policy.label, o.ideal ? 1 : 0,
                 o.covariance ? 1 : 0, lower(o.memory), lower(o.estimate), lower(o.resample), lower(o.init), o.seed,
                 Double.doubleToRawLongBits(o.timeScale), Double.doubleToRawLongBits(o.warmupS), o.spinUs,
-                o.gcLog ? 1 : 0, o.force ? 1 : 0);
+                o.gcLog ? 1 : 0, o.cpuTime ? 1 : 0, o.force ? 1 : 0);
     }
 
     private static String none(String s) {

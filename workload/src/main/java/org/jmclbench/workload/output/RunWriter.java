@@ -147,6 +147,7 @@ public final class RunWriter {
         j.name("timeScale").value(options.timeScale);
         j.name("warmupS").value(options.warmupS);
         j.name("spinUs").value(options.spinUs);
+        j.name("cpuTime").value(options.cpuTime);
         j.name("load").beginObject();
         j.name("scenario").value(options.effectiveLoadName());
         if (options.loadAllocMbPerS > 0) {

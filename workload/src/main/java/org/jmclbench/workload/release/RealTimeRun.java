@@ -51,8 +51,8 @@ public final class RealTimeRun {
             if (gcLog != null && !gcLog.active()) {
                 writeNote(gcLog.file(), "# no GC log: " + gcLog.status() + "\n");
             }
-            ThreadCpuClock cpuClock = ThreadCpuClock.probe();
-            if (!cpuClock.usable()) {
+            ThreadCpuClock cpuClock = ThreadCpuClock.forRun(options.cpuTime);
+            if (options.cpuTime && !cpuClock.usable()) {
                 err.println("jmclbench: per-job CPU time: " + cpuClock.status() + "; cpu_ns is -1");
             }
             facts.cpuTime = cpuClock.status();

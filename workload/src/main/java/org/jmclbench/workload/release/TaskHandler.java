@@ -7,7 +7,7 @@ import org.jmclbench.core.record.JobRecords;
 /**
  * The dedicated thread of one task (predict or update), like RTSJ's BoundAsyncEventHandler:
  * it takes the events the dispatcher released to it, in order, runs their jobs on the robot
- * under the run's {@link PolicyGate}, and records each job's times and outcome.
+ * under the run's {@link PolicyGate}, and records each job's times and outcome ({@link JobRecorder}).
  *
  * <p>The release queue is a preallocated single-producer (dispatcher), single-consumer
  * (this thread) ring large enough for every event of the task, so it never fills and never
@@ -20,12 +20,11 @@ public final class TaskHandler implements Runnable {
     private final PolicyGate policy;
     private final EventJob job;
     private final JobRecords records;
-    private final ThreadCpuClock cpuClock;
+    private final JobRecorder recorder;
     private final int[] queue;
     private final JobAbortSignal abortSignal = new JobAbortSignal();
     private volatile long head; // next slot to take (written by this thread)
     private volatile long tail; // next slot to fill (written by the dispatcher)
-    private long runStartNs;
     private Thread thread;
     private volatile Throwable failure;
     private volatile long allocatedBytes = -1;
@@ -40,7 +39,7 @@ public final class TaskHandler implements Runnable {
         this.policy = policy;
         this.job = job;
         this.records = records;
-        this.cpuClock = cpuClock;
+        this.recorder = new JobRecorder(records, cpuClock, 0);
         this.queue = new int[capacity + 1];
     }
 
@@ -54,7 +53,7 @@ public final class TaskHandler implements Runnable {
 
     /** The absolute System.nanoTime of the release of time 0; set before the thread starts. */
     void runStart(long nanoTime) {
-        this.runStartNs = nanoTime;
+        recorder.runStart(nanoTime);
     }
 
     /** The first exception a job threw, or null. */
@@ -103,7 +102,7 @@ public final class TaskHandler implements Runnable {
 
     private void handle() {
         final JobRecords r = records;
-        final long t0 = runStartNs;
+        final JobRecorder recorder = this.recorder;
         while (true) {
             int k = take();
             if (k == STOP) {
@@ -114,8 +113,7 @@ public final class TaskHandler implements Runnable {
                 continue;
             }
             abortSignal.begin(k);
-            long cpu0 = cpuClock.now();
-            long start = System.nanoTime();
+            recorder.start();
             boolean completed;
             try {
                 completed = job.run(k, abortSignal);
@@ -128,20 +126,9 @@ public final class TaskHandler implements Runnable {
                 policy.release(k);
                 continue;
             }
-            long end = System.nanoTime();
-            long cpu1 = cpuClock.now();
-            policy.release(k);
-            r.startNs[k] = start - t0;
-            r.endNs[k] = end - t0;
-            r.cpuNs[k] = cpu0 < 0 ? -1 : cpu1 - cpu0;
-            if (abortSignal.seenNs >= 0) {
-                r.abortSeen(k, abortSignal.seenNs - t0);
-            }
-            if (!completed) {
-                r.outcome[k] = JobRecords.TERMINATED;
-            } else {
-                r.outcome[k] = end - t0 <= r.deadlineNs[k] ? JobRecords.DONE : JobRecords.LATE;
-            }
+            recorder.end();
+            policy.release(k); // before the CPU clock's second read: the next job need not wait for it
+            recorder.record(k, completed, abortSignal.seenNs);
         }
     }
 

@@ -51,6 +51,14 @@ public final class ThreadCpuClock {
         return new ThreadCpuClock(bean, "used (allocation-free)");
     }
 
+    /** The status of the clock {@code --no-cpu-time} asks for, as summary.json's engine.cpuTime says it. */
+    public static final String OFF = "off (--no-cpu-time)";
+
+    /** The clock of a run: {@link #probe()}, or with {@code --no-cpu-time} (cpuTime false) none ({@link #OFF}). */
+    public static ThreadCpuClock forRun(boolean cpuTime) {
+        return cpuTime ? probe() : disabled(OFF);
+    }
+
     /** A clock that always answers -1. */
     public static ThreadCpuClock disabled(String why) {
         return new ThreadCpuClock(null, why);

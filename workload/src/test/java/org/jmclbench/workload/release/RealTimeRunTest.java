@@ -164,4 +164,48 @@ class RealTimeRunTest {
             assertEquals(7, dataTxt.size());
         }
     }
+
+    /**
+     * {@code --no-cpu-time}: no job of a javase or an ideal run has a CPU time (cpu_ns -1), and
+     * summary.json records the option and the engine's clock as off; without it the jobs have one.
+     */
+    @Test
+    void noCpuTimeLeavesTheCpuColumnAtMinusOne() throws Exception {
+        File data = SyntheticDataset.write(new File(tmp, "data"), 1.5, 1, true, false);
+        File out = new File(tmp, "out");
+        String[][] runs = {{"SkipTest", "1", "--no-cpu-time"}, {"IdealTest", "1", "--ideal", "--no-cpu-time"},
+            {"SkipTest", "2"}};
+        boolean clock = ThreadCpuClock.probe().usable();
+        for (String[] r : runs) {
+            java.util.List<String> args = new java.util.ArrayList<>(java.util.Arrays.asList("-p", "100", "-j", "local",
+                    "-O", out.getPath(), "--dataset", data.getPath(), "--time-scale", "0.5", "-n", r[1]));
+            args.addAll(java.util.Arrays.asList(r).subList(2, r.length));
+            boolean off = args.contains("--no-cpu-time");
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            int code = WorkloadMain.run(args.toArray(new String[0]), new PrintStream(new ByteArrayOutputStream()),
+                    new PrintStream(err, true, "UTF-8"));
+            assertEquals(0, code, args + ": " + err.toString("UTF-8"));
+            File dir = new File(out, "local/nocov/100/" + r[0] + "/" + r[1]);
+            int measured = 0;
+            int ran = 0;
+            for (String f : new String[] {"odoData.txt", "laserData.txt"}) {
+                for (String line : Files.readAllLines(new File(dir, f).toPath(), StandardCharsets.UTF_8)) {
+                    String[] c = line.split(" ");
+                    if (line.startsWith("#") || Long.parseLong(c[2]) < 0) {
+                        continue;
+                    }
+                    ran++;
+                    measured += Long.parseLong(c[6]) >= 0 ? 1 : 0;
+                }
+            }
+            assertTrue(ran > 0, args + ": no job ran");
+            assertEquals(off || !clock ? 0 : ran, measured, args + ": jobs with a CPU time");
+            String summary = new String(Files.readAllBytes(new File(dir, "summary.json").toPath()),
+                    StandardCharsets.UTF_8);
+            assertTrue(summary.contains("\"cpuTime\": " + !off), args + ": parameters.cpuTime");
+            if (off && r[0].equals("SkipTest")) {
+                assertTrue(summary.contains("\"cpuTime\": \"" + ThreadCpuClock.OFF + "\""), args + ": engine.cpuTime");
+            }
+        }
+    }
 }

@@ -26,6 +26,7 @@
 #include "clock.h"
 #include "dataset.h"
 #include "mcl.h"
+#include "loop_options.h"
 
 #define MAX_COUNTS 16
 
@@ -35,9 +36,7 @@ struct bench_opts {
 	int ncounts;
 	int memory_mask; /* bit 0 preallocated, bit 1 allocating */
 	int job_mask;    /* bit 0 predict, bit 1 update */
-	int warmup;
-	int iterations;
-	double seconds;
+	struct loop_shape shape;
 };
 
 /* Keeps the compiler from discarding the jobs' results. */
@@ -110,7 +109,7 @@ static int bench_one(const struct bench_opts *o, const jm_dataset *ds, int updat
 {
 	jm_mcl m;
 	jm_mcl_config c;
-	int64_t budget = (int64_t)(o->seconds * 1e9);
+	int64_t budget = (int64_t)(o->shape.seconds * 1e9);
 	double sum = 0, min = 0, max = 0;
 	int64_t wall = 0, cpu = 0;
 	long total = 0;
@@ -129,7 +128,7 @@ static int bench_one(const struct bench_opts *o, const jm_dataset *ds, int updat
 	c.start_theta = ds->start_theta;
 	if (jm_mcl_init(&m, &c, &ds->pg))
 		return -1;
-	for (int it = 0; it < o->warmup + o->iterations; it++) {
+	for (int it = 0; it < o->shape.warmup + o->shape.iterations; it++) {
 		int64_t start = jm_now_ns(), cpu0 = jm_thread_cpu_ns(), now;
 		long jobs = 0;
 		double per;
@@ -140,20 +139,20 @@ static int bench_one(const struct bench_opts *o, const jm_dataset *ds, int updat
 			now = jm_now_ns();
 		} while (now - start < budget);
 		per = (double)(now - start) / (double)jobs;
-		if (it < o->warmup)
+		if (it < o->shape.warmup)
 			continue;
 		wall += now - start;
 		cpu += jm_thread_cpu_ns() - cpu0;
 		sum += per;
 		total += jobs;
-		if (it == o->warmup || per < min)
+		if (it == o->shape.warmup || per < min)
 			min = per;
-		if (it == o->warmup || per > max)
+		if (it == o->shape.warmup || per > max)
 			max = per;
 	}
 	jm_mcl_free(&m);
 	printf("%s %d %s %.1f %.1f %.1f %ld %.3f %.1f\n", update ? "update" : "predict", n,
-	       memory == JM_MEMORY_PREALLOCATED ? "preallocated" : "allocating", sum / o->iterations,
+	       memory == JM_MEMORY_PREALLOCATED ? "preallocated" : "allocating", sum / o->shape.iterations,
 	       min, max, total, (double)cpu / (double)wall, (double)cpu / (double)total);
 	fflush(stdout);
 	return 0;
@@ -172,19 +171,13 @@ int main(int argc, char **argv)
 		{ "help", no_argument, NULL, 'h' },
 		{ NULL, 0, NULL, 0 },
 	};
-	struct bench_opts o = { "../data/match-short", { 1000, 4000 }, 2, 3, 3, 3, 5, 1.0 };
+	struct bench_opts o = { "../data/match-short", { 1000, 4000 }, 2, 3, 3, { 3, 5, 1.0 } };
 	jm_dataset ds;
 	char err[PATH_MAX + 256];
 	int opt, rc = 0;
 
-	/*
-	 * ':' first and opterr 0: a missing value or an unknown option is one line of ours, not
-	 * getopt's message followed by the whole usage on stderr.
-	 */
-	opterr = 0;
+	opterr = 0; /* with ':' first: loop_options.h's one-line errors, not getopt's */
 	while ((opt = getopt_long(argc, argv, ":d:p:m:j:w:i:r:h", longopts, NULL)) != -1) {
-		char *end = NULL;
-
 		switch (opt) {
 		case 'd':
 			o.dataset = optarg;
@@ -201,51 +194,31 @@ int main(int argc, char **argv)
 			if (!(o.job_mask = mask_of(optarg, "predict", "update")))
 				goto bad;
 			break;
-		case 'w':
-			o.warmup = (int)strtol(optarg, &end, 10);
-			if (!*optarg || *end || o.warmup < 0 || o.warmup > 1000000)
-				goto bad;
-			break;
-		case 'i':
-			o.iterations = (int)strtol(optarg, &end, 10);
-			if (!*optarg || *end || o.iterations < 1 || o.iterations > 1000000)
-				goto bad;
-			break;
-		case 'r':
-			/* finite: an infinite iteration would never end */
-			o.seconds = strtod(optarg, &end);
-			if (!*optarg || *end || !(o.seconds > 0) || !isfinite(o.seconds))
-				goto bad;
-			break;
 		case 'h':
 			usage(stdout);
 			return 0;
-		case ':':
-			fprintf(stderr, "kernel-jobs: %s: needs a value\n", argv[optind - 1]);
-			return 2;
 		default:
-			if (optopt)
-				fprintf(stderr, "kernel-jobs: -%c: unknown option (see --help)\n", optopt);
-			else
-				fprintf(stderr, "kernel-jobs: %s: unknown option (see --help)\n", argv[optind - 1]);
-			return 2;
+			switch (loop_shape_option(&o.shape, opt, optarg)) {
+			case 1:
+				continue;
+			case -1:
+				goto bad;
+			}
+			return loop_getopt_error("kernel-jobs", opt, argv);
 		}
 		continue;
 bad:
-		fprintf(stderr, "kernel-jobs: -%c: bad value '%s'\n", opt, optarg);
-		return 2;
+		return loop_bad_value("kernel-jobs", opt, optarg);
 	}
-	if (optind < argc) {
-		fprintf(stderr, "kernel-jobs: %s: unexpected argument (see --help)\n", argv[optind]);
+	if (loop_no_operands("kernel-jobs", argc, argv))
 		return 2;
-	}
 	if (jm_dataset_load(&ds, o.dataset, NULL, NULL, NULL, err, sizeof(err))) {
 		fprintf(stderr, "kernel-jobs: %s\n", err);
 		return 2;
 	}
 	printf("# job particles memory ns_per_job min_iteration_ns max_iteration_ns jobs cpu_share cpu_ns_per_job"
-	       "  (dataset %s, %d warm-up + %d x %.3g s)\n", o.dataset, o.warmup, o.iterations,
-	       o.seconds);
+	       "  (dataset %s, %d warm-up + %d x %.3g s)\n", o.dataset, o.shape.warmup, o.shape.iterations,
+	       o.shape.seconds);
 	for (int update = 0; update <= 1 && !rc; update++)
 		for (int c = 0; c < o.ncounts && !rc; c++)
 			for (int mem = 0; mem <= 1 && !rc; mem++)

@@ -28,6 +28,7 @@
 #include "clock.h"
 #include "engine.h"
 #include "record.h"
+#include "loop_options.h"
 
 #define RECORD_EVENTS 4096
 #define BATCH 256
@@ -127,64 +128,35 @@ int main(int argc, char **argv)
 		{ "help", no_argument, NULL, 'h' },
 		{ NULL, 0, NULL, 0 },
 	};
-	int warmup = 3, iterations = 5, opt;
-	double seconds = 1.0;
+	struct loop_shape shape = { 3, 5, 1.0 };
+	int opt;
 
-	/* ':' first and opterr 0: a missing value or an unknown option is one line of ours */
-	opterr = 0;
+	opterr = 0; /* with ':' first: loop_options.h's one-line errors, not getopt's */
 	while ((opt = getopt_long(argc, argv, ":w:i:r:h", longopts, NULL)) != -1) {
-		char *end = NULL;
+		int taken = loop_shape_option(&shape, opt, optarg);
 
-		switch (opt) {
-		case 'w':
-			warmup = (int)strtol(optarg, &end, 10);
-			if (!*optarg || *end || warmup < 0 || warmup > 1000000)
-				goto bad;
-			break;
-		case 'i':
-			iterations = (int)strtol(optarg, &end, 10);
-			if (!*optarg || *end || iterations < 1 || iterations > 1000000)
-				goto bad;
-			break;
-		case 'r':
-			/* finite: an infinite iteration would never end */
-			seconds = strtod(optarg, &end);
-			if (!*optarg || *end || !(seconds > 0) || !isfinite(seconds))
-				goto bad;
-			break;
-		case 'h':
-			usage(stdout);
-			return 0;
-		case ':':
-			fprintf(stderr, "record-cost: %s: needs a value\n", argv[optind - 1]);
-			return 2;
-		default:
-			if (optopt)
-				fprintf(stderr, "record-cost: -%c: unknown option (see --help)\n", optopt);
-			else
-				fprintf(stderr, "record-cost: %s: unknown option (see --help)\n", argv[optind - 1]);
-			return 2;
-		}
-		continue;
-bad:
-		fprintf(stderr, "record-cost: -%c: bad value '%s'\n", opt, optarg);
-		return 2;
+		if (taken < 0)
+			return loop_bad_value("record-cost", opt, optarg);
+		if (taken)
+			continue;
+		if (opt != 'h')
+			return loop_getopt_error("record-cost", opt, argv);
+		usage(stdout);
+		return 0;
 	}
-	if (optind < argc) {
-		fprintf(stderr, "record-cost: %s: unexpected argument (see --help)\n", argv[optind]);
+	if (loop_no_operands("record-cost", argc, argv))
 		return 2;
-	}
 	if (jm_thread_cpu_ns() < 0) {
 		fprintf(stderr, "record-cost: no CLOCK_THREAD_CPUTIME_ID here\n");
 		return 1;
 	}
 	printf("# part cpu ns_per_op min_iteration_ns max_iteration_ns ops cpu_share cpu_ns_per_op  (%d warm-up + %d x %.3g s)\n",
-	       warmup, iterations, seconds);
-	bench_one(PART_NOW, 0, warmup, iterations, seconds);
-	bench_one(PART_THREAD_CPU, 1, warmup, iterations, seconds);
+	       shape.warmup, shape.iterations, shape.seconds);
+	bench_one(PART_NOW, 0, shape.warmup, shape.iterations, shape.seconds);
+	bench_one(PART_THREAD_CPU, 1, shape.warmup, shape.iterations, shape.seconds);
 	for (int cpu = 1; cpu >= 0; cpu--) {
-		bench_one(PART_RECORD, cpu, warmup, iterations, seconds);
-		bench_one(PART_HELD, cpu, warmup, iterations, seconds);
+		bench_one(PART_RECORD, cpu, shape.warmup, shape.iterations, shape.seconds);
+		bench_one(PART_HELD, cpu, shape.warmup, shape.iterations, shape.seconds);
 	}
 	return 0;
 }

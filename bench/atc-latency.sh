@@ -29,10 +29,9 @@ while [ $# -gt 0 ]; do
     esac
 done
 require_positive --aborts "$aborts"; require_count --warmup "$warmup"; require_count --work "$work"
-command -v "$java" >/dev/null || { echo "atc-latency: --java: $java: not found" >&2; exit 2; }
+require_java "$java"
 if [ $build = 1 ]; then
-    echo "atc-latency: building the benchmarks..." >&2
-    (cd "$home" && mvn -q -B -ntp -pl bench -am package -DskipTests >&2)
+    build_benchmarks
 fi
 prefix=()
 if [ $fifo = 1 ]; then

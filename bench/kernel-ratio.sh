@@ -34,12 +34,10 @@ while [ $# -gt 0 ]; do
     esac
 done
 [ -f "$dataset/odometry.txt" ] || { echo "kernel-ratio: --dataset: $dataset: not a dataset folder" >&2; exit 2; }
-command -v "$java" >/dev/null || { echo "kernel-ratio: --java: $java: not found" >&2; exit 2; }
+require_java "$java"
 
 if [ $build = 1 ]; then
-    echo "kernel-ratio: building the benchmarks..." >&2
-    (cd "$home" && mvn -q -B -ntp -pl bench -am package -DskipTests >&2)
-    make -s -C "$home/native" build/kernel-jobs >&2
+    build_benchmarks build/kernel-jobs
 fi
 mkdir -p "$out"
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)

@@ -86,6 +86,21 @@ c_loop_shape() {
     done
 }
 
+# Ends the script when --java names no java ($1).
+require_java() {
+    command -v "$1" >/dev/null || { echo "$me: --java: $1: not found" >&2; exit 2; }
+}
+
+# Builds the JMH jar (bench/target/benchmarks.jar) and the C timing loops given ($@: targets of
+# native/Makefile, e.g. build/kernel-jobs), from the tree at $home.
+build_benchmarks() {
+    echo "$me: building the benchmarks..." >&2
+    (cd "$home" && mvn -q -B -ntp -pl bench -am package -DskipTests >&2)
+    if [ $# -gt 0 ]; then
+        make -s -C "$home/native" "$@" >&2
+    fi
+}
+
 # Ends the script on a leftover argument $1 that is not an option, as the jmclbench commands do.
 unexpected_argument() {
     echo "$me: $1: unexpected argument (see --help)" >&2

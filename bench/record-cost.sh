@@ -29,12 +29,10 @@ while [ $# -gt 0 ]; do
         *) unknown_option "$1" ;;
     esac
 done
-command -v "$java" >/dev/null || { echo "record-cost: --java: $java: not found" >&2; exit 2; }
+require_java "$java"
 
 if [ $build = 1 ]; then
-    echo "record-cost: building the benchmarks..." >&2
-    (cd "$home" && mvn -q -B -ntp -pl bench -am package -DskipTests >&2)
-    make -s -C "$home/native" build/record-cost >&2
+    build_benchmarks build/record-cost
 fi
 mkdir -p "$out"
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)

@@ -583,11 +583,15 @@ static void test_options(void)
 	      !strcmp(o.real, "c") && o.policy == JM_POLICY_TERMINATE && o.covariance);
 	CHECK(parse("run --particles=2000 --policy queue --memory allocating --estimate best "
 		    "--resample multinomial --init uniform --seed -5 --time-scale 0.5 --warmup 2 "
-		    "--spin-us 50 --ideal --force --gc-log --no-fifo --dataset d", &o, err, sizeof(err)) == 0);
+		    "--spin-us 50 --force --gc-log --no-fifo --dataset d", &o, err, sizeof(err)) == 0);
 	CHECK(o.particles == 2000 && o.policy == JM_POLICY_QUEUE && o.memory == JM_MEMORY_ALLOCATING &&
 	      o.estimate == JM_ESTIMATE_BEST && o.resample == JM_RESAMPLE_MULTINOMIAL &&
 	      o.init == JM_INIT_UNIFORM && o.seed == -5 && o.time_scale == 0.5 && o.warmup_s == 2.0 &&
-	      o.spin_us == 50 && o.ideal && o.force && o.gc_log && !o.fifo && !strcmp(o.dataset, "d"));
+	      o.spin_us == 50 && !o.ideal && o.force && o.gc_log && !o.fifo && !strcmp(o.dataset, "d"));
+	/* an ideal run has no releases: a spin was recorded (parameters.spinUs) that never happened */
+	CHECK(parse("--ideal --spin-us 50", &o, err, sizeof(err)) == -1);
+	CHECK(!strcmp(err, "--spin-us: an ideal run has no releases to spin before (--ideal)"));
+	CHECK(parse("--ideal --spin-us 0 --force --gc-log", &o, err, sizeof(err)) == 0 && o.ideal && o.gc_log);
 	CHECK(parse("-h", &o, err, sizeof(err)) == 0 && o.help);
 
 	CHECK(parse("--bogus", &o, err, sizeof(err)) == -1);

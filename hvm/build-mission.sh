@@ -6,6 +6,8 @@
 #
 #   hvm/build-mission.sh [--heap BYTES] [--mode compiled|interpreted|hot]
 #
+# --heap: the VM's Java heap (default: the heap of hvm/hvm.properties, the size the hvm engine
+# checks area sizes against).
 # --mode (default: $JMCLBENCH_HVM_MODE, else compiled): compiled translates every method but main
 # to C (icecap -aot, with our patches 13-21; a method that handles floats stays interpreted);
 # interpreted runs every method in icecap's interpreter (the hvm runtime's profile int); hot
@@ -19,11 +21,12 @@ set -euo pipefail
 
 HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
 ROOT=$(dirname "$HERE")
-# The VM's Java heap holds the SCJ backing store (immortal, mission and private memories);
-# memory areas larger than this fail at launch.
-heap=268435456
+# The VM's Java heap holds the SCJ backing store (immortal, mission and private memories); its
+# size is hvm/hvm.properties', which the hvm engine checks area sizes against before a run.
+heap=$(sed -n 's/^heap=//p' "$HERE/hvm.properties" 2>/dev/null || true)
 mode=${JMCLBENCH_HVM_MODE:-compiled}
 . "$HERE/script-options.sh"
+[[ $heap =~ ^[1-9][0-9]{0,17}$ ]] || bad "hvm/hvm.properties: heap: '$heap' is not a positive number of bytes"
 while [ $# -gt 0 ]; do
     case "$1" in
         --heap|--mode) [ $# -ge 2 ] || bad "$1: needs a value" ;;

@@ -73,7 +73,7 @@ static int parse_record(const char *name, int lineno, const char *line, long len
 
 		if (r != JM_NUM_OK) {
 			snprintf(err, errlen, "%s:%d: %s: '%s'%s", name, lineno, jm_number_problem(r),
-				 jm_quote(q, sizeof(q), line + start[c], tlen[c]), r == JM_NUM_OVERFLOW ? " (overflows)" : "");
+				 jm_quote(q, sizeof(q), line + start[c], tlen[c]), jm_number_detail(r));
 			return -1;
 		}
 	}
@@ -243,7 +243,7 @@ static int property_number(const char *name, int lineno, const char *key, const 
 
 	if (r != JM_NUM_OK) {
 		snprintf(err, errlen, "%s:%d: %s: %s: '%s'%s", name, lineno, key, jm_number_problem(r),
-			 jm_quote(q, sizeof(q), v, vl), r == JM_NUM_OVERFLOW ? " (overflows)" : "");
+			 jm_quote(q, sizeof(q), v, vl), jm_number_detail(r));
 		return -1;
 	}
 	if (!strncmp(key, "playground.", 11) && !(*out > 0.0)) {
@@ -424,6 +424,22 @@ int jm_dataset_load(jm_dataset *ds, const char *dir, const char *odometry, const
 fail:
 	jm_dataset_free(ds);
 	return -1;
+}
+
+static int check_scaled(const jm_series *s, const char *path, double time_scale, char *err, size_t errlen)
+{
+	if (JM_ROW(s, s->n - 1)[0] * time_scale > JM_VALUE_MAX) {
+		snprintf(err, errlen, "--time-scale: scales the last time of %s past " JM_VALUE_MAX_TEXT
+			 " s, the largest time of a run", path);
+		return -1;
+	}
+	return 0;
+}
+
+int jm_dataset_check_time_scale(const jm_dataset *ds, double time_scale, char *err, size_t errlen)
+{
+	return check_scaled(&ds->odometry, ds->odometry_path, time_scale, err, errlen) ||
+	       check_scaled(&ds->laser, ds->laser_path, time_scale, err, errlen) ? -1 : 0;
 }
 
 void jm_dataset_free(jm_dataset *ds)

@@ -58,6 +58,14 @@ int jm_dataset_load(jm_dataset *ds, const char *dir, const char *odometry, const
 void jm_dataset_free(jm_dataset *ds);
 
 /*
+ * Refuses a time scale that takes an event past a run's largest time, JM_VALUE_MAX seconds
+ * (docs/FORMATS.md 2): each time is within it, but times 1000 of them may not be, and their
+ * nanoseconds would overflow the 64-bit release times. Returns 0, or -1 with err set (the Java
+ * workload's Dataset.checkTimeScale).
+ */
+int jm_dataset_check_time_scale(const jm_dataset *ds, double time_scale, char *err, size_t errlen);
+
+/*
  * Reads dataset.properties from f into ds (playground, scenario, start pose and start_known),
  * over what ds holds already. Returns 0, or -1 with err holding "<name>:<line>: <problem>", or
  * "<name>: <key>: missing" when the start pose is given in part.

@@ -33,7 +33,11 @@
 #endif
 #endif
 
-/* Seconds of the timeline as nanoseconds of the run; clamped (to ~73 years) so sums cannot overflow. */
+/*
+ * Seconds of the timeline as nanoseconds of the run. The reader and jm_dataset_check_time_scale
+ * keep scaled times within JM_VALUE_MAX s (1e18 ns); the clamp (~73 years) is a second guard so
+ * that sums cannot overflow.
+ */
 static int64_t scaled_ns(double seconds, double time_scale)
 {
 	double ns = seconds * time_scale * 1e9;

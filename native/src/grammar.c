@@ -90,7 +90,7 @@ int jm_names_non_finite(const char *p, size_t len)
 	return (n == 3 && (!memcmp(t, "nan", 3) || !memcmp(t, "inf", 3))) || (n == 8 && !memcmp(t, "infinity", 8));
 }
 
-/* Parses p[0..len) as a finite double, correctly rounded (as Java's Double.parseDouble). */
+/* Parses p[0..len) as a double within JM_VALUE_MAX, correctly rounded (as Java's Double.parseDouble). */
 int jm_parse_number(const char *p, size_t len, double *out)
 {
 	char small[128], *buf = small;
@@ -107,6 +107,8 @@ int jm_parse_number(const char *p, size_t len, double *out)
 		free(buf);
 	if (!isfinite(v))
 		return JM_NUM_OVERFLOW;
+	if (fabs(v) > JM_VALUE_MAX)
+		return JM_NUM_OUT_OF_RANGE;
 	*out = v;
 	return JM_NUM_OK;
 }
@@ -114,7 +116,14 @@ int jm_parse_number(const char *p, size_t len, double *out)
 /* The words of a number's problem; what follows the quoted token. */
 const char *jm_number_problem(int r)
 {
-	return r == JM_NUM_SYNTAX ? "not a number" : r == JM_NUM_NOMEM ? "out of memory" : "not a finite number";
+	return r == JM_NUM_SYNTAX ? "not a number" : r == JM_NUM_NOMEM ? "out of memory"
+		: r == JM_NUM_OUT_OF_RANGE ? "out of range" : "not a finite number";
+}
+
+const char *jm_number_detail(int r)
+{
+	return r == JM_NUM_OVERFLOW ? " (overflows)"
+		: r == JM_NUM_OUT_OF_RANGE ? " (more than " JM_VALUE_MAX_TEXT " in magnitude)" : "";
 }
 
 /*

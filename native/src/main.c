@@ -126,7 +126,8 @@ int main(int argc, char **argv)
 			dataset_dir = default_dataset;
 		}
 	}
-	if (jm_dataset_load(&ds, dataset_dir, opt.odometry, opt.laser, opt.real, err, sizeof(err)))
+	if (jm_dataset_load(&ds, dataset_dir, opt.odometry, opt.laser, opt.real, err, sizeof(err)) ||
+	    jm_dataset_check_time_scale(&ds, opt.time_scale, err, sizeof(err)))
 		die(EXIT_BAD_INPUT, "%s", err);
 
 	if (jm_run_dir(&opt, final_dir, sizeof(final_dir)))

@@ -413,5 +413,8 @@ static int parse(jm_options *o, int argc, char **argv, char *err, size_t errlen)
 			    "missing: -odo, -laser and -real go together", NULL);
 	if (o->dataset && o->odometry)
 		return fail(err, errlen, "--dataset", "cannot be combined with -odo/-laser/-real", NULL);
+	/* not recorded among the parameters as if it had been applied (the Java workload's IdealEngine) */
+	if (o->ideal && o->spin_us > 0)
+		return fail(err, errlen, "--spin-us", "an ideal run has no releases to spin before (--ideal)", NULL);
 	return 0;
 }

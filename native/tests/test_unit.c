@@ -434,6 +434,15 @@ static void test_reader(void)
 	e = read_err("0 1e999 2 3\n", &ok, "1");
 	CHECK_CONTAINS(e, "not a finite number: '1e999' (overflows)");
 	CHECK(ok);
+	/* beyond the data's range (docs/FORMATS.md 1.1): a NaN filter or an overflowing release time */
+	e = read_err("0 1e308 2 3\n", &ok, "1");
+	CHECK_CONTAINS(e, "out of range: '1e308' (more than 1e9 in magnitude)");
+	CHECK(ok);
+	e = read_err("0 0 0 0\n9.3e9 0 0 0\n", &ok, "2");
+	CHECK_CONTAINS(e, "out of range: '9.3e9' (more than 1e9 in magnitude)");
+	CHECK(ok);
+	e = read_err("1e9 1e9 -1e9 0\n", &ok, NULL);
+	CHECK_INT(strlen(e), 0);
 	e = read_err("+0. .5 -1.e-3 3E+2\n", &ok, NULL);
 	CHECK_INT(strlen(e), 0);
 	e = read_err("", &ok, NULL);
@@ -508,6 +517,15 @@ static void test_dataset_properties(void)
 	CHECK(ds.start_x == 1.25 && ds.start_y == 0.75 && ds.start_theta == 0.5);
 	CHECK(ds.pg.nbeacons == 3 && ds.pg.width == 3.0);
 	jm_dataset_free(&ds);
+	/* a time scale may not take the last event past a run's largest time, 1e9 s */
+	write_file("laser.txt", "0.02 1.0\n1e6 1.0\n");
+	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == 0);
+	CHECK(jm_dataset_check_time_scale(&ds, 1000.0, err, sizeof(err)) == 0);
+	CHECK(jm_dataset_check_time_scale(&ds, 1000.0000001, err, sizeof(err)) == -1);
+	CHECK_CONTAINS(err, "--time-scale: scales the last time of ");
+	CHECK_CONTAINS(err, "/laser.txt past 1e9 s, the largest time of a run");
+	jm_dataset_free(&ds);
+	write_file("laser.txt", "0.02 1.0\n");
 
 	CHECK(!strcmp(ds.name, strrchr(tmpdir, '/') + 1)); /* no scenario: the folder's name */
 	write_file("dataset.properties", "scenario=unit\nstart.x=0.5\n");
@@ -565,12 +583,17 @@ static void test_options(void)
 	      !strcmp(o.real, "c") && o.policy == JM_POLICY_TERMINATE && o.covariance);
 	CHECK(parse("run --particles=2000 --policy queue --memory allocating --estimate best "
 		    "--resample multinomial --init uniform --seed -5 --time-scale 0.5 --warmup 2 "
-		    "--spin-us 50 --ideal --force --gc-log --no-fifo --no-cpu-time --dataset d", &o, err, sizeof(err)) == 0);
+		    "--spin-us 50 --force --gc-log --no-fifo --no-cpu-time --dataset d", &o, err, sizeof(err)) == 0);
 	CHECK(o.particles == 2000 && o.policy == JM_POLICY_QUEUE && o.memory == JM_MEMORY_ALLOCATING &&
 	      o.estimate == JM_ESTIMATE_BEST && o.resample == JM_RESAMPLE_MULTINOMIAL &&
 	      o.init == JM_INIT_UNIFORM && o.seed == -5 && o.time_scale == 0.5 && o.warmup_s == 2.0 &&
-	      o.spin_us == 50 && o.ideal && o.force && o.gc_log && !o.fifo && !o.cpu_time &&
+	      o.spin_us == 50 && !o.ideal && o.force && o.gc_log && !o.fifo && !o.cpu_time &&
 	      !strcmp(o.dataset, "d"));
+	/* an ideal run has no releases: a spin was recorded (parameters.spinUs) that never happened */
+	CHECK(parse("--ideal --spin-us 50", &o, err, sizeof(err)) == -1);
+	CHECK(!strcmp(err, "--spin-us: an ideal run has no releases to spin before (--ideal)"));
+	CHECK(parse("--ideal --spin-us 0 --force --gc-log --no-cpu-time", &o, err, sizeof(err)) == 0 && o.ideal && o.gc_log &&
+	      !o.cpu_time);
 	CHECK(parse("-h", &o, err, sizeof(err)) == 0 && o.help);
 
 	CHECK(parse("--bogus", &o, err, sizeof(err)) == -1);

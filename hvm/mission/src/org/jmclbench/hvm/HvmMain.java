@@ -19,9 +19,6 @@ import vm.VMTest;
  * the mission ended and its records were written.
  */
 public final class HvmMain {
-    /** Room for the bookkeeping of nested backing stores, in bytes. */
-    static final int NESTING_SLACK = 256 * 1024;
-
     private HvmMain() {
     }
 
@@ -52,25 +49,22 @@ public final class HvmMain {
         HvmInput input = new HvmInput(MissionRunFile.DATA);
         // icecap's own objects (its scheduler in immortal memory, each handler's stack in mission
         // memory) are added to computed sizes only, as the launcher reports them
-        MissionSizes computed = new MissionSizes(config, input.odometryCount(), input.laserCount());
-        long immortal = MissionRunFile.icecapSize(config, computed, MissionSizes.IMMORTAL);
-        config.areaSize(MissionSizes.MISSION, MissionRunFile.icecapSize(config, computed, MissionSizes.MISSION));
+        long[] icecap = MissionRunFile.icecapSizes(config,
+                new MissionSizes(config, input.odometryCount(), input.laserCount()));
+        config.areaSize(MissionSizes.MISSION, icecap[MissionSizes.MISSION]);
         HvmOutput output = new HvmOutput();
         MclSafelet safelet = new MclSafelet(config, input, output);
 
         // icecap sizes its backing store and immortal memory from these constants, not from
-        // the Safelet; the handlers' private memories are their ScopeParameters' sizes.
-        MissionSizes sizes = safelet.sizes();
-        Const.IMMORTAL_MEM = (int) immortal;
-        // icecap nests the areas: the mission memory inside the sequencer's private memory
-        // (each of the mission's size), the handlers' private memories and their backing
-        // stores inside the mission memory's reservation. The backing store is generous so
-        // that the nesting fits; each area is still limited to its own size.
-        Const.OVERALL_BACKING_STORE = (int) (Const.IMMORTAL_MEM + 2 * (sizes.size(MissionSizes.MISSION)
-                + sizes.backingStore()) + NESTING_SLACK + Const.IDLE_BACKING_STORE);
+        // the Safelet; the handlers' private memories are their ScopeParameters' sizes. The
+        // launcher refused sizes whose backing store the heap cannot hold (HvmLimits), so each
+        // fits an int.
+        Const.IMMORTAL_MEM = (int) icecap[MissionSizes.IMMORTAL];
+        Const.IDLE_BACKING_STORE = (int) MissionRunFile.IDLE_BACKING_STORE;
+        Const.OVERALL_BACKING_STORE = (int) MissionRunFile.overallBackingStore(icecap);
         Const.OUTERMOST_SEQ_BACKING_STORE = Const.OVERALL_BACKING_STORE - Const.IMMORTAL_MEM
                 - Const.IDLE_BACKING_STORE;
-        Const.MISSION_MEM = (int) sizes.size(MissionSizes.MISSION);
+        Const.MISSION_MEM = (int) icecap[MissionSizes.MISSION];
 
         new LaunchLevel1(safelet);
 

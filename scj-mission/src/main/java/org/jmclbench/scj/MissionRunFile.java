@@ -62,7 +62,37 @@ public final class MissionRunFile {
     /** The stacks of the mission's three handlers (int[STACK_WORDS] each), in bytes: icecap puts them in mission memory. */
     public static final long HANDLER_STACKS = 3 * (4 * MissionSizes.STACK_WORDS + 64);
 
+    /** The backing store of icecap's idle task, in bytes: the executable sets icecap's Const.IDLE_BACKING_STORE to it. */
+    public static final long IDLE_BACKING_STORE = 2 * 1000;
+    /** Room for the bookkeeping of nested backing stores, in bytes. */
+    public static final long NESTING_SLACK = 256 * 1024;
+
     private MissionRunFile() {
+    }
+
+    /** The sizes icecap is given for every area ({@link #icecapSize}), by area index. */
+    public static long[] icecapSizes(MissionConfiguration config, MissionSizes sizes) {
+        long[] icecap = new long[MissionSizes.AREA_COUNT];
+        for (int a = 0; a < icecap.length; a++) {
+            icecap[a] = icecapSize(config, sizes, a);
+        }
+        return icecap;
+    }
+
+    /**
+     * The overall backing store icecap takes from the HVM's heap for areas of these sizes
+     * ({@link #icecapSizes}): icecap nests the areas, the mission memory inside the sequencer's
+     * private memory (each of the mission's size), the handlers' private memories and their
+     * backing stores inside the mission memory's reservation; beside them immortal memory and
+     * the idle task's store. Generous, so that the nesting fits; each area is still limited to its
+     * own size. A long: sizes set with --area-size may add up past an int.
+     */
+    public static long overallBackingStore(long[] icecapSizes) {
+        long mission = icecapSizes[MissionSizes.MISSION];
+        long handlers = icecapSizes[MissionSizes.PREDICT] + icecapSizes[MissionSizes.UPDATE]
+                + icecapSizes[MissionSizes.SENSOR];
+        return icecapSizes[MissionSizes.IMMORTAL] + 2 * (mission + mission + handlers) + NESTING_SLACK
+                + IDLE_BACKING_STORE;
     }
 
     /**

@@ -28,9 +28,20 @@ public final class IdealEngine implements Engine {
         return "ideal";
     }
 
+    /**
+     * Refuses what an ideal run cannot apply, whatever the engine: a spin before each release (it
+     * has no releases) and SCJ memory areas (its one area is the heap); given, they were recorded
+     * in summary.json's parameters as if they had been applied. The rest is checked with the
+     * engine it is asked of. The C baseline refuses --ideal --spin-us alike.
+     */
     @Override
-    public void checkOptions(RunOptions options) {
-        // --ideal is checked with the engine it is asked of
+    public void checkOptions(RunOptions options) throws BadInputException {
+        if (options.spinUs > 0) {
+            throw BadInputException.ofOption("--spin-us", "an ideal run has no releases to spin before (--ideal)");
+        }
+        if (!options.areaSizes.isEmpty()) {
+            throw BadInputException.ofOption("--area-size", "an ideal run has no SCJ memory areas (--ideal)");
+        }
     }
 
     @Override

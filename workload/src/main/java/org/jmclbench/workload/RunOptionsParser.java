@@ -219,6 +219,9 @@ public final class RunOptionsParser {
         if (designGiven && !"rtsj".equals(o.engine)) {
             throw BadInputException.ofOption("--rtsj-design", "chooses the rtsj engine's design: needs --engine rtsj");
         }
+        if (o.ideal) {
+            Engines.of(o).checkOptions(o); // what the ideal run cannot apply, before the engine's own checks
+        }
         Engine engine = Engines.named("--engine", o.engine);
         engine.checkOptions(o);
         o.engineRuntimeName = engine.runtimeName(RunOptions.defaultRuntimeName(), o);

@@ -82,6 +82,7 @@ public final class WorkloadMain {
     private static int execute(RunOptions options, PrintStream out, PrintStream err)
             throws BadInputException, UnsupportedRunException, IOException, RunFailure {
         Dataset dataset = load(options);
+        dataset.checkTimeScale(options.timeScale);
         Engine engine = Engines.of(options);
         engine.validate(options, dataset);
         RunFolder folder = RunFolder.of(options);

@@ -92,6 +92,18 @@ public class MalformedInputCorpusTest {
         data("type-suffix", "laser.txt", "0.03  1.5d\n", ":1", "not a number: '1.5d'");
         data("bare-exponent", "odometry.txt", "0.05  1e  0  0\n", ":1", "not a number: '1e'");
         data("decimal-comma", "real.txt", "0,05  0.5  0.6  0.1\n", ":1", "not a number: '0,05'");
+        // beyond the data's range: a time whose nanoseconds overflow the release times, a non-physical increment
+        // (ideal runs, checked alike: were the times let through, a real-time run would wait for years)
+        File late = folder("time-beyond-range", "laser.txt", (LASER + "1.0e10  4.0\n").getBytes(StandardCharsets.US_ASCII));
+        add("time-beyond-range", Arrays.asList("--dataset", late.getPath(), "--ideal"),
+                new File(late, "laser.txt").getPath() + ":3: out of range: '1.0e10' (more than 1e9 in magnitude)");
+        data("huge-increment", "odometry.txt", "0.05  1e308  0.0  0.001\n", ":1",
+                "out of range: '1e308' (more than 1e9 in magnitude)");
+        File scaled = folder("time-scale-beyond-range", "laser.txt",
+                (LASER + "5e6  4.0\n").getBytes(StandardCharsets.US_ASCII));
+        add("time-scale-beyond-range", Arrays.asList("--dataset", scaled.getPath(), "--time-scale", "1000", "--ideal"),
+                "--time-scale: scales the last time of " + new File(scaled, "laser.txt").getPath()
+                        + " past 1e9 s, the largest time of a run");
         // columns
         data("too-few-columns", "odometry.txt", ODO + "0.15  0.01  0.0\n", ":3", "expected 4 columns but found 3");
         data("too-many-columns", "laser.txt", "0.03  1.5  2\n", ":1", "expected 2 columns but found 3");
@@ -168,6 +180,8 @@ public class MalformedInputCorpusTest {
                 "not printable ASCII: byte 0xc3");
         data("metadata-zero-size", "dataset.properties", "playground.height=0\n", ":1",
                 "playground.height: must be positive");
+        data("metadata-out-of-range", "dataset.properties", "start.x=-2e9\nstart.y=0\nstart.theta=0\n", ":1",
+                "start.x: out of range: '-2e9' (more than 1e9 in magnitude)");
     }
 
     /** Exit code and stderr of one path on one kind. */

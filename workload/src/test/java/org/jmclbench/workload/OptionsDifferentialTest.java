@@ -9,6 +9,7 @@ import java.io.InputStreamReader;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Random;
@@ -44,15 +45,37 @@ class OptionsDifferentialTest {
     @Test
     void generatedCommandLinesParseAlike() throws IOException {
         Random random = new Random(22);
+        List<List<String>> lines = new ArrayList<>();
+        for (int i = 0; i < 5000; i++) {
+            lines.add(commandLine(random));
+        }
+        int accepted = parseAlike(lines);
+        assertTrue(accepted > lines.size() / 5 && accepted < lines.size() * 4 / 5, accepted + " of " + lines.size()
+                + " accepted");
+    }
+
+    /** What an ideal run cannot apply: both parsers refuse it alike (the generated lines seldom hold it). */
+    @Test
+    void theIdealRunsRefusalsParseAlike() throws IOException {
+        List<List<String>> lines = new ArrayList<>();
+        lines.add(Arrays.asList("--ideal", "--spin-us", "50"));
+        lines.add(Arrays.asList("--spin-us=1", "run", "--ideal"));
+        lines.add(Arrays.asList("-T", "--policy", "skip", "--ideal", "--spin-us", "5"));
+        lines.add(Arrays.asList("--ideal", "--spin-us", "+0"));
+        lines.add(Arrays.asList("--ideal", "--spin-us", "50", "-h"));
+        assertEquals(2, parseAlike(lines));
+    }
+
+    /** Gives each command line to both parsers and asserts the same answer; returns how many were accepted. */
+    private static int parseAlike(List<List<String>> lines) throws IOException {
         Process c = new ProcessBuilder(NativeBuild.target("build/options_dump").getPath(), "--serve")
                 .redirectError(ProcessBuilder.Redirect.INHERIT).start();
         OutputStream requests = c.getOutputStream();
         BufferedReader answers = new BufferedReader(new InputStreamReader(c.getInputStream(), StandardCharsets.UTF_8));
         int accepted = 0;
-        int cases = 5000;
         try {
-            for (int i = 0; i < cases; i++) {
-                List<String> args = commandLine(random);
+            for (int i = 0; i < lines.size(); i++) {
+                List<String> args = lines.get(i);
                 byte[] body = String.join("\0", args).getBytes(StandardCharsets.UTF_8);
                 requests.write(("args " + args.size() + " " + body.length + "\n").getBytes(StandardCharsets.US_ASCII));
                 requests.write(body);
@@ -67,7 +90,7 @@ class OptionsDifferentialTest {
             requests.close();
             NativeBuild.waitFor(c);
         }
-        assertTrue(accepted > cases / 5 && accepted < cases * 4 / 5, accepted + " of " + cases + " accepted");
+        return accepted;
     }
 
     private static String pick(Random r, String[] pool) {

@@ -73,7 +73,7 @@ class RunOptionsParserTest {
             "--runtime-name", "temurin-25", "--out", "o", "--dataset", "data/stay", "--policy", "queue",
             "--covariance", "--memory", "allocating", "--estimate", "best", "--resample=multinomial", "--init",
             "uniform", "--seed", "-9", "--time-scale", "0.5", "--warmup", "2.5", "--spin-us", "100", "--gc-log",
-            "--force", "--ideal"});
+            "--force"});
         assertEquals(250, o.particles);
         assertEquals(3, o.number);
         assertEquals("temurin-25", o.effectiveRuntimeName());
@@ -88,12 +88,27 @@ class RunOptionsParserTest {
         assertEquals(0.5, o.timeScale);
         assertEquals(2.5, o.warmupS);
         assertEquals(100, o.spinUs);
-        assertTrue(o.gcLog && o.force && o.ideal);
-        assertEquals("IdealTest", o.testFolder());
+        assertTrue(o.gcLog && o.force && !o.ideal);
+        assertEquals("QueueTest", o.testFolder());
         MclConfig c = o.mclConfig();
         assertEquals(250, c.particles);
         assertEquals(-9, c.seed);
         assertTrue(c.covariance);
+    }
+
+    @Test
+    void anIdealRunRefusesWhatItCannotApply() throws BadInputException {
+        // both were accepted and ignored: --spin-us recorded as parameters.spinUs though no release
+        // was spun for, --area-size with --engine scj though an ideal run has no SCJ areas
+        assertEquals("--spin-us: an ideal run has no releases to spin before (--ideal)",
+                error("--ideal", "--spin-us", "100"));
+        assertEquals("--spin-us: an ideal run has no releases to spin before (--ideal)",
+                error("--engine", "rtsj", "--ideal", "--spin-us", "1"));
+        assertEquals("--area-size: an ideal run has no SCJ memory areas (--ideal)",
+                error("--engine", "scj", "--ideal", "--area-size", "mission=100000"));
+        RunOptions o = RunOptionsParser.parse(new String[] {"--ideal", "--spin-us", "0", "--gc-log", "--warmup", "1"});
+        assertTrue(o.ideal && o.spinUs == 0 && o.gcLog);
+        assertEquals("IdealTest", RunOptionsParser.parse(new String[] {"--engine", "scj", "--ideal"}).testFolder());
     }
 
     private static String error(String... args) {

@@ -92,6 +92,7 @@ public final class MatrixPlanner {
         org.jmclbench.tooling.load.LoadSettings loadSettings = spec.loadSettings != null ? spec.loadSettings
                 : org.jmclbench.tooling.load.LoadSettings.defaults();
         List<String> workloadArgs = new ArrayList<>();
+        List<String> argWhere = new ArrayList<>();
         for (Sourced<String> a : spec.workloadArgs) {
             if (a.value().isBlank()) {
                 // it would pass an empty argument, which the workload refuses, under the run key of no argument
@@ -102,7 +103,11 @@ public final class MatrixPlanner {
                     throw new BadUsageException(a.where() + ": '" + w + "' is set by the runner (use the matrix option)");
                 }
                 workloadArgs.add(w);
+                argWhere.add(a.where());
             }
+        }
+        if (policies.contains("ideal")) {
+            refuseWhatIdealRunsRefuse(workloadArgs, argWhere);
         }
         int repeat = spec.repeat != null ? spec.repeat : MatrixDefaults.REPEAT;
         long seed = spec.seed != null ? spec.seed : MatrixDefaults.SEED;
@@ -152,6 +157,24 @@ public final class MatrixPlanner {
         List<PlannedRun> ordered = order(mine, repeat, orderSeed);
         return new ResolvedMatrix(runtimes, profiles, engines, memory, policies, particles, datasets, List.copyOf(loads), loadSettings, repeat, seed, orderSeed, timeScale,
                 spec.timeoutS, pinCpu, List.copyOf(workloadArgs), db, nativeBinary, spec.shard, ordered, all.size());
+    }
+
+    /**
+     * The workload refuses what an ideal run cannot apply (a spin before each release, SCJ area
+     * sizes: exit 2, IdealEngine), so a matrix with the policy ideal and such a --workload-arg
+     * would record its ideal runs failed, one by one: refused here instead, before anything runs.
+     */
+    private static void refuseWhatIdealRunsRefuse(List<String> args, List<String> where) {
+        for (int i = 0; i < args.size(); i++) {
+            String[] nameValue = args.get(i).split("=", 2);
+            String value = nameValue.length == 2 ? nameValue[1] : i + 1 < args.size() ? args.get(i + 1) : "";
+            boolean spin = nameValue[0].equals("--spin-us") && value.matches("\\+?0*[1-9][0-9]*");
+            if (spin || nameValue[0].equals("--area-size")) {
+                throw new BadUsageException(where.get(i) + ": '" + nameValue[0] + "' with the policy ideal: an ideal run"
+                        + (spin ? " has no releases to spin before" : " has no SCJ memory areas")
+                        + " (drop ideal from --policies, or give it a matrix of its own)");
+            }
+        }
     }
 
     /**

@@ -39,6 +39,17 @@ class BadInputTest extends FakeJvmHome {
     }
 
     @Test
+    void whatAnIdealRunRefusesIsRefusedByTheMatrixThatPlansOne() {
+        // the workload refuses --ideal with a spin or SCJ area sizes (exit 2): each ideal run of the
+        // matrix would have been recorded failed
+        assertMatrixRejected("--workload-arg: '--spin-us' with the policy ideal: an ideal run has no releases to spin"
+                + " before", "--policies", "skip,ideal", "--workload-arg", "--spin-us 50");
+        assertMatrixRejected("--workload-arg: '--area-size' with the policy ideal: an ideal run has no SCJ memory areas",
+                "--policies", "ideal", "--engines", "scj", "--workload-arg", "--area-size=mission=100000");
+        assertMatrixRejected("'--spin-us' with the policy ideal", "--policies", "ideal", "--workload-arg", "--spin-us=+7");
+    }
+
+    @Test
     void unknownProfile() {
         assertMatrixRejected("--profiles: unknown profile component 'g2'", "--profiles", "g1,g2+fifo");
     }

@@ -45,6 +45,17 @@ class PlannerTest {
     }
 
     @Test
+    void aSpinIsPlannedWhereNoRunIsIdeal() throws Exception {
+        Fixtures.home(dir);
+        String jvm = Fixtures.fakeJava(dir, "jvm", "ok", 0, null, 21).toString();
+        assertEquals(1, plan("java", jvm, "profiles", "g1", "policies", "skip", "datasets", "tiny", "particles", "100",
+                "workload-arg", "--spin-us 50").plan().size());
+        // a spin of 0 is none: the workload takes it with --ideal
+        assertEquals(1, plan("java", jvm, "profiles", "g1", "policies", "ideal", "datasets", "tiny", "particles", "100",
+                "workload-arg", "--spin-us 0").plan().size());
+    }
+
+    @Test
     void shardsPartitionTheMatrixAndTheOrderFollowsTheSeed() throws Exception {
         Fixtures.home(dir);
         String jvm = Fixtures.fakeJava(dir, "jvm", "ok", 0, null, 21).toString();

@@ -27,6 +27,17 @@ final class DataGrammar {
     static final int NUM_SYNTAX = 1;
     static final int NUM_NON_FINITE = 2;
     static final int NUM_OVERFLOW = 3;
+    static final int NUM_OUT_OF_RANGE = 4;
+
+    /**
+     * The largest magnitude of a data value (docs/FORMATS.md 1.1): 1e9 s of time is 1e18 ns, well
+     * inside a 64-bit release time with room for the clock's origin and the deadlines; 1e9 m or rad
+     * is far beyond any robot's, and keeps the filter's sums and squares finite (a 1e308 increment
+     * made every later estimate NaN).
+     */
+    public static final double VALUE_MAX = 1e9;
+    /** VALUE_MAX as the messages write it (the C reader's words too). */
+    static final String VALUE_MAX_TEXT = "1e9";
 
     private DataGrammar() {
     }
@@ -136,7 +147,7 @@ final class DataGrammar {
     }
 
     /**
-     * Parses {@code b[off..off+len)} as a finite double into {@code out[0]}: the value correctly
+     * Parses {@code b[off..off+len)} as a double of magnitude at most VALUE_MAX into {@code out[0]}: the value correctly
      * rounded, as C's strtod gives it, since the grammar leaves no syntax on which they differ.
      */
     static int parseNumber(byte[] b, int off, int len, double[] out) {
@@ -147,14 +158,18 @@ final class DataGrammar {
         if (Double.isInfinite(v)) {
             return NUM_OVERFLOW;
         }
+        if (Math.abs(v) > VALUE_MAX) {
+            return NUM_OUT_OF_RANGE;
+        }
         out[0] = v;
         return NUM_OK;
     }
 
     /** The words of a number's problem with the quoted token, as both readers write it. */
     static String numberProblem(int r, byte[] b, int off, int len) {
-        return (r == NUM_SYNTAX ? "not a number" : "not a finite number") + ": '" + quote(b, off, len) + "'"
-                + (r == NUM_OVERFLOW ? " (overflows)" : "");
+        return (r == NUM_SYNTAX ? "not a number" : r == NUM_OUT_OF_RANGE ? "out of range" : "not a finite number")
+                + ": '" + quote(b, off, len) + "'" + (r == NUM_OVERFLOW ? " (overflows)"
+                : r == NUM_OUT_OF_RANGE ? " (more than " + VALUE_MAX_TEXT + " in magnitude)" : "");
     }
 
     /**

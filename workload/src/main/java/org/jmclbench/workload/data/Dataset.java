@@ -8,6 +8,7 @@ import java.io.File;
 import java.util.Properties;
 
 import org.jmclbench.core.mcl.Playground;
+import org.jmclbench.workload.BadInputException;
 
 /** One recorded run of the robot (docs/FORMATS.md section 1): odometry, laser and ground truth, by columns. */
 public final class Dataset {
@@ -99,6 +100,24 @@ public final class Dataset {
             d = Math.max(d, realTime[realTime.length - 1]);
         }
         return d;
+    }
+
+    /**
+     * Refuses a time scale that takes an event past a run's largest time, DataGrammar.VALUE_MAX
+     * seconds (docs/FORMATS.md 2): each time is within it, but times 1000 of them may not be, and
+     * their nanoseconds would overflow the 64-bit release times. The C baseline's
+     * jm_dataset_check_time_scale.
+     */
+    public void checkTimeScale(double timeScale) throws BadInputException {
+        checkScaled(odoTime, odometryFile, timeScale);
+        checkScaled(laserTime, laserFile, timeScale);
+    }
+
+    private static void checkScaled(double[] time, File file, double timeScale) throws BadInputException {
+        if (time[time.length - 1] * timeScale > DataGrammar.VALUE_MAX) {
+            throw BadInputException.ofOption("--time-scale", "scales the last time of " + file.getPath() + " past "
+                    + DataGrammar.VALUE_MAX_TEXT + " s, the largest time of a run");
+        }
     }
 
     /** The odometry and laser events merged by time, as the dispatcher releases them. */

@@ -13,14 +13,20 @@ import java.util.Random;
  * at the bytes both readers could disagree on (CR, NUL, VT, a byte-order mark, signs, exponents).
  */
 final class DataMutator {
-    /** Numbers whose reading is hard to get right: halfway cases, subnormals, the range's edges. */
+    /** Numbers whose reading is hard to get right within the data's range (VALUE_MAX): halfway cases, subnormals, its edges. */
     private static final String[] HARD = {"0", "-0", "+0.", ".0", "0.0e0", "4.9e-324", "2.4703282292062327e-324",
-        "2.4703282292062328e-324", "2.2250738585072011e-308", "2.2250738585072012e-308", "1.7976931348623157e308",
-        "1.7976931348623158e308", "1.7976931348623159e308", "9007199254740993", "9007199254740992.5",
-        "0.1000000000000000055511151231257827021181583404541015625", "1e-400", "1e400", "1e0000000000000000000001",
-        "1e-99999999999999999999", "123456789012345678901234567890e-30", "0.3", "5e-324", "1e23", "8.41e21",
-        "3.0517578125e-05", "1.00000000000000011102230246251565404236316680908203125",
-        "7.2057594037927933e16", "1.", ".5", "+.5", "-.5e+3", "1E+2", "1e-2"};
+        "2.4703282292062328e-324", "2.2250738585072011e-308", "2.2250738585072012e-308",
+        "0.1000000000000000055511151231257827021181583404541015625", "1e-400", "1e0000000000000000000001",
+        "1e-99999999999999999999", "123456789012345678901234567890e-30", "0.3", "5e-324",
+        "3.0517578125e-05", "1.00000000000000011102230246251565404236316680908203125", "1.", ".5", "+.5", "-.5e+3",
+        "1E+2", "1e-2", "1e9", "-1000000000", "1.00000000000000000001e9"};
+    /**
+     * Beyond the data's range: the double range's edges and halfway cases there, and the doubles just above
+     * VALUE_MAX. Drawn less often than HARD: any one of them rejects the whole file.
+     */
+    private static final String[] BEYOND = {"1.7976931348623157e308", "1.7976931348623158e308", "1.7976931348623159e308",
+        "9007199254740993", "9007199254740992.5", "1e400", "1e23", "8.41e21", "7.2057594037927933e16",
+        "1000000000.0000001", "-1.0000000000000002e9"};
     /** The bytes mutations insert: what separates, ends, signs or breaks a number. */
     private static final byte[] SPECIAL = {0, '\r', '\n', '\t', ' ', 0x0b, 0x0c, '#', '!', '+', '-', '.', 'e', 'E',
         'x', 'd', 'f', 'n', 'a', 'i', '0', '9', '=', ',', ';', (byte) 0xef, (byte) 0xbb, (byte) 0xbf, (byte) 0xa0,
@@ -37,14 +43,25 @@ final class DataMutator {
         double v = random.nextDouble() * magnitude * (random.nextInt(8) == 0 ? -1 : 1);
         switch (random.nextInt(9)) {
             case 0:
-                return HARD[random.nextInt(HARD.length)];
+                return random.nextInt(8) == 0 ? BEYOND[random.nextInt(BEYOND.length)] : HARD[random.nextInt(HARD.length)];
             case 1:
                 return String.format(Locale.ROOT, "%.3f", v);
             case 2:
                 return Long.toString((long) (v * 1000));
-            case 3:
-                return digits(1 + random.nextInt(400)) + "." + digits(random.nextInt(60))
-                        + (random.nextBoolean() ? "e-" + random.nextInt(400) : "");
+            case 3: {
+                // long mantissas: now and then as they are (beyond VALUE_MAX, or the double range, past 9 digits),
+                // else scaled into the data's range, down to subnormals and underflow
+                int n = 1 + random.nextInt(400);
+                String mantissa = digits(n) + "." + digits(random.nextInt(60));
+                switch (random.nextInt(16)) {
+                    case 0:
+                        return mantissa;
+                    case 1:
+                        return mantissa + "e-" + (n - 1 + random.nextInt(400));
+                    default:
+                        return mantissa + "e" + (random.nextInt(22) - 14 - (n - 1));
+                }
+            }
             case 4:
                 return Double.toString(v).toUpperCase(Locale.ROOT);
             default:
@@ -72,7 +89,7 @@ final class DataMutator {
     /** An event file of about {@code columns} columns: sorted times, blank and comment lines, CRLF now and then. */
     byte[] eventFile(int columns) {
         StringBuilder b = new StringBuilder();
-        int rows = random.nextInt(12);
+        int rows = random.nextInt(10);
         double t = 0;
         String end = random.nextInt(5) == 0 ? "\r\n" : "\n";
         for (int r = 0; r < rows; r++) {

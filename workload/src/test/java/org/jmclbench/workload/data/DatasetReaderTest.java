@@ -88,6 +88,18 @@ class DatasetReaderTest {
         assertEquals(3, t.updateCount());
     }
 
+    @Test
+    void acceptsValuesUpToTheLargestMagnitudeAndTimeScalesThatKeepTimesWithinIt() throws Exception {
+        Dataset d = DatasetReader.readFiles(file("o", "1e6  1e9  -1e9  0\n"), file("l", "1e6  -1e9\n"),
+                file("r", "1e9  0  0  0\n"));
+        assertEquals(-1e9, d.laserAngle[0]);
+        assertEquals(1e9, d.realTime[0]);
+        d.checkTimeScale(1000); // 1e6 s times 1000 is 1e9 s: the largest time of a run, still in
+        BadInputException e = assertThrows(BadInputException.class, () -> d.checkTimeScale(1000.0000001));
+        assertEquals("--time-scale: scales the last time of " + new File(tmp, "o").getPath()
+                + " past 1e9 s, the largest time of a run", e.getMessage());
+    }
+
     /** Runs the workload on bad odometry and returns its stderr after checking exit code 2. */
     private String rejectOdometry(String odometry) throws IOException {
         File odo = file("odometry.txt", odometry);
@@ -118,6 +130,9 @@ class DatasetReaderTest {
         {"0.05  1.0f  0  0\n", ":1: not a number: '1.0f'"},
         {"0.05  0x1p3  0  0\n", ":1: not a number: '0x1p3'"},
         {"0.05  1e999  0  0\n", ":1: not a finite number: '1e999' (overflows)"},
+        {"0.05  1e308  0  0\n", ":1: out of range: '1e308' (more than 1e9 in magnitude)"},
+        {"0.05  0  -1.0000001e9  0\n", ":1: out of range: '-1.0000001e9' (more than 1e9 in magnitude)"},
+        {"0.05  0  0  0\n9.3e9  0  0  0\n", ":2: out of range: '9.3e9' (more than 1e9 in magnitude)"},
         {"-0.05  0.01  0.0  0.001\n", ":1: negative time -0.05"},
         {"0.05  0.01  0.0  0.001\n0.04  0.01  0.0  0.001\n", ":2: time 0.04 is before the previous line's (not sorted by time)"},
         {"", ": empty file (no data lines)"},

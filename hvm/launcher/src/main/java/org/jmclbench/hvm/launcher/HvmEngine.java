@@ -1,5 +1,6 @@
 package org.jmclbench.hvm.launcher;
 
+import java.io.File;
 import java.io.IOException;
 
 import org.jmclbench.workload.BadInputException;
@@ -9,7 +10,9 @@ import org.jmclbench.workload.UnsupportedRunException;
 import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
+import org.jmclbench.scj.MissionConfiguration;
 import org.jmclbench.workload.scj.ScjEngine;
+import org.jmclbench.workload.scj.ScjRun;
 
 /**
  * {@code --engine hvm}: the same SCJ mission as {@link ScjEngine}, with its options and checks,
@@ -50,13 +53,19 @@ public final class HvmEngine extends ScjEngine {
     }
 
     /**
-     * The scj engine's checks, then the HVM's limits ({@link HvmLimits}): a run past them is
-     * unsupported; then HVM_SRC ({@link HvmRun#checkSource}).
+     * The scj engine's checks, then the HVM's limits ({@link HvmLimits}: its arrays, then its heap,
+     * which must hold the areas' backing store): a run past them is unsupported; then HVM_SRC
+     * ({@link HvmRun#checkSource}).
      */
     @Override
     public void validate(RunOptions options, Dataset dataset) throws BadInputException, UnsupportedRunException {
         super.validate(options, dataset);
         String beyond = HvmLimits.beyond(options.mclConfig(), dataset.odometryCount() + dataset.laserCount());
+        if (beyond == null) {
+            MissionConfiguration config = ScjRun.configuration(options, options.mclConfig(), options.timeScale, true);
+            beyond = HvmLimits.beyondHeap(HvmRun.areaSizes(config, dataset),
+                    HvmLimits.heapBytes(new File(System.getProperty("jmclbench.home", "."))), !options.areaSizes.isEmpty());
+        }
         if (beyond != null) {
             throw new UnsupportedRunException(beyond);
         }

@@ -116,12 +116,7 @@ public final class HvmRun {
      * immortal memory and the handlers' stacks in mission memory (unless set with --area-size).
      */
     static long[] areaSizes(MissionConfiguration config, Dataset d) {
-        MissionSizes s = new MissionSizes(config, d.odometryCount(), d.laserCount());
-        long[] sizes = new long[MissionSizes.AREA_COUNT];
-        for (int a = 0; a < sizes.length; a++) {
-            sizes[a] = MissionRunFile.icecapSize(config, s, a);
-        }
-        return sizes;
+        return MissionRunFile.icecapSizes(config, new MissionSizes(config, d.odometryCount(), d.laserCount()));
     }
 
     /** The area icecap reported full, named by its size; null when no area overflowed. */

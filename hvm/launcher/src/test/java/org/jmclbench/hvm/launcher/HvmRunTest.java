@@ -121,6 +121,31 @@ class HvmRunTest {
     }
 
     @Test
+    void areasTheHeapCannotHoldAreUnsupportedBeforeAnythingIsBuilt() throws Exception {
+        // run-hvm --area-size mission=2000000000 built the executable, then failed (exit 1) with
+        // "memory area of 268435456 bytes (an icecap-internal area) overflowed ... 22 bytes"
+        File project = projectHome();
+        Assumptions.assumeTrue(project != null, "no hvm/ folder above the working directory");
+        // the project's heap, and no build script: reaching the build would be a failure (1)
+        File hvm = new File(tmp, "hvm");
+        assertTrue(hvm.mkdirs());
+        java.nio.file.Files.copy(new File(project, HvmLimits.HEAP_FILE).toPath(), new File(hvm, "hvm.properties").toPath());
+        System.setProperty("jmclbench.home", tmp.getPath());
+        File ds = SyntheticDataset.write(new File(tmp, "ds-heap"), 2.0, 3, true, true);
+        File o = new File(tmp, "out");
+        assertEquals(3, call.run("run", "--engine", "hvm", "--area-size", "mission=2000000000", "--dataset", ds.getPath(),
+                "-O", o.getPath()), call.err());
+        assertTrue(call.err().matches("jmclbench: unsupported: --area-size: the SCJ backing store of these areas is"
+                + " 8,00[0-9,]+ bytes, more than the HVM's heap holds \\([0-9,]+ bytes of its [0-9,]+,"
+                + " hvm/hvm.properties; docs/HVM.md\\)\n"), call.err());
+        assertFalse(o.exists(), "nothing recorded");
+        // one the heap holds goes on to the build
+        assertEquals(1, call.run("run", "--engine", "hvm", "--area-size", "mission=60000000", "--dataset", ds.getPath(),
+                "-O", o.getPath()), call.err());
+        assertTrue(call.err().contains("build-mission.sh"), call.err());
+    }
+
+    @Test
     void aQueueRunAgreesWithTheIdealComputationOfItsJobs() throws Exception {
         assumeHvm();
         // Under queue every job runs to completion, so each estimate depends only on the jobs

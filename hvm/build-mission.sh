@@ -23,7 +23,11 @@ HERE=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)
 ROOT=$(dirname "$HERE")
 # The VM's Java heap holds the SCJ backing store (immortal, mission and private memories); its
 # size is hvm/hvm.properties', which the hvm engine checks area sizes against before a run.
-heap=$(sed -n 's/^heap=//p' "$HERE/hvm.properties" 2>/dev/null || true)
+# (read with bash alone: a missing tool is need_tools' line below, not an empty heap)
+heap=
+while IFS= read -r line || [ -n "$line" ]; do
+    case "$line" in heap=*) heap=${line#heap=} ;; esac
+done 2>/dev/null < "$HERE/hvm.properties" || true
 mode=${JMCLBENCH_HVM_MODE:-compiled}
 . "$HERE/script-options.sh"
 [[ $heap =~ ^[1-9][0-9]{0,17}$ ]] || bad "hvm/hvm.properties: heap: '$heap' is not a positive number of bytes"

@@ -525,6 +525,19 @@ static int count_cpu_times(const char *dir, const char *name)
 	return n;
 }
 
+/* Run 1 of test <test> under <out>: no job with a CPU time, summary.json's cpuTime false; out_text holds it. */
+static void check_no_cpu_times(const char *out, const char *test)
+{
+	char dir[400], path[500];
+
+	snprintf(dir, sizeof(dir), "%s/native/nocov/50/%s/1", out, test);
+	CHECK_INT(count_cpu_times(dir, "odoData.txt"), 0);
+	CHECK_INT(count_cpu_times(dir, "laserData.txt"), 0);
+	snprintf(path, sizeof(path), "%s/summary.json", dir);
+	jt_slurp(path, out_text, sizeof(out_text));
+	CHECK_CONTAINS(out_text, "\"cpuTime\": false");
+}
+
 /* --no-cpu-time: no job has a CPU time, in the ideal and the real-time engine, and summary.json says so. */
 static void test_no_cpu_time(const char *dataset)
 {
@@ -537,20 +550,10 @@ static void test_no_cpu_time(const char *dataset)
 
 	snprintf(out, sizeof(out), "%s/out-nocpu", tmp);
 	CHECK_INT(run(ideal), 0);
-	snprintf(dir, sizeof(dir), "%s/native/nocov/50/IdealTest/1", out);
-	CHECK_INT(count_cpu_times(dir, "odoData.txt"), 0);
-	CHECK_INT(count_cpu_times(dir, "laserData.txt"), 0);
-	snprintf(path, sizeof(path), "%s/summary.json", dir);
-	jt_slurp(path, out_text, sizeof(out_text));
-	CHECK_CONTAINS(out_text, "\"cpuTime\": false");
+	check_no_cpu_times(out, "IdealTest");
 
 	CHECK_INT(run(skip), 0);
-	snprintf(dir, sizeof(dir), "%s/native/nocov/50/SkipTest/1", out);
-	CHECK_INT(count_cpu_times(dir, "odoData.txt"), 0);
-	CHECK_INT(count_cpu_times(dir, "laserData.txt"), 0);
-	snprintf(path, sizeof(path), "%s/summary.json", dir);
-	jt_slurp(path, out_text, sizeof(out_text));
-	CHECK_CONTAINS(out_text, "\"cpuTime\": false");
+	check_no_cpu_times(out, "SkipTest");
 	CHECK_CONTAINS(out_text, "\"cpuTime\": \"off (--no-cpu-time)\"");
 
 	/* and without it, every job that ran has one */

@@ -134,20 +134,18 @@ public final class CompareCommand implements Callable<Integer> {
         }
         Map<String, List<StoredRun>> groupsA = group(runsA, pairByConfig);
         Map<String, List<StoredRun>> groupsB = group(runsB, pairByConfig);
-        if (db == null && sameFile(databases.get(0), databases.get(1)) && sameRuns(groupsA, groupsB)) {
-            // as --db X --a C --b C: each configuration would meet its own runs, a ratio of 1 as if measured twice
+        // A's own measurements on the B side (one store given twice, a copy of A, a merge that holds
+        // it) would compare runs with themselves: a ratio of 1 as if measured twice
+        long shared = db == null ? sharedMeasurements(groupsA, groupsB) : 0;
+        if (shared > 0 && sameFile(databases.get(0), databases.get(1))) {
             throw new BadUsageException("compare: A " + databases.get(0) + " and B " + databases.get(1) + " are the same store"
                     + " and each side would hold the same runs: nothing to compare (two configurations of one store:"
                     + " --db FILE --a CONFIG --b CONFIG)");
         }
-        if (db == null) {
-            // a copy of a store, or a merge that holds it, brings A's measurements to B: not a second sample
-            long shared = sharedMeasurements(groupsA, groupsB);
-            if (shared > 0) {
-                throw new BadUsageException("compare: B " + databases.get(1) + " holds " + Counts.of(shared, "run")
-                        + " of A " + databases.get(0) + " (the same run key and measured results: a copy of A or a merge"
-                        + " that holds it): each side must be measured apart");
-            }
+        if (shared > 0) {
+            throw new BadUsageException("compare: B " + databases.get(1) + " holds " + Counts.of(shared, "run")
+                    + " of A " + databases.get(0) + " (the same run key and measured results: a copy of A or a merge"
+                    + " that holds it): each side must be measured apart");
         }
         out.println("A: " + nameA);
         out.println("B: " + nameB);
@@ -181,22 +179,6 @@ public final class CompareCommand implements Callable<Integer> {
         } catch (IOException e) {
             return false; // StoredRuns.open has read both: a path that cannot be resolved now is not known to be the other
         }
-    }
-
-    /** Whether every setting both sides have holds the very same runs on each (by run key). */
-    private static boolean sameRuns(Map<String, List<StoredRun>> groupsA, Map<String, List<StoredRun>> groupsB) {
-        boolean any = false;
-        for (Map.Entry<String, List<StoredRun>> e : groupsA.entrySet()) {
-            List<StoredRun> gb = groupsB.get(e.getKey());
-            if (gb == null) {
-                continue;
-            }
-            if (!keys(e.getValue()).equals(keys(gb))) {
-                return false;
-            }
-            any = true;
-        }
-        return any;
     }
 
     /** How many runs the settings both sides have hold on both sides, the very same measurement (key and results). */

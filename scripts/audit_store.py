@@ -387,9 +387,26 @@ def check_series(con, key, folder, rc, note):
 
 
 def cell_key(cell):
-    """A report cell's configuration as the runs table spells it (the profile empty when none)."""
+    """A report cell's configuration as the runs table spells it (the profile empty when none), with
+    the machine label the report appends to its name (" @label") when the store holds several machines."""
+    name, at, label = cell["config"].rpartition(" @")
     return (cell["dataset"], cell["policy"], cell["particles"], cell["runtime"], cell["profile"] or "",
-            cell["engine"], cell["memory"], cell["load"])
+            cell["engine"], cell["memory"], cell["load"], label if at else None)
+
+
+def machine_labels(con, machine_ids):
+    """machine_id -> the label the report must give its runs: none for one machine; else the host
+    name, with the machine id where two machines share that host name (runs of two machines are
+    never pooled, docs/REPORT.md)."""
+    if len(machine_ids) < 2:
+        return {}
+    host = {m: h for m, h in con.execute("select machine_id, hostname from machines")}
+    hosts = [host.get(m) for m in machine_ids]
+    label = {}
+    for m in machine_ids:
+        h = host.get(m)
+        label[m] = str(m) if h is None else "%s (%s)" % (h, m) if hosts.count(h) > 1 else h
+    return label
 
 
 def main(argv):
@@ -419,8 +436,8 @@ def audit(argv):
     con = sqlite3.connect("file:%s?mode=ro" % db, uri=True)
     runs = con.execute("select run_key, run_dir, summary_json, runtime, profile, engine, memory, policy, particles, "
                        "dataset, load from runs where status = 'ok'").fetchall()
-    if len({m for (m,) in con.execute("select distinct machine_id from runs")}) > 1:
-        print("note: runs of more than one machine; the report keeps them apart, this check pools them by configuration")
+    machine_of = dict(con.execute("select run_key, machine_id from runs where status = 'ok'").fetchall())
+    label_of = machine_labels(con, set(machine_of.values()))
     compared, bad, worst, worst_at = 0, [], 0.0, None
     hdr_compared = 0
     per_run = {}
@@ -501,7 +518,8 @@ def audit(argv):
         data = report_data(report)
         by_cell = {}
         for key, run_dir, _, runtime, profile, engine, memory, policy, particles, dataset, load in runs:
-            by_cell.setdefault((dataset, policy, particles, runtime, profile or "", engine, memory, load or "none"), []).append(per_run[key])
+            by_cell.setdefault((dataset, policy, particles, runtime, profile or "", engine, memory, load or "none",
+                                label_of.get(machine_of[key])), []).append(per_run[key])
         seen = 0
         for cell in data["cells"]:
             rcs = by_cell.get(cell_key(cell))

@@ -4,6 +4,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -276,14 +277,7 @@ public final class ReportModel {
         m.runPeriod = starts.isEmpty() ? "no runs" : "runs started " + starts.get(0) + " to " + starts.get(starts.size() - 1);
         progress.accept("read " + Counts.of(runs.size(), "run"));
 
-        Map<String, StoredRuns.Machine> machineRows = store.machines();
-        if (runs.stream().map(r -> String.valueOf(r.machineId)).distinct().count() > 1) {
-            // Runs of two machines (merged stores) are never pooled: each runtime is shown per machine.
-            for (StoredRun r : runs) {
-                StoredRuns.Machine mc = machineRows.get(r.machineId);
-                r.machineLabel = mc != null && mc.hostname() != null ? mc.hostname() : String.valueOf(r.machineId);
-            }
-        }
+        labelMachines(runs, store.machines());
         Map<String, List<StoredRun>> byCell = new LinkedHashMap<>();
         for (StoredRun r : runs) {
             byCell.computeIfAbsent(r.dataset + "\u0000" + r.policy + "\u0000" + r.particles + "\u0000" + r.configOnMachine(),
@@ -315,6 +309,29 @@ public final class ReportModel {
         m.defaults = defaults(m, runs);
         m.charts = ChartSpecs.all(m);
         return m;
+    }
+
+    /**
+     * Runs of two machines (merged stores) are never pooled: each runtime is shown per machine,
+     * labelled by its host name, and by host name and machine id where two machines share a host
+     * name (cloned VMs, containers), so that the label alone keeps them apart.
+     */
+    static void labelMachines(List<StoredRun> runs, Map<String, StoredRuns.Machine> machineRows) {
+        Map<String, String> hostOf = new HashMap<>();
+        for (StoredRun r : runs) {
+            StoredRuns.Machine mc = machineRows.get(r.machineId);
+            hostOf.put(String.valueOf(r.machineId), mc != null && mc.hostname() != null ? mc.hostname() : null);
+        }
+        if (hostOf.size() < 2) {
+            return;
+        }
+        Map<String, Long> machinesPerHost = hostOf.values().stream().filter(Objects::nonNull)
+                .collect(Collectors.groupingBy(h -> h, Collectors.counting()));
+        for (StoredRun r : runs) {
+            String id = String.valueOf(r.machineId);
+            String host = hostOf.get(id);
+            r.machineLabel = host == null ? id : machinesPerHost.get(host) > 1 ? host + " (" + id + ")" : host;
+        }
     }
 
     private static Cell cell(StoredRuns store, List<StoredRun> group) {

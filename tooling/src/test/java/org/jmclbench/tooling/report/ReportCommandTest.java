@@ -219,6 +219,20 @@ class ReportCommandTest {
     }
 
     @Test
+    void twoMachinesOfOneHostNameAreNeverPooled() throws Exception {
+        Path merged = Files.copy(db, dir.resolve("same-host.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + merged); var st = c.createStatement()) {
+            st.execute("INSERT INTO machines VALUES ('m-2', 'bench-host', '6.8.0', 'AMD EPYC', 4, '[]')");
+            st.execute("UPDATE runs SET machine_id = 'm-2' WHERE repetition = 3");
+        }
+        Path page = dir.resolve("same-host-report");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", merged.toString(), "--out", page.toString(), "--no-export"));
+        String h = Files.readString(page.resolve("index.html"));
+        assertTrue(h.contains("\"config\":\"native @bench-host (m-2)\""), "the second machine, by host name and id");
+        assertFalse(h.contains("\"config\":\"native @bench-host\""), "no native pooled over both machines");
+    }
+
+    @Test
     void summaryJsonStandsInForMissingMetricRows() throws Exception {
         Path bare = Files.copy(db, dir.resolve("bare.db"));
         try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + bare); var st = c.createStatement()) {

@@ -12,7 +12,8 @@ import picocli.CommandLine.Parameters;
 @Command(name = "merge", mixinStandardHelpOptions = true,
         header = "Merges results databases into one.",
         description = {"Merges results databases into one: every run once (by run key; an ok run wins over a "
-                + "failed one), with its run folder copied. Example: merge A.db B.db --into C.db"})
+                + "failed one, and of two ok runs of one key the one already in the target stays, the other is counted "
+                + "as left out), with its run folder copied. Example: merge A.db B.db --into C.db"})
 public final class MergeCommand implements Callable<Integer> {
 
     @Parameters(arity = "1..*", paramLabel = "DB", description = "databases to merge")
@@ -29,7 +30,9 @@ public final class MergeCommand implements Callable<Integer> {
         try (RunRecorder target = RunRecorder.open(into, "--into")) {
             for (Path s : sources) {
                 StoreMerger.Outcome o = StoreMerger.merge(target, s);
-                System.out.println(s + ": " + o.taken() + " runs merged, " + o.kept() + " already in " + into);
+                System.out.println(s + ": " + o.taken() + " runs merged, " + o.kept() + " already in " + into
+                        + (o.measuredAgain() == 0 ? "" : ", " + o.measuredAgain() + " left out: " + into + " holds another"
+                        + " measurement under the same run key (the same configuration and repetition on this machine id)"));
             }
         }
         return 0;

@@ -24,8 +24,12 @@ import java.util.stream.Stream;
  */
 public final class StoreMerger {
 
-    /** How many runs a merge took from one source and how many it left because the target had them. */
-    public record Outcome(int taken, int kept) {
+    /**
+     * How many runs a merge took from one source, how many it left because the target had them, and
+     * how many of those it left out although they are other measurements: ok runs whose key (the
+     * same configuration and repetition on the same machine id) the target holds from another start.
+     */
+    public record Outcome(int taken, int kept, int measuredAgain) {
     }
 
     private StoreMerger() {
@@ -43,7 +47,7 @@ public final class StoreMerger {
         if (src.equals(target.dbFile()) || Files.isSameFile(src, target.dbFile())) {
             // every run of the source is already in the target: say so, not "0 already in"
             try (Statement s = target.connection().createStatement(); ResultSet rs = s.executeQuery("SELECT count(*) FROM runs")) {
-                return new Outcome(0, rs.next() ? rs.getInt(1) : 0);
+                return new Outcome(0, rs.next() ? rs.getInt(1) : 0, 0);
             }
         }
         ResultsDatabase.openToRead(source, null).close();
@@ -79,6 +83,12 @@ public final class StoreMerger {
                 }
                 try (ResultSet rs = s.executeQuery("SELECT count(*) FROM src.runs")) {
                     total = rs.next() ? rs.getInt(1) : 0;
+                }
+                int measuredAgain;
+                try (ResultSet rs = s.executeQuery("SELECT count(*) FROM src.runs r JOIN main.runs m ON m.run_key = r.run_key"
+                        + " WHERE r.status = 'ok' AND m.status = 'ok'"
+                        + " AND (r.started_at IS NOT m.started_at OR r.summary_json IS NOT m.summary_json)")) {
+                    measuredAgain = rs.next() ? rs.getInt(1) : 0;
                 }
                 Path srcBase = src.getParent();
                 for (String key : take) {
@@ -121,7 +131,7 @@ public final class StoreMerger {
                     deleteTree(target.runFolder(key));
                     Files.move(staging(target.runFolder(key)), target.runFolder(key));
                 }
-                return new Outcome(take.size(), total - take.size());
+                return new Outcome(take.size(), total - take.size() - measuredAgain, measuredAgain);
             } catch (SQLException | IOException e) {
                 if (!committed) { // once committed, a staged folder not yet swapped in is the only copy beside its row
                     ResultsDatabase.rollBack(conn, e);

@@ -30,7 +30,8 @@ import java.util.TreeMap;
  *     (methods under {@link Settings#jobCodePrefix}) during the window;</li>
  * <li>{@code classload} / {@code lock}: class loading or parking/monitor waits of the job's
  *     own handler thread (its name contains the task name) while the job ran;</li>
- * <li>{@code queued}: the job started late because another job held the robot;</li>
+ * <li>{@code queued}: the job started late because another job held the robot: the time that
+ *     job worked (a pause during it is {@code gc} or {@code safepoint}, not counted twice);</li>
  * <li>{@code os}: the job started late and nothing above explains it: the dispatcher or
  *     the handler woke late (the operating system's scheduling);</li>
  * <li>{@code preemption}: the job's wall time is well above its CPU time and pauses and
@@ -218,7 +219,11 @@ public final class Attribution {
                 break;
             }
             long end = b.endNs() >= 0 ? b.endNs() : b.startNs();
-            long o = Math.max(0, Math.min(end, j.startNs()) - Math.max(b.startNs(), j.releaseNs()));
+            long from = Math.max(b.startNs(), j.releaseNs());
+            long to = Math.min(end, j.startNs());
+            // a pause while the other job ran is counted once, as gc or safepoint (below, and in
+            // vmCauses): counted here too, it hid as much of an OS delay and overfilled the window
+            long o = Math.max(0, to - from) - overlap(stwUnion, from, to);
             if (b != j && o > 0) {
                 busy += o;
                 holders.add(b.task() + "#" + b.index());

@@ -128,7 +128,7 @@ public final class CapacityCommand implements Callable<Integer> {
                     runner.run(runner.remaining(false).stream().filter(r -> keys.contains(r.runKey())).toList(),
                             Progress.forConsole(out));
                     String notHeld = notHeld(all.db(), keys);
-                    search.record(n, notHeld);
+                    search.record(new CapacitySearch.Probe(n, notHeld, held(all.db(), keys), keys.size()));
                     out.printf(Locale.ROOT, "capacity: %s at %d particles: %s%n", c.label(), n,
                             notHeld == null ? "every job by its deadline" : notHeld);
                 }
@@ -162,6 +162,14 @@ public final class CapacityCommand implements Callable<Integer> {
         }
     }
 
+    /** How many runs of these keys completed with every job by its deadline. */
+    static int held(Path db, Set<String> runKeys) {
+        try (StoredRuns stored = StoredRuns.open(db, "--db")) {
+            return (int) stored.runs().stream().filter(r -> runKeys.contains(r.runKey) && r.ok()
+                    && deadlineMisses(r.summary()) == 0).count();
+        }
+    }
+
     /** tasks.all.deadlineMisses, or late + skipped + terminated from a summary written before that field. */
     static long deadlineMisses(JsonNode summary) {
         JsonNode all = summary.path("tasks").path("all");
@@ -184,6 +192,16 @@ public final class CapacityCommand implements Callable<Integer> {
         }
         out.println("Where the count above a bracket failed by one late job in one run, a repeated search may move the bracket"
                 + " a step: such brackets, and their ratios to C, are not separated comparisons.");
+        searches.forEach((c, s) -> {
+            List<CapacitySearch.Probe> above = s.heldAboveHigh();
+            if (!above.isEmpty()) {
+                out.println("Not monotone: " + c.label() + " failed at " + s.high() + ", yet above it "
+                        + above.stream().map(p -> p.particles() + " held in " + p.held() + " of " + Counts.of(p.repetitions(), "repetition"))
+                                .collect(Collectors.joining(", "))
+                        + ": its misses near the bracket are chance, so a repeated search may bracket it elsewhere, even"
+                        + " more than a step away (more --repeat, or a quieter machine, narrows that).");
+            }
+        });
     }
 
     /**

@@ -38,8 +38,14 @@ public final class CapacitySearch {
         }
     }
 
-    /** One probed count and why it did not hold ({@code notHeld} null: it held). */
-    public record Probe(int particles, String notHeld) {
+    /**
+     * One probed count and why it did not hold ({@code notHeld} null: it held); of its
+     * {@code repetitions}, {@code held} completed with every job by its deadline (-1, -1: not told).
+     */
+    public record Probe(int particles, String notHeld, int held, int repetitions) {
+        public Probe(int particles, String notHeld) {
+            this(particles, notHeld, -1, -1);
+        }
     }
 
     private final int from;
@@ -82,11 +88,18 @@ public final class CapacitySearch {
      * @throws IllegalStateException for a count the search did not ask for
      */
     public void record(int particles, String notHeld) {
+        record(new Probe(particles, notHeld));
+    }
+
+    /** {@link #record(int, String)} with how many of the count's repetitions held. */
+    public void record(Probe probe) {
+        int particles = probe.particles();
+        String notHeld = probe.notHeld();
         int expected = next();
         if (particles != expected) {
             throw new IllegalStateException("probed " + particles + ", the search asked for " + expected);
         }
-        probes.add(new Probe(particles, notHeld));
+        probes.add(probe);
         if (notHeld == null) {
             low = particles;
         } else {
@@ -115,6 +128,16 @@ public final class CapacitySearch {
 
     public List<Probe> probes() {
         return List.copyOf(probes);
+    }
+
+    /**
+     * The counts above {@link #high()} at which some repetition held, in increasing order: the
+     * outcome is not monotone in the load there (a noisy machine), so the bracket is as uncertain as
+     * those runs and a repeated search may place it elsewhere, even further than a step.
+     */
+    public List<Probe> heldAboveHigh() {
+        return probes.stream().filter(p -> high != null && p.particles() > high && p.held() > 0)
+                .sorted(java.util.Comparator.comparingInt(Probe::particles)).toList();
     }
 
     /** How the search ended; null while it runs. */

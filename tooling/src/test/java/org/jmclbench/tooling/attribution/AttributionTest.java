@@ -100,6 +100,20 @@ class AttributionTest {
     }
 
     @Test
+    void aPauseDuringTheJobItWaitedForIsTheGcNotAlsoQueuedAndTheRestIsTheOs() {
+        // update#0 holds the robot 0-50 ms, 30 ms of it inside a GC pause (10-40); predict#1, released
+        // at 10, starts only at 80: 10 ms waiting for update#0's work, 30 ms for the pause, 30 ms for the OS.
+        List<JobRecord> jobs = List.of(job("update", 0, 0, 0, 50, 100, "done", 20),
+                job("predict", 1, 10, 80, 85, 50, "late", 5));
+        JobAttribution a = Attribution.attribute(jobs, List.of(ev(VmEventKind.GC_PAUSE, 10, 40, null, "Serial")), DEFAULTS).get(0);
+        Map<String, Long> ns = new java.util.TreeMap<>();
+        a.causes().forEach(c -> ns.put(c.kind(), c.ns()));
+        assertEquals(Map.of("gc", 30 * MS, "os", 30 * MS, "queued", 10 * MS), ns, a.toString());
+        long sum = a.causes().stream().mapToLong(Cause::ns).sum();
+        assertTrue(sum <= a.windowEndNs() - a.windowStartNs(), "the causes add up to at most the window: " + a);
+    }
+
+    @Test
     void wallTimeFarAboveCpuTimeWithoutPausesIsPreemption() {
         List<JobAttribution> a = Attribution.attribute(List.of(job("predict", 0, 0, 0, 60, 50, "late", 10)), List.of(), DEFAULTS);
         assertEquals("preemption", a.get(0).primary().kind());

@@ -102,6 +102,37 @@ class CapacityCommandTest {
         assertEquals(">= 2.00x", CapacityCommand.ratio(c, jvm));
     }
 
+    /**
+     * Measured on the shared VM: two searches of native on the same 3 s dataset bracketed it at
+     * [8724, 9514] and [11314, 12338], the first with 11314 and 16000 each held in 1 of 2
+     * repetitions above its failing 9514. A count above the failing one that held in some
+     * repetition is said, so the bracket does not read as sharper than its runs.
+     */
+    @Test
+    void aCountAboveTheFailingOneThatHeldInSomeRepetitionIsSaidNotMonotone() {
+        CapacitySearch noisy = new CapacitySearch(100, 1600);
+        CapacitySearch sharp = new CapacitySearch(100, 1600);
+        for (CapacitySearch s : java.util.List.of(noisy, sharp)) {
+            for (int n = s.next(); n > 0; n = s.next()) {
+                // fails from 260 on, in every repetition but one at 400 in the noisy search
+                int held = n < 260 ? 2 : n == 400 && s == noisy ? 1 : 0;
+                s.record(new CapacitySearch.Probe(n, held == 2 ? null : "a job missed its deadline in " + (2 - held) + " of 2 runs",
+                        held, 2));
+            }
+        }
+        assertEquals(java.util.List.of(400), noisy.heldAboveHigh().stream().map(CapacitySearch.Probe::particles).toList());
+        assertEquals(noisy.high(), sharp.high(), "the same bracket either way");
+        java.util.Map<CapacityCommand.Configuration, CapacitySearch> searches = new java.util.LinkedHashMap<>();
+        searches.put(new CapacityCommand.Configuration("fake-17", "default", "javase", "preallocated"), noisy);
+        searches.put(new CapacityCommand.Configuration("native", "default", "native", "preallocated"), sharp);
+        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        CapacityCommand.print(new java.io.PrintStream(bytes, true, java.nio.charset.StandardCharsets.UTF_8), searches);
+        String out = bytes.toString(java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(out.contains("Not monotone: fake-17 javase preallocated failed at " + noisy.high()
+                + ", yet above it 400 held in 1 of 2 repetitions:"), out);
+        assertFalse(out.contains("Not monotone: native"), out);
+    }
+
     /** A configuration is compared with the C baseline of its own OS profile and memory style, not the first C row. */
     @Test
     void eachRowIsComparedWithTheCBaselineOfItsProfileAndMemoryStyle() {

@@ -1,6 +1,10 @@
 package org.jmclbench.tooling.store;
 
+import java.io.IOException;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.sql.Connection;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
@@ -12,21 +16,31 @@ import java.util.Map;
 import java.util.function.Function;
 
 import org.jmclbench.tooling.attribution.AttributionStore;
+import org.jmclbench.tooling.cli.BadUsageException;
 
 /**
  * Writes runs into a results database ({@link ResultsDatabase#openToWrite}): one file, the raw run
- * folders beside it under {@code runs/}. Every run is written in one transaction once it has ended,
+ * folders beside it under {@code runs/} (or {@code runs-<name>/} for a second store in the folder,
+ * {@link #claimRunsFolder}). Every run is written in one transaction once it has ended,
  * so a runner killed mid-run leaves no row for it, and a write that fails (a full disk) leaves the
  * rows before it as they were.
  */
 public final class RunRecorder implements AutoCloseable {
 
+    /** The run folders' folder of the first store to write in a folder. */
+    static final String RUNS = "runs";
+    /** In {@link #RUNS}, the file naming that store, so that a second store in the folder keeps its runs apart. */
+    static final String OWNER = "STORE";
+
     private final ResultsDatabase db;
     private final Connection conn;
+    /** {@link #RUNS}, or {@code runs-<store name>} for a store beside the one that owns {@code runs/}. */
+    private final String runsFolder;
 
-    private RunRecorder(ResultsDatabase db) {
+    private RunRecorder(ResultsDatabase db, String runsFolder) {
         this.db = db;
         this.conn = db.connection();
+        this.runsFolder = runsFolder;
     }
 
     /**
@@ -36,7 +50,41 @@ public final class RunRecorder implements AutoCloseable {
      * @throws org.jmclbench.tooling.cli.BadUsageException when the file is not a store this tool writes
      */
     public static RunRecorder open(Path dbFile, String option) {
-        return new RunRecorder(ResultsDatabase.openToWrite(dbFile, option));
+        ResultsDatabase db = ResultsDatabase.openToWrite(dbFile, option);
+        try {
+            return new RunRecorder(db, claimRunsFolder(db.baseDir(), db.file().getFileName().toString()));
+        } catch (IOException e) {
+            try {
+                db.close();
+            } catch (SQLException ignored) {
+                // the refusal below is what the user needs to see
+            }
+            throw new BadUsageException((option == null ? "" : option + ": ") + dbFile + ": cannot write its run folders in "
+                    + db.baseDir() + " (" + e.getClass().getSimpleName() + " " + e.getMessage() + ")");
+        }
+    }
+
+    /**
+     * The folder, below {@code base}, for the run folders of the store named {@code store}. A run
+     * folder is named by its run key alone, and two stores in one folder (results.db and
+     * evaluation.db) can hold one key: the first to write owns {@code runs/}, any other gets
+     * {@code runs-<its name>/}, so that neither overwrites the other's runs. An owner whose file is
+     * gone leaves {@code runs/} to the next store.
+     */
+    static String claimRunsFolder(Path base, String store) throws IOException {
+        Path owner = base.resolve(RUNS).resolve(OWNER);
+        Files.createDirectories(owner.getParent());
+        try {
+            Files.writeString(owner, store + "\n", StandardOpenOption.CREATE_NEW); // atomic: one claimant wins
+            return RUNS;
+        } catch (FileAlreadyExistsException taken) {
+            String holder = Files.readString(owner).strip();
+            if (holder.equals(store) || !Files.isRegularFile(base.resolve(holder))) {
+                Files.writeString(owner, store + "\n");
+                return RUNS;
+            }
+            return RUNS + "-" + (store.endsWith(".db") ? store.substring(0, store.length() - 3) : store);
+        }
     }
 
     public Path dbFile() {
@@ -50,7 +98,7 @@ public final class RunRecorder implements AutoCloseable {
 
     /** Where the raw folder of run {@code runKey} goes. */
     public Path runFolder(String runKey) {
-        return baseDir().resolve("runs").resolve(runKey);
+        return baseDir().resolve(runsFolder).resolve(runKey);
     }
 
     Connection connection() {

@@ -110,7 +110,29 @@ public final class StoreMerger {
                     // copied beside the target's folder and swapped in only once the rows are committed, so that a
                     // merge that fails leaves the target's folders as they were
                     Path stage = staging(target.runFolder(key));
-                    Path from = srcBase.resolve("runs").resolve(key);
+                    Path from = srcBase.resolve(RunRecorder.RUNS).resolve(key);
+                    String runDir = null;
+                    try (PreparedStatement q = conn.prepareStatement("SELECT run_dir FROM src.runs WHERE run_key = ?")) {
+                        q.setString(1, key);
+                        try (ResultSet rs = q.executeQuery()) {
+                            runDir = rs.next() ? rs.getString(1) : null;
+                        }
+                    }
+                    if (runDir != null) {
+                        // the source's own runs folder (runs/ or runs-<name>/), and the same place in the target's
+                        Path rel = Path.of(runDir);
+                        int at = indexOf(rel, key);
+                        if (at >= 0) {
+                            from = srcBase.resolve(rel.subpath(0, at + 1));
+                            Path inTarget = at + 1 < rel.getNameCount()
+                                    ? target.runFolder(key).resolve(rel.subpath(at + 1, rel.getNameCount())) : target.runFolder(key);
+                            try (PreparedStatement u = conn.prepareStatement("UPDATE main.runs SET run_dir = ? WHERE run_key = ?")) {
+                                u.setString(1, target.baseDir().relativize(inTarget).toString());
+                                u.setString(2, key);
+                                u.executeUpdate();
+                            }
+                        }
+                    }
                     try {
                         copyTree(from, stage);
                     } catch (IOException e) {
@@ -164,6 +186,16 @@ public final class StoreMerger {
             }
         }
         return out;
+    }
+
+    /** The index of the name {@code name} in {@code path}, or -1. */
+    private static int indexOf(Path path, String name) {
+        for (int i = 0; i < path.getNameCount(); i++) {
+            if (path.getName(i).toString().equals(name)) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     /** Replaces {@code to} by a copy of {@code from} (nothing when {@code from} does not exist). */

@@ -101,6 +101,38 @@ class StoreTest {
     }
 
     @Test
+    void twoStoresInOneFolderNeverOverwriteEachOthersRunFolders() throws Exception {
+        // results.db and evaluation.db side by side (quick's and evaluate's defaults), one configuration in
+        // both: one run key, which named one folder, runs/<key>, that the second store's run overwrote
+        Path first = storeOfJava17Runs("results/results.db", "100");
+        Path second = storeOfJava17Runs("results/evaluation.db", "100");
+        assertEquals(column(first, "SELECT run_key FROM runs"), column(second, "SELECT run_key FROM runs"));
+        assertEquals("runs", column(first, "SELECT run_dir FROM runs").get(0).split("/")[0]);
+        assertEquals("runs-evaluation", column(second, "SELECT run_dir FROM runs").get(0).split("/")[0]);
+        assertRunFoldersHoldTheirSummaries(first);
+        assertRunFoldersHoldTheirSummaries(second);
+        // merged elsewhere, the second store's runs come from its own folder and land in the target's runs/
+        Path merged = dir.resolve("merged/results.db");
+        assertEquals(0, Fixtures.cli("merge", second.toString(), "--into", merged.toString()).exitCode());
+        assertEquals("runs", column(merged, "SELECT run_dir FROM runs").get(0).split("/")[0]);
+        assertRunFoldersHoldTheirSummaries(merged);
+    }
+
+    /** Every ok run's run_dir holds the summary.json the store has for it. */
+    private static void assertRunFoldersHoldTheirSummaries(Path db) throws Exception {
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
+             ResultSet rs = s.executeQuery("SELECT run_dir, summary_json FROM runs WHERE status = 'ok'")) {
+            int n = 0;
+            while (rs.next()) {
+                Path summary = db.getParent().resolve(rs.getString(1)).resolve("summary.json");
+                assertEquals(rs.getString(2), Files.readString(summary), db + ": " + summary);
+                n++;
+            }
+            assertTrue(n > 0, db + " has ok runs");
+        }
+    }
+
+    @Test
     void mergingAStoreIntoItselfByAnotherNameChangesNothing() throws Exception {
         Path db = storeOfJava17Runs("A/results.db", "100");
         Path link = Files.createSymbolicLink(dir.resolve("link.db"), db);

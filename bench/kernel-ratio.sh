@@ -34,16 +34,7 @@ while [ $# -gt 0 ]; do
     esac
 done
 [ -f "$dataset/odometry.txt" ] || { echo "kernel-ratio: --dataset: $dataset: not a dataset folder" >&2; exit 2; }
-require_java "$java"
-
-if [ $build = 1 ]; then
-    build_benchmarks build/kernel-jobs
-fi
-mkdir -p "$out"
-load_before=$(cut -d' ' -f1-3 /proc/loadavg)
-
-# The C loop takes the iteration shape from the JMH options (-wi, -i, -r in seconds).
-c_loop_shape "${jmh_opts[@]}"
+start_java_c_comparison build/kernel-jobs
 
 # Each configuration runs in Java and then at once in C, so that on a shared machine both sides
 # meet about the same load; the same counts and iteration shape for both.

@@ -101,6 +101,20 @@ build_benchmarks() {
     fi
 }
 
+# The set-up of a Java/C comparison (kernel-ratio, record-cost), once its options are read: checks
+# $java, builds the JMH jar and the C timing loop $1 (a native/Makefile target) unless $build is 0,
+# makes $out, notes the load average in load_before, and gives the C loop the JMH options'
+# iteration shape (c_loop_shape "${jmh_opts[@]}"), so that both sides measure alike.
+start_java_c_comparison() {
+    require_java "$java"
+    if [ "$build" = 1 ]; then
+        build_benchmarks "$1"
+    fi
+    mkdir -p "$out"
+    load_before=$(cut -d' ' -f1-3 /proc/loadavg)
+    c_loop_shape "${jmh_opts[@]}"
+}
+
 # Ends the script on a leftover argument $1 that is not an option, as the jmclbench commands do.
 unexpected_argument() {
     echo "$me: $1: unexpected argument (see --help)" >&2

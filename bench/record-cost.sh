@@ -29,16 +29,7 @@ while [ $# -gt 0 ]; do
         *) unknown_option "$1" ;;
     esac
 done
-require_java "$java"
-
-if [ $build = 1 ]; then
-    build_benchmarks build/record-cost
-fi
-mkdir -p "$out"
-load_before=$(cut -d' ' -f1-3 /proc/loadavg)
-
-# The C loop takes the iteration shape from the JMH options (-wi, -i, -r in seconds).
-c_loop_shape "${jmh_opts[@]}"
+start_java_c_comparison build/record-cost
 
 echo "record-cost: JMH ($java)..." >&2
 "$java" -jar "$home/bench/target/benchmarks.jar" 'RecordCostBenchmark\.' "${jmh_opts[@]}" \

@@ -37,7 +37,7 @@ while [ $# -gt 0 ]; do
 done
 require_positive --particles "$particles"
 require_choice --policy "$policy" "skip|terminate|queue" ,
-[[ "$repeat" =~ ^[1-9][0-9]*$ ]] || { echo "scj-overhead: --repeat: $repeat: not a positive count" >&2; exit 2; }
+require_positive --repeat "$repeat"
 [ -d "$dataset" ] || { echo "scj-overhead: --dataset: $dataset: no such folder" >&2; exit 2; }
 [ -z "$out" ] || require_creatable --out "$out"
 command -v python3 >/dev/null || { echo "scj-overhead: python3 is needed to read summary.json" >&2; exit 1; }

@@ -88,6 +88,17 @@ class ScriptOptionsTest {
         assertBadInput("report-build", "report-build: RUNS: 0: not a positive count", "0");
     }
 
+    /**
+     * scj-overhead checked --repeat with its own pattern, which took a count past an int (and would
+     * have started that many runs); it is options.sh's positive count now. The missing dataset after
+     * it keeps a regression from starting the benchmark.
+     */
+    @Test
+    void scjOverheadTakesNoRepeatCountPastAnInt() throws Exception {
+        assertBadInput("scj-overhead", "scj-overhead: --repeat: 99999999999: not a positive count (1 to 2147483647)",
+                "--repeat", "99999999999", "--dataset", "/no/such/dataset");
+    }
+
     private static void assertBadInput(String script, String prefix, String... args) throws Exception {
         List<String> out = run(script, args);
         assertEquals("2", out.get(out.size() - 1), "exit status; output: " + out);

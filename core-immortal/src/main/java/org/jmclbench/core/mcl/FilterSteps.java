@@ -89,14 +89,9 @@ final class FilterSteps {
             est[1] = sy;
             est[2] = Angles.wrap2pi(Math.atan2(ss, sc));
         } else {
-            int best = 0;
-            for (int i = 1; i < n; i++) {
-                if ((i & pollMask) == 0 && abort.abortRequested()) {
-                    return false;
-                }
-                if (w[i] > w[best]) {
-                    best = i;
-                }
+            int best = Likelihood.heaviest(w, n, abort, pollMask);
+            if (best < 0) {
+                return false;
             }
             est[0] = px[best];
             est[1] = py[best];

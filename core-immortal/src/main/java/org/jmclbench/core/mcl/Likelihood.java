@@ -46,4 +46,22 @@ public final class Likelihood {
         }
         return true;
     }
+
+    /**
+     * The index of the heaviest of the weights w[0..n), the first one on a tie (the {@code max}
+     * estimate's particle); polls the abort signal before every block of particles
+     * ({@code pollMask + 1}) but the first; -1 when aborted.
+     */
+    public static int heaviest(double[] w, int n, AbortSignal abort, int pollMask) {
+        int best = 0;
+        for (int i = 1; i < n; i++) {
+            if ((i & pollMask) == 0 && abort.abortRequested()) {
+                return -1;
+            }
+            if (w[i] > w[best]) {
+                best = i;
+            }
+        }
+        return best;
+    }
 }

@@ -75,6 +75,26 @@ class LikelihoodTest {
         }
     }
 
+    @Test
+    void heaviestIsTheFirstLargestWeight() {
+        double[] w = {0.1, 0.3, 0.2, 0.3, 0.1};
+        assertEquals(1, Likelihood.heaviest(w, 5, AbortSignal.NEVER, 0));
+        assertEquals(0, Likelihood.heaviest(w, 1, AbortSignal.NEVER, 0));
+    }
+
+    @Test
+    void heaviestPollsEveryBlockAfterTheFirstAndStopsOnAbort() {
+        double[] w = new double[8];
+        w[7] = 1.0;
+        // pollMask 1: a poll before particles 2, 4 and 6 (particle 0 is the starting candidate, not visited)
+        AbortAt never = new AbortAt(Integer.MAX_VALUE);
+        assertEquals(7, Likelihood.heaviest(w, 8, never, 1));
+        assertEquals(3, never.polls());
+        AbortAt third = new AbortAt(3);
+        assertEquals(-1, Likelihood.heaviest(w, 8, third, 1));
+        assertEquals(3, third.polls());
+    }
+
     private static double score(double x, double y, double th, double[] a) {
         double s = 1;
         for (double angle : a) {

@@ -432,10 +432,9 @@ class EvaluationDocumentTest {
         Path out = dir.resolve("stale");
         Files.createDirectories(out.resolve("evaluation"));
         Files.writeString(out.resolve("evaluation/memory-99999.svg"), "<svg/>");
-        EvaluationDocument.write(small, "small.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
+        String doc = document(small, "small.db", out);
         assertFalse(Files.exists(out.resolve("evaluation/memory-99999.svg")), "a figure the document no longer shows");
         try (var written = Files.list(out.resolve("evaluation"))) {
-            String doc = Files.readString(out.resolve("EVALUATION.md"));
             written.filter(f -> f.toString().endsWith(".svg"))
                     .forEach(f -> assertTrue(doc.contains("evaluation/" + f.getFileName()), f + " is not in the document"));
         }
@@ -445,8 +444,7 @@ class EvaluationDocumentTest {
     void aStoreOfOneRunAndOneRepetitionSaysSoInTheSingular() throws Exception {
         Path one = ReportFixtures.write(ReportFixtures.oneRun(), dir, "one.db");
         Path out = dir.resolve("one");
-        EvaluationDocument.write(one, "one.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
-        String d = Files.readString(out.resolve("EVALUATION.md"));
+        String d = document(one, "one.db", out);
         assertTrue(d.contains("**Runs.** 1 run in the store, 1 completed. Each configuration and setting completed 1 repetition;"), d);
         ReportModel.Cell c = new ReportModel.Cell();
         c.metrics.put(TaskMetric.RESPONSE_P99.key("all"),
@@ -458,8 +456,7 @@ class EvaluationDocumentTest {
     void missingHvmAndVerificationAreSaidNotInvented() throws Exception {
         Path small = ReportFixtures.write(ReportFixtures.engines(), dir, "small.db");
         Path out = dir.resolve("small");
-        EvaluationDocument.write(small, "small.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
-        String d = Files.readString(out.resolve("EVALUATION.md"));
+        String d = document(small, "small.db", out);
         assertTrue(d.contains("**No data.** The store holds no completed run of the `hvm` runtime"), d);
         assertTrue(d.contains("none.json` does not exist"), d);
         assertTrue(d.contains("no JVM that ran several collectors"), d);
@@ -471,8 +468,7 @@ class EvaluationDocumentTest {
         FixtureDb f = ReportFixtures.breakdown();
         Path queue = ReportFixtures.write(f, dir, "queue.db");
         Path out = dir.resolve("queue");
-        EvaluationDocument.write(queue, "queue.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
-        String d = Files.readString(out.resolve("EVALUATION.md"));
+        String d = document(queue, "queue.db", out);
         List<StoredRun> stored;
         try (StoredRuns store = StoredRuns.open(queue, "--db")) {
             stored = store.runs();
@@ -499,6 +495,15 @@ class EvaluationDocumentTest {
     }
 
     /**
+     * The document written from {@code store} (named {@code label} in it; no cuts, no verification
+     * results) into {@code out}: EVALUATION.md and its figures in evaluation/.
+     */
+    private String document(Path store, String label, Path out) throws Exception {
+        EvaluationDocument.write(store, label, out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
+        return Files.readString(out.resolve("EVALUATION.md"));
+    }
+
+    /**
      * A scheduling store: temurin-25 under default, fifo and fifo+pinned (the pinned one slower to
      * release, faster to compute: fewer dropped jobs from later releases), skip and terminate, 100
      * and 6400 particles, {@code repetitions} each; the document written from it.
@@ -516,9 +521,7 @@ class EvaluationDocumentTest {
         f.durationS = 6;
         Path store = ReportFixtures.write(f, dir, "scheduling-" + repetitions + ".db");
         Path out = dir.resolve("scheduling-" + repetitions);
-        EvaluationDocument.write(store, "scheduling.db", out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(),
-                dir.resolve("none.json"));
-        String d = Files.readString(out.resolve("EVALUATION.md"));
+        String d = document(store, "scheduling.db", out);
         return d.substring(d.indexOf("### 2.7"), d.indexOf("### 2.8"));
     }
 

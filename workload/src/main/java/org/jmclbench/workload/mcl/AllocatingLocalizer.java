@@ -133,14 +133,9 @@ final class AllocatingLocalizer implements Localizer {
             ey = sy;
             et = Angles.wrap2pi(Math.atan2(ss, sc));
         } else {
-            int best = 0;
-            for (int i = 1; i < n; i++) {
-                if ((i & pollMask) == 0 && abort.abortRequested()) {
-                    return false;
-                }
-                if (w[i] > w[best]) {
-                    best = i;
-                }
+            int best = Likelihood.heaviest(w, n, abort, pollMask);
+            if (best < 0) {
+                return false;
             }
             ex = ps[best].x;
             ey = ps[best].y;

@@ -383,15 +383,15 @@ public final class EvaluationDocument extends EvaluationSections {
             rows.add(List.of(config, b.holds() == null ? "none" : String.valueOf(b.holds()),
                     b.fails() == null ? "none in the store"
                             : b.fails() + (b.failedRuns() != null ? ", where " + b.failedRuns() : b.late() != null ? " (" + b.late() + ")" : ""),
-                    c0 == null || c0.holds() == null || b.holds() == null ? ""
-                            : (b == c0 ? "" : c0.fails() == null && b.fails() != null ? "<= " : b.fails() == null && c0.fails() != null ? ">= " : "")
-                            + num((double) b.holds() / c0.holds(), 2) + "x"));
+                    c0 == null ? "" : BreakdownRatio.of(b.holds(), b.fails(), c0.holds(), c0.fails(), b == c0)));
         });
         line("Table 1: per configuration, under queue (no job is dropped or aborted), the largest particle count at which every "
                 + "job of both tasks completed by its deadline in every repetition, every smaller count in the store holding too, "
                 + "and the smallest count above it at which one did not (where runs failed there instead, or the runtime cannot run "
                 + "that count, the cell says so: that count is a limit of the runtime, not of its deadlines); the last column "
-                + "divides the held count by the C baseline's (a bound, `<=` or `>=`, where one of the two held at every count in the store). The bracket is as fine "
+                + "bounds the breakdown load over the C baseline's by the two brackets: from the held count over C's failing one to "
+                + "the failing count over C's held one (a bound, `<=` or `>=`, where one of the two held at every count in the "
+                + "store). The bracket is as fine "
                 + "as the counts in the store (`./jmclbench capacity` narrows it to 10%).");
         line("");
         table(List.of("configuration", "holds at", "fails at", "vs C"), rows);

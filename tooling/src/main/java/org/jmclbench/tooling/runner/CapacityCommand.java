@@ -12,6 +12,7 @@ import java.util.function.IntFunction;
 import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.cli.Counts;
+import org.jmclbench.tooling.report.BreakdownRatio;
 import org.jmclbench.tooling.doctor.Doctor;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.Profile;
@@ -36,8 +37,8 @@ import picocli.CommandLine.Spec;
  * the largest particle count at which every job of both tasks completes by its deadline under
  * {@code queue} in every repetition, and the smallest at which one does not, found by
  * {@link CapacitySearch}. Every probe is a matrix cell run into the store like any other (so the
- * search resumes, and the report reads the same runs); the bracket is printed with its ratio to
- * the C baseline's when {@code native} is searched too.
+ * search resumes, and the report reads the same runs); the bracket is printed with the interval of
+ * its ratio to the C baseline's ({@link BreakdownRatio}) when {@code native} is searched too.
  */
 @Command(name = "capacity", mixinStandardHelpOptions = true,
         header = "Finds each configuration's breakdown load (queue policy).", sortOptions = false,
@@ -220,22 +221,9 @@ public final class CapacityCommand implements Callable<Integer> {
         return byMemory.getOrDefault(of.memory(), byMemory.get(Engines.PREALLOCATED));
     }
 
-    /**
-     * The held count divided by C's, as far as the searches know it: a load that held up to the
-     * search's max is only a lower bound, so the ratio is then a bound too ({@code <=}, {@code >=}),
-     * or unknown when both are.
-     */
+    /** The breakdown load over C's, as far as the two brackets know them ({@link BreakdownRatio}). */
     static String ratio(CapacitySearch s, CapacitySearch c) {
-        if (c == null || s.low() == null || c.low() == null) {
-            return "";
-        }
-        boolean sOpen = s.status() == CapacitySearch.Status.HOLDS_TO_MAX;
-        boolean cOpen = c.status() == CapacitySearch.Status.HOLDS_TO_MAX;
-        if (sOpen && cOpen && s != c) {
-            return "? (both held to --max)";
-        }
-        String x = String.format(Locale.ROOT, "%.2fx", (double) s.low() / c.low());
-        return s == c ? x : cOpen ? "<= " + x : sOpen ? ">= " + x : x;
+        return c == null ? "" : BreakdownRatio.of(s.low(), s.high(), c.low(), c.high(), s == c);
     }
 
     /** The matrix of one probe: every configuration at {@code particles}, under queue. */

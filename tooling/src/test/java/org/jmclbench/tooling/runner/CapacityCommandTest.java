@@ -10,6 +10,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import org.jmclbench.tooling.Fixtures;
+import org.jmclbench.tooling.report.BreakdownRatio;
 import org.jmclbench.tooling.store.StoredRuns;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -58,7 +59,8 @@ class CapacityCommandTest {
         int low = Integer.parseInt(a.group(1));
         int high = Integer.parseInt(a.group(2));
         assertTrue(low < 1000 && high >= 1000 && high <= low * 1.1, low + " " + high);
-        assertEquals(String.format(java.util.Locale.ROOT, "%.2fx", low / 1903.0), a.group(4));
+        // its load is in [951, 1037), C's in [1903, 2075): the ratio in [951/2075, 1037/1903]
+        assertEquals(String.format(java.util.Locale.ROOT, "%.2f-%.2fx", low / 2075.0, high / 1903.0), a.group(4));
 
         try (StoredRuns stored = StoredRuns.open(db, "--db")) {
             assertTrue(stored.runs().stream().allMatch(x -> x.policy.equals("queue")));
@@ -97,9 +99,21 @@ class CapacityCommandTest {
         CapacitySearch jvm = new CapacitySearch(100, 200);
         jvm.record(100, null);
         jvm.record(200, "a job missed its deadline in 1 of 3 runs");
-        assertEquals("<= 0.50x", CapacityCommand.ratio(jvm, c), "C's breakdown is above the max: Java's ratio is at most this");
+        // Java's load is in [100, 200), C's at least 200: the ratio is below 200/200 (it said "<= 0.50x",
+        // the held counts' ratio, which a Java load of 199 would have broken)
+        assertEquals("<= 1.00x", CapacityCommand.ratio(jvm, c), "C's breakdown is above the max: Java's ratio is at most this");
         assertEquals("1.00x", CapacityCommand.ratio(c, c));
-        assertEquals(">= 2.00x", CapacityCommand.ratio(c, jvm));
+        assertEquals(">= 1.00x", CapacityCommand.ratio(c, jvm));
+    }
+
+    /** Two brackets bound the ratio of the loads between holds over C's fails and fails over C's holds. */
+    @Test
+    void aRatioOfTwoBracketsIsTheIntervalTheyAllow() {
+        assertEquals("0.45-0.55x", BreakdownRatio.of(100, 110, 200, 220, false));
+        // two 10% brackets around one load: not "1.00x"
+        assertEquals("0.91-1.10x", BreakdownRatio.of(1000, 1100, 1000, 1100, false));
+        assertEquals("? (both held at every count)", BreakdownRatio.of(1000, null, 500, null, false));
+        assertEquals("", BreakdownRatio.of(null, 100, 500, 550, false), "held at no count: no ratio");
     }
 
     /**
@@ -146,10 +160,21 @@ class CapacityCommandTest {
         java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
         CapacityCommand.print(new java.io.PrintStream(bytes, true, java.nio.charset.StandardCharsets.UTF_8), searches);
         String out = bytes.toString(java.nio.charset.StandardCharsets.UTF_8);
-        assertEquals("0.50x", ratioOf(out, "fake-17/g1+fifo javase preallocated"), "vs native fifo: " + out);
-        assertEquals("2.00x", ratioOf(out, "fake-17/g1 javase allocating"), "vs native allocating: " + out);
-        assertEquals("1.00x", ratioOf(out, "fake-17/g1 scj scoped"), "no C scoped: vs native preallocated: " + out);
+        assertEquals(between(searches, "fake-17", "g1+fifo", "javase", "preallocated", "fifo", "preallocated"),
+                ratioOf(out, "fake-17/g1+fifo javase preallocated"), "vs native fifo: " + out);
+        assertEquals(between(searches, "fake-17", "g1", "javase", "allocating", "default", "allocating"),
+                ratioOf(out, "fake-17/g1 javase allocating"), "vs native allocating: " + out);
+        assertEquals(between(searches, "fake-17", "g1", "scj", "scoped", "default", "preallocated"),
+                ratioOf(out, "fake-17/g1 scj scoped"), "no C scoped: vs native preallocated: " + out);
         assertEquals("1.00x", ratioOf(out, "native/fifo native preallocated"), out);
+    }
+
+    /** The ratio interval of one configuration's bracket over one native configuration's. */
+    private static String between(java.util.Map<CapacityCommand.Configuration, CapacitySearch> searches, String runtime,
+                                  String profile, String engine, String memory, String cProfile, String cMemory) {
+        CapacitySearch s = searches.get(new CapacityCommand.Configuration(runtime, profile, engine, memory));
+        CapacitySearch c = searches.get(new CapacityCommand.Configuration("native", cProfile, "native", cMemory));
+        return String.format(java.util.Locale.ROOT, "%.2f-%.2fx", (double) s.low() / c.high(), (double) s.high() / c.low());
     }
 
     private static CapacitySearch bracket(int low) {

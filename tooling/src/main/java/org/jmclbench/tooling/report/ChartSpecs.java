@@ -468,7 +468,8 @@ final class ChartSpecs {
 
     /**
      * Bars across, one per runtime in its colour: the largest particle count it sustained with no
-     * miss, written at the bar's end (0 where even the smallest count missed). The evaluation's.
+     * miss, written at the bar's end; no bar where even the smallest count missed (null), its name
+     * then saying so: a bar of 0 read as a breakdown load of 0. The evaluation's.
      */
     static ChartSpec sustained(Scope s, String id, String title, Map<String, Integer> loads) {
         return loadBars(s, id, title, "largest particle count with no miss", loads, null);
@@ -483,7 +484,7 @@ final class ChartSpecs {
         Map<String, Integer> holds = new LinkedHashMap<>();
         List<String> notes = new ArrayList<>();
         loads.forEach((config, b) -> {
-            holds.put(config, b.holds() == null ? 0 : b.holds());
+            holds.put(config, b.holds());
             notes.add(config + ": holds at " + (b.holds() == null ? "no count" : b.holds())
                     + ", fails at " + (b.fails() == null ? "no count of the store" : b.fails())
                     + (b.failedRuns() != null ? " (" + b.failedRuns() + ")" : b.late() != null ? " (" + b.late() + ")" : ""));
@@ -495,9 +496,10 @@ final class ChartSpecs {
     private static ChartSpec loadBars(Scope s, String id, String title, String axis, Map<String, Integer> loads, List<String> notes) {
         List<String> configs = new ArrayList<>(loads.keySet());
         Series bars = new Series("particles", null, null, "#7f7f7f", Style.BAR, null,
-                configs.stream().map(c -> (Double) loads.get(c).doubleValue()).toList(), null,
+                configs.stream().map(c -> loads.get(c) == null ? null : (Double) loads.get(c).doubleValue()).toList(), null,
                 configs.stream().map(s::color).toList(), notes);
-        List<Category> categories = configs.stream().map(c -> new Category(c, c, s.configs().get(c))).toList();
+        List<Category> categories = configs.stream()
+                .map(c -> new Category(loads.get(c) == null ? c + " (held at no count)" : c, c, s.configs().get(c))).toList();
         return new ChartSpec(id, id, s.setting(), title,
                 Kind.BARS, true, Axis.linear("runtime / engine memory style"), Axis.linear(axis), categories, List.of(bars),
                 List.of(), null, true);

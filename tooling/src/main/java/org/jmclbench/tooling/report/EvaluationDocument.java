@@ -379,7 +379,7 @@ public final class EvaluationDocument extends EvaluationSections {
         List<List<String>> rows = new ArrayList<>();
         Map<String, Integer> holds = new LinkedHashMap<>();
         loads.forEach((config, b) -> {
-            holds.put(config, b.holds() == null ? 0 : b.holds());
+            holds.put(config, b.holds());
             rows.add(List.of(config, b.holds() == null ? "none" : String.valueOf(b.holds()),
                     b.fails() == null ? "none in the store"
                             : b.fails() + (b.failedRuns() != null ? ", where " + b.failedRuns() : b.late() != null ? " (" + b.late() + ")" : ""),

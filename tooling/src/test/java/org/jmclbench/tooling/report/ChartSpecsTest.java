@@ -388,18 +388,27 @@ class ChartSpecsTest {
 
     @Test
     void theBreakdownBarSaysHowItsUpperCountWasLate() throws Exception {
-        ReportModel queue = model(ReportFixtures.breakdown(), "queue.db");
+        FixtureDb fixture = ReportFixtures.breakdown();
+        fixture.configs.add(new FixtureDb.Config("slow-vm", "", "1.0", 200, "ok")); // late already at the smallest count
+        ReportModel queue = model(fixture, "queue.db");
         ChartSpec breakdown = queue.charts.stream().filter(c -> c.id().equals("breakdown")).findFirst().orElseThrow();
         Map<String, BreakdownLoad> loads = BreakdownLoad.of(queue.cells, breakdown.categories().stream().map(ChartSpec.Category::config).toList());
         List<String> notes = breakdown.series().get(0).notes();
         assertEquals(loads.size(), notes.size());
         int i = 0;
+        int heldAtNone = 0;
         for (Map.Entry<String, BreakdownLoad> e : loads.entrySet()) {
             BreakdownLoad b = e.getValue();
             assertTrue(b.late() != null, "every fixture configuration is late at some count: " + b);
             assertEquals(e.getKey() + ": holds at " + (b.holds() == null ? "no count" : b.holds()) + ", fails at " + b.fails()
-                    + " (" + b.late() + ")", notes.get(i++));
+                    + " (" + b.late() + ")", notes.get(i));
+            // a configuration late at every count has no bar (a bar of 0 read as a breakdown load of 0), and its name says why
+            assertEquals(b.holds() == null ? null : b.holds().doubleValue(), breakdown.series().get(0).values().get(i));
+            assertEquals(b.holds() == null ? e.getKey() + " (held at no count)" : e.getKey(), breakdown.categories().get(i).label());
+            heldAtNone += b.holds() == null ? 1 : 0;
+            i++;
         }
+        assertTrue(heldAtNone > 0, "the fixture has a configuration late at every count");
     }
 
     @Test

@@ -388,10 +388,43 @@ def check_series(con, key, folder, rc, note):
 
 def cell_key(cell):
     """A report cell's configuration as the runs table spells it (the profile empty when none), with
-    the machine label the report appends to its name (" @label") when the store holds several machines."""
+    the machine label the report appends to its name (" @label") when the store holds several machines,
+    and the run-key settings the columns lack (time scale, workload arguments, dataset digest: runs that
+    differ in them are never pooled, docs/REPORT.md)."""
     name, at, label = cell["config"].rpartition(" @")
     return (cell["dataset"], cell["policy"], cell["particles"], cell["runtime"], cell["profile"] or "",
-            cell["engine"], cell["memory"], cell["load"], label if at else None)
+            cell["engine"], cell["memory"], cell["load"], label if at else None,
+            cell.get("timeScale"), cell.get("workloadArgs"), cell.get("datasetDigest"))
+
+
+def run_settings(con):
+    """run_key -> (time scale, workload arguments, dataset digest), read here from the spec_json of the
+    matrix that ran it (the time scale, failing that, from its summary): None where the store does not
+    tell. Two datasets of one label in one matrix are told apart by the path the summary names."""
+    specs = {}
+    for mid, spec in con.execute("select matrix_id, spec_json from matrices"):
+        try:
+            specs[mid] = json.loads(spec) if spec else {}
+        except ValueError:
+            specs[mid] = {}
+    out = {}
+    for key, mid, dataset, summary_json in con.execute("select run_key, matrix_id, dataset, summary_json from runs"):
+        spec = specs.get(mid) or {}
+        try:
+            params = (json.loads(summary_json) or {}).get("parameters", {}) if summary_json else {}
+        except ValueError:
+            params = {}
+        number = lambda v: float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else None
+        scale = number(spec.get("timeScale"))
+        if scale is None:
+            scale = number(params.get("timeScale"))
+        args = spec.get("workloadArgs")
+        args = " ".join(str(a) for a in args) if isinstance(args, list) else None
+        ds = [d for d in spec.get("datasets") or [] if d.get("label") == dataset and isinstance(d.get("digest"), str)]
+        if len(ds) > 1:
+            ds = [d for d in ds if d.get("path") == (params.get("dataset") or {}).get("path")]
+        out[key] = (scale, args, ds[0]["digest"] if len(ds) == 1 else None)
+    return out
 
 
 def machine_labels(con, machine_ids):
@@ -517,9 +550,10 @@ def audit(argv):
     if report:
         data = report_data(report)
         by_cell = {}
+        settings = run_settings(con)
         for key, run_dir, _, runtime, profile, engine, memory, policy, particles, dataset, load in runs:
             by_cell.setdefault((dataset, policy, particles, runtime, profile or "", engine, memory, load or "none",
-                                label_of.get(machine_of[key])), []).append(per_run[key])
+                                label_of.get(machine_of[key])) + settings[key], []).append(per_run[key])
         seen = 0
         for cell in data["cells"]:
             rcs = by_cell.get(cell_key(cell))

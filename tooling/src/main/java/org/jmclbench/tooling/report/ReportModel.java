@@ -166,6 +166,10 @@ public final class ReportModel {
         public String memory;
         /** The load scenario the runs ran under ({@code none}: an idle machine). */
         public String load;
+        /** The run-key settings its runs share (StoredRun#timeScale and the others); null where the store does not tell. */
+        public Double timeScale;
+        public String workloadArgs;
+        public String datasetDigest;
         public int runs;
         public int ok;
         public int failed;
@@ -346,6 +350,9 @@ public final class ReportModel {
         c.engine = first.engine;
         c.memory = first.memory;
         c.load = first.loadScenario();
+        c.timeScale = first.timeScale;
+        c.workloadArgs = first.workloadArgs;
+        c.datasetDigest = first.datasetDigest;
         c.runs = group.size();
         List<StoredRun> ok = new ArrayList<>();
         for (StoredRun r : group) {

@@ -1,10 +1,17 @@
 package org.jmclbench.tooling.store;
 
+import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+import java.util.function.Function;
+import java.util.stream.Collectors;
+
+import org.jmclbench.tooling.runner.MatrixDefaults;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -25,6 +32,14 @@ public final class StoredRun {
     public int particles;
     public String dataset;
     public String load;
+    /**
+     * Settings of the run key the columns above lack (MatrixPlanner.runKey): the replay's time scale,
+     * the workload arguments given with {@code --workload-arg} (empty when none) and the digest of the
+     * dataset's content; null where the store does not tell (a run of a matrix before they were recorded).
+     */
+    public Double timeScale;
+    public String workloadArgs;
+    public String datasetDigest;
     /** javase | scj | native (later hvm); from the column, else the summary, else the runtime (a store before engines). */
     public String engine;
     /** preallocated | allocating | scoped. */
@@ -53,13 +68,19 @@ public final class StoredRun {
     private boolean showEngine;
     private boolean showMemory;
     private boolean showLoad;
+    private boolean showTimeScale;
+    private boolean showWorkloadArgs;
+    private boolean showDatasetDigest;
 
     /**
      * The configuration under test: runtime, and profile when there is one; then, when the runs
      * shown together have several engines or memory styles, the engine and memory style:
      * {@code temurin-25/default / scj scoped}, {@code native / allocating}; and when they ran under
      * several load scenarios, a loaded run's scenario in brackets: {@code temurin-25/default [load cpu]}
-     * (a run on an idle machine keeps the plain name).
+     * (a run on an idle machine keeps the plain name). Likewise, before the load, the settings the runs
+     * shown together differ in: {@code native [time scale 0.5]} (a run at 1 keeps the plain name),
+     * {@code native [--estimate best]} (a run without workload arguments keeps it), and the dataset's
+     * digest, {@code native [data 0123abcd]}, when two datasets of one name differ in content.
      */
     public String config() {
         String c = profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
@@ -70,8 +91,26 @@ public final class StoredRun {
         if (showMemory) {
             parts.add(memory);
         }
-        String base = parts.isEmpty() ? c : c + " / " + String.join(" ", parts);
+        String base = (parts.isEmpty() ? c : c + " / " + String.join(" ", parts)) + settingsLabel();
         return showLoad && !"none".equals(loadScenario()) ? base + loadLabel(loadScenario()) : base;
+    }
+
+    /**
+     * What {@link #config()} adds for the settings shown; empty for a run at the defaults (time scale 1,
+     * no workload arguments) and for a setting the store does not tell, as a run of an unknown load is idle.
+     */
+    private String settingsLabel() {
+        StringBuilder b = new StringBuilder();
+        if (showDatasetDigest && datasetDigest != null) {
+            b.append(" [data ").append(datasetDigest, 0, Math.min(8, datasetDigest.length())).append(']');
+        }
+        if (showTimeScale && timeScale != null && timeScale != MatrixDefaults.TIME_SCALE) {
+            b.append(" [time scale ").append(BigDecimal.valueOf(timeScale).stripTrailingZeros().toPlainString()).append(']');
+        }
+        if (showWorkloadArgs && workloadArgs != null && !workloadArgs.isEmpty()) {
+            b.append(" [").append(workloadArgs).append(']');
+        }
+        return b.toString();
     }
 
     /** The load scenario the run ran under; a store row without one ran on an idle machine ({@code none}). */
@@ -137,16 +176,33 @@ public final class StoredRun {
      * Marks the runs' labels to show the engine when the JVM runs among them have more than one,
      * and the memory style when they have more than one, so that a store of one engine keeps its
      * short labels ({@code temurin-25/g1}); likewise the load scenario, so that runs on an idle and
-     * on a loaded machine are never pooled into one configuration.
+     * on a loaded machine are never pooled into one configuration, and each setting of the run key the
+     * columns lack ({@link #timeScale}, {@link #workloadArgs}, {@link #datasetDigest}; a run whose store
+     * does not tell one is not counted as differing in it).
      */
     public static void labelEngines(Collection<StoredRun> runs) {
         boolean engines = runs.stream().filter(r -> !"native".equals(r.engine)).map(r -> r.engine).distinct().count() > 1;
         boolean memory = runs.stream().map(r -> r.memory).distinct().count() > 1;
         boolean loads = runs.stream().map(StoredRun::loadScenario).distinct().count() > 1;
+        boolean timeScales = differ(runs, r -> r.timeScale);
+        boolean workloadArgs = differ(runs, r -> r.workloadArgs);
+        // distinct datasets differ in content by nature: only two contents of one name need telling apart
+        Set<String> reused = runs.stream().collect(Collectors.groupingBy(r -> r.dataset,
+                Collectors.mapping(r -> r.datasetDigest, Collectors.toSet()))).entrySet().stream()
+                .filter(e -> e.getValue().stream().filter(Objects::nonNull).count() > 1).map(Map.Entry::getKey)
+                .collect(Collectors.toSet());
         for (StoredRun r : runs) {
             r.showEngine = engines;
             r.showMemory = memory;
             r.showLoad = loads;
+            r.showTimeScale = timeScales;
+            r.showWorkloadArgs = workloadArgs;
+            r.showDatasetDigest = reused.contains(r.dataset);
         }
+    }
+
+    /** Whether the runs have more than one known value of {@code setting}. */
+    private static boolean differ(Collection<StoredRun> runs, Function<StoredRun, Object> setting) {
+        return runs.stream().map(setting).filter(Objects::nonNull).distinct().count() > 1;
     }
 }

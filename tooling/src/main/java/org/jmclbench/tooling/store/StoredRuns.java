@@ -1,6 +1,7 @@
 package org.jmclbench.tooling.store;
 
 
+import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.file.Path;
 import java.sql.Connection;
@@ -18,6 +19,10 @@ import java.util.zip.DataFormatException;
 
 import org.HdrHistogram.Histogram;
 import org.jmclbench.tooling.cli.BadUsageException;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.MissingNode;
 
 /**
  * Read-only view of the results database (docs/FORMATS.md section 5) for the report and
@@ -61,6 +66,7 @@ public final class StoredRuns implements AutoCloseable {
                 + (engineColumns ? " engine, memory" : " NULL, NULL")
                 + (hasColumn("runs", "code_version") ? ", code_version" : ", NULL") + " FROM runs"
                 + " ORDER BY dataset, policy, particles, runtime, profile, 20, 21, repetition, started_at, run_key";
+        Map<String, JsonNode> specs = matrixSpecs();
         try (Statement st = conn.createStatement(); ResultSet rs = st.executeQuery(sql)) {
             while (rs.next()) {
                 StoredRun r = new StoredRun();
@@ -98,6 +104,7 @@ public final class StoredRuns implements AutoCloseable {
                         r.memory = p.path("memory").asText("preallocated");
                     }
                 }
+                settings(r, specs.get(r.matrixId));
                 byKey.put(r.runKey, r);
             }
             if (hasTable("metrics")) {
@@ -128,6 +135,56 @@ public final class StoredRuns implements AutoCloseable {
         List<StoredRun> out = new ArrayList<>(byKey.values());
         StoredRun.labelEngines(out);
         return out;
+    }
+
+    /** Each matrix's spec_json by matrix id (a spec that is not JSON left out: its runs' settings are not told). */
+    private Map<String, JsonNode> matrixSpecs() {
+        Map<String, JsonNode> out = new HashMap<>();
+        try (Statement st = conn.createStatement(); ResultSet rs = st.executeQuery("SELECT matrix_id, spec_json FROM matrices")) {
+            while (rs.next()) {
+                try {
+                    if (rs.getString(1) != null && rs.getString(2) != null) {
+                        out.put(rs.getString(1), SPEC_JSON.readTree(rs.getString(2)));
+                    }
+                } catch (IOException e) {
+                    // unreadable: the settings come from the runs' summaries where they have them
+                }
+            }
+        } catch (SQLException e) {
+            throw new IllegalStateException(file + ": " + ResultsDatabase.oneLine(e.getMessage()), e);
+        }
+        return out;
+    }
+
+    private static final ObjectMapper SPEC_JSON = new ObjectMapper();
+
+    /**
+     * The run-key settings of {@code r} the columns lack ({@link StoredRun#timeScale} and the others), from
+     * the spec of the matrix that ran it, which holds them for failed runs too; the time scale, failing
+     * that, from the run's summary. Two datasets of one label in one matrix are told apart by the path
+     * the summary names.
+     */
+    private static void settings(StoredRun r, JsonNode spec) {
+        JsonNode s = spec == null ? MissingNode.getInstance() : spec;
+        JsonNode p = r.summary().path("parameters");
+        r.timeScale = s.path("timeScale").isNumber() ? Double.valueOf(s.path("timeScale").asDouble())
+                : p.path("timeScale").isNumber() ? Double.valueOf(p.path("timeScale").asDouble()) : null;
+        if (s.path("workloadArgs").isArray()) {
+            List<String> args = new ArrayList<>();
+            s.path("workloadArgs").forEach(a -> args.add(a.asText()));
+            r.workloadArgs = String.join(" ", args);
+        }
+        List<JsonNode> datasets = new ArrayList<>();
+        s.path("datasets").forEach(d -> {
+            if (r.dataset.equals(d.path("label").asText()) && d.path("digest").isTextual()) {
+                datasets.add(d);
+            }
+        });
+        if (datasets.size() > 1) {
+            String path = p.at("/dataset/path").asText("");
+            datasets.removeIf(d -> !d.path("path").asText().equals(path));
+        }
+        r.datasetDigest = datasets.size() == 1 ? datasets.get(0).path("digest").asText() : null;
     }
 
     private static Object nullable(ResultSet rs, int column, boolean integer) throws SQLException {

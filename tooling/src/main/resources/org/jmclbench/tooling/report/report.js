@@ -177,10 +177,16 @@
   function machineOf(id) { var i = id.lastIndexOf(' @'); return i < 0 ? '' : id.substring(i); }
   /**
    * The native baseline to compare a Java cell with, like with like: on its machine, under its load
-   * and with its profile (scheduling) where the store has that, else the first native on its machine.
+   * and with its profile (scheduling) where the store has that, else the first native on its machine;
+   * first of all at its time scale, workload arguments and dataset content where the store has a native run so.
    */
   function nativeFor(cell, cells) {
+    function sameSettings(n) {
+      return n.timeScale === cell.timeScale && n.workloadArgs === cell.workloadArgs && n.datasetDigest === cell.datasetDigest;
+    }
     var natives = cells.filter(function (n) { return isNative(n) && machineOf(n.config) === machineOf(cell.config); });
+    var like = natives.filter(sameSettings);
+    natives = like.length ? like : natives;
     function same(n) { return (n.load || '') === (cell.load || '') && n.profile === cell.profile; }
     function sameLoad(n) { return (n.load || '') === (cell.load || ''); }
     return natives.filter(same)[0] || natives.filter(sameLoad)[0] || natives[0] || cells.filter(isNative)[0];

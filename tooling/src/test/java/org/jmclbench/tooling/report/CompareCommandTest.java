@@ -63,6 +63,20 @@ class CompareCommandTest {
     }
 
     @Test
+    void runsAtTwoTimeScalesAreComparedByTheirRowNamesNeverPooled() throws Exception {
+        // repetitions 7 to 10 made again by a second matrix at --time-scale 0.5
+        Path scaled = java.nio.file.Files.copy(a, dir.resolve("time-scales.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + scaled); var st = c.createStatement()) {
+            st.execute("INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --time-scale 0.5', 8,"
+                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5,\"workloadArgs\":[]}')");
+            st.execute("UPDATE runs SET matrix_id = 'x-2' WHERE repetition > 6");
+        }
+        String out = run(0, "compare", "--db", scaled.toString(), "--a", "native", "--b", "native [time scale 0.5]")[0];
+        assertTrue(line(out, "missCount").contains(" n=6 ") && line(out, "missCount").contains(" n=4 "),
+                "six repetitions at 1 against four at 0.5, not ten a side: " + line(out, "missCount"));
+    }
+
+    @Test
     void aConfigurationAgainstItselfIsRefusedNotComparedWithItsOwnRuns() {
         // the same runs on both sides measured nothing twice: no ratio, interval or verdict to print
         String err = run(2, "compare", "--db", a.toString(), "--a", "native", "--b", "native")[1];

@@ -412,6 +412,39 @@ class ReportBrowserTest {
     }
 
     @Test
+    void aRowAtAnotherTimeScaleIsComparedWithTheCAtItsTimeScale() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("temurin-25", "", "25+36", 1.15, "ok")));
+        f.policies = List.of("skip");
+        f.particles = List.of(400);
+        f.repetitions = 4;
+        Path db = ReportFixtures.write(f, ARTIFACTS, "time-scales.db");
+        // repetitions 3 and 4 made again by a matrix at --time-scale 0.5, whose jobs took twice as long
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + db); var st = c.createStatement()) {
+            st.execute("INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --time-scale 0.5', 8,"
+                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5,\"workloadArgs\":[]}')");
+            st.execute("UPDATE runs SET matrix_id = 'x-2' WHERE repetition > 2");
+            st.execute("UPDATE metrics SET value = value * 2 WHERE metric = 'taskLatencyNs'"
+                    + " AND run_key IN (SELECT run_key FROM runs WHERE repetition > 2)");
+        }
+        Path out = ARTIFACTS.resolve("time-scales-report");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", db.toString(), "--out", out.toString(), "--no-export"));
+        try {
+            driver.get(out.resolve("index.html").toAbsolutePath().toUri().toString());
+            waitForRender(0);
+            assertEquals("1.00\u00d7", cell("native [time scale 0.5]", "vsNative"), "the C row at 0.5 is its own baseline");
+            assertEquals("1.00\u00d7", cell("native", "vsNative"));
+            double at1 = Double.parseDouble(cell("temurin-25", "vsNative").replace("\u00d7", ""));
+            double atHalf = Double.parseDouble(cell("temurin-25 [time scale 0.5]", "vsNative").replace("\u00d7", ""));
+            assertEquals(at1, atHalf, 0.2, "each JVM row against the C at its own time scale, not the other's (2x apart)");
+        } finally {
+            driver.get(mixedPage);
+            waitForRender(0);
+        }
+    }
+
+    @Test
     void aStoreOfManyProfilesComparesJavaWithTheCOfItsProfileAndFoldsTheUnseparated() throws Exception {
         // the evaluation's fifo+pinned JVM was compared with native/default: unlike scheduling, one ratio
         List<FixtureDb.Config> configs = List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),

@@ -219,6 +219,41 @@ class ReportCommandTest {
     }
 
     @Test
+    void runsAtTwoTimeScalesAreNeverPooled() throws Exception {
+        // the third repetition of every configuration made again by a second matrix at --time-scale 0.5
+        Path scaled = Files.copy(db, dir.resolve("time-scales.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + scaled); var st = c.createStatement()) {
+            st.execute("INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --time-scale 0.5', 8,"
+                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5,\"workloadArgs\":[]}')");
+            st.execute("UPDATE runs SET matrix_id = 'x-2', summary_json = json_set(summary_json, '$.parameters.timeScale', 0.5)"
+                    + " WHERE repetition = 3");
+        }
+        Path page = dir.resolve("time-scales-report");
+        assertEquals(0, JmclbenchCli.execute("report", "--db", scaled.toString(), "--out", page.toString(), "--no-export"));
+        Matcher m = Pattern.compile("(?s)<script type=\"application/json\" id=\"jmclbench-data\">(.*?)</script>")
+                .matcher(Files.readString(page.resolve("index.html")));
+        assertTrue(m.find());
+        JsonNode data = new ObjectMapper().readTree(m.group(1));
+        int seen = 0;
+        for (JsonNode c : data.get("cells")) {
+            if (c.get("policy").asText().equals("skip") && c.get("particles").asInt() == 400) {
+                switch (c.get("config").asText()) {
+                    case "native" -> assertEquals(2, c.get("ok").asInt(), "repetitions 1 and 2, at 1");
+                    case "native [time scale 0.5]" -> assertEquals(1, c.get("ok").asInt(), "repetition 3, at 0.5");
+                    default -> {
+                        continue;
+                    }
+                }
+                seen++;
+            }
+        }
+        assertEquals(2, seen, "native at each time scale, as two cells");
+        // the unsupported runs have no summary: the matrix's spec says at which scale they were planned
+        assertTrue(data.toString().contains("\"config\":\"temurin-11/shenandoah [time scale 0.5]\""));
+        assertFalse(html.contains(" [time scale "), "a store of one time scale keeps its labels");
+    }
+
+    @Test
     void twoMachinesOfOneHostNameAreNeverPooled() throws Exception {
         Path merged = Files.copy(db, dir.resolve("same-host.db"));
         try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + merged); var st = c.createStatement()) {

@@ -2,7 +2,8 @@
  * libFuzzer target of the dataset readers (docs/FORMATS.md 1.1, 1.2): the first byte picks
  * odometry (4 columns), laser (2) or dataset.properties, the rest is the file. Built with
  * AddressSanitizer and UBSan (make fuzz); a crash, a leak or an accepted file that breaks the
- * grammar's promises (values within JM_VALUE_MAX, sorted non-negative times) is a finding.
+ * grammar's promises (values within JM_VALUE_MAX, sorted non-negative times, laser angles in
+ * [0, 2pi)) is a finding.
  */
 #include <math.h>
 #include <stdint.h>
@@ -10,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "angles.h"
 #include "dataset.h"
 #include "grammar.h"
 
@@ -29,6 +31,8 @@ static void check_series(const jm_series *s)
 				abort();
 		if (JM_ROW(s, i)[0] < 0.0 || (i > 0 && JM_ROW(s, i)[0] < JM_ROW(s, i - 1)[0]))
 			abort();
+		if (s->cols == 2 && !(JM_ROW(s, i)[1] >= 0.0 && JM_ROW(s, i)[1] < JM_TWO_PI))
+			abort(); /* a laser angle in [0, 2pi) */
 	}
 	if (s->n < 1)
 		abort();
@@ -49,7 +53,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	if (kind < 2) {
 		jm_series s;
 
-		if (jm_series_parse(&s, f, "input", kind == 0 ? 4 : 2, err, sizeof(err)) == 0) {
+		if (jm_series_parse(&s, f, "input", kind == 0 ? 4 : 2, kind == 0 ? &jm_rule_none : &jm_rule_laser, err,
+				    sizeof(err)) == 0) {
 			check_series(&s);
 			jm_series_free(&s);
 		} else if (strlen(err) == 0 || strchr(err, '\n')) {

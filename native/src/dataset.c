@@ -11,8 +11,12 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "angles.h"
 #include "dataset.h"
 #include "grammar.h"
+
+const jm_rule jm_rule_none = { -1, NULL, NULL };
+const jm_rule jm_rule_laser = { 1, NULL, NULL };
 
 static int append_row(jm_series *s, int *cap, const double *row)
 {
@@ -80,7 +84,46 @@ static int parse_record(const char *name, int lineno, const char *line, long len
 	return 0;
 }
 
-int jm_series_parse(jm_series *s, FILE *f, const char *name, int cols, char *err, size_t errlen)
+/* The token of column c of a record line, quoted as messages quote it, into q. */
+static const char *column_token(char *q, size_t qlen, const char *line, long len, int c)
+{
+	size_t start[JM_MAX_COLUMNS], tlen[JM_MAX_COLUMNS];
+
+	split(line, len, start, tlen, JM_MAX_COLUMNS);
+	return jm_quote(q, qlen, line + start[c], tlen[c]);
+}
+
+/* Refuses record index (at lineno) when it breaks rule; returns 0 or -1 with err set. */
+static int check_rule(const jm_rule *rule, int index, const double *row, const char *name, int lineno,
+		      const char *line, long len, char *err, size_t errlen)
+{
+	char q[4 * JM_QUOTE_MAX + 8];
+	int a = rule->angle_column;
+
+	if (a >= 0 && !(row[a] >= 0.0 && row[a] < JM_TWO_PI)) {
+		snprintf(err, errlen, "%s:%d: angle %s is not in [0, 2pi) (the beacon's angle from the heading)", name,
+			 lineno, column_token(q, sizeof(q), line, len, a));
+		return -1;
+	}
+	if (!rule->times)
+		return 0;
+	if (index >= rule->times->n) {
+		snprintf(err, errlen, "%s:%d: time %s after the last of the %d records of %s (the ground truth is at "
+			 "the odometry times)", name, lineno, column_token(q, sizeof(q), line, len, 0), rule->times->n,
+			 rule->times_name);
+		return -1;
+	}
+	if (row[0] != JM_ROW(rule->times, index)[0]) {
+		snprintf(err, errlen, "%s:%d: time %s is not that of record %d of %s (the ground truth is at the "
+			 "odometry times)", name, lineno, column_token(q, sizeof(q), line, len, 0), index + 1,
+			 rule->times_name);
+		return -1;
+	}
+	return 0;
+}
+
+int jm_series_parse(jm_series *s, FILE *f, const char *name, int cols, const jm_rule *rule, char *err,
+		    size_t errlen)
 {
 	char *line = NULL, q[4 * JM_QUOTE_MAX + 8];
 	size_t linecap = 0;
@@ -114,6 +157,8 @@ int jm_series_parse(jm_series *s, FILE *f, const char *name, int cols, char *err
 					 name, lineno, q);
 			goto out;
 		}
+		if (check_rule(rule, s->n, row, name, lineno, line, len, err, errlen))
+			goto out;
 		prev = row[0];
 		if (append_row(s, &cap, row) < 0) {
 			snprintf(err, errlen, "%s:%d: out of memory", name, lineno);
@@ -126,6 +171,11 @@ int jm_series_parse(jm_series *s, FILE *f, const char *name, int cols, char *err
 	}
 	if (s->n == 0) {
 		snprintf(err, errlen, "%s: empty file (no data lines)", name);
+		goto out;
+	}
+	if (rule->times && s->n < rule->times->n) {
+		snprintf(err, errlen, "%s: %d records for the %d of %s (the ground truth is at the odometry times)", name,
+			 s->n, rule->times->n, rule->times_name);
 		goto out;
 	}
 	ret = 0;
@@ -171,7 +221,7 @@ static FILE *open_data(const char *path, int *absent, char *err, size_t errlen)
 	return f;
 }
 
-int jm_series_read(jm_series *s, const char *path, int cols, char *err, size_t errlen)
+int jm_series_read(jm_series *s, const char *path, int cols, const jm_rule *rule, char *err, size_t errlen)
 {
 	int absent, ret;
 	FILE *f = open_data(path, &absent, err, errlen);
@@ -179,7 +229,7 @@ int jm_series_read(jm_series *s, const char *path, int cols, char *err, size_t e
 	memset(s, 0, sizeof(*s));
 	if (!f)
 		return -1;
-	ret = jm_series_parse(s, f, path, cols, err, errlen);
+	ret = jm_series_parse(s, f, path, cols, rule, err, errlen);
 	fclose(f);
 	return ret;
 }
@@ -390,10 +440,15 @@ int jm_dataset_load(jm_dataset *ds, const char *dir, const char *odometry, const
 		normalize(ds->real_path, sizeof(ds->real_path), real);
 	}
 	/* in this order in both languages, so that a dataset with two problems names the same one */
-	if (jm_series_read(&ds->odometry, ds->odometry_path, 4, err, errlen) < 0 ||
-	    jm_series_read(&ds->laser, ds->laser_path, 2, err, errlen) < 0 ||
-	    jm_series_read(&ds->real, ds->real_path, 4, err, errlen) < 0)
+	if (jm_series_read(&ds->odometry, ds->odometry_path, 4, &jm_rule_none, err, errlen) < 0 ||
+	    jm_series_read(&ds->laser, ds->laser_path, 2, &jm_rule_laser, err, errlen) < 0)
 		goto fail;
+	{
+		jm_rule real_rule = { -1, &ds->odometry, ds->odometry_path };
+
+		if (jm_series_read(&ds->real, ds->real_path, 4, &real_rule, err, errlen) < 0)
+			goto fail;
+	}
 	if (dir) {
 		int absent;
 		FILE *f = open_data(props, &absent, err, errlen);

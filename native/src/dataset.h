@@ -41,12 +41,28 @@ typedef struct {
 } jm_dataset;
 
 /*
- * Reads one event file of cols columns into s. Returns 0, or -1 with err holding
- * "<file>:<line>: <problem>", or "<file>: <problem>" for the whole file (missing, empty).
+ * What the records of one event file must satisfy beyond the grammar (docs/FORMATS.md 1.1): a
+ * column that is an angle in [0, 2pi) (the laser's), and the times of another file's records, one
+ * record each (the ground truth is at the odometry times, docs/ALGORITHM.md 10). The Java
+ * reader's DatasetReader.Rule.
  */
-int jm_series_read(jm_series *s, const char *path, int cols, char *err, size_t errlen);
+typedef struct {
+	int angle_column;             /* -1: none */
+	const jm_series *times;       /* NULL: any times */
+	const char *times_name;       /* the file times was read from */
+} jm_rule;
+
+/* No more than the grammar (the odometry's), and the laser's: column 1 is the beacon's angle. */
+extern const jm_rule jm_rule_none, jm_rule_laser;
+
+/*
+ * Reads one event file of cols columns into s, each record as rule says. Returns 0, or -1 with
+ * err holding "<file>:<line>: <problem>", or "<file>: <problem>" for the whole file (missing, empty).
+ */
+int jm_series_read(jm_series *s, const char *path, int cols, const jm_rule *rule, char *err, size_t errlen);
 /* The same from an open stream, name being what messages call it (the fuzzer reads memory). */
-int jm_series_parse(jm_series *s, FILE *f, const char *name, int cols, char *err, size_t errlen);
+int jm_series_parse(jm_series *s, FILE *f, const char *name, int cols, const jm_rule *rule, char *err,
+		    size_t errlen);
 void jm_series_free(jm_series *s);
 
 /*

@@ -88,7 +88,7 @@ static void answer(FILE *out, const char *kind, int cols, char *buf, size_t len)
 	if (!strcmp(kind, "series")) {
 		jm_series s;
 
-		if (jm_series_parse(&s, f, "input", cols, err, sizeof(err)))
+		if (jm_series_parse(&s, f, "input", cols, cols == 2 ? &jm_rule_laser : &jm_rule_none, err, sizeof(err)))
 			fprintf(out, "error %s\n", err);
 		else
 			fputs("ok\n", out), dump_series(out, "series", &s), jm_series_free(&s);

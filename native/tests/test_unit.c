@@ -363,7 +363,7 @@ static const char *read_err(const char *content, int *line_ok, const char *want_
 	const char *path = write_file("x.txt", content);
 
 	err[0] = '\0';
-	if (jm_series_read(&s, path, 4, err, sizeof(err)) == 0) {
+	if (jm_series_read(&s, path, 4, &jm_rule_none, err, sizeof(err)) == 0) {
 		jm_series_free(&s);
 		return "";
 	}
@@ -383,7 +383,8 @@ static void test_reader(void)
 	const char *e;
 
 	CHECK(jm_series_read(&s, write_file("good.txt",
-		"# comment\n\n0.0  0.1 0 0\n5.0000000000000003e-02  1e-2 -0 0.5\n\t0.1 0 0 0\n"), 4, err, sizeof(err)) == 0);
+		"# comment\n\n0.0  0.1 0 0\n5.0000000000000003e-02  1e-2 -0 0.5\n\t0.1 0 0 0\n"), 4, &jm_rule_none, err,
+		sizeof(err)) == 0);
 	CHECK_INT(s.n, 3);
 	CHECK_BITS(JM_ROW(&s, 1)[0], 0.05);
 	CHECK_BITS(JM_ROW(&s, 1)[3], 0.5);
@@ -459,7 +460,7 @@ static void test_reader(void)
 	{
 		char msg[512], want[600];
 
-		CHECK(jm_series_read(&s, err, 4, msg, sizeof(msg)) == -1);
+		CHECK(jm_series_read(&s, err, 4, &jm_rule_none, msg, sizeof(msg)) == -1);
 		snprintf(want, sizeof(want), "%s: no such file", err);
 		CHECK_STR_PREFIX(msg, want);
 	}
@@ -475,7 +476,7 @@ static const char *parse_err(const char *bytes, size_t len, int cols)
 	err[0] = '\0';
 	if (!f)
 		return "fmemopen failed";
-	if (jm_series_parse(&s, f, "in", cols, err, sizeof(err)) == 0)
+	if (jm_series_parse(&s, f, "in", cols, cols == 2 ? &jm_rule_laser : &jm_rule_none, err, sizeof(err)) == 0)
 		jm_series_free(&s);
 	fclose(f);
 	return err;
@@ -500,7 +501,7 @@ static void test_reader_grammar(void)
 			 "in:1: not a number: '1234567890123456789012345678901234567890...'");
 	snprintf(dir, sizeof(dir), "%s/adir", tmpdir);
 	CHECK(mkdir(dir, 0700) == 0);
-	CHECK(jm_series_read(&s, dir, 2, err, sizeof(err)) == -1);
+	CHECK(jm_series_read(&s, dir, 2, &jm_rule_laser, err, sizeof(err)) == -1);
 	CHECK_CONTAINS(err, "adir: is a directory");
 	rmdir(dir);
 }
@@ -526,6 +527,28 @@ static void test_dataset_properties(void)
 	CHECK_CONTAINS(err, "/laser.txt past 1e9 s, the largest time of a run");
 	jm_dataset_free(&ds);
 	write_file("laser.txt", "0.02 1.0\n");
+	/* a laser angle is the beacon's from the heading, in [0, 2pi) (SPEC section 1): 2pi itself is not */
+	write_file("laser.txt", "0.02 -0\n0.03 6.283185307179585\n0.04 6.283185307179586\n");
+	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == -1);
+	CHECK_CONTAINS(err, "/laser.txt:3: angle 6.283185307179586 is not in [0, 2pi) (the beacon's angle from the heading)");
+	write_file("laser.txt", "0.02 1.0\n0.03 -7\n");
+	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == -1);
+	CHECK_CONTAINS(err, "/laser.txt:2: angle -7 is not in [0, 2pi)");
+	write_file("laser.txt", "0.02 1.0\n");
+	/* the ground truth is at the odometry times, one record each (docs/ALGORITHM.md 10) */
+	write_file("real.txt", "0 1.25 0.75 0.5\n# a comment\n0.06 1.26 0.75 0.5\n");
+	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == -1);
+	CHECK_CONTAINS(err, "/real.txt:3: time 0.06 is not that of record 2 of ");
+	CHECK_CONTAINS(err, "/odometry.txt (the ground truth is at the odometry times)");
+	write_file("real.txt", "0 1.25 0.75 0.5\n");
+	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == -1);
+	CHECK_CONTAINS(err, "/real.txt: 1 records for the 2 of ");
+	write_file("real.txt", "0 1.25 0.75 0.5\n0.05 1.26 0.75 0.5\n0.05 1.26 0.75 0.5\n");
+	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == -1);
+	CHECK_CONTAINS(err, "/real.txt:3: time 0.05 after the last of the 2 records of ");
+	write_file("real.txt", "0 1.25 0.75 0.5\n0.05 1.26 0.75 0.5\n");
+	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == 0);
+	jm_dataset_free(&ds);
 
 	CHECK(!strcmp(ds.name, strrchr(tmpdir, '/') + 1)); /* no scenario: the folder's name */
 	write_file("dataset.properties", "scenario=unit\nstart.x=0.5\n");

@@ -104,6 +104,20 @@ public class MalformedInputCorpusTest {
         add("time-scale-beyond-range", Arrays.asList("--dataset", scaled.getPath(), "--time-scale", "1000", "--ideal"),
                 "--time-scale: scales the last time of " + new File(scaled, "laser.txt").getPath()
                         + " past 1e9 s, the largest time of a run");
+        // what a value means: a laser angle in [0, 2pi), the ground truth at the odometry times
+        data("laser-angle-negative", "laser.txt", "0.03  -7\n", ":1",
+                "angle -7 is not in [0, 2pi) (the beacon's angle from the heading)");
+        data("laser-angle-two-pi", "laser.txt", LASER + "0.08  6.283185307179586\n", ":3",
+                "angle 6.283185307179586 is not in [0, 2pi) (the beacon's angle from the heading)");
+        File offTimes = folder("real-off-odometry-times", "real.txt",
+                "0.05  0.5  0.6  0.1\n0.12  0.51  0.6  0.1\n".getBytes(StandardCharsets.US_ASCII));
+        add("real-off-odometry-times", Arrays.asList("--dataset", offTimes.getPath()), new File(offTimes, "real.txt").getPath()
+                + ":2: time 0.12 is not that of record 2 of " + new File(offTimes, "odometry.txt").getPath()
+                + " (the ground truth is at the odometry times)");
+        File fewer = folder("real-fewer-records", "real.txt", "0.05  0.5  0.6  0.1\n".getBytes(StandardCharsets.US_ASCII));
+        add("real-fewer-records", Arrays.asList("--dataset", fewer.getPath()), new File(fewer, "real.txt").getPath()
+                + ": 1 records for the 2 of " + new File(fewer, "odometry.txt").getPath()
+                + " (the ground truth is at the odometry times)");
         // columns
         data("too-few-columns", "odometry.txt", ODO + "0.15  0.01  0.0\n", ":3", "expected 4 columns but found 3");
         data("too-many-columns", "laser.txt", "0.03  1.5  2\n", ":1", "expected 2 columns but found 3");

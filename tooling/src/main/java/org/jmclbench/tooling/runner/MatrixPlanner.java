@@ -38,7 +38,13 @@ public final class MatrixPlanner {
     /** Options the runner sets itself, which {@code --workload-arg} may not repeat. */
     static final Set<String> RESERVED_ARGS = Set.of("-p", "--particles", "-n", "--number", "-j", "--runtime-name",
             "-O", "--out", "--dataset", "-odo", "-laser", "-real", "-T", "--policy", "--ideal", "--seed",
-            "--time-scale", "--force", "-h", "--help", "--engine", "--memory");
+            "--time-scale", "--force", "-h", "--help", "--engine", "--memory",
+            // the load scenario (--load, --load-alloc) and the fifo profile (the C baseline's --no-fifo)
+            "--load-alloc", "--load-name", "--no-fifo");
+
+    /** The Java workload's options that the C baseline lacks, and refuses as unknown (docs/FORMATS.md section 2). */
+    static final Set<String> JAVA_ONLY_ARGS = Set.of("--engine", "--rtsj-design", "--area-size", "--load-alloc",
+            "--load-name");
 
     private MatrixPlanner() {
     }
@@ -106,9 +112,6 @@ public final class MatrixPlanner {
                 argWhere.add(a.where());
             }
         }
-        if (policies.contains("ideal")) {
-            refuseWhatIdealRunsRefuse(workloadArgs, argWhere);
-        }
         int repeat = spec.repeat != null ? spec.repeat : MatrixDefaults.REPEAT;
         long seed = spec.seed != null ? spec.seed : MatrixDefaults.SEED;
         long orderSeed = spec.orderSeed != null ? spec.orderSeed : new Random().nextLong();
@@ -143,6 +146,7 @@ public final class MatrixPlanner {
                 }
             }
         }
+        checkWorkloadOptions(all.values(), timeScale, workloadArgs, argWhere);
         List<PlannedRun> mine = new ArrayList<>(all.values());
         if (spec.shard != null) {
             List<PlannedRun> byKey = new ArrayList<>(all.values());
@@ -160,20 +164,59 @@ public final class MatrixPlanner {
     }
 
     /**
-     * The workload refuses what an ideal run cannot apply (a spin before each release, SCJ area
-     * sizes: exit 2, IdealEngine), so a matrix with the policy ideal and such a --workload-arg
-     * would record its ideal runs failed, one by one: refused here instead, before anything runs.
+     * Checks each cell's workload command line as its engine will (the workload's own RunOptionsParser,
+     * docs/FORMATS.md section 2), so that an option an engine refuses (a --workload-arg the scj engine
+     * or an ideal run cannot apply, a bad value, an unknown option) is one line and exit 2 here, before
+     * anything runs, rather than each of the matrix's runs of that engine recorded failed. The C baseline's
+     * parser is the Java one on the options they share (OptionsDifferentialTest holds the two alike);
+     * the hvm engine (the HVM launcher's, not on this class path) is checked as the scj engine it extends.
+     * A run whose engine lacks its memory style is recorded unsupported and not checked.
      */
-    private static void refuseWhatIdealRunsRefuse(List<String> args, List<String> where) {
-        for (int i = 0; i < args.size(); i++) {
-            String[] nameValue = args.get(i).split("=", 2);
-            String value = nameValue.length == 2 ? nameValue[1] : i + 1 < args.size() ? args.get(i + 1) : "";
-            boolean spin = nameValue[0].equals("--spin-us") && value.matches("\\+?0*[1-9][0-9]*");
-            if (spin || nameValue[0].equals("--area-size")) {
-                throw new BadUsageException(where.get(i) + ": '" + nameValue[0] + "' with the policy ideal: an ideal run"
-                        + (spin ? " has no releases to spin before" : " has no SCJ memory areas")
-                        + " (drop ideal from --policies, or give it a matrix of its own)");
+    private static void checkWorkloadOptions(java.util.Collection<PlannedRun> runs, double timeScale,
+                                             List<String> workloadArgs, List<String> argWhere) {
+        Set<String> cells = new java.util.HashSet<>();
+        for (PlannedRun run : runs) {
+            if (Engines.unsupported(run.engine(), run.memory()) != null
+                    || !cells.add(run.runtime().kind() + " " + run.engine() + " " + run.memory() + " " + run.policy()
+                            + " " + run.profile().has(org.jmclbench.tooling.runtime.ProfileComponent.FIFO))) {
+                continue;
             }
+            String refusal = refusal(run, WorkloadCommand.workloadOptions(run, Path.of("results"), timeScale,
+                    workloadArgs));
+            if (refusal != null) {
+                String option = refusal.substring(0, Math.max(0, refusal.indexOf(':')));
+                int at = -1;
+                for (int i = 0; i < workloadArgs.size() && at < 0; i++) {
+                    at = workloadArgs.get(i).split("=", 2)[0].equals(option) ? i : -1;
+                }
+                String cell = "the " + run.engine() + (run.policy().equals("ideal") ? " ideal" : " " + run.policy())
+                        + " runs";
+                throw new BadUsageException((at >= 0 ? argWhere.get(at) + ": " : argWhere.isEmpty() ? ""
+                        : argWhere.get(0) + ": ") + refusal + " (" + cell + ")");
+            }
+        }
+    }
+
+    /** What the workload of {@code run} says of its command line {@code line}, or null when it takes it. */
+    private static String refusal(PlannedRun run, List<String> line) {
+        List<String> args = new ArrayList<>(line);
+        if (run.runtime().kind() == RuntimeKind.NATIVE) {
+            for (String a : args) {
+                String name = a.split("=", 2)[0];
+                if (JAVA_ONLY_ARGS.contains(name) || name.equals("--version")) {
+                    return name + (name.equals("--version") ? ": prints the build and runs nothing"
+                            : ": unknown option (see --help)");
+                }
+            }
+            args.remove("--no-fifo"); // the C baseline's own, set by the runner
+        } else if (run.runtime().kind() == RuntimeKind.HVM) {
+            args.set(args.indexOf("hvm"), Engines.SCJ);
+        }
+        try {
+            org.jmclbench.workload.RunOptionsParser.parse(args.toArray(new String[0]));
+            return null;
+        } catch (org.jmclbench.workload.BadInputException e) {
+            return e.getMessage();
         }
     }
 

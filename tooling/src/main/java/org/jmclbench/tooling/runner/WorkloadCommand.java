@@ -48,6 +48,18 @@ public final class WorkloadCommand {
             cmd.add(jar.toString());
             cmd.add(MAIN_CLASS);
         }
+        cmd.addAll(workloadOptions(run, out, timeScale, workloadArgs));
+        return cmd;
+    }
+
+    /**
+     * The workload's own command line within {@link #build}'s: {@code run} and the options, as the
+     * workload parses them (docs/FORMATS.md section 2); the planner checks them with the workload's
+     * parser before anything runs.
+     */
+    static List<String> workloadOptions(PlannedRun run, Path out, double timeScale, List<String> workloadArgs) {
+        RuntimeInfo rt = run.runtime();
+        List<String> cmd = new ArrayList<>();
         cmd.add("run");
         if (rt.kind() == RuntimeKind.HVM) {
             cmd.addAll(List.of("--engine", "hvm"));

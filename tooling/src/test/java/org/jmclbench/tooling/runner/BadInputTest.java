@@ -42,11 +42,26 @@ class BadInputTest extends FakeJvmHome {
     void whatAnIdealRunRefusesIsRefusedByTheMatrixThatPlansOne() {
         // the workload refuses --ideal with a spin or SCJ area sizes (exit 2): each ideal run of the
         // matrix would have been recorded failed
-        assertMatrixRejected("--workload-arg: '--spin-us' with the policy ideal: an ideal run has no releases to spin"
-                + " before", "--policies", "skip,ideal", "--workload-arg", "--spin-us 50");
-        assertMatrixRejected("--workload-arg: '--area-size' with the policy ideal: an ideal run has no SCJ memory areas",
+        assertMatrixRejected("--workload-arg: --spin-us: an ideal run has no releases to spin before (--ideal) (the javase"
+                + " ideal runs)", "--policies", "skip,ideal", "--workload-arg", "--spin-us 50");
+        assertMatrixRejected("--workload-arg: --area-size: an ideal run has no SCJ memory areas (--ideal) (the scj ideal runs)",
                 "--policies", "ideal", "--engines", "scj", "--workload-arg", "--area-size=mission=100000");
-        assertMatrixRejected("'--spin-us' with the policy ideal", "--policies", "ideal", "--workload-arg", "--spin-us=+7");
+        assertMatrixRejected("--workload-arg: --spin-us: an ideal run has no releases", "--policies", "ideal",
+                "--workload-arg", "--spin-us=+7");
+    }
+
+    @Test
+    void aWorkloadArgAnEngineRefusesIsRefusedBeforeAnythingRuns() {
+        // each run of the engine would have exited 2 and been recorded failed, one by one
+        assertMatrixRejected("--workload-arg: --gc-log: the scj engine writes no GC log (only javase does) (the scj skip runs)",
+                "--engines", "javase,scj", "--workload-arg", "--gc-log");
+        assertMatrixRejected("--workload-arg: --bogus: unknown option (see --help) (the javase skip runs)",
+                "--workload-arg", "--bogus");
+        assertMatrixRejected("--workload-arg: --warmup: not a number: 'soon'", "--workload-arg", "--warmup soon");
+        assertMatrixRejected("--workload-arg: --rtsj-design: chooses the rtsj engine's design: needs --engine rtsj",
+                "--workload-arg", "--rtsj-design=atomic");
+        // the load scenario is the matrix's: a --load-alloc of the workload's own would run under a load not recorded
+        assertMatrixRejected("--workload-arg: '--load-alloc' is set by the runner", "--workload-arg", "--load-alloc 10,1");
     }
 
     @Test

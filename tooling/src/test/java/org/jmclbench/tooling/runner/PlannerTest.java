@@ -1,6 +1,7 @@
 package org.jmclbench.tooling.runner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -10,6 +11,7 @@ import java.util.List;
 import java.util.Set;
 
 import org.jmclbench.tooling.Fixtures;
+import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.store.MachineInfo;
 import org.junit.jupiter.api.Test;
@@ -53,6 +55,31 @@ class PlannerTest {
         // a spin of 0 is none: the workload takes it with --ideal
         assertEquals(1, plan("java", jvm, "profiles", "g1", "policies", "ideal", "datasets", "tiny", "particles", "100",
                 "workload-arg", "--spin-us 0").plan().size());
+    }
+
+    @Test
+    void eachCellsWorkloadOptionsAreCheckedAsItsEngineWillCheckThem() throws Exception {
+        Fixtures.home(dir);
+        String jvm = Fixtures.fakeJava(dir, "jvm", "ok", 0, null, 21).toString();
+        String nat = Fixtures.fakeJava(dir, "nat", "ok", 0, null, 21).toString();
+        // javase spins before a release, the scj engine refuses to: each scj run would have exited 2, recorded failed
+        BadUsageException e = assertThrows(BadUsageException.class, () -> plan("java", jvm, "engines", "javase,scj",
+                "datasets", "tiny", "workload-arg", "--spin-us 50"));
+        assertEquals("--workload-arg: --spin-us: the scj engine does not spin before a release (only javase does)"
+                + " (the scj skip runs)", e.getMessage());
+        // the C baseline has no SCJ areas: --area-size is unknown to it, though the scj engine takes it
+        e = assertThrows(BadUsageException.class, () -> plan("java", jvm, "native", nat, "runtimes", "native",
+                "engines", "scj", "datasets", "tiny", "workload-arg", "--area-size mission=100000"));
+        assertEquals("--workload-arg: --area-size: unknown option (see --help) (the native skip runs)", e.getMessage());
+        e = assertThrows(BadUsageException.class, () -> plan("java", jvm, "policies", "skip,queue", "datasets", "tiny",
+                "workload-arg", "--resample", "workload-arg", "stratified"));
+        assertEquals("--workload-arg: --resample: 'stratified' is not one of systematic|multinomial (the javase skip runs)",
+                e.getMessage());
+        // what every engine takes is planned; so is a memory style an engine lacks, recorded unsupported when run
+        assertEquals(3, plan("java", jvm, "native", nat, "runtimes", "native", "engines", "javase,scj", "datasets", "tiny",
+                "workload-arg", "--no-cpu-time --resample=multinomial").plan().size());
+        assertEquals(2, plan("java", jvm, "engines", "javase,scj", "memory", "allocating", "datasets", "tiny",
+                "workload-arg", "--init uniform").plan().size());
     }
 
     @Test

@@ -69,6 +69,25 @@ final class DataMutator {
         }
     }
 
+    /**
+     * A laser's angle: in [0, 2pi) in one of the grammar's spellings, now and then any number (which the
+     * reader refuses when it is outside), so that a laser file of several lines is still accepted often.
+     */
+    private String angle() {
+        if (random.nextInt(12) == 0) {
+            return number(10);
+        }
+        double a = random.nextDouble() * 6.283185307179586;
+        switch (random.nextInt(3)) {
+            case 0:
+                return String.format(Locale.ROOT, "%.3f", a);
+            case 1:
+                return Double.toString(a);
+            default:
+                return String.format(Locale.ROOT, "%.16e", a);
+        }
+    }
+
     private String digits(int n) {
         StringBuilder b = new StringBuilder(n);
         for (int i = 0; i < n; i++) {
@@ -86,7 +105,10 @@ final class DataMutator {
         return b.toString();
     }
 
-    /** An event file of about {@code columns} columns: sorted times, blank and comment lines, CRLF now and then. */
+    /**
+     * An event file of about {@code columns} columns (2: a laser file, whose angles are in [0, 2pi) more often than
+     * not): sorted times, blank and comment lines, CRLF now and then.
+     */
     byte[] eventFile(int columns) {
         StringBuilder b = new StringBuilder();
         int rows = random.nextInt(10);
@@ -103,7 +125,7 @@ final class DataMutator {
             }
             for (int c = 0; c < cols; c++) {
                 b.append(c == 0 ? (random.nextInt(20) == 0 ? number(1) : String.format(Locale.ROOT, "%.16e", t))
-                        : number(10));
+                        : columns == 2 ? angle() : number(10));
                 b.append(c + 1 < cols ? (random.nextBoolean() ? "  " : blanks().isEmpty() ? " " : blanks()) : "");
             }
             if (random.nextInt(6) == 0) {

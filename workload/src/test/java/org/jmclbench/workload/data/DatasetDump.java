@@ -15,11 +15,12 @@ final class DatasetDump {
     private DatasetDump() {
     }
 
-    /** An event file of {@code columns} columns, read from bytes named "input". */
+    /** An event file of {@code columns} columns, read from bytes named "input": 2 a laser file, 4 odometry. */
     static String series(byte[] file, int columns) {
         StringBuilder b = new StringBuilder();
         try {
-            double[][] c = DatasetReader.readColumns(new ByteArrayInputStream(file), "input", columns);
+            double[][] c = DatasetReader.readColumns(new ByteArrayInputStream(file), "input", columns,
+                    columns == 2 ? DatasetReader.Rule.LASER : DatasetReader.Rule.NONE);
             b.append("ok\n");
             series(b, "series", c);
         } catch (BadInputException e) {

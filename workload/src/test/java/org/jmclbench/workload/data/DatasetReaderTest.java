@@ -90,10 +90,10 @@ class DatasetReaderTest {
 
     @Test
     void acceptsValuesUpToTheLargestMagnitudeAndTimeScalesThatKeepTimesWithinIt() throws Exception {
-        Dataset d = DatasetReader.readFiles(file("o", "1e6  1e9  -1e9  0\n"), file("l", "1e6  -1e9\n"),
-                file("r", "1e9  0  0  0\n"));
-        assertEquals(-1e9, d.laserAngle[0]);
-        assertEquals(1e9, d.realTime[0]);
+        Dataset d = DatasetReader.readFiles(file("o", "1e6  1e9  -1e9  0\n"), file("l", "1e6  0\n"),
+                file("r", "1e6  1e9  -1e9  0\n"));
+        assertEquals(-1e9, d.odoDy[0]);
+        assertEquals(1e9, d.realX[0]);
         d.checkTimeScale(1000); // 1e6 s times 1000 is 1e9 s: the largest time of a run, still in
         BadInputException e = assertThrows(BadInputException.class, () -> d.checkTimeScale(1000.0000001));
         assertEquals("--time-scale: scales the last time of " + new File(tmp, "o").getPath()
@@ -158,6 +158,37 @@ class DatasetReaderTest {
         File real = file("real.txt", "0.05  0.5  0.6  0.1\n0.10  0.51  0x  0.1\n");
         msg = reject(file("odometry.txt", ODO).getPath(), file("laser.txt", LASER).getPath(), real.getPath());
         assertEquals("jmclbench: " + real.getPath() + ":2: not a number: '0x'", msg);
+    }
+
+    @Test
+    void rejectsALaserAngleOutsideZeroToTwoPi() throws Exception {
+        // the beacon's angle from the heading, in [0, 2pi) (SPEC section 1); -0 and the double below 2pi are in
+        String[][] bad = {{"-7", ":2"}, {"7", ":2"}, {"1e9", ":2"}, {"-1e-300", ":2"}, {"6.283185307179586", ":2"}};
+        for (String[] b : bad) {
+            File laser = file("laser.txt", "0.03  -0\n0.07  " + b[0] + "\n0.08  6.283185307179585\n");
+            assertEquals("jmclbench: " + laser.getPath() + b[1] + ": angle " + b[0]
+                    + " is not in [0, 2pi) (the beacon's angle from the heading)",
+                    reject(file("odometry.txt", ODO).getPath(), laser.getPath(), file("real.txt", REAL).getPath()));
+        }
+        assertArrayEquals(new double[] {-0.0, 6.283185307179585}, DatasetReader.readFiles(file("o", ODO),
+                file("l", "0.03  -0\n0.08  6.283185307179585\n"), file("r", REAL)).laserAngle);
+    }
+
+    @Test
+    void rejectsGroundTruthAwayFromTheOdometryTimes() throws IOException {
+        String odo = file("odometry.txt", ODO).getPath();
+        String laser = file("laser.txt", LASER).getPath();
+        String[][] bad = {
+            {"0.05  0.5  0.6  0.1\n# moved\n0.11  0.51  0.6  0.1\n", ":3: time 0.11 is not that of record 2 of " + odo},
+            {"0.05  0.5  0.6  0.1\n", ": 1 records for the 2 of " + odo},
+            {REAL + "0.10  0.52  0.6  0.1\n", ":3: time 0.10 after the last of the 2 records of " + odo},
+            {"500  1  1  0\n", ":1: time 500 is not that of record 1 of " + odo},
+        };
+        for (String[] b : bad) {
+            File real = file("real.txt", b[0]);
+            assertEquals("jmclbench: " + real.getPath() + b[1] + " (the ground truth is at the odometry times)",
+                    reject(odo, laser, real.getPath()));
+        }
     }
 
     @Test

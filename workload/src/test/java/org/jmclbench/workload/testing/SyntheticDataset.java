@@ -27,11 +27,17 @@ public final class SyntheticDataset {
 
     /**
      * Moves the odometry event {@code row} (0 = the first data line) of the dataset in {@code dir}
-     * {@code seconds} later, so the odometry is no longer periodic; returns its line number in the file.
+     * {@code seconds} later, so the odometry is no longer periodic, and its ground truth with it; returns its
+     * line number in the file.
      */
     public static int delayOdometryEvent(File dir, int row, double seconds) throws IOException {
-        File odo = new File(dir, "odometry.txt");
-        List<String> lines = Files.readAllLines(odo.toPath(), StandardCharsets.UTF_8);
+        delayRow(new File(dir, "real.txt"), row, seconds); // the ground truth is at the odometry times
+        return delayRow(new File(dir, "odometry.txt"), row, seconds);
+    }
+
+    /** Adds {@code seconds} to the time of record {@code row} (from 0) of an event file; returns its line number. */
+    private static int delayRow(File file, int row, double seconds) throws IOException {
+        List<String> lines = Files.readAllLines(file.toPath(), StandardCharsets.UTF_8);
         int line = 0;
         for (int i = 0, rows = -1; i < lines.size(); i++) {
             if (!lines.get(i).startsWith("#") && ++rows == row) {
@@ -41,7 +47,7 @@ public final class SyntheticDataset {
                 line = i + 1;
             }
         }
-        Files.write(odo.toPath(), lines, StandardCharsets.UTF_8);
+        Files.write(file.toPath(), lines, StandardCharsets.UTF_8);
         return line;
     }
 

@@ -314,8 +314,10 @@ def printed_close(text, want):
     return abs(float(text) - want) <= 0.5 * 10 ** -decimals * (1 + 1e-9) + 1e-12
 
 
-def check_compare(path, runs, per_run, note):
-    """compare's output for --db X --a SPEC --b SPEC (SPEC: runtime[/engine]); its A and B columns."""
+def check_compare(path, runs, per_run, note, named=None):
+    """compare's output for --db X --a SPEC --b SPEC (SPEC: runtime[/engine], or a row name as the report
+    writes it, "native [time scale 0.5]"); its A and B columns. named: (dataset, policy, particles, row name
+    without its machine) -> the ok runs of the report's cells of that name, None without --report."""
     import re
     text = open(path).read().splitlines()
     spec = {}
@@ -324,6 +326,10 @@ def check_compare(path, runs, per_run, note):
         spec[k.strip()] = v.strip()
 
     def select(sp, dataset, policy, particles):
+        if named is not None and (dataset, policy, particles, sp) in named:
+            return named[(dataset, policy, particles, sp)]
+        if " [" in sp and named is None:
+            raise ValueError("%s: compare named a row (%s): give --report too, to select its runs by the report's cell" % (path, sp))
         parts = sp.split("/")
         sel = [r for r in runs if r[3] == parts[0] and (r[9], r[7], r[8]) == (dataset, policy, particles)]
         eng = next((p for p in parts[1:] if p in ("javase", "scj", "rtsj", "rtsj-atomic", "native", "hvm")), None)
@@ -389,18 +395,20 @@ def check_series(con, key, folder, rc, note):
 def cell_key(cell):
     """A report cell's configuration as the runs table spells it (the profile empty when none), with
     the machine label the report appends to its name (" @label") when the store holds several machines,
-    and the run-key settings the columns lack (time scale, workload arguments, dataset digest: runs that
-    differ in them are never pooled, docs/REPORT.md)."""
+    and the run-key settings the columns lack (time scale, workload arguments, dataset digest, runtime
+    version, the alloc load's rates: runs that differ in them are never pooled, docs/REPORT.md)."""
     name, at, label = cell["config"].rpartition(" @")
     return (cell["dataset"], cell["policy"], cell["particles"], cell["runtime"], cell["profile"] or "",
             cell["engine"], cell["memory"], cell["load"], label if at else None,
-            cell.get("timeScale"), cell.get("workloadArgs"), cell.get("datasetDigest"))
+            cell.get("timeScale"), cell.get("workloadArgs"), cell.get("datasetDigest"), cell.get("runtimeVersion"),
+            cell.get("allocMbPerS"), cell.get("allocLiveMb"))
 
 
 def run_settings(con):
-    """run_key -> (time scale, workload arguments, dataset digest), read here from the spec_json of the
-    matrix that ran it (the time scale, failing that, from its summary): None where the store does not
-    tell. Two datasets of one label in one matrix are told apart by the path the summary names."""
+    """run_key -> (time scale, workload arguments, dataset digest, runtime version, alloc MB/s, alloc MB
+    live), read here from the spec_json of the matrix that ran it (the time scale and the alloc rates,
+    failing that, from its summary; the rates only under a load that allocates): None where the store
+    does not tell. Two datasets of one label in one matrix are told apart by the path the summary names."""
     specs = {}
     for mid, spec in con.execute("select matrix_id, spec_json from matrices"):
         try:
@@ -408,7 +416,8 @@ def run_settings(con):
         except ValueError:
             specs[mid] = {}
     out = {}
-    for key, mid, dataset, summary_json in con.execute("select run_key, matrix_id, dataset, summary_json from runs"):
+    for key, mid, dataset, summary_json, version, load in con.execute(
+            "select run_key, matrix_id, dataset, summary_json, runtime_version, load from runs"):
         spec = specs.get(mid) or {}
         try:
             params = (json.loads(summary_json) or {}).get("parameters", {}) if summary_json else {}
@@ -423,7 +432,16 @@ def run_settings(con):
         ds = [d for d in spec.get("datasets") or [] if d.get("label") == dataset and isinstance(d.get("digest"), str)]
         if len(ds) > 1:
             ds = [d for d in ds if d.get("path") == (params.get("dataset") or {}).get("path")]
-        out[key] = (scale, args, ds[0]["digest"] if len(ds) == 1 else None)
+        rates = (None, None)
+        if load in ("alloc", "mixed"):
+            given = str(spec.get("loadAlloc", "")).split(",")
+            if len(given) == 2 and all(g.strip().isdigit() for g in given):
+                rates = (int(given[0]), int(given[1]))
+            else:
+                lp = params.get("load") or {}
+                if isinstance(lp.get("allocMbPerS"), int) and isinstance(lp.get("allocLiveMb"), int):
+                    rates = (lp["allocMbPerS"], lp["allocLiveMb"])
+        out[key] = (scale, args, ds[0]["digest"] if len(ds) == 1 else None, version) + rates
     return out
 
 
@@ -598,8 +616,13 @@ def audit(argv):
         compared += pts
         print("report: %d chart points checked against the jobs within HdrHistogram precision" % pts)
 
+    named = None
+    if report:
+        named = {}
+        for (dataset, policy, particles, config), rcs in cell_runs.items():
+            named.setdefault((dataset, policy, particles, config.rpartition(" @")[0] if " @" in config else config), []).extend(rcs)
     for path in compares:
-        k = check_compare(path, runs, per_run, bad.append)
+        k = check_compare(path, runs, per_run, bad.append, named)
         compared += k
         print("compare %s: %d means checked" % (path, k))
     for b in bad:

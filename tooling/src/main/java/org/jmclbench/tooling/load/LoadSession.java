@@ -45,7 +45,7 @@ public record LoadSession(LoadScenario scenario, LoadSettings settings, CpuLoad 
             parts.add(cpu.tool() + " --cpu " + settings.cpuWorkers());
         }
         if (scenario.alloc()) {
-            parts.add("alloc " + settings.allocMbPerS() + " MB/s, " + settings.allocLiveMb() + " MB live");
+            parts.add("alloc " + LoadSettings.allocText(settings.allocMbPerS(), settings.allocLiveMb()));
         }
         return scenario.label() + (parts.isEmpty() ? "" : ": " + String.join("; ", parts));
     }

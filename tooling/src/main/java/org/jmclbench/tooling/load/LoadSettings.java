@@ -15,6 +15,11 @@ public record LoadSettings(int cpuWorkers, int allocMbPerS, int allocLiveMb) {
         }
     }
 
+    /** The alloc load's rates as a run's description and a report's row name write them: {@code 200 MB/s, 64 MB live}. */
+    public static String allocText(int allocMbPerS, int allocLiveMb) {
+        return allocMbPerS + " MB/s, " + allocLiveMb + " MB live";
+    }
+
     /** One CPU hog per processor; 100 MB/s with a 16 MB live set (fits a 64 MB heap). */
     public static LoadSettings defaults() {
         return new LoadSettings(Runtime.getRuntime().availableProcessors(), 100, 16);

@@ -113,7 +113,7 @@ final class ChartSpecs {
                     + "it ran under (none: an idle machine; cpu, alloc: docs/RUNNER.md), the miss ratio over both tasks, mean with "
                     + "its 95% interval cut at 0 and 1. A store run on an idle machine only has one bar per configuration.", true,
                     s -> TaskCharts.conditions(s, "conditions-load", "Miss ratio by load scenario", TaskMetric.MISS_RATIO, "all",
-                            c -> c.load)),
+                            c -> c.loadCondition)),
             new Figure("abort-latency", "Abort latency (terminate)", "From the abort request (a later release: the gate\u2019s "
                     + "request, or the AIE fired at the job) to the aborted job\u2019s end, over every job an abort took hold of "
                     + "(the abort_ns column of the job files), every repetition merged; x = 1/(1\u2212p) on a log axis, latency "

@@ -257,9 +257,9 @@ final class EvaluationQuestions extends EvaluationSections {
             return;
         }
         List<List<String>> rows = new ArrayList<>();
-        List<String> bases = data.order(loaded.stream().map(c -> c.config.replace(StoredRun.loadLabel(c.load), "")).distinct().toList());
+        List<String> bases = data.order(loaded.stream().map(c -> c.config.replace(StoredRun.loadLabel(c.loadCondition), "")).distinct().toList());
         for (String base : bases) {
-            for (ReportModel.Cell l : data.order(loaded.stream().filter(c -> c.config.equals(base + StoredRun.loadLabel(c.load))).toList())) {
+            for (ReportModel.Cell l : data.order(loaded.stream().filter(c -> c.config.equals(base + StoredRun.loadLabel(c.loadCondition))).toList())) {
                 ReportModel.Cell idle = data.cells(c -> c.ok > 0 && c.config.equals(base) && c.particles == l.particles
                         && c.policy.equals(l.policy)).stream().findFirst().orElse(null);
                 if (idle != null && rows.stream().noneMatch(r -> r.get(0).equals(idle.config) && r.get(1).equals(String.valueOf(idle.particles)))) {
@@ -278,10 +278,10 @@ final class EvaluationQuestions extends EvaluationSections {
         table(List.of("configuration", "particles", "policy", "runs", "miss ratio", "latency p99 (ms)", "jitter p99 (ms)"), rows);
         ReportModel.Cell first = loaded.get(0);
         List<ReportModel.Cell> compared = data.cells(c -> c.ok > 0 && c.particles == first.particles && c.policy.equals(first.policy)
-                && bases.contains(c.config.replace(StoredRun.loadLabel(c.load), "")));
+                && bases.contains(c.config.replace(StoredRun.loadLabel(c.loadCondition), "")));
         figure("load", "Figure 8: task latency p99 on an idle machine and beside each load scenario, per configuration (mean "
                 + "[95% CI], the interval cut at zero).", () -> charts.write(TaskCharts.conditions(scope(first.policy, first.particles, compared), "load",
-                "Idle vs loaded machine", Metric.LATENCY_P99, c -> c.load).withStem("load")));
+                "Idle vs loaded machine", Metric.LATENCY_P99, c -> c.loadCondition).withStem("load")));
     }
 
     private static List<String> loadRow(ReportModel.Cell c) {

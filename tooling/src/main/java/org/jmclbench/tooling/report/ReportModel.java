@@ -166,10 +166,16 @@ public final class ReportModel {
         public String memory;
         /** The load scenario the runs ran under ({@code none}: an idle machine). */
         public String load;
+        /** The load as the name shows it (StoredRun#loadCondition): the scenario, with the alloc load's rates when cells differ in them. */
+        public String loadCondition;
         /** The run-key settings its runs share (StoredRun#timeScale and the others); null where the store does not tell. */
         public Double timeScale;
         public String workloadArgs;
         public String datasetDigest;
+        /** The runtime's version (a runtime name run at two versions is two cells) and the alloc load's rates; null where none or not told. */
+        public String runtimeVersion;
+        public Integer allocMbPerS;
+        public Integer allocLiveMb;
         public int runs;
         public int ok;
         public int failed;
@@ -353,6 +359,10 @@ public final class ReportModel {
         c.timeScale = first.timeScale;
         c.workloadArgs = first.workloadArgs;
         c.datasetDigest = first.datasetDigest;
+        c.loadCondition = first.loadCondition();
+        c.runtimeVersion = first.runtimeVersion;
+        c.allocMbPerS = first.allocMbPerS;
+        c.allocLiveMb = first.allocLiveMb;
         c.runs = group.size();
         List<StoredRun> ok = new ArrayList<>();
         for (StoredRun r : group) {

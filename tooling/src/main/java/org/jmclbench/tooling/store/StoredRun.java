@@ -11,6 +11,7 @@ import java.util.Set;
 import java.util.function.Function;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.load.LoadSettings;
 import org.jmclbench.tooling.runner.MatrixDefaults;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -40,6 +41,12 @@ public final class StoredRun {
     public Double timeScale;
     public String workloadArgs;
     public String datasetDigest;
+    /**
+     * The alloc load's rates (MB/s allocated, MB kept live), which the run key holds when the load
+     * scenario allocates; null for a scenario that does not, or where the store does not tell.
+     */
+    public Integer allocMbPerS;
+    public Integer allocLiveMb;
     /** javase | scj | native (later hvm); from the column, else the summary, else the runtime (a store before engines). */
     public String engine;
     /** preallocated | allocating | scoped. */
@@ -71,6 +78,8 @@ public final class StoredRun {
     private boolean showTimeScale;
     private boolean showWorkloadArgs;
     private boolean showDatasetDigest;
+    private boolean showRuntimeVersion;
+    private boolean showAllocRates;
 
     /**
      * The configuration under test: runtime, and profile when there is one; then, when the runs
@@ -80,7 +89,10 @@ public final class StoredRun {
      * (a run on an idle machine keeps the plain name). Likewise, before the load, the settings the runs
      * shown together differ in: {@code native [time scale 0.5]} (a run at 1 keeps the plain name),
      * {@code native [--estimate best]} (a run without workload arguments keeps it), and the dataset's
-     * digest, {@code native [data 0123abcd]}, when two datasets of one name differ in content.
+     * digest, {@code native [data 0123abcd]}, when two datasets of one name differ in content; first of
+     * them the runtime's version, {@code temurin-17/g1 [17.0.16+8]}, when the runs of one runtime name
+     * differ in it; and the alloc load's rates in its bracket, {@code [load alloc 200 MB/s, 64 MB live]},
+     * when the allocating runs differ in them.
      */
     public String config() {
         String c = profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
@@ -92,7 +104,17 @@ public final class StoredRun {
             parts.add(memory);
         }
         String base = (parts.isEmpty() ? c : c + " / " + String.join(" ", parts)) + settingsLabel();
-        return showLoad && !"none".equals(loadScenario()) ? base + loadLabel(loadScenario()) : base;
+        boolean shown = showLoad || !loadCondition().equals(loadScenario());
+        return shown && !"none".equals(loadScenario()) ? base + loadLabel(loadCondition()) : base;
+    }
+
+    /**
+     * The load as {@link #config()} names it: the scenario, followed by the alloc load's rates when the
+     * allocating runs shown together differ in them ({@code alloc 200 MB/s, 64 MB live}).
+     */
+    public String loadCondition() {
+        return showAllocRates && allocMbPerS != null && allocLiveMb != null
+                ? loadScenario() + " " + LoadSettings.allocText(allocMbPerS, allocLiveMb) : loadScenario();
     }
 
     /**
@@ -101,6 +123,9 @@ public final class StoredRun {
      */
     private String settingsLabel() {
         StringBuilder b = new StringBuilder();
+        if (showRuntimeVersion && runtimeVersion != null) {
+            b.append(" [").append(runtimeVersion).append(']');
+        }
         if (showDatasetDigest && datasetDigest != null) {
             b.append(" [data ").append(datasetDigest, 0, Math.min(8, datasetDigest.length())).append(']');
         }
@@ -118,7 +143,7 @@ public final class StoredRun {
         return load == null || load.isEmpty() ? "none" : load;
     }
 
-    /** What {@link #config()} appends for a load scenario when the runs shown together differ in it. */
+    /** What {@link #config()} appends for a load ({@link #loadCondition()}) when the runs shown together differ in it. */
     public static String loadLabel(String scenario) {
         return " [load " + scenario + "]";
     }
@@ -177,8 +202,9 @@ public final class StoredRun {
      * and the memory style when they have more than one, so that a store of one engine keeps its
      * short labels ({@code temurin-25/g1}); likewise the load scenario, so that runs on an idle and
      * on a loaded machine are never pooled into one configuration, and each setting of the run key the
-     * columns lack ({@link #timeScale}, {@link #workloadArgs}, {@link #datasetDigest}; a run whose store
-     * does not tell one is not counted as differing in it).
+     * columns lack ({@link #timeScale}, {@link #workloadArgs}, {@link #datasetDigest}, the alloc load's
+     * rates; a run whose store does not tell one is not counted as differing in it), and the version of a
+     * runtime name whose runs ran on more than one (a JVM updated between two matrices).
      */
     public static void labelEngines(Collection<StoredRun> runs) {
         boolean engines = runs.stream().filter(r -> !"native".equals(r.engine)).map(r -> r.engine).distinct().count() > 1;
@@ -187,10 +213,9 @@ public final class StoredRun {
         boolean timeScales = differ(runs, r -> r.timeScale);
         boolean workloadArgs = differ(runs, r -> r.workloadArgs);
         // distinct datasets differ in content by nature: only two contents of one name need telling apart
-        Set<String> reused = runs.stream().collect(Collectors.groupingBy(r -> r.dataset,
-                Collectors.mapping(r -> r.datasetDigest, Collectors.toSet()))).entrySet().stream()
-                .filter(e -> e.getValue().stream().filter(Objects::nonNull).count() > 1).map(Map.Entry::getKey)
-                .collect(Collectors.toSet());
+        Set<String> reused = severalOf(runs, r -> r.dataset, r -> r.datasetDigest);
+        Set<String> updated = severalOf(runs, r -> r.runtime, r -> r.runtimeVersion);
+        boolean allocRates = differ(runs, r -> r.allocMbPerS == null ? null : List.of(r.allocMbPerS, r.allocLiveMb));
         for (StoredRun r : runs) {
             r.showEngine = engines;
             r.showMemory = memory;
@@ -198,7 +223,17 @@ public final class StoredRun {
             r.showTimeScale = timeScales;
             r.showWorkloadArgs = workloadArgs;
             r.showDatasetDigest = reused.contains(r.dataset);
+            r.showRuntimeVersion = updated.contains(r.runtime);
+            r.showAllocRates = allocRates;
         }
+    }
+
+    /** The names ({@code name}) whose runs have more than one known value of {@code setting}. */
+    private static Set<String> severalOf(Collection<StoredRun> runs, Function<StoredRun, String> name,
+                                         Function<StoredRun, String> setting) {
+        return runs.stream().collect(Collectors.groupingBy(name, Collectors.mapping(setting, Collectors.toSet()))).entrySet()
+                .stream().filter(e -> e.getValue().stream().filter(Objects::nonNull).count() > 1).map(Map.Entry::getKey)
+                .collect(Collectors.toSet());
     }
 
     /** Whether the runs have more than one known value of {@code setting}. */

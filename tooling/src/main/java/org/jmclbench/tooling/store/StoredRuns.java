@@ -10,6 +10,7 @@ import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Statement;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Base64;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
@@ -19,6 +20,7 @@ import java.util.zip.DataFormatException;
 
 import org.HdrHistogram.Histogram;
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.load.LoadScenario;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -159,7 +161,8 @@ public final class StoredRuns implements AutoCloseable {
     private static final ObjectMapper SPEC_JSON = new ObjectMapper();
 
     /**
-     * The run-key settings of {@code r} the columns lack ({@link StoredRun#timeScale} and the others), from
+     * The run-key settings of {@code r} the columns lack ({@link StoredRun#timeScale} and the others, the
+     * alloc load's rates of an allocating scenario), from
      * the spec of the matrix that ran it, which holds them for failed runs too; the time scale, failing
      * that, from the run's summary. Two datasets of one label in one matrix are told apart by the path
      * the summary names.
@@ -185,6 +188,17 @@ public final class StoredRuns implements AutoCloseable {
             datasets.removeIf(d -> !d.path("path").asText().equals(path));
         }
         r.datasetDigest = datasets.size() == 1 ? datasets.get(0).path("digest").asText() : null;
+        if (Arrays.stream(LoadScenario.values()).anyMatch(l -> l.alloc() && l.label().equals(r.loadScenario()))) {
+            // the spec writes them "200,64"; the summary of a run the spec does not tell, under parameters.load
+            String[] rates = s.path("loadAlloc").asText("").split(",");
+            if (rates.length == 2 && rates[0].strip().matches("\\d+") && rates[1].strip().matches("\\d+")) {
+                r.allocMbPerS = Integer.valueOf(rates[0].strip());
+                r.allocLiveMb = Integer.valueOf(rates[1].strip());
+            } else if (p.at("/load/allocMbPerS").isInt() && p.at("/load/allocLiveMb").isInt()) {
+                r.allocMbPerS = p.at("/load/allocMbPerS").asInt();
+                r.allocLiveMb = p.at("/load/allocLiveMb").asInt();
+            }
+        }
     }
 
     private static Object nullable(ResultSet rs, int column, boolean integer) throws SQLException {

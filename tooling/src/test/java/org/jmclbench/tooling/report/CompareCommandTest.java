@@ -77,6 +77,21 @@ class CompareCommandTest {
     }
 
     @Test
+    void twoVersionsOfOneRuntimeAreComparedByTheirRowNamesNeverPooled() throws Exception {
+        // temurin-17 updated to 17.0.16+8 before repetitions 7 to 10
+        Path updated = java.nio.file.Files.copy(a, dir.resolve("two-versions.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + updated); var st = c.createStatement()) {
+            st.execute("UPDATE runs SET runtime_version = '17.0.16+8' WHERE runtime = 'temurin-17' AND repetition > 6");
+        }
+        String out = run(0, "compare", "--db", updated.toString(), "--a", "temurin-17/g1 [17.0.15+6]", "--b",
+                "temurin-17/g1 [17.0.16+8]")[0];
+        assertTrue(line(out, "missCount").contains(" n=6 ") && line(out, "missCount").contains(" n=4 "),
+                "six repetitions on 17.0.15 against four on 17.0.16, not ten a side: " + line(out, "missCount"));
+        String err = run(2, "compare", "--db", updated.toString(), "--a", "temurin-17", "--b", "native")[1];
+        assertTrue(err.contains("say which: temurin-17/g1 [17.0.15+6], temurin-17/g1 [17.0.16+8]"), err);
+    }
+
+    @Test
     void aConfigurationAgainstItselfIsRefusedNotComparedWithItsOwnRuns() {
         // the same runs on both sides measured nothing twice: no ratio, interval or verdict to print
         String err = run(2, "compare", "--db", a.toString(), "--a", "native", "--b", "native")[1];

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -251,6 +252,53 @@ class ReportCommandTest {
         // the unsupported runs have no summary: the matrix's spec says at which scale they were planned
         assertTrue(data.toString().contains("\"config\":\"temurin-11/shenandoah [time scale 0.5]\""));
         assertFalse(html.contains(" [time scale "), "a store of one time scale keeps its labels");
+    }
+
+    @Test
+    void runsOfTwoVersionsOfOneRuntimeAreNeverPooled() throws Exception {
+        // temurin-17 updated between two matrices: its third repetitions ran on 17.0.16+8
+        Path updated = Files.copy(db, dir.resolve("two-versions.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + updated); var st = c.createStatement()) {
+            st.execute("UPDATE runs SET runtime_version = '17.0.16+8' WHERE runtime = 'temurin-17' AND repetition = 3");
+        }
+        Map<String, Integer> ok = okRuns(updated, "two-versions-report");
+        assertEquals(2, ok.get("temurin-17/g1 [17.0.15+6]"), "repetitions 1 and 2, on 17.0.15: " + ok);
+        assertEquals(1, ok.get("temurin-17/g1 [17.0.16+8]"), "repetition 3, on 17.0.16: " + ok);
+        assertEquals(3, ok.get("native"), "a runtime of one version keeps its name: " + ok);
+        assertFalse(html.contains("[17.0.15+6]"), "a store of one version per runtime keeps its labels");
+    }
+
+    @Test
+    void runsUnderTwoAllocRatesAreNeverPooled() throws Exception {
+        // temurin-17 under --load alloc: repetitions 1 and 2 at the default rates, 3 by a second matrix at 200 MB/s, 64 MB
+        Path rates = Files.copy(db, dir.resolve("alloc-rates.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + rates); var st = c.createStatement()) {
+            st.execute("UPDATE matrices SET spec_json = json_set(spec_json, '$.loadAlloc', '100,16')");
+            st.execute("INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --load alloc --load-alloc 200,64', 8,"
+                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":1.0,\"workloadArgs\":[],\"loadAlloc\":\"200,64\"}')");
+            st.execute("UPDATE runs SET load = 'alloc' WHERE runtime = 'temurin-17'");
+            st.execute("UPDATE runs SET matrix_id = 'x-2' WHERE runtime = 'temurin-17' AND repetition = 3");
+        }
+        Map<String, Integer> ok = okRuns(rates, "alloc-rates-report");
+        assertEquals(2, ok.get("temurin-17/g1 [load alloc 100 MB/s, 16 MB live]"), "repetitions 1 and 2: " + ok);
+        assertEquals(1, ok.get("temurin-17/g1 [load alloc 200 MB/s, 64 MB live]"), "repetition 3: " + ok);
+        assertEquals(3, ok.get("native"), "an idle row keeps its name: " + ok);
+    }
+
+    /** The ok runs of each skip, 400-particle cell of the report {@code store} gives, by row name. */
+    private static Map<String, Integer> okRuns(Path store, String folder) throws Exception {
+        Path page = dir.resolve(folder);
+        assertEquals(0, JmclbenchCli.execute("report", "--db", store.toString(), "--out", page.toString(), "--no-export"));
+        Matcher m = Pattern.compile("(?s)<script type=\"application/json\" id=\"jmclbench-data\">(.*?)</script>")
+                .matcher(Files.readString(page.resolve("index.html")));
+        assertTrue(m.find());
+        Map<String, Integer> out = new java.util.TreeMap<>();
+        for (JsonNode c : new ObjectMapper().readTree(m.group(1)).get("cells")) {
+            if (c.get("policy").asText().equals("skip") && c.get("particles").asInt() == 400) {
+                out.put(c.get("config").asText(), c.get("ok").asInt());
+            }
+        }
+        return out;
     }
 
     @Test

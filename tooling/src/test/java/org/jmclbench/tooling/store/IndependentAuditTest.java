@@ -77,6 +77,36 @@ class IndependentAuditTest {
         assertAgrees(store);
         assertTrue(store.contains("report: 4 cells checked of 4"), store);
         assertTrue(store.matches("(?s).*compare .*: (\\d{2,}) means checked.*"), "compare's table was read: " + store);
+
+        // the rtsj-atomic runs as if a second matrix had made them at --time-scale 0.5, and the terminate runs on an
+        // updated JVM: the report names them apart, and the audit takes compare's sides by the report's row names
+        Path labelled = Files.copy(db, db.resolveSibling("labelled.db"));
+        String version;
+        String profile;
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + labelled); Statement s = c.createStatement()) {
+            s.execute("INSERT INTO matrices SELECT matrix_id || '-2', machine_id, command, order_seed, started_at,"
+                    + " json_set(spec_json, '$.timeScale', 0.5) FROM matrices");
+            s.execute("UPDATE runs SET matrix_id = matrix_id || '-2' WHERE engine = 'rtsj-atomic'");
+            s.execute("UPDATE runs SET runtime_version = runtime_version || '-updated' WHERE policy = 'terminate'");
+            try (ResultSet rs = s.executeQuery("SELECT runtime_version, profile FROM runs WHERE policy = 'skip' LIMIT 1")) {
+                assertTrue(rs.next());
+                version = rs.getString(1);
+                profile = rs.getString(2);
+            }
+        }
+        Path labelledReport = dir.resolve("labelled-report");
+        assertEquals(0, Fixtures.cli("report", "--db", labelled.toString(), "--out", labelledReport.toString(), "--no-export").exitCode());
+        String name = profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
+        Fixtures.CliResult labelledCompare = Fixtures.cli("compare", "--db", labelled.toString(),
+                "--a", name + " / javase [" + version + "] [time scale 0.3]", "--b", name + " / rtsj-atomic [" + version + "] [time scale 0.5]");
+        assertEquals(0, labelledCompare.exitCode(), labelledCompare.out() + labelledCompare.err());
+        Path labelledCompareOut = dir.resolve("labelled-compare.txt");
+        Files.writeString(labelledCompareOut, labelledCompare.out());
+        String audit = python(List.of(PROJECT.resolve("scripts/audit_store.py").toString(), labelled.toString(),
+                "--report", labelledReport.resolve("index.html").toString(), "--compare", labelledCompareOut.toString()));
+        assertAgrees(audit);
+        assertTrue(audit.contains("report: 4 cells checked of 4"), audit);
+        assertTrue(audit.matches("(?s).*compare .*: (\\d{2,}) means checked.*"), "compare's table was read: " + audit);
     }
 
     private static void assertAgrees(String out) {

@@ -207,61 +207,43 @@ class ReportCommandTest {
 
     @Test
     void runsOfTwoMachinesAreNeverPooled() throws Exception {
-        Path merged = Files.copy(db, dir.resolve("merged.db"));
-        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + merged); var st = c.createStatement()) {
-            st.execute("INSERT INTO machines VALUES ('m-2', 'other-host', '6.8.0', 'AMD EPYC', 4, '[]')");
-            st.execute("UPDATE runs SET machine_id = 'm-2' WHERE repetition = 3");
-        }
-        Path page = dir.resolve("merged-report");
-        assertEquals(0, JmclbenchCli.execute("report", "--db", merged.toString(), "--out", page.toString(), "--no-export"));
-        String h = Files.readString(page.resolve("index.html"));
-        assertTrue(h.contains("\"config\":\"native @bench-host\"") && h.contains("\"config\":\"native @other-host\""));
-        assertFalse(h.contains("\"config\":\"native\""), "no pooled native");
+        Map<String, Integer> ok = okRuns(edited("merged.db",
+                "INSERT INTO machines VALUES ('m-2', 'other-host', '6.8.0', 'AMD EPYC', 4, '[]')",
+                "UPDATE runs SET machine_id = 'm-2' WHERE repetition = 3"));
+        assertEquals(2, ok.get("native @bench-host"), "repetitions 1 and 2: " + ok);
+        assertEquals(1, ok.get("native @other-host"), "repetition 3: " + ok);
+        assertFalse(ok.containsKey("native"), "no pooled native: " + ok);
+    }
+
+    @Test
+    void twoMachinesOfOneHostNameAreNeverPooled() throws Exception {
+        Map<String, Integer> ok = okRuns(edited("same-host.db",
+                "INSERT INTO machines VALUES ('m-2', 'bench-host', '6.8.0', 'AMD EPYC', 4, '[]')",
+                "UPDATE runs SET machine_id = 'm-2' WHERE repetition = 3"));
+        assertEquals(1, ok.get("native @bench-host (m-2)"), "the second machine, by host name and id: " + ok);
+        assertFalse(ok.containsKey("native @bench-host"), "no native pooled over both machines: " + ok);
     }
 
     @Test
     void runsAtTwoTimeScalesAreNeverPooled() throws Exception {
         // the third repetition of every configuration made again by a second matrix at --time-scale 0.5
-        Path scaled = Files.copy(db, dir.resolve("time-scales.db"));
-        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + scaled); var st = c.createStatement()) {
-            st.execute("INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --time-scale 0.5', 8,"
-                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5,\"workloadArgs\":[]}')");
-            st.execute("UPDATE runs SET matrix_id = 'x-2', summary_json = json_set(summary_json, '$.parameters.timeScale', 0.5)"
-                    + " WHERE repetition = 3");
-        }
-        Path page = dir.resolve("time-scales-report");
-        assertEquals(0, JmclbenchCli.execute("report", "--db", scaled.toString(), "--out", page.toString(), "--no-export"));
-        Matcher m = Pattern.compile("(?s)<script type=\"application/json\" id=\"jmclbench-data\">(.*?)</script>")
-                .matcher(Files.readString(page.resolve("index.html")));
-        assertTrue(m.find());
-        JsonNode data = new ObjectMapper().readTree(m.group(1));
-        int seen = 0;
-        for (JsonNode c : data.get("cells")) {
-            if (c.get("policy").asText().equals("skip") && c.get("particles").asInt() == 400) {
-                switch (c.get("config").asText()) {
-                    case "native" -> assertEquals(2, c.get("ok").asInt(), "repetitions 1 and 2, at 1");
-                    case "native [time scale 0.5]" -> assertEquals(1, c.get("ok").asInt(), "repetition 3, at 0.5");
-                    default -> {
-                        continue;
-                    }
-                }
-                seen++;
-            }
-        }
-        assertEquals(2, seen, "native at each time scale, as two cells");
+        Map<String, Integer> ok = okRuns(edited("time-scales.db",
+                "INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --time-scale 0.5', 8,"
+                        + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5,\"workloadArgs\":[]}')",
+                "UPDATE runs SET matrix_id = 'x-2', summary_json = json_set(summary_json, '$.parameters.timeScale', 0.5)"
+                        + " WHERE repetition = 3"));
+        assertEquals(2, ok.get("native"), "repetitions 1 and 2, at 1: " + ok);
+        assertEquals(1, ok.get("native [time scale 0.5]"), "repetition 3, at 0.5: " + ok);
         // the unsupported runs have no summary: the matrix's spec says at which scale they were planned
-        assertTrue(data.toString().contains("\"config\":\"temurin-11/shenandoah [time scale 0.5]\""));
+        assertTrue(ok.containsKey("temurin-11/shenandoah [time scale 0.5]"), ok.toString());
         assertFalse(html.contains(" [time scale "), "a store of one time scale keeps its labels");
     }
 
     @Test
     void runsOfTwoVersionsOfOneRuntimeAreNeverPooled() throws Exception {
         // temurin-17 updated between two matrices: its third repetitions ran on 17.0.16+8
-        Path updated = Files.copy(db, dir.resolve("two-versions.db"));
-        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + updated); var st = c.createStatement()) {
-            st.execute("UPDATE runs SET runtime_version = '17.0.16+8' WHERE runtime = 'temurin-17' AND repetition = 3");
-        }
-        Map<String, Integer> ok = okRuns(updated, "two-versions-report");
+        Map<String, Integer> ok = okRuns(edited("two-versions.db",
+                "UPDATE runs SET runtime_version = '17.0.16+8' WHERE runtime = 'temurin-17' AND repetition = 3"));
         assertEquals(2, ok.get("temurin-17/g1 [17.0.15+6]"), "repetitions 1 and 2, on 17.0.15: " + ok);
         assertEquals(1, ok.get("temurin-17/g1 [17.0.16+8]"), "repetition 3, on 17.0.16: " + ok);
         assertEquals(3, ok.get("native"), "a runtime of one version keeps its name: " + ok);
@@ -271,23 +253,31 @@ class ReportCommandTest {
     @Test
     void runsUnderTwoAllocRatesAreNeverPooled() throws Exception {
         // temurin-17 under --load alloc: repetitions 1 and 2 at the default rates, 3 by a second matrix at 200 MB/s, 64 MB
-        Path rates = Files.copy(db, dir.resolve("alloc-rates.db"));
-        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + rates); var st = c.createStatement()) {
-            st.execute("UPDATE matrices SET spec_json = json_set(spec_json, '$.loadAlloc', '100,16')");
-            st.execute("INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --load alloc --load-alloc 200,64', 8,"
-                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":1.0,\"workloadArgs\":[],\"loadAlloc\":\"200,64\"}')");
-            st.execute("UPDATE runs SET load = 'alloc' WHERE runtime = 'temurin-17'");
-            st.execute("UPDATE runs SET matrix_id = 'x-2' WHERE runtime = 'temurin-17' AND repetition = 3");
-        }
-        Map<String, Integer> ok = okRuns(rates, "alloc-rates-report");
+        Map<String, Integer> ok = okRuns(edited("alloc-rates.db",
+                "UPDATE matrices SET spec_json = json_set(spec_json, '$.loadAlloc', '100,16')",
+                "INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --load alloc --load-alloc 200,64', 8,"
+                        + " '2026-11-22T03:00:00Z', '{\"timeScale\":1.0,\"workloadArgs\":[],\"loadAlloc\":\"200,64\"}')",
+                "UPDATE runs SET load = 'alloc' WHERE runtime = 'temurin-17'",
+                "UPDATE runs SET matrix_id = 'x-2' WHERE runtime = 'temurin-17' AND repetition = 3"));
         assertEquals(2, ok.get("temurin-17/g1 [load alloc 100 MB/s, 16 MB live]"), "repetitions 1 and 2: " + ok);
         assertEquals(1, ok.get("temurin-17/g1 [load alloc 200 MB/s, 64 MB live]"), "repetition 3: " + ok);
         assertEquals(3, ok.get("native"), "an idle row keeps its name: " + ok);
     }
 
+    /** A copy of the fixture store, named {@code name}, changed by {@code statements} (another machine, matrix, version). */
+    private static Path edited(String name, String... statements) throws Exception {
+        Path copy = Files.copy(db, dir.resolve(name));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + copy); var st = c.createStatement()) {
+            for (String sql : statements) {
+                st.execute(sql);
+            }
+        }
+        return copy;
+    }
+
     /** The ok runs of each skip, 400-particle cell of the report {@code store} gives, by row name. */
-    private static Map<String, Integer> okRuns(Path store, String folder) throws Exception {
-        Path page = dir.resolve(folder);
+    private static Map<String, Integer> okRuns(Path store) throws Exception {
+        Path page = dir.resolve(store.getFileName() + "-report");
         assertEquals(0, JmclbenchCli.execute("report", "--db", store.toString(), "--out", page.toString(), "--no-export"));
         Matcher m = Pattern.compile("(?s)<script type=\"application/json\" id=\"jmclbench-data\">(.*?)</script>")
                 .matcher(Files.readString(page.resolve("index.html")));
@@ -299,20 +289,6 @@ class ReportCommandTest {
             }
         }
         return out;
-    }
-
-    @Test
-    void twoMachinesOfOneHostNameAreNeverPooled() throws Exception {
-        Path merged = Files.copy(db, dir.resolve("same-host.db"));
-        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + merged); var st = c.createStatement()) {
-            st.execute("INSERT INTO machines VALUES ('m-2', 'bench-host', '6.8.0', 'AMD EPYC', 4, '[]')");
-            st.execute("UPDATE runs SET machine_id = 'm-2' WHERE repetition = 3");
-        }
-        Path page = dir.resolve("same-host-report");
-        assertEquals(0, JmclbenchCli.execute("report", "--db", merged.toString(), "--out", page.toString(), "--no-export"));
-        String h = Files.readString(page.resolve("index.html"));
-        assertTrue(h.contains("\"config\":\"native @bench-host (m-2)\""), "the second machine, by host name and id");
-        assertFalse(h.contains("\"config\":\"native @bench-host\""), "no native pooled over both machines");
     }
 
     @Test

@@ -169,7 +169,8 @@ public final class MatrixPlanner {
      * or an ideal run cannot apply, a bad value, an unknown option) is one line and exit 2 here, before
      * anything runs, rather than each of the matrix's runs of that engine recorded failed. The C baseline's
      * parser is the Java one on the options they share (OptionsDifferentialTest holds the two alike);
-     * the hvm engine (the HVM launcher's, not on this class path) is checked as the scj engine it extends.
+     * the hvm engine (the HVM launcher's, not on this class path) is checked as the scj engine it extends,
+     * then with the hvm engine's own refusals, which the launch contract holds ({@code HvmOptionRules}).
      * A run whose engine lacks its memory style is recorded unsupported and not checked.
      */
     private static void checkWorkloadOptions(java.util.Collection<PlannedRun> runs, double timeScale,
@@ -213,7 +214,12 @@ public final class MatrixPlanner {
             args.set(args.indexOf("hvm"), Engines.SCJ);
         }
         try {
-            org.jmclbench.workload.RunOptionsParser.parse(args.toArray(new String[0]));
+            org.jmclbench.workload.RunOptions options = org.jmclbench.workload.RunOptionsParser.parse(
+                    args.toArray(new String[0]));
+            if (run.runtime().kind() == RuntimeKind.HVM) {
+                // what the hvm engine refuses beyond the scj engine's checks (its --warmup among them)
+                org.jmclbench.workload.scj.HvmOptionRules.check(options);
+            }
             return null;
         } catch (org.jmclbench.workload.BadInputException e) {
             return e.getMessage();

@@ -234,7 +234,7 @@ class BadInputTest extends FakeJvmHome {
                 "--db", db.toString());
         // the scj engine, which the hvm cells were checked as, has a warm-up: its runs are planned
         Fixtures.CliResult scj = Fixtures.cli("matrix", "--java", fake.toString(), "--engines", "scj", "--datasets", "tiny",
-                "--workload-arg=--warmup=1", "--dry-run", "--db", db.toString());
+                "--workload-arg=--warmup=0.5", "--dry-run", "--db", db.toString());
         assertEquals(0, scj.exitCode(), scj.out() + scj.err());
     }
 

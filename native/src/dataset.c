@@ -497,6 +497,19 @@ int jm_dataset_check_time_scale(const jm_dataset *ds, double time_scale, char *e
 	       check_scaled(&ds->laser, ds->laser_path, time_scale, err, errlen) ? -1 : 0;
 }
 
+int jm_dataset_check_warmup(const jm_dataset *ds, double warmup_s, char *err, size_t errlen)
+{
+	double odo_last = JM_ROW(&ds->odometry, ds->odometry.n - 1)[0];
+	double laser_last = JM_ROW(&ds->laser, ds->laser.n - 1)[0];
+
+	if (warmup_s > 0.0 && warmup_s >= (odo_last >= laser_last ? odo_last : laser_last)) {
+		snprintf(err, errlen, "--warmup: reaches the last time of %s: a warm-up replays the data before it"
+			 " and must leave an event after it", odo_last >= laser_last ? ds->odometry_path : ds->laser_path);
+		return -1;
+	}
+	return 0;
+}
+
 void jm_dataset_free(jm_dataset *ds)
 {
 	jm_series_free(&ds->odometry);

@@ -82,6 +82,15 @@ void jm_dataset_free(jm_dataset *ds);
 int jm_dataset_check_time_scale(const jm_dataset *ds, double time_scale, char *err, size_t errlen);
 
 /*
+ * Refuses a warm-up that reaches the data's last event (docs/FORMATS.md 2): the warm-up replays the
+ * first S seconds of data (times before S, unscaled), so one at or past the last event is no first
+ * part but the whole dataset, and summary.json's warmupS would claim seconds never replayed. Names
+ * the file whose last time is the later (odometry on a tie). Returns 0, or -1 with err set (the
+ * Java workload's Dataset.checkWarmup).
+ */
+int jm_dataset_check_warmup(const jm_dataset *ds, double warmup_s, char *err, size_t errlen);
+
+/*
  * Reads dataset.properties from f into ds (playground, scenario, start pose and start_known),
  * over what ds holds already. Returns 0, or -1 with err holding "<name>:<line>: <problem>", or
  * "<name>: <key>: missing" when the start pose is given in part.

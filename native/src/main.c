@@ -127,7 +127,8 @@ int main(int argc, char **argv)
 		}
 	}
 	if (jm_dataset_load(&ds, dataset_dir, opt.odometry, opt.laser, opt.real, err, sizeof(err)) ||
-	    jm_dataset_check_time_scale(&ds, opt.time_scale, err, sizeof(err)))
+	    jm_dataset_check_time_scale(&ds, opt.time_scale, err, sizeof(err)) ||
+	    jm_dataset_check_warmup(&ds, opt.warmup_s, err, sizeof(err)))
 		die(EXIT_BAD_INPUT, "%s", err);
 
 	if (jm_run_dir(&opt, final_dir, sizeof(final_dir)))

@@ -526,6 +526,22 @@ static void test_dataset_properties(void)
 	CHECK_CONTAINS(err, "--time-scale: scales the last time of ");
 	CHECK_CONTAINS(err, "/laser.txt past 1e9 s, the largest time of a run");
 	jm_dataset_free(&ds);
+	/* a warm-up must leave an event after it: 0.05 s is the odometry's last time, later than the laser's */
+	write_file("laser.txt", "0.02 1.0\n");
+	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == 0);
+	CHECK(jm_dataset_check_warmup(&ds, 0.0, err, sizeof(err)) == 0);
+	CHECK(jm_dataset_check_warmup(&ds, 0.049, err, sizeof(err)) == 0);
+	CHECK(jm_dataset_check_warmup(&ds, 0.05, err, sizeof(err)) == -1);
+	CHECK_CONTAINS(err, "--warmup: reaches the last time of ");
+	CHECK_CONTAINS(err, "/odometry.txt: a warm-up replays the data before it and must leave an event after it");
+	CHECK(jm_dataset_check_warmup(&ds, 1000.0, err, sizeof(err)) == -1);
+	jm_dataset_free(&ds);
+	write_file("laser.txt", "0.02 1.0\n0.06 1.0\n");
+	CHECK(jm_dataset_load(&ds, tmpdir, NULL, NULL, NULL, err, sizeof(err)) == 0);
+	CHECK(jm_dataset_check_warmup(&ds, 0.05, err, sizeof(err)) == 0);
+	CHECK(jm_dataset_check_warmup(&ds, 0.06, err, sizeof(err)) == -1);
+	CHECK_CONTAINS(err, "/laser.txt: a warm-up replays");
+	jm_dataset_free(&ds);
 	write_file("laser.txt", "0.02 1.0\n");
 	/* a laser angle is the beacon's from the heading, in [0, 2pi) (SPEC section 1): 2pi itself is not */
 	write_file("laser.txt", "0.02 -0\n0.03 6.283185307179585\n0.04 6.283185307179586\n");

@@ -83,6 +83,7 @@ public final class WorkloadMain {
             throws BadInputException, UnsupportedRunException, IOException, RunFailure {
         Dataset dataset = load(options);
         dataset.checkTimeScale(options.timeScale);
+        dataset.checkWarmup(options.warmupS);
         Engine engine = Engines.of(options);
         engine.validate(options, dataset);
         RunFolder folder = RunFolder.of(options);

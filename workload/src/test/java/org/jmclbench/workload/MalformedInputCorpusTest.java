@@ -36,16 +36,22 @@ public class MalformedInputCorpusTest {
     @TempDir
     File tmp;
 
-    /** One kind: the arguments naming its data, and the message every path must print. */
+    /**
+     * One kind: the arguments naming its data, and the message every path must print; for an
+     * option the data refutes, the option, which an engine may refuse outright (the hvm engine has
+     * no warm-up) before the data is read.
+     */
     private static final class Kind {
         final String name;
         final List<String> args;
         final String message;
+        final String option;
 
-        Kind(String name, List<String> args, String message) {
+        Kind(String name, List<String> args, String message, String option) {
             this.name = name;
             this.args = args;
             this.message = message;
+            this.option = option;
         }
     }
 
@@ -79,7 +85,31 @@ public class MalformedInputCorpusTest {
     }
 
     private void add(String kind, List<String> args, String message) {
-        kinds.put(kind, new Kind(kind, args, "jmclbench: " + message));
+        kinds.put(kind, new Kind(kind, args, "jmclbench: " + message, null));
+    }
+
+    /** A kind whose {@code option} the data refutes: the message names the option. */
+    private void addOption(String kind, String option, List<String> args, String message) {
+        kinds.put(kind, new Kind(kind, args, "jmclbench: " + option + ": " + message, option));
+    }
+
+    /**
+     * The line {@code engine} must print for {@code k}: the kind's, unless the engine refuses the
+     * kind's option outright, whatever the data; then its parser's refusal of that option.
+     */
+    private static String expected(String engine, Kind k) {
+        if (k.option != null) {
+            List<String> args = new ArrayList<>(Arrays.asList("--engine", engine));
+            args.addAll(k.args);
+            try {
+                RunOptionsParser.parse(args.toArray(new String[0]));
+            } catch (BadInputException e) {
+                if (e.getMessage().startsWith(k.option + ": ")) {
+                    return "jmclbench: " + e.getMessage();
+                }
+            }
+        }
+        return k.message;
     }
 
     private void buildCorpus() throws IOException, InterruptedException {
@@ -104,6 +134,14 @@ public class MalformedInputCorpusTest {
         add("time-scale-beyond-range", Arrays.asList("--dataset", scaled.getPath(), "--time-scale", "1000", "--ideal"),
                 "--time-scale: scales the last time of " + new File(scaled, "laser.txt").getPath()
                         + " past 1e9 s, the largest time of a run");
+        // a warm-up (data seconds, whatever the time scale) that leaves no event after it: 0.10 s is the last time
+        File warm = folder("warmup-at-last-event", null, null);
+        String leavesNone = "reaches the last time of " + new File(warm, "odometry.txt").getPath()
+                + ": a warm-up replays the data before it and must leave an event after it";
+        addOption("warmup-at-last-event", "--warmup", Arrays.asList("--dataset", warm.getPath(), "--warmup", "0.1"),
+                leavesNone);
+        addOption("warmup-past-data-ideal", "--warmup",
+                Arrays.asList("--dataset", warm.getPath(), "--warmup", "1000", "--ideal"), leavesNone);
         // what a value means: a laser angle in [0, 2pi), the ground truth at the odometry times
         data("laser-angle-negative", "laser.txt", "0.03  -7\n", ":1",
                 "angle -7 is not in [0, 2pi) (the beacon's angle from the heading)");
@@ -247,7 +285,8 @@ public class MalformedInputCorpusTest {
             for (Map.Entry<String, Outcome> e : outcomes.entrySet()) {
                 String who = k.name + " on " + e.getKey();
                 assertEquals(2, e.getValue().code, who + ": " + e.getValue().err);
-                assertEquals(k.message + "\n", e.getValue().err, who);
+                String message = e.getKey().equals("native") ? k.message : expected(e.getKey(), k);
+                assertEquals(message + "\n", e.getValue().err, who);
             }
         }
     }

@@ -169,20 +169,23 @@ public final class MatrixPlanner {
      * or an ideal run cannot apply, a bad value, an unknown option) is one line and exit 2 here, before
      * anything runs, rather than each of the matrix's runs of that engine recorded failed. The C baseline's
      * parser is the Java one on the options they share (OptionsDifferentialTest holds the two alike);
-     * the hvm engine (the HVM launcher's, not on this class path) is checked as the scj engine it extends.
+     * the hvm engine (the HVM launcher's, not on this class path) is checked as the scj engine it extends,
+     * then with the hvm engine's own refusals, which the launch contract holds ({@code HvmOptionRules}).
      * A run whose engine lacks its memory style is recorded unsupported and not checked.
      */
     private static void checkWorkloadOptions(java.util.Collection<PlannedRun> runs, double timeScale,
                                              List<String> workloadArgs, List<String> argWhere) {
         Set<String> cells = new java.util.HashSet<>();
+        Map<Path, String> warmupRefusals = new java.util.HashMap<>();
         for (PlannedRun run : runs) {
             if (Engines.unsupported(run.engine(), run.memory()) != null
                     || !cells.add(run.runtime().kind() + " " + run.engine() + " " + run.memory() + " " + run.policy()
-                            + " " + run.profile().has(org.jmclbench.tooling.runtime.ProfileComponent.FIFO))) {
+                            + " " + run.profile().has(org.jmclbench.tooling.runtime.ProfileComponent.FIFO)
+                            + " " + run.dataset().dir())) {
                 continue;
             }
             String refusal = refusal(run, WorkloadCommand.workloadOptions(run, Path.of("results"), timeScale,
-                    workloadArgs));
+                    workloadArgs), warmupRefusals);
             if (refusal != null) {
                 String option = refusal.substring(0, Math.max(0, refusal.indexOf(':')));
                 int at = -1;
@@ -197,8 +200,12 @@ public final class MatrixPlanner {
         }
     }
 
-    /** What the workload of {@code run} says of its command line {@code line}, or null when it takes it. */
-    private static String refusal(PlannedRun run, List<String> line) {
+    /**
+     * What the workload of {@code run} says of its command line {@code line}, or null when it takes it;
+     * a --warmup is checked against the dataset as the workload checks it ({@code Dataset.checkWarmup}),
+     * once per dataset folder ({@code warmupRefusals}, "" when it takes it).
+     */
+    private static String refusal(PlannedRun run, List<String> line, Map<Path, String> warmupRefusals) {
         List<String> args = new ArrayList<>(line);
         if (run.runtime().kind() == RuntimeKind.NATIVE) {
             for (String a : args) {
@@ -213,10 +220,33 @@ public final class MatrixPlanner {
             args.set(args.indexOf("hvm"), Engines.SCJ);
         }
         try {
-            org.jmclbench.workload.RunOptionsParser.parse(args.toArray(new String[0]));
-            return null;
+            org.jmclbench.workload.RunOptions options = org.jmclbench.workload.RunOptionsParser.parse(
+                    args.toArray(new String[0]));
+            if (run.runtime().kind() == RuntimeKind.HVM) {
+                // what the hvm engine refuses beyond the scj engine's checks (its --warmup among them)
+                org.jmclbench.workload.scj.HvmOptionRules.check(options);
+            }
+            if (options.warmupS <= 0) {
+                return null;
+            }
+            String warmup = warmupRefusals.computeIfAbsent(run.dataset().dir(),
+                    dir -> java.util.Objects.toString(warmupRefusal(dir, options.warmupS), ""));
+            return warmup.isEmpty() ? null : warmup;
         } catch (org.jmclbench.workload.BadInputException e) {
             return e.getMessage();
+        }
+    }
+
+    /**
+     * The workload's refusal of a warm-up that leaves no event of the dataset in {@code dir} after it,
+     * or null; a dataset the workload cannot read is left to it, which names the file and line.
+     */
+    private static String warmupRefusal(Path dir, double warmupS) {
+        try {
+            org.jmclbench.workload.data.DatasetReader.readFolder(dir.toFile()).checkWarmup(warmupS);
+            return null;
+        } catch (org.jmclbench.workload.BadInputException e) {
+            return e.getMessage().startsWith("--warmup: ") ? e.getMessage() : null;
         }
     }
 

@@ -217,6 +217,27 @@ class BadInputTest extends FakeJvmHome {
                 + "/no/such.tar.gz: no such file or folder", "matrix", "--runtimes", "hvm", "--datasets", "tiny", "--db", db.toString());
     }
 
+    /**
+     * What the hvm engine refuses beyond the scj engine's checks is refused when a matrix of hvm
+     * runs plans, dry or not: a --warmup was planned and each hvm run exited 2, recorded failed.
+     */
+    @Test
+    void whatTheHvmEngineRefusesIsRefusedByTheMatrixThatPlansItsRuns() throws Exception {
+        Path hvm = Files.createDirectories(dir.resolve("hvm"));
+        script(hvm.resolve("build-hvm.sh"), "echo 'build-hvm: can be built (cached: /c/hvm/toolchain-ab)' >&2\n");
+        script(hvm.resolve("build-mission.sh"), "exit 1\n");
+        String refused = "jmclbench: --workload-arg: --warmup: the hvm engine has no warm-up (its executable replays"
+                + " the dataset once) (the hvm skip runs)";
+        assertRejected(refused, "matrix", "--runtimes", "hvm", "--datasets", "tiny", "--workload-arg=--warmup=1",
+                "--dry-run", "--db", db.toString());
+        assertRejected(refused, "matrix", "--runtimes", "hvm", "--datasets", "tiny", "--workload-arg", "--warmup 0.5",
+                "--db", db.toString());
+        // the scj engine, which the hvm cells were checked as, has a warm-up: its runs are planned
+        Fixtures.CliResult scj = Fixtures.cli("matrix", "--java", fake.toString(), "--engines", "scj", "--datasets", "tiny",
+                "--workload-arg=--warmup=0.5", "--dry-run", "--db", db.toString());
+        assertEquals(0, scj.exitCode(), scj.out() + scj.err());
+    }
+
     /** The command failed (exit 1) with {@code line} alone on stderr, and nothing ran or was recorded. */
     private void assertBuildFailed(String line, String... args) {
         Fixtures.CliResult r = Fixtures.cli(args);

@@ -83,6 +83,22 @@ class PlannerTest {
     }
 
     @Test
+    void aWarmupIsCheckedAgainstEachDatasetAsTheWorkloadWillCheckIt() throws Exception {
+        Fixtures.home(dir);
+        String jvm = Fixtures.fakeJava(dir, "jvm", "ok", 0, null, 21).toString();
+        String nat = Fixtures.fakeJava(dir, "nat", "ok", 0, null, 21).toString();
+        // tiny's last event is at 19 * 0.05 s (its dataset.properties says 1.0): a warm-up of 0.96 s leaves none after
+        // it, and every run, Java and C, would have exited 2, recorded failed
+        BadUsageException e = assertThrows(BadUsageException.class, () -> plan("java", jvm, "native", nat,
+                "runtimes", "all", "datasets", "tiny", "workload-arg", "--warmup 0.96"));
+        assertEquals("--workload-arg: --warmup: reaches the last time of " + dir.resolve("data/tiny/odometry.txt")
+                + ": a warm-up replays the data before it and must leave an event after it (the javase skip runs)",
+                e.getMessage());
+        assertEquals(4, plan("java", jvm, "native", nat, "runtimes", "all", "datasets", "tiny", "policies", "skip,ideal",
+                "workload-arg", "--warmup=0.9").plan().size());
+    }
+
+    @Test
     void shardsPartitionTheMatrixAndTheOrderFollowsTheSeed() throws Exception {
         Fixtures.home(dir);
         String jvm = Fixtures.fakeJava(dir, "jvm", "ok", 0, null, 21).toString();

@@ -113,6 +113,23 @@ public final class Dataset {
         checkScaled(laserTime, laserFile, timeScale);
     }
 
+    /**
+     * Refuses a warm-up that reaches the data's last event (docs/FORMATS.md 2): the warm-up replays
+     * the first S seconds of data (times before S, unscaled), so one at or past the last event is
+     * no first part but the whole dataset, and summary.json's warmupS would claim seconds that
+     * were never replayed. Named after the file whose last time is the later (odometry on a tie).
+     * The C baseline's jm_dataset_check_warmup.
+     */
+    public void checkWarmup(double warmupS) throws BadInputException {
+        double odoLast = odoTime[odoTime.length - 1];
+        double laserLast = laserTime[laserTime.length - 1];
+        if (warmupS > 0 && warmupS >= Math.max(odoLast, laserLast)) {
+            File last = odoLast >= laserLast ? odometryFile : laserFile;
+            throw BadInputException.ofOption("--warmup", "reaches the last time of " + last.getPath()
+                    + ": a warm-up replays the data before it and must leave an event after it");
+        }
+    }
+
     private static void checkScaled(double[] time, File file, double timeScale) throws BadInputException {
         if (time[time.length - 1] * timeScale > DataGrammar.VALUE_MAX) {
             throw BadInputException.ofOption("--time-scale", "scales the last time of " + file.getPath() + " past "

@@ -100,6 +100,24 @@ class DatasetReaderTest {
                 + " past 1e9 s, the largest time of a run", e.getMessage());
     }
 
+    @Test
+    void refusesAWarmupThatReachesTheLastEvent() throws Exception {
+        Dataset d = DatasetReader.readFiles(file("o", "0  0 0 0\n0.05  0 0 0\n"), file("l", "0.02  1\n"),
+                file("r", "0  0 0 0\n0.05  0 0 0\n"));
+        d.checkWarmup(0);
+        d.checkWarmup(0.049); // the event at 0.05 s is still after the warm-up
+        BadInputException e = assertThrows(BadInputException.class, () -> d.checkWarmup(0.05));
+        assertEquals("--warmup: reaches the last time of " + new File(tmp, "o").getPath()
+                + ": a warm-up replays the data before it and must leave an event after it", e.getMessage());
+        assertThrows(BadInputException.class, () -> d.checkWarmup(1000));
+        Dataset laterLaser = DatasetReader.readFiles(file("o", "0  0 0 0\n0.05  0 0 0\n"),
+                file("l", "0.02  1\n0.06  1\n"), file("r", "0  0 0 0\n0.05  0 0 0\n"));
+        laterLaser.checkWarmup(0.05);
+        e = assertThrows(BadInputException.class, () -> laterLaser.checkWarmup(0.06));
+        assertTrue(e.getMessage().startsWith("--warmup: reaches the last time of " + new File(tmp, "l").getPath() + ":"),
+                e.getMessage());
+    }
+
     /** Runs the workload on bad odometry and returns its stderr after checking exit code 2. */
     private String rejectOdometry(String odometry) throws IOException {
         File odo = file("odometry.txt", odometry);

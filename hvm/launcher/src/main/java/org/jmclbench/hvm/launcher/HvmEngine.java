@@ -11,6 +11,7 @@ import org.jmclbench.workload.data.Dataset;
 import org.jmclbench.workload.engine.EngineInput;
 import org.jmclbench.workload.engine.EngineResult;
 import org.jmclbench.scj.MissionConfiguration;
+import org.jmclbench.workload.scj.HvmOptionRules;
 import org.jmclbench.workload.scj.ScjEngine;
 import org.jmclbench.workload.scj.ScjRun;
 
@@ -34,21 +35,12 @@ public final class HvmEngine extends ScjEngine {
     }
 
     /**
-     * The scj engine's checks, then the options the HVM run has nothing to do with: the executable
-     * replays the dataset once (no warm-up), releases on its own 1 ms tick (no spin) and has no GC
-     * log; given, they were recorded in summary.json's parameters as if they had been applied.
+     * The options the HVM run has nothing to do with ({@link HvmOptionRules}: warm-up, spin, GC
+     * log), then the scj engine's checks.
      */
     @Override
     public void checkOptions(RunOptions o) throws BadInputException {
-        if (o.warmupS > 0) {
-            throw BadInputException.ofOption("--warmup", "the hvm engine has no warm-up (its executable replays the dataset once)");
-        }
-        if (o.spinUs > 0) {
-            throw BadInputException.ofOption("--spin-us", "the hvm engine releases on the HVM's own clock tick, with no spin");
-        }
-        if (o.gcLog) {
-            throw BadInputException.ofOption("--gc-log", "the hvm engine has no GC log (the HVM's memory is SCJ areas)");
-        }
+        HvmOptionRules.check(o);
         super.checkOptions(o); // after the HVM's own reasons for the options the scj engine refuses too
     }
 

@@ -74,6 +74,16 @@ def jfr_tool():
 
 
 def read_jfr(path, start_epoch):
+    key = (os.path.abspath(path), start_epoch)
+    if key not in JFR_READ:  # a run's store rows and its explain output are checked from one reading
+        JFR_READ[key] = read_jfr_uncached(path, start_epoch)
+    return JFR_READ[key]
+
+
+JFR_READ = {}
+
+
+def read_jfr_uncached(path, start_epoch):
     out = subprocess.run([jfr_tool(), "print", "--json", "--events", ",".join(JFR_TYPES), path],
                          capture_output=True, text=True, check=False)
     if out.returncode != 0:
@@ -248,7 +258,9 @@ class Oracle:
     def explain(self, j):
         c = {}
         blocked = None
+        ran = None  # the job whose run the window covers: j, or the job that held the robot
         if j["start"] >= 0:
+            ran = j
             ws, we = j["release"], j["end"]
             self.delay_causes(j, c)
             self.run_causes(j, ws, we, c)
@@ -258,6 +270,7 @@ class Oracle:
             b = self.holder(j)
             if b is not None:
                 blocked = "%s#%d" % (b["task"], b["index"])
+                ran = b
                 ws, we = b["release"], b["end"]
                 self.delay_causes(b, c)
                 self.run_causes(b, ws, we, c)
@@ -278,7 +291,7 @@ class Oracle:
                     c["overlap"] = we - ws
         if not c:
             c["unknown"] = we - ws
-        return {"window": (ws, we), "blockedBy": blocked, "causes": c}
+        return {"window": (ws, we), "blockedBy": blocked, "causes": c, "ran": ran}
 
 
 def primaries(causes):
@@ -289,8 +302,12 @@ def primaries(causes):
 
 
 def invariants(j, a):
-    """What a job's attribution must satisfy whatever the tool computes."""
+    """What a job's attribution must satisfy whatever the tool computes. compute is the CPU time of the
+    job that ran (the job, or its blocker), which FORMATS 3 says includes its time stamps and the robot's
+    hand-over: it may exceed that job's end - start, by as much as it does in its job line."""
     out = []
+    ran = a.get("ran")
+    handover = max(0, ran["cpu"] - (ran["end"] - ran["start"])) if ran and ran["cpu"] >= 0 else 0
     ws, we = a["window"]
     c = a["causes"]
     where = "%s job %d (%s)" % (j["task"], j["index"], j["outcome"])
@@ -300,8 +317,11 @@ def invariants(j, a):
         if v < 0:
             out.append("%s: %s %d ns < 0" % (where, k, v))
     still = sum(c.get(k, 0) for k in STAND_STILL)
-    if still + c.get("compute", 0) > we - ws:
-        out.append("%s: %s + compute = %d ns > window %d ns" % (where, "+".join(STAND_STILL), still + c.get("compute", 0), we - ws))
+    if still > we - ws:
+        out.append("%s: %s = %d ns > window %d ns" % (where, "+".join(STAND_STILL), still, we - ws))
+    if still + c.get("compute", 0) > we - ws + handover:
+        out.append("%s: %s + compute = %d ns > window %d ns + CPU beyond the job's end - start %d ns"
+                   % (where, "+".join(STAND_STILL), still + c.get("compute", 0), we - ws, handover))
     for k in ("overlap", "unknown"):
         if k in c and len(c) > 1:
             out.append("%s: %s beside %s" % (where, k, sorted(c)))
@@ -358,7 +378,7 @@ def compare_jobs(c, label, att, tool_jobs):
         c.compared += 1
         if kinds and kinds[0] not in primaries(tc):
             c.bad.append("%s: %s primary %s is not its largest cause %s" % (c.label, where, kinds[0], tc))
-        for p in invariants(j, {"window": (t["windowStartNs"], t["windowEndNs"]), "causes": tc}):
+        for p in invariants(j, {"window": (t["windowStartNs"], t["windowEndNs"]), "causes": tc, "ran": a["ran"]}):
             c.bad.append("%s: tool: %s" % (c.label, p))
 
 
@@ -388,7 +408,7 @@ def audit_explain(c, path):
     # the events read: explain says how many in its source line
     m = re.search(r"\((\d+) events\)", d["events"])
     c.cmp("explain events", int(m.group(1)) if m else 0, n_events)
-    return run_dir, att
+    return run_dir, att, source, n_events
 
 
 def audit_db(c, db, checked):
@@ -396,8 +416,8 @@ def audit_db(c, db, checked):
     runs = con.execute("SELECT run_key, run_dir FROM runs WHERE status = 'ok' AND run_dir IS NOT NULL").fetchall()
     for key, rel in runs:
         run_dir = rel if os.path.isabs(rel) else os.path.join(os.path.dirname(os.path.abspath(db)), rel)
-        att, n_events, _ = oracle_run(run_dir)
-        checked.append((run_dir, att))
+        att, n_events, source = oracle_run(run_dir)
+        checked.append((run_dir, att, source, n_events))
         tool = {}
         for task, idx, outcome, cj in con.execute(
                 "SELECT task, job_index, outcome, causes_json FROM attributions WHERE run_key = ?", (key,)):
@@ -439,13 +459,12 @@ def main(argv):
         for e in explains:
             checked.append(audit_explain(c, e))
         for d in dirs:
-            att, _, _ = oracle_run(d)
-            checked.append((d, att))
+            checked.append((d,) + oracle_run(d))
     except (OSError, ValueError, KeyError, IndexError, sqlite3.Error, StopIteration) as e:
         print("audit_explain: cannot read: %s" % e, file=sys.stderr)
         return 2
     jobs = 0
-    for d, att in checked:
+    for d, att, source, n_events in checked:
         jobs += len(att)
         for j, a in att.values():
             for p in invariants(j, a):
@@ -454,7 +473,7 @@ def main(argv):
         for _, a in att.values():
             for k in a["causes"]:
                 kinds[k] = kinds.get(k, 0) + 1
-        print("%s: %d jobs attributed %s" % (d, len(att), json.dumps(kinds, sort_keys=True)))
+        print("%s: %d jobs attributed (events: %s, %d) %s" % (d, len(att), source, n_events, json.dumps(kinds, sort_keys=True)))
     for b in c.bad:
         print("DISAGREE " + b)
     print("TOTAL: %d run folders, %d jobs, %d numbers compared, %d disagree, largest relative difference %.3g (%s)"

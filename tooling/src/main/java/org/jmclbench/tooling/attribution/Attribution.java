@@ -29,7 +29,8 @@ import java.util.TreeMap;
  * <li>{@code jit} / {@code deopt}: compilation or deoptimisation of the job's own code
  *     (methods under {@link Settings#jobCodePrefix}) during the window;</li>
  * <li>{@code classload} / {@code lock}: class loading or parking/monitor waits of the job's
- *     own handler thread (its name contains the task name) while the job ran;</li>
+ *     own handler thread (its name contains the task name) while the job ran, less the pauses
+ *     during it (those are {@code gc} or {@code safepoint}, not counted twice);</li>
  * <li>{@code queued}: the job started late because another job held the robot: the time that
  *     job worked (a pause during it is {@code gc} or {@code safepoint}, not counted twice);</li>
  * <li>{@code os}: the job started late and nothing above explains it: the dispatcher or
@@ -81,7 +82,7 @@ public final class Attribution {
         this.byRelease = jobs.stream().sorted(Comparator.comparingLong(JobRecord::releaseNs)).toList();
         this.gcUnion = union(events.stream().filter(e -> e.kind() == VmEventKind.GC_PAUSE).toList());
         this.stwUnion = union(events.stream()
-                .filter(e -> e.kind() == VmEventKind.GC_PAUSE || e.kind() == VmEventKind.SAFEPOINT).toList());
+                .filter(Attribution::stopsTheWorld).toList());
     }
 
     /** The causes of every missed or late job of {@code jobs} (all tasks of one run), in task then index order. */
@@ -243,9 +244,10 @@ public final class Attribution {
         vmCauses(job, ws, we, causes);
         if (job.cpuNs() >= 0 && job.endNs() >= 0) {
             long wall = job.endNs() - job.startNs();
-            long waits = overlap(union(events.stream().filter(e -> e.kind() == VmEventKind.THREAD_BLOCKED
-                    && onThreadOf(e, job)).toList()), job.startNs(), job.endNs());
-            long offCpu = wall - job.cpuNs() - overlap(stwUnion, job.startNs(), job.endNs()) - waits;
+            // pauses and waits once each: a wait during a pause is not taken out twice
+            long stoppedOrWaiting = overlap(union(events.stream().filter(e -> stopsTheWorld(e)
+                    || e.kind() == VmEventKind.THREAD_BLOCKED && onThreadOf(e, job)).toList()), job.startNs(), job.endNs());
+            long offCpu = wall - job.cpuNs() - stoppedOrWaiting;
             if (offCpu > settings.preemptionMinNs() && wall > settings.preemptionRatio() * job.cpuNs()) {
                 causes.add(new Cause("preemption", offCpu, String.format(Locale.ROOT,
                         "%s#%d ran %s for %s of CPU", job.task(), job.index(), ms(wall), ms(job.cpuNs()))));
@@ -276,13 +278,19 @@ public final class Attribution {
         }
         if (job != null && job.endNs() >= 0) {
             for (VmEventKind k : List.of(VmEventKind.CLASS_LOAD, VmEventKind.THREAD_BLOCKED)) {
-                List<VmEvent> own = events.stream().filter(e -> e.kind() == k && onThreadOf(e, job)).toList();
-                long ns = overlap(union(own), job.startNs(), job.endNs());
+                // a pause while the thread loaded or waited is counted once, as gc or safepoint: counted
+                // here too, it filled the window twice (with compute, more than the window)
+                long ns = overlap(union(events.stream().filter(e -> stopsTheWorld(e) || e.kind() == k && onThreadOf(e, job))
+                        .toList()), job.startNs(), job.endNs()) - overlap(stwUnion, job.startNs(), job.endNs());
                 if (ns >= settings.minOverlapNs()) {
                     causes.add(new Cause(k.cause(), ns, describe(k, job.startNs(), job.endNs(), null, job)));
                 }
             }
         }
+    }
+
+    private static boolean stopsTheWorld(VmEvent e) {
+        return e.kind() == VmEventKind.GC_PAUSE || e.kind() == VmEventKind.SAFEPOINT;
     }
 
     private static boolean onThreadOf(VmEvent e, JobRecord job) {

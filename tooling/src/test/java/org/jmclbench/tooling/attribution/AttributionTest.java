@@ -214,6 +214,26 @@ class AttributionTest {
     }
 
     @Test
+    void aPauseWhileTheHandlerWaitedIsTheGcNotAlsoTheWait() {
+        // update#0 computes 0-20 ms (20 ms of CPU for a 15 ms deadline), then waits on its thread 20-60,
+        // a GC pause 30-40 inside the wait: 20 ms compute, 10 ms gc, 30 ms lock; the pause counted in
+        // the wait too made 70 ms of causes in a 60 ms window.
+        List<JobRecord> jobs = List.of(job("update", 0, 0, 0, 60, 15, "late", 20));
+        List<VmEvent> ev = List.of(ev(VmEventKind.THREAD_BLOCKED, 20, 60, "jmclbench-update-handler", "park"),
+                ev(VmEventKind.GC_PAUSE, 30, 40, null, "Serial"));
+        JobAttribution a = Attribution.attribute(jobs, ev, DEFAULTS).get(0);
+        Map<String, Long> ns = new java.util.TreeMap<>();
+        a.causes().forEach(c -> ns.put(c.kind(), c.ns()));
+        assertEquals(Map.of("compute", 20 * MS, "gc", 10 * MS, "lock", 30 * MS), ns, a.toString());
+        // The same wait of a job preempted for 10 ms more (0-70, 20 ms of CPU): preemption is its 10 ms, the
+        // pause and the wait taken out once each.
+        a = Attribution.attribute(List.of(job("update", 0, 0, 0, 70, 15, "late", 20)), ev, DEFAULTS).get(0);
+        ns.clear();
+        a.causes().forEach(c -> ns.put(c.kind(), c.ns()));
+        assertEquals(Map.of("compute", 20 * MS, "gc", 10 * MS, "lock", 30 * MS, "preemption", 10 * MS), ns, a.toString());
+    }
+
+    @Test
     void aTerminatedJobIsExplainedOverItsReleaseToItsAbort() {
         // update#0 aborted at 40 by the next release; it had used 38 ms of CPU for a 35 ms deadline.
         List<JobRecord> jobs = List.of(job("update", 0, 0, 0, 40, 35, "terminated", 38));

@@ -65,6 +65,7 @@ class IndependentAuditTest {
         List<String> run = new ArrayList<>(List.of(PROJECT.resolve("scripts/audit_run.py").toString()));
         run.addAll(runDirs);
         assertAgrees(python(run));
+        assertExplainAgrees(db, runDirs);
 
         Fixtures.CliResult report = Fixtures.cli("report", "--db", db.toString(), "--no-export");
         assertEquals(0, report.exitCode(), report.out() + report.err());
@@ -107,6 +108,25 @@ class IndependentAuditTest {
         assertAgrees(audit);
         assertTrue(audit.contains("report: 4 cells checked of 4"), audit);
         assertTrue(audit.matches("(?s).*compare .*: (\\d{2,}) means checked.*"), "compare's table was read: " + audit);
+    }
+
+    /**
+     * scripts/audit_explain.py: explain's attribution of each run's missed jobs, as explain --json prints it and as
+     * the store keeps it (attributions, cause.* metrics), equals its recomputation from the job lines and the JFR
+     * recording by docs/FORMATS.md's definitions.
+     */
+    private void assertExplainAgrees(Path db, List<String> runDirs) throws Exception {
+        List<String> args = new ArrayList<>(List.of(PROJECT.resolve("scripts/audit_explain.py").toString(), "--db", db.toString()));
+        for (String runDir : runDirs) {
+            Fixtures.CliResult explain = Fixtures.cli("explain", "--json", runDir);
+            assertEquals(0, explain.exitCode(), explain.out() + explain.err());
+            Path json = Files.createTempFile(dir, "explain", ".json");
+            Files.writeString(json, explain.out());
+            args.addAll(List.of("--explain", json.toString()));
+        }
+        String out = python(args);
+        assertAgrees(out);
+        assertTrue(out.matches("(?s).*\\(events: jfr, [1-9]\\d*\\).*"), "the recordings were read: " + out);
     }
 
     private static void assertAgrees(String out) {

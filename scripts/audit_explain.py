@@ -255,6 +255,12 @@ class Oracle:
             if off > PREEMPT_MIN_NS and wall > PREEMPT_RATIO * job["cpu"]:
                 c["preemption"] = off
 
+    def superseding(self, j):
+        """A terminated job's next release (any task) by its deadline, or None."""
+        nxt = [s for s in self.jobs if s["release"] > j["release"]]
+        s = min(nxt, key=lambda x: x["release"]) if j["outcome"] == "terminated" and nxt else None
+        return None if s is not None and s["release"] > j["deadline"] else s
+
     def explain(self, j):
         c = {}
         blocked = None
@@ -266,6 +272,8 @@ class Oracle:
             self.run_causes(j, ws, we, c)
             if j["cpu"] >= 0 and j["cpu"] > j["deadline"] - j["release"]:
                 c["compute"] = j["cpu"]
+            if not c and self.superseding(j) is not None:
+                c["overlap"] = we - ws  # aborted by the next release while it ran normally
         else:
             b = self.holder(j)
             if b is not None:
@@ -280,10 +288,7 @@ class Oracle:
                     c["overlap"] = we - j["release"]
             else:
                 # the robot was free: superseded by the next release (any task) before its handler started it
-                nxt = [s for s in self.jobs if s["release"] > j["release"]]
-                s = min(nxt, key=lambda x: x["release"]) if j["outcome"] == "terminated" and nxt else None
-                if s is not None and s["release"] > j["deadline"]:
-                    s = None
+                s = self.superseding(j)
                 ws = j["release"]
                 we = s["release"] if s else j["deadline"]
                 self.vm_causes(None, ws, we, c)

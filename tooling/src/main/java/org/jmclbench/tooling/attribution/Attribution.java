@@ -42,7 +42,8 @@ import java.util.TreeMap;
  * <li>{@code overlap}: a skipped job whose blocker ran normally: the two events came closer
  *     together than the blocker's ordinary response time (no anomaly: the timeline's own collision);
  *     or a terminated job superseded by the next release before its handler started it, over the
- *     window between the two releases;</li>
+ *     window between the two releases; or one aborted by it while it ran normally (nothing else
+ *     found), over its window;</li>
  * <li>{@code unknown}: none of these.</li>
  * </ul>
  * Without runtime events (the C baseline, or a JVM run without capture) only
@@ -160,6 +161,13 @@ public final class Attribution {
             if (j.cpuNs() >= 0 && j.deadlineNs() >= 0 && j.cpuNs() > relativeDeadline) {
                 causes.add(new Cause("compute", j.cpuNs(), String.format(Locale.ROOT,
                         "%s of CPU for a %s deadline", ms(j.cpuNs()), ms(relativeDeadline))));
+            }
+            JobRecord s = supersededBy(j);
+            if (s != null && causes.isEmpty()) {
+                // terminate aborted a job that ran normally: the next release came before its ordinary response time
+                causes.add(new Cause("overlap", we - ws, String.format(Locale.ROOT,
+                        "superseded by %s#%d, released %s later, while it ran normally", s.task(), s.index(),
+                        ms(s.releaseNs() - j.releaseNs()))));
             }
         }
         if (causes.isEmpty()) {

@@ -186,6 +186,20 @@ class AttributionTest {
     }
 
     @Test
+    void aJobAbortedWhileItRanNormallyIsTheOverlapOfTheTwoReleases() {
+        // terminate, as measured: predict#8 released at 400 ms, started at once, 2.24 ms later update#4
+        // was released and aborted it at 402.35 ms; 2.3 ms of CPU for a 15 ms deadline, no runtime event
+        List<JobRecord> jobs = List.of(new JobRecord("predict", 8, 400 * MS, 400_010_000, 402_350_000, 415 * MS, "terminated",
+                        2_300_000),
+                new JobRecord("update", 4, 402_240_000, 402_400_000, 410 * MS, 430 * MS, "done", 7 * MS));
+        JobAttribution a = Attribution.attribute(jobs, List.of(), DEFAULTS).get(0);
+        // it was "unknown" over its window: nothing went wrong with it, the next event came first
+        assertEquals(List.of("overlap"), a.causes().stream().map(Cause::kind).toList());
+        assertEquals(2_350_000, a.primary().ns());
+        assertTrue(a.primary().detail().contains("update#4") && a.primary().detail().contains("2.240 ms"), a.primary().detail());
+    }
+
+    @Test
     void aSkippedJobBehindABlockerStalledByAPauseIsTheGc() {
         List<JobRecord> jobs = List.of(job("update", 0, 0, 0, 70, 200, "done", 5),
                 job("predict", 1, 50, -1, -1, 100, "skipped", -1));

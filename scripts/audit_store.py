@@ -9,7 +9,14 @@ HdrHistogram of `histograms` bucket by bucket (its encoding decoded here), and t
 taskLatency and deviation series. With --report, the page's cells (each Metric and TaskMetric
 aggregate: runs, mean, min, max over the repetitions) and its histogram charts (the latency and
 abort latency spectra, the jitter CDF, the completion curves: each point within HdrHistogram's
-precision of the pooled jobs' exact value). With --compare, the A and B means compare printed.
+precision of the pooled jobs' exact value), each aggregate's bootstrap interval and each cell's
+missSeparation. With --compare, the A and B means compare printed, their bootstrap intervals, the
+ratios B/A and their intervals, the Mann-Whitney p-values and the separation verdicts.
+
+The statistics (docs/REPORT.md "Statistics") are recomputed from their definitions: the Mann-Whitney
+p exactly (the rank-sum distribution counted in integers, or the normal approximation), the rule from
+it; a bootstrap bound, which the tool draws from its own seeded generator, within a band of this
+script's own resamples (BOOT_K below says why the band is that wide).
 
 usage: python3 scripts/audit_store.py DB [--report DIR/index.html] [--compare OUT]... [--home DIR]
   --compare OUT   a file holding `jmclbench compare --db DB --a SPEC --b SPEC`'s output
@@ -20,7 +27,10 @@ import bisect
 import json
 import math
 import os
+import random
+import re
 import sqlite3
+import statistics
 import struct
 import sys
 import zlib
@@ -297,6 +307,130 @@ def check_charts(data, cell_runs, note):
     return checked
 
 
+# --- the statistics (docs/REPORT.md "Statistics"), recomputed from their textbook definitions ----
+Z95 = statistics.NormalDist().inv_cdf(0.975)  # Wilson's z for a 95% interval
+BOOT_RESAMPLES = 10_000  # the tool's resample count (compare's footer names it; checked there)
+# A bootstrap bound is the q-quantile of B = 10,000 resampled statistics (the tool's, seeded, and this
+# script's, from another generator): two independent estimates of one quantile of the ideal bootstrap
+# distribution F. The fraction of this script's resamples below the tool's bound is q with a standard
+# deviation of sqrt(2 q (1 - q) / B) (both sides' sampling error; 0.0022 at q = 0.025), whatever F is
+# (atoms included): the bound must lie between this script's resampled values of ranks B (q -+ K sd).
+# K = 6 leaves ~1e-9 a bound to chance, so a test run of some hundred intervals does not flake, and
+# still tells a 95% from a 90% or a 99% interval (q = 0.05 or 0.005 lies 11 sd away).
+BOOT_K = 6.0
+MIN_REPETITIONS = 10  # Separation.MIN_REPETITIONS, as docs/REPORT.md states the rule
+ALPHA = 0.05
+
+
+def wilson(k, n):
+    """The 95% Wilson score interval of k successes in n trials (no continuity correction)."""
+    p, z2 = k / n, Z95 * Z95
+    centre = (p + z2 / (2 * n)) / (1 + z2 / n)
+    half = Z95 / (1 + z2 / n) * math.sqrt(p * (1 - p) / n + z2 / (4 * n * n))
+    return p, max(0.0, centre - half), min(1.0, centre + half)
+
+
+def mann_whitney_p(a, b):
+    """Two-sided Mann-Whitney U p-value as docs/REPORT.md defines it: none below 3 values a side, 1 for
+    identical samples, exact (the distribution of the rank sum) below 50 values in all without ties,
+    else the normal approximation without tie or continuity correction."""
+    m, n = len(a), len(b)
+    if m < 3 or n < 3:
+        return None
+    pooled = sorted(a + b)
+    if pooled[0] == pooled[-1]:
+        return 1.0
+    # midranks of the pooled sample; U of a = rank sum of a - m (m + 1) / 2
+    rank, i = {}, 0
+    while i < len(pooled):
+        j = i
+        while j < len(pooled) and pooled[j] == pooled[i]:
+            j += 1
+        rank[pooled[i]] = (i + 1 + j) / 2
+        i = j
+    u = sum(rank[x] for x in a) - m * (m + 1) / 2
+    umin = min(u, m * n - u)
+    if m + n < 50 and len(rank) == m + n:
+        # ways[s]: m-subsets of the ranks 1..m+n whose sum is s (integers: exact)
+        ways = [[0] * (m * (m + n) + 1) for _ in range(m + 1)]
+        ways[0][0] = 1
+        for r in range(1, m + n + 1):
+            for size in range(min(r, m), 0, -1):
+                row, prev = ways[size], ways[size - 1]
+                for s in range(len(row) - 1, r - 1, -1):
+                    if prev[s - r]:
+                        row[s] += prev[s - r]
+        base = m * (m + 1) // 2
+        tail = sum(ways[m][base + k] for k in range(int(umin) + 1))
+        return min(1.0, 2 * tail / math.comb(m + n, m))
+    z = (umin - m * n / 2) / math.sqrt(m * n * (m + n + 1) / 12)
+    return min(1.0, 2 * statistics.NormalDist().cdf(z))
+
+
+def _resampled_means(xs, rng):
+    """BOOT_RESAMPLES means of len(xs) values drawn from xs with replacement."""
+    n = len(xs)
+    drawn = rng.choices(xs, k=n * BOOT_RESAMPLES)
+    return [sum(drawn[i:i + n]) / n for i in range(0, n * BOOT_RESAMPLES, n)]
+
+
+def _boot_band(sorted_stats, q):
+    """The values between which a bootstrap q-quantile of BOOT_RESAMPLES resamples must lie (BOOT_K)."""
+    d = BOOT_K * math.sqrt(2 * q * (1 - q) / BOOT_RESAMPLES)
+    b = len(sorted_stats)
+    return (sorted_stats[max(0, math.floor((q - d) * (b - 1)))], sorted_stats[min(b - 1, math.ceil((q + d) * (b - 1)))])
+
+
+def _slack(v, printed):
+    """printed: half a unit of the last digit printed; plus the rounding of a sum of doubles (the tool
+    adds a resample's values in another order: 2.8 + 2.0 + 1.6 + 0.6 differs in the last bit)."""
+    return printed + 1e-12 * max(1.0, abs(v)) if not math.isinf(v) else 0.0
+
+
+def _within(v, lo, hi, slack):
+    return (lo == v or lo - _slack(lo, slack) <= v) and (hi == v or v <= hi + _slack(hi, slack))
+
+
+def check_boot_mean(values, low, high, where, note, slack=0.0, rng=None):
+    """A 95% percentile-bootstrap interval [low, high] of the mean of values (low None: none given):
+    none for one value; the value itself for equal values; else inside [min, max] around the mean, each
+    bound within BOOT_K of this script's own bootstrap. slack: the printed precision. The checks made."""
+    mean = math.fsum(values) / len(values)
+    if len(values) < 2 or math.inf in values:
+        if low is not None:
+            note("%s: an interval [%r, %r] of %d value(s)%s" % (where, low, high, len(values), " with +inf" if math.inf in values else ""))
+        return 1
+    if low is None:
+        note("%s: no interval of %d values" % (where, len(values)))
+        return 1
+    lo_v, hi_v = min(values), max(values)
+    if not (_within(low, lo_v, mean, slack) and _within(high, mean, hi_v, slack)):
+        note("%s: bootstrap interval [%r, %r] not within min %r <= low <= mean %r <= high <= max %r" % (
+            where, low, high, lo_v, mean, hi_v))
+        return 1
+    if lo_v == hi_v:
+        return 1
+    means = sorted(_resampled_means(values, rng or random.Random(BOOT_SEED)))
+    for q, got in ((0.025, low), (0.975, high)):
+        band = _boot_band(means, q)
+        if not _within(got, band[0], band[1], slack):
+            note("%s: bootstrap %g-quantile %r outside this script's %d-resample band [%r, %r]" % (
+                where, q, got, BOOT_RESAMPLES, band[0], band[1]))
+    return 3
+
+
+def ratio_resamples(a, b, rng):
+    """BOOT_RESAMPLES ratios of resampled means B/A: 1 where both are 0, +inf where only A's is."""
+    out = []
+    for mb, ma in zip(_resampled_means(b, rng), _resampled_means(a, rng)):
+        out.append(1.0 if ma == 0 and mb == 0 else math.inf if ma == 0 else mb / ma)
+    out.sort()
+    return out
+
+
+BOOT_SEED = 20260601  # this script's generator is Python's Mersenne Twister, not the tool's: only the seed is fixed, for a reproducible audit
+
+
 # --- compare's table: A's and B's means as printed -----------------------------------------------
 COMPARE_LABELS = [("missCount", "MISS_COUNT"), ("late", "LATE"), ("deadline misses", "DEADLINE_MISSES"),
                   ("predict miss ratio", "MISS_RATIO_PREDICT"), ("update miss ratio", "MISS_RATIO_UPDATE"),
@@ -318,7 +452,6 @@ def check_compare(path, runs, per_run, note, named=None):
     """compare's output for --db X --a SPEC --b SPEC (SPEC: runtime[/engine], or a row name as the report
     writes it, "native [time scale 0.5]"); its A and B columns. named: (dataset, policy, particles, row name
     without its machine) -> the ok runs of the report's cells of that name, None without --report."""
-    import re
     text = open(path).read().splitlines()
     spec = {}
     for line in text[:2]:
@@ -341,7 +474,12 @@ def check_compare(path, runs, per_run, note, named=None):
             sel = [r for r in sel if r[6] == "preallocated"]
         return [per_run[r[0]] for r in sel]
 
-    checked, section = 0, None
+    checked, section, counts = 0, None, {"p": 0, "verdict": 0, "bootstrap": 0}
+    footer = next((line for line in text if "B/A CI: percentile bootstrap" in line), "")
+    fm = re.search(r"B/A CI: percentile bootstrap, (\d+) resamples", footer)
+    if not fm or int(fm.group(1)) != BOOT_RESAMPLES:
+        note("compare %s: the footer names %s bootstrap resamples, docs/REPORT.md %d" % (
+            path, fm.group(1) if fm else "no", BOOT_RESAMPLES))
     for line in text:
         m = re.match(r"== (\S+)\s+(\S+)\s+(\d+) particles ==", line)
         if m:
@@ -359,8 +497,168 @@ def check_compare(path, runs, per_run, note, named=None):
                     checked += 1
                     if int(n_text) != e["n"] or not printed_close(mean_text, e["mean"]):
                         note("compare %s %s: printed %s n=%s, recomputed %r n=%d" % (section, label, mean_text, n_text, e["mean"], e["n"]))
+                where = "compare %s %s" % (section, label)
+                xs = [[v for v in (METRIC[name](rc) for rc in rcs) if v is not None] for rcs in (a_runs, b_runs)]
+                for k, v in check_compare_stats(line, label, xs[0], xs[1], where, note).items():
+                    counts[k] += v
                 break
-    return checked
+    return checked, counts
+
+
+NUM = r"(?:inf|-?[0-9]+(?:\.[0-9]+)?)"
+CELL = r"(-|(%s)(?: \[(%s), (%s)\])? n=(\d+))" % (NUM, NUM, NUM)
+COMPARE_ROW = re.compile(r" \([^)]*\) +%s +%s +(1 \(0/0\)|-|%s)  (-|\[(%s), (%s)\]) +(.*?)\s*$" % (CELL, CELL, NUM, NUM, NUM))
+VERDICT = re.compile(r"(A lower than B|B lower than A|not separated|not separated: n too small to separate) \("
+                     r"(?:p (=|<) ([0-9.]+), )?n = (\d+) vs (\d+)(; the ratio's 95% interval includes 1|"
+                     r"; the test and the ratio of means point opposite ways|; 10 a side needed)?\)$")
+
+
+def half_unit(text):
+    """Half a unit of the last digit of a printed number."""
+    return 0.5 * 10 ** -(len(text.split(".")[1]) if "." in text else 0)
+
+
+def number(text):
+    return math.inf if text == "inf" else float(text)
+
+
+def check_compare_stats(line, label, a, b, where, note):
+    """One row of compare's table against the statistics recomputed here: each side's bootstrap interval,
+    the ratio of means and its bootstrap interval, the Mann-Whitney p and the separation verdict, by
+    docs/REPORT.md's rule. The counts of what was checked."""
+    counts = {"p": 0, "verdict": 0, "bootstrap": 0}
+    m = COMPARE_ROW.match(line[len(label):])
+    if not m:
+        note("%s: row not understood: %r" % (where, line))
+        return counts
+    (a_cell, _, a_lo, a_hi, _, b_cell, _, b_lo, b_hi, _, ratio_text, ci_text, r_lo, r_hi, verdict_text) = m.groups()
+    for xs, cell, lo, hi in ((a, a_cell, a_lo, a_hi), (b, b_cell, b_lo, b_hi)):
+        if cell != "-" and xs:
+            slack = max(half_unit(lo), half_unit(hi)) if lo else 0.0
+            counts["bootstrap"] += check_boot_mean(xs, number(lo) if lo else None, number(hi) if hi else None,
+                                                   where + " bootstrap interval", note, slack)
+    if not a or not b:
+        if verdict_text != "no data":
+            note("%s: %d vs %d values, printed %r, not 'no data'" % (where, len(a), len(b), verdict_text))
+        return counts
+    ma, mb = math.fsum(a) / len(a), math.fsum(b) / len(b)
+    want_ratio = "1 (0/0)" if ma == 0 and mb == 0 else "inf" if ma == 0 else None
+    if (ratio_text if want_ratio else None) != want_ratio or (not want_ratio and not printed_close(ratio_text, mb / ma)):
+        note("%s: ratio B/A printed %s, recomputed %r" % (where, ratio_text, want_ratio or mb / ma))
+    excludes = None  # whether the tool's ratio interval lies wholly on one side of 1: "A" (above 1), "B", "no"; None unsure
+    if len(a) < 2 or len(b) < 2:
+        if ci_text != "-":
+            note("%s: a ratio interval %s of %d vs %d values" % (where, ci_text, len(a), len(b)))
+    elif ci_text == "-":
+        note("%s: no ratio interval of %d vs %d values" % (where, len(a), len(b)))
+    else:
+        lo, hi = number(r_lo), number(r_hi)
+        ratios = ratio_resamples(a, b, random.Random(BOOT_SEED))
+        for q, got, text in ((0.025, lo, r_lo), (0.975, hi, r_hi)):
+            band = _boot_band(ratios, q)
+            counts["bootstrap"] += 1
+            if not _within(got, band[0], band[1], half_unit(text)):
+                note("%s: ratio interval's %g-quantile printed %s, outside this script's %d-resample band [%r, %r]" % (
+                    where, q, text, BOOT_RESAMPLES, band[0], band[1]))
+        # the printed bounds, rounded to 3 decimals: sure of the side of 1 only half a unit away from it
+        excludes = ("A" if lo - half_unit(r_lo) > 1 else "B" if hi + half_unit(r_hi) < 1
+                    else "no" if lo + half_unit(r_lo) <= 1 <= hi - half_unit(r_hi) else None)
+    p = mann_whitney_p(a, b)
+    v = VERDICT.match(verdict_text)
+    if not v:
+        note("%s: verdict not understood: %r" % (where, verdict_text))
+        return counts
+    kind, rel, p_text, n1, n2, suffix = v.groups()
+    ns = (int(n2), int(n1)) if kind == "B lower than A" else (int(n1), int(n2))
+    if ns != (len(a), len(b)):
+        note("%s: printed n = %s vs %s, recomputed %d vs %d" % (where, n1, n2, len(a), len(b)))
+    counts["p"] += 1
+    if p is None:
+        if p_text is not None:
+            note("%s: printed p %s %s of %d vs %d values (none below 3 a side)" % (where, rel, p_text, len(a), len(b)))
+    elif p_text is None:
+        note("%s: no p printed, recomputed %r" % (where, p))
+    elif not ((rel == "<" and p_text == "0.001" and p < 0.001)
+              or (rel == "=" and p >= 0.001 - 1e-12 and abs(float(p_text) - p) <= half_unit(p_text) * (1 + 1e-9))):
+        note("%s: printed p %s %s, recomputed %r" % (where, rel, p_text, p))
+    # the verdict, by docs/REPORT.md's rule; where the printed ratio interval touches 1, either verdict
+    counts["verdict"] += 1
+    want = {VERDICT_TEXT[w] for w in separation_verdicts(a, b, {"A", "B", "no"} if excludes is None else {excludes})}
+    if kind not in want:
+        note("%s: printed %r, recomputed %s (p %r, ratio interval %s)" % (where, verdict_text, " or ".join(sorted(want)), p, ci_text))
+    elif kind == "not separated" and p is not None and p < ALPHA and len(a) >= MIN_REPETITIONS and len(b) >= MIN_REPETITIONS:
+        # the reason a significant test did not separate: the printed interval around 1, or on the side
+        # of 1 the test does not point to
+        want_suffix = {"no": "; the ratio's 95% interval includes 1", "A": "; the test and the ratio of means point opposite ways",
+                       "B": "; the test and the ratio of means point opposite ways"}.get(excludes)
+        if suffix is None or (want_suffix is not None and suffix != want_suffix):
+            note("%s: printed %r, its reason recomputed %r (ratio interval %s)" % (where, verdict_text, want_suffix, ci_text))
+    return counts
+
+
+def separation_sides(a, b):
+    """Which sides of 1 the tool's 95% bootstrap interval of the ratio B/A may lie on, by this script's
+    own resamples: "A" wholly above 1 (A lower), "B" wholly below, "no" around 1; more than one where
+    the bound's band reaches across 1."""
+    if len(a) < 2 or len(b) < 2:
+        return {"no"}
+    ratios = ratio_resamples(a, b, random.Random(BOOT_SEED))
+    low, high = _boot_band(ratios, 0.025), _boot_band(ratios, 0.975)
+    sides = set()
+    if low[1] > 1:
+        sides.add("A")
+    if high[0] < 1:
+        sides.add("B")
+    if low[0] <= 1 <= high[1]:
+        sides.add("no")
+    return sides
+
+
+VERDICT_TEXT = {"TOO_FEW": "not separated: n too small to separate", "NOT_SEPARATED": "not separated",
+                "A_LOWER": "A lower than B", "B_LOWER": "B lower than A"}
+
+
+def separation_verdicts(a, b, sides=None):
+    """The verdicts (Separation.Verdict names) docs/REPORT.md's rule allows for A and B; sides: where the
+    ratio's interval lies (separation_sides), recomputed here when not given."""
+    if len(a) < MIN_REPETITIONS or len(b) < MIN_REPETITIONS:
+        return {"TOO_FEW"}
+    p = mann_whitney_p(a, b)
+    if p is None or not p < ALPHA:
+        return {"NOT_SEPARATED"}
+    a_above = sum(1.0 if x > y else 0.5 if x == y else 0.0 for x in a for y in b)
+    by_test = "A" if a_above < len(a) * len(b) / 2 else "B"
+    sides = sides or separation_sides(a, b)
+    out = {"A_LOWER" if by_test == "A" else "B_LOWER"} if by_test in sides else set()
+    if sides - {by_test}:
+        out.add("NOT_SEPARATED")
+    return out
+
+
+def check_miss_separation(data, by_cell, note):
+    """Each cell's missSeparation (misses per run against every other cell of its setting) against the
+    rule recomputed here. The pairs checked, and of them those with enough runs to be separated."""
+    checked, full = 0, 0
+    by_setting = {}
+    for cell in data["cells"]:
+        rcs = by_cell.get(cell_key(cell))
+        if rcs:
+            by_setting.setdefault((cell["dataset"], cell["policy"], cell["particles"]), []).append((cell, rcs))
+    for cells in by_setting.values():
+        for cell, rcs in cells:
+            a = [v for v in (METRIC["MISS_COUNT"](rc) for rc in rcs) if v is not None]
+            for other, ors in cells:
+                if other is cell:
+                    continue
+                b = [v for v in (METRIC["MISS_COUNT"](rc) for rc in ors) if v is not None]
+                got = (cell.get("missSeparation") or {}).get(other["config"])
+                want = separation_verdicts(a, b)
+                checked += 1
+                full += len(a) >= MIN_REPETITIONS and len(b) >= MIN_REPETITIONS
+                if got not in want:
+                    note("report %s %s %sp: missSeparation against %s is %r, recomputed %s (misses %r vs %r)" % (
+                        cell["config"], cell["policy"], cell["particles"], other["config"], got, " or ".join(sorted(want)), a, b))
+    return checked, full
 
 
 def check_series(con, key, folder, rc, note):
@@ -572,7 +870,7 @@ def audit(argv):
         for key, run_dir, _, runtime, profile, engine, memory, policy, particles, dataset, load in runs:
             by_cell.setdefault((dataset, policy, particles, runtime, profile or "", engine, memory, load or "none",
                                 label_of.get(machine_of[key])) + settings[key], []).append(per_run[key])
-        seen = 0
+        seen, boot_checked = 0, 0
         for cell in data["cells"]:
             rcs = by_cell.get(cell_key(cell))
             if rcs is None:
@@ -583,15 +881,16 @@ def audit(argv):
             seen += 1
             where = "report %s %s %sp" % (cell["config"], cell["policy"], cell["particles"])
             cmp(where + " ok", cell["ok"], len(rcs))
-            expect = {}
+            values = {}
             for name, f in METRIC.items():
-                expect[name] = agg_expect([f(rc) for rc in rcs])
+                values[name] = [f(rc) for rc in rcs]
             for task in ("predict", "update", "all"):
                 for name in TASK_METRIC:
-                    expect[task + "." + name] = agg_expect([task_value(rc, task, name) for rc in rcs])
+                    values[task + "." + name] = [task_value(rc, task, name) for rc in rcs]
             wv = [warm_values(rc) for rc in rcs]
             for name in wv[0]:
-                expect[name] = agg_expect([w[name] for w in wv])
+                values[name] = [w[name] for w in wv]
+            expect = {name: agg_expect(vs) for name, vs in values.items()}
             for name, e in expect.items():
                 a = cell["metrics"].get(name)
                 if a is None:
@@ -599,14 +898,19 @@ def audit(argv):
                     continue
                 for st in ("n", "mean", "min", "max"):
                     cmp("%s %s.%s" % (where, name, st), a.get(st), e[st], rel=1e-9)
-                if e["n"] >= 1 and e["mean"] is not None and a.get("low") is not None and not math.isinf(e["mean"]):
-                    compared += 1
-                    if not (a["low"] - 1e-12 <= e["mean"] <= a["high"] + 1e-12):
-                        bad.append("%s: %s interval [%r, %r] misses the mean %r" % (where, name, a["low"], a["high"], e["mean"]))
+                if e["n"] >= 1:
+                    k = check_boot_mean([v for v in values[name] if v is not None], a.get("low"), a.get("high"),
+                                        "%s %s" % (where, name), bad.append)
+                    compared += k
+                    boot_checked += k
             extra = set(cell["metrics"]) - set(expect)
             if extra:
                 print("report metrics not recomputed here: %s" % sorted(extra))
         print("report: %d cells checked of %d" % (seen, len(data["cells"])))
+        print("report: %d bootstrap interval checks" % boot_checked)
+        k, v = check_miss_separation(data, by_cell, bad.append)
+        compared += k
+        print("report: %d miss separations checked (%d with 10 runs a side)" % (k, v))
         cell_runs = {}
         for cell in data["cells"]:
             rcs = by_cell.get(cell_key(cell))
@@ -622,9 +926,10 @@ def audit(argv):
         for (dataset, policy, particles, config), rcs in cell_runs.items():
             named.setdefault((dataset, policy, particles, config.rpartition(" @")[0] if " @" in config else config), []).extend(rcs)
     for path in compares:
-        k = check_compare(path, runs, per_run, bad.append, named)
-        compared += k
+        k, st = check_compare(path, runs, per_run, bad.append, named)
+        compared += k + sum(st.values())
         print("compare %s: %d means checked" % (path, k))
+        print("compare %s: %d p-values, %d verdicts, %d bootstrap bounds checked" % (path, st["p"], st["verdict"], st["bootstrap"]))
     for b in bad:
         print("DISAGREE " + b)
     print("TOTAL: %d ok runs, %d numbers compared (%d histograms bucket by bucket), %d disagree, "

@@ -50,11 +50,18 @@ public final class Separation {
             return switch (verdict) {
                 case A_LOWER -> nameA + " lower than " + nameB + " (" + pText() + ", n = " + nA + " vs " + nB + ")";
                 case B_LOWER -> nameB + " lower than " + nameA + " (" + pText() + ", n = " + nB + " vs " + nA + ")";
-                case NOT_SEPARATED -> "not separated (" + pText() + ", n = " + nA + " vs " + nB
-                        + (p < Stats.ALPHA ? "; the ratio's 95% interval includes 1" : "") + ")";
+                case NOT_SEPARATED -> "not separated (" + pText() + ", n = " + nA + " vs " + nB + reason() + ")";
                 case TOO_FEW -> "not separated: n too small to separate (" + (Double.isNaN(p) ? "" : pText() + ", ")
                         + "n = " + nA + " vs " + nB + "; " + MIN_REPETITIONS + " a side needed)";
             };
+        }
+
+        /** Why a significant test did not separate: the ratio's interval includes 1, or lies on the other side of it. */
+        private String reason() {
+            if (!(p < Stats.ALPHA)) {
+                return "";
+            }
+            return ratio.excludesOne() ? "; the test and the ratio of means point opposite ways" : "; the ratio's 95% interval includes 1";
         }
 
         /** {@code p = 0.003}, {@code p < 0.001}. */

@@ -84,4 +84,21 @@ class SeparationTest {
         assertEquals(Separation.Verdict.NOT_SEPARATED, r.verdict());
         assertTrue(r.text("A", "B").endsWith("; the ratio's 95% interval includes 1)"), r.text("A", "B"));
     }
+
+    @Test
+    void aTestAndMeansPointingOppositeWaysAreSaidAsSuch() {
+        // A is below B in 14 of 20 runs (the test: A lower, p 0.030), but its six runs of 1000 make its mean
+        // 30 times B's, with a ratio interval wholly below 1: not separated, and not because the interval
+        // includes 1, as compare printed beside "[0.020, 0.100]"
+        double[] a = new double[20];
+        java.util.Arrays.fill(a, 14, 20, 1000);
+        double[] b = new double[20];
+        java.util.Arrays.fill(b, 10);
+        Separation.Result r = Separation.of(a, b);
+        assertTrue(r.p() < Stats.ALPHA, "p " + r.p());
+        assertTrue(r.ratio().high() < 1, r.ratio().toString());
+        assertEquals(Separation.Verdict.NOT_SEPARATED, r.verdict());
+        assertEquals("not separated (p = 0.030, n = 20 vs 20; the test and the ratio of means point opposite ways)",
+                r.text("A", "B"));
+    }
 }

@@ -45,10 +45,11 @@ class IndependentAuditTest {
         workloadJarOfThisClassPath(dir.resolve("workload/target/jmclbench-workload.jar"));
         Path db = dir.resolve("results/results.db");
         String java = ProcessHandle.current().info().command().orElse("java");
-        // 3 s of match-quick at 3000 particles: a few drops and aborts on most machines, not needed by the check
+        // 10 repetitions a side, so that compare applies the separation rule (docs/REPORT.md: 10 runs a side) and
+        // the audit recomputes its p-values and verdicts; 1 s of match-quick at 1000 particles keeps the 20 runs short
         Fixtures.CliResult m = Fixtures.cli("matrix", "--java", java, "--engines", "javase,rtsj-atomic",
-                "--policies", "skip,terminate", "--particles", "3000", "--datasets", PROJECT.resolve("data/match-quick").toString(),
-                "--time-scale", "0.3", "--db", db.toString());
+                "--policies", "skip", "--particles", "1000", "--repeat", "10", "--datasets", PROJECT.resolve("data/match-quick").toString(),
+                "--time-scale", "0.1", "--db", db.toString());
         assertEquals(0, m.exitCode(), m.out() + m.err());
         List<String> runDirs = new ArrayList<>();
         String runtime = null;
@@ -60,7 +61,7 @@ class IndependentAuditTest {
                 runDirs.add(db.getParent().resolve(rs.getString(2)).toString());
             }
         }
-        assertEquals(4, runDirs.size());
+        assertEquals(20, runDirs.size());
 
         List<String> run = new ArrayList<>(List.of(PROJECT.resolve("scripts/audit_run.py").toString()));
         run.addAll(runDirs);
@@ -76,10 +77,14 @@ class IndependentAuditTest {
         String store = python(List.of(PROJECT.resolve("scripts/audit_store.py").toString(), db.toString(),
                 "--report", db.getParent().resolve("report/index.html").toString(), "--compare", compareOut.toString()));
         assertAgrees(store);
-        assertTrue(store.contains("report: 4 cells checked of 4"), store);
+        assertTrue(store.contains("report: 2 cells checked of 2"), store);
         assertTrue(store.matches("(?s).*compare .*: (\\d{2,}) means checked.*"), "compare's table was read: " + store);
+        // every row's p and verdict (9 metrics, 10 runs a side), the two cells' separation of their misses
+        assertTrue(store.matches("(?s).*compare .*: 9 p-values, 9 verdicts, \\d+ bootstrap bounds checked.*"), store);
+        assertTrue(store.contains("report: 2 miss separations checked (2 with 10 runs a side)"), store);
+        assertTrue(store.matches("(?s).*report: \\d{3,} bootstrap interval checks.*"), store);
 
-        // the rtsj-atomic runs as if a second matrix had made them at --time-scale 0.5, and the terminate runs on an
+        // the rtsj-atomic runs as if a second matrix had made them at --time-scale 0.5, and five javase runs on an
         // updated JVM: the report names them apart, and the audit takes compare's sides by the report's row names
         Path labelled = Files.copy(db, db.resolveSibling("labelled.db"));
         String version;
@@ -88,8 +93,9 @@ class IndependentAuditTest {
             s.execute("INSERT INTO matrices SELECT matrix_id || '-2', machine_id, command, order_seed, started_at,"
                     + " json_set(spec_json, '$.timeScale', 0.5) FROM matrices");
             s.execute("UPDATE runs SET matrix_id = matrix_id || '-2' WHERE engine = 'rtsj-atomic'");
-            s.execute("UPDATE runs SET runtime_version = runtime_version || '-updated' WHERE policy = 'terminate'");
-            try (ResultSet rs = s.executeQuery("SELECT runtime_version, profile FROM runs WHERE policy = 'skip' LIMIT 1")) {
+            s.execute("UPDATE runs SET runtime_version = runtime_version || '-updated' WHERE run_key IN"
+                    + " (SELECT run_key FROM runs WHERE engine = 'javase' ORDER BY run_key LIMIT 5)");
+            try (ResultSet rs = s.executeQuery("SELECT runtime_version, profile FROM runs WHERE engine = 'rtsj-atomic' LIMIT 1")) {
                 assertTrue(rs.next());
                 version = rs.getString(1);
                 profile = rs.getString(2);
@@ -99,14 +105,14 @@ class IndependentAuditTest {
         assertEquals(0, Fixtures.cli("report", "--db", labelled.toString(), "--out", labelledReport.toString(), "--no-export").exitCode());
         String name = profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
         Fixtures.CliResult labelledCompare = Fixtures.cli("compare", "--db", labelled.toString(),
-                "--a", name + " / javase [" + version + "] [time scale 0.3]", "--b", name + " / rtsj-atomic [" + version + "] [time scale 0.5]");
+                "--a", name + " / javase [" + version + "] [time scale 0.1]", "--b", name + " / rtsj-atomic [" + version + "] [time scale 0.5]");
         assertEquals(0, labelledCompare.exitCode(), labelledCompare.out() + labelledCompare.err());
         Path labelledCompareOut = dir.resolve("labelled-compare.txt");
         Files.writeString(labelledCompareOut, labelledCompare.out());
         String audit = python(List.of(PROJECT.resolve("scripts/audit_store.py").toString(), labelled.toString(),
                 "--report", labelledReport.resolve("index.html").toString(), "--compare", labelledCompareOut.toString()));
         assertAgrees(audit);
-        assertTrue(audit.contains("report: 4 cells checked of 4"), audit);
+        assertTrue(audit.contains("report: 3 cells checked of 3"), audit);
         assertTrue(audit.matches("(?s).*compare .*: (\\d{2,}) means checked.*"), "compare's table was read: " + audit);
     }
 

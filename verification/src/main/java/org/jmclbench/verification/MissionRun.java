@@ -8,7 +8,8 @@ import java.util.List;
 
 /**
  * One input of the {@link MissionDriver}: the policy, the memory style, the events (odometry
- * events 50 ms apart, laser event k at the instant of odometry event k), the particles, the
+ * events 50 ms apart, laser event k 2 ms after odometry event k for k even, 2 ms before it for k
+ * odd; a job takes 5 ms of virtual time), the particles, the
  * poll interval and whether the covariance is computed.
  */
 public record MissionRun(String policy, String memory, int odometry, int laser, int particles, int poll,
@@ -46,7 +47,7 @@ public record MissionRun(String policy, String memory, int odometry, int laser, 
 
     /** What the input covers, for the table and the JSON. */
     public String scope() {
-        return memory + ", " + odometry + " odometry + " + laser + " laser events" + (laser > 0 ? " (coinciding)" : "")
+        return memory + ", " + odometry + " odometry + " + laser + " laser events" + (laser > 0 ? " (2 ms apart)" : "")
                 + ", " + particles + (particles == 1 ? " particle" : " particles") + ", poll every " + poll
                 + (covariance ? ", covariance" : "");
     }

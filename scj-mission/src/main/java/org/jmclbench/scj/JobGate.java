@@ -108,8 +108,12 @@ public class JobGate {
         return decision[k] == ADMITTED;
     }
 
-    /** The policy's decision for event j, released at {@code requestNs}. */
-    private boolean decide(int j, boolean busy, long requestNs) {
+    /**
+     * The policy's decision for event j, released at {@code requestNs}. Synchronized although only
+     * {@link #admitAt} calls it (re-entering the monitor it holds): the static P2 rule wants every
+     * access to {@code owner}, {@code latest} and {@code records} under the gate's monitor.
+     */
+    private synchronized boolean decide(int j, boolean busy, long requestNs) {
         if (policy == OverrunPolicy.SKIP) {
             if (busy || owner != FREE) {
                 return false;

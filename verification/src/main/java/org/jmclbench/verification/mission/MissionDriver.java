@@ -55,8 +55,12 @@ public final class MissionDriver extends PlacedMissionInput implements MissionOu
 
     private JobRecords records;
 
-    MissionDriver(int odometry, int laser) {
+    /** True: laser event k at the instant of odometry event k ({@link org.jmclbench.verification.MissionRun#atOdometryInstants}). */
+    private final boolean coinciding;
+
+    MissionDriver(int odometry, int laser, boolean coinciding) {
         super(odometry, laser, Playground.thesis(), 1.5, 1.0, 0.0);
+        this.coinciding = coinciding;
     }
 
     public static void main(String[] args) throws ReflectiveOperationException {
@@ -64,8 +68,9 @@ public final class MissionDriver extends PlacedMissionInput implements MissionOu
         MclConfig mcl = MclConfig.builder().memory(MclConfig.Memory.valueOf(args[1].toUpperCase()))
                 .particles(Integer.parseInt(args[4])).pollInterval(Integer.parseInt(args[5]))
                 .covariance(Boolean.parseBoolean(args[6])).build();
-        MissionDriver d = new MissionDriver(Integer.parseInt(args[2]), Integer.parseInt(args[3]));
-        Class<?> fault = args.length > 7 ? Class.forName(args[7]) : null;
+        MissionDriver d = new MissionDriver(Integer.parseInt(args[2]), Integer.parseInt(args[3]),
+                Boolean.parseBoolean(args[7]));
+        Class<?> fault = args.length > 8 ? Class.forName(args[8]) : null;
         // Virtual time: the run is a function of the interleaving, not of the host's clock.
         System.setProperty("jmclbench.scj.meter", "none");
         // Non-daemon handler threads: JPF hands over at a thread's end only to a runnable non-daemon.
@@ -191,9 +196,11 @@ public final class MissionDriver extends PlacedMissionInput implements MissionOu
     @Override
     public void readLaser(double[] time, double[] angle) {
         // A job takes 5 ms of virtual time: laser event k falls 2 ms after odometry event k (k even:
-        // within that predict) or 2 ms before it (k odd: that predict falls within the update).
+        // within that predict) or 2 ms before it (k odd: that predict falls within the update);
+        // coinciding, at the instant of odometry event k.
+        double offset = coinciding ? 0.0 : LASER_OFFSET_S;
         for (int k = 0; k < laserCount(); k++) {
-            time[k] = 0.05 * k + (k % 2 == 0 ? LASER_OFFSET_S : -LASER_OFFSET_S);
+            time[k] = 0.05 * k + (k % 2 == 0 ? offset : -offset);
             angle[k] = 1.0 + 0.5 * k;
         }
     }

@@ -7,9 +7,12 @@
 # Source, in this order:
 #   JPF_CORE_SRC   a jpf-core folder or a tarball that unpacks into one (jpf-core-7ea25de.tar.gz)
 #   otherwise      git clone of branch java-17 at the pinned commit (needs network access)
+# Patches: verification/jpf-patches/*.patch are applied to the sources (a copy of a JPF_CORE_SRC
+# folder, never the folder itself) before the build: model methods jpf-core lacks (README.md).
 # Cache: ${JMCLBENCH_CACHE:-~/.cache/jmclbench}/jpf/<key>, where key names the commit (when known)
-# and a hash of the sources, so another source never reuses a stale build. Without JPF_CORE_SRC,
-# a build of the pinned commit's own sources is used as it is, with no clone.
+# and a hash of the patched sources, so another source never reuses a stale build. Without
+# JPF_CORE_SRC, a build of the pinned commit's own sources with these patches is used as it is,
+# with no clone.
 #
 # Usage: build-jpf.sh [--quiet] [--link PATH]
 #   prints the JPF home on stdout (progress on stderr), points <cache>/current at it, and
@@ -59,12 +62,18 @@ java17_home() {
 }
 
 cache=${JMCLBENCH_CACHE:-$HOME/.cache/jmclbench}/jpf
+patches=$(cd "$(dirname "$0")" && pwd)/jpf-patches
+patch_files=()
+for f in "$patches"/*.patch; do [ -f "$f" ] && patch_files+=("$f"); done
 # A home built from the pinned commit's own sources (the clone or the pinned tarball) says so in
-# PINNED, so that without JPF_CORE_SRC a build that exists is used without cloning again.
+# PINNED, with a hash of the patches applied, so that without JPF_CORE_SRC a build that exists
+# is used without cloning again, and a build with other patches (or none) is not.
+patch_hash=$(cat /dev/null "${patch_files[@]}" | sha256sum | cut -c1-12)
+pinned_mark="$PINNED_COMMIT patches $patch_hash"
 built() { [ -f "$1/build/jpf.jar" ] && [ -f "$1/build/jpf-classes.jar" ] && [ -f "$1/site.properties" ]; }
 if [ -z "${JPF_CORE_SRC:-}" ]; then
     for h in "$cache"/"${PINNED_COMMIT:0:7}"-*; do
-        if built "$h" && [ "$(cat "$h/PINNED" 2>/dev/null)" = "$PINNED_COMMIT" ]; then
+        if built "$h" && [ "$(cat "$h/PINNED" 2>/dev/null)" = "$pinned_mark" ]; then
             say "cached (the pinned commit): $h"
             finish "$h"; exit 0
         fi
@@ -109,6 +118,18 @@ for d in src/main src/peers src/classes/modules src/annotations jpf.properties; 
         die "$src: not a jpf-core tree (no $d)"
     fi
 done
+if [ ${#patch_files[@]} -gt 0 ]; then
+    if [ -d "${JPF_CORE_SRC:-}" ]; then   # the user's folder stays as it is
+        mkdir "$work/src"
+        cp -R "$src/." "$work/src/"
+        src=$work/src
+    fi
+    command -v patch >/dev/null || die "no patch program to apply $patches"
+    for f in "${patch_files[@]}"; do
+        patch -s -p1 -d "$src" < "$f" > "$work/patch.log" 2>&1 \
+            || { cat "$work/patch.log" >&2; die "$(basename "$f") does not apply to $src"; }
+    done
+fi
 
 # --- 2. the cache key: the commit (when known) plus a hash of every source file
 srchash=$(cd "$src" && find jpf.properties src/main src/peers src/classes src/annotations -type f -print0 \
@@ -117,7 +138,7 @@ key=${commit:+${commit:0:7}-}$srchash
 home=$cache/$key
 if built "$home"; then
     say "cached: $home"
-    ! $pristine || echo "$PINNED_COMMIT" > "$home/PINNED"
+    ! $pristine || echo "$pinned_mark" > "$home/PINNED"
     finish "$home"; exit 0
 fi
 
@@ -182,9 +203,9 @@ cat > "$out/site.properties" <<EOF
 jpf-core = $home
 extensions = \${jpf-core}
 EOF
-printf 'commit=%s\nsource=%s\nbuilt=%s\njava=%s\n' "${commit:-unknown}" "${JPF_CORE_SRC:-$UPSTREAM}" \
-    "$(date -u +%FT%TZ)" "$jdk" > "$out/BUILD-INFO"
-! $pristine || echo "$PINNED_COMMIT" > "$out/PINNED"
+printf 'commit=%s\nsource=%s\npatches=%s\nbuilt=%s\njava=%s\n' "${commit:-unknown}" "${JPF_CORE_SRC:-$UPSTREAM}" \
+    "$(cd "$patches" 2>/dev/null && ls *.patch 2>/dev/null | tr '\n' ' ')" "$(date -u +%FT%TZ)" "$jdk" > "$out/BUILD-INFO"
+! $pristine || echo "$pinned_mark" > "$out/PINNED"
 mkdir -p "$cache"
 rm -rf "$home.tmp.$$"
 mv "$out" "$home.tmp.$$"

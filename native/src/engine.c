@@ -322,36 +322,46 @@ static void *dispatcher_main(void *arg)
 
 	if (pthread_getschedparam(pthread_self(), &e->dispatcher_policy, &sp) == 0)
 		e->dispatcher_priority = sp.sched_priority;
-	for (k = 0; k < e->tl->n; k++) {
+	for (k = 0; k < e->tl->n;) {
 		int64_t wake;
+		int end = k + 1;
 
 		sleep_until(e->t0 + e->tl->events[k].release_ns, e->spin_ns);
 		wake = jm_now_ns();
+		/*
+		 * Events of one release instant are decided under one hold of the lock, in timeline
+		 * order, so that none of them has started when the next is decided (the Java engines'
+		 * rule, docs/RELEASE-ENGINE.md "Events at the same time").
+		 */
+		while (end < e->tl->n && e->tl->events[end].release_ns == e->tl->events[k].release_ns)
+			end++;
 		pthread_mutex_lock(&e->lock);
-		e->tl->jobs[k].wake_ns = wake - e->t0;
-		switch (e->policy) {
-		case JM_POLICY_SKIP:
-			/* a job on the robot, or one released and about to start: drop the new event */
-			if (e->running >= 0 || e->head < e->tail)
-				e->tl->jobs[k].outcome = JM_OUTCOME_SKIPPED;
-			else
+		for (; k < end; k++) {
+			e->tl->jobs[k].wake_ns = wake - e->t0;
+			switch (e->policy) {
+			case JM_POLICY_SKIP:
+				/* a job on the robot, or one released and about to start: drop the new event */
+				if (e->running >= 0 || e->head < e->tail)
+					e->tl->jobs[k].outcome = JM_OUTCOME_SKIPPED;
+				else
+					e->fifo[e->tail++] = k;
+				break;
+			case JM_POLICY_TERMINATE:
+				if (e->running >= 0)
+					atomic_store_explicit(&e->abort.requested, 1, memory_order_relaxed);
+				/* the request of the superseded event's job (running, waiting or ended), as Java's gates */
+				if (latest >= 0 && e->tl->jobs[latest].abort_ns < 0)
+					e->tl->jobs[latest].abort_ns = wake - e->t0;
+				latest = k;
+				/* a released event superseded before it could start never will: terminated */
+				while (e->head < e->tail)
+					e->tl->jobs[e->fifo[e->head++]].outcome = JM_OUTCOME_TERMINATED;
 				e->fifo[e->tail++] = k;
-			break;
-		case JM_POLICY_TERMINATE:
-			if (e->running >= 0)
-				atomic_store_explicit(&e->abort.requested, 1, memory_order_relaxed);
-			/* the request of the superseded event's job (running, waiting or ended), as Java's gates */
-			if (latest >= 0 && e->tl->jobs[latest].abort_ns < 0)
-				e->tl->jobs[latest].abort_ns = wake - e->t0;
-			latest = k;
-			/* a released event superseded before it could start never will: terminated */
-			while (e->head < e->tail)
-				e->tl->jobs[e->fifo[e->head++]].outcome = JM_OUTCOME_TERMINATED;
-			e->fifo[e->tail++] = k;
-			break;
-		case JM_POLICY_QUEUE:
-			e->fifo[e->tail++] = k;
-			break;
+				break;
+			case JM_POLICY_QUEUE:
+				e->fifo[e->tail++] = k;
+				break;
+			}
 		}
 		wake_next(e);
 		pthread_mutex_unlock(&e->lock);

@@ -2,6 +2,7 @@ package org.jmclbench.scj;
 
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
+import org.jmclbench.core.timeline.Timeline;
 
 /**
  * The overrun policy's whole rule and state, shared by the handlers: which event may use the
@@ -15,14 +16,27 @@ import org.jmclbench.core.record.JobRecords;
  * when the job has ended, {@link #release(int)} (periodic: also {@link #periodicEnded(long)});
  * and exactly once per event, whatever its outcome, {@link #ended()}. Allocation-free; no
  * wait/notify (SCJ Level 1): a job waits for the robot only on the robot's monitor.
+ *
+ * <p>Events at the same time ({@link #orderTies(Timeline)}) are decided together, in timeline
+ * order, at the first of their releases, whichever handler brings it: the periodic handler and the
+ * sensor wake in an order of their own, and the other engines' dispatcher decides such events in
+ * timeline order before any starts (docs/RELEASE-ENGINE.md, "Events at the same time").
  * Not final: a verification test may replace it (see {@link MissionConfiguration#newGate}).
  */
 public class JobGate {
     /** No event holds the robot. */
     public static final int FREE = -1;
 
+    private static final byte UNDECIDED = 0;
+    private static final byte ADMITTED = 1;
+    private static final byte DROPPED = 2;
+
     private final OverrunPolicy policy;
     private final int events;
+    // each event's admission, taken once (for the events of one time, at the first release of them)
+    private final byte[] decision;
+    // the merged timeline, whose events at equal times are decided together; null: each alone
+    private Timeline timeline;
     // skip: the event whose job holds (or, released but not started, has reserved) the robot
     private int owner = FREE;
     // terminate: the latest released event, the only one allowed to run; read by the polls
@@ -37,6 +51,12 @@ public class JobGate {
     public JobGate(OverrunPolicy policy, int events) {
         this.policy = policy;
         this.events = events;
+        this.decision = new byte[Math.max(0, events)];
+    }
+
+    /** Events at equal times in {@code t} (the mission's merged timeline) are decided together, in its order. */
+    public synchronized void orderTies(Timeline t) {
+        timeline = t;
     }
 
     /** The policy. */
@@ -53,18 +73,61 @@ public class JobGate {
         records = r;
     }
 
-    /** At k's release: true hands k to its handler, false drops it (skip, the robot busy). */
+    /**
+     * At k's release: true hands k to its handler, false drops it (skip, the robot busy). The first
+     * release of an instant decides every event of that time, in timeline order.
+     */
     public synchronized boolean admit(int k) {
+        return admitAt(k, false);
+    }
+
+    /**
+     * k's decision, taking those of its instant's events not yet decided; {@code busy}: the robot
+     * was busy at that instant whatever the owner says (skip drops them all).
+     */
+    private synchronized boolean admitAt(int k, boolean busy) {
+        if (decision[k] == UNDECIDED) {
+            int first = k;
+            int last = k;
+            if (timeline != null) {
+                double t = timeline.time(k);
+                while (first > 0 && timeline.time(first - 1) == t) {
+                    first--;
+                }
+                while (last + 1 < timeline.size() && timeline.time(last + 1) == t) {
+                    last++;
+                }
+            }
+            long requestNs = records != null ? records.wakeNs[k] : -1; // the release that decides
+            for (int j = first; j <= last; j++) {
+                if (decision[j] == UNDECIDED) {
+                    decision[j] = decide(j, busy, requestNs) ? ADMITTED : DROPPED;
+                }
+            }
+        }
+        // Through a local: the icecap HVM's compiler (compiled mode) read a synchronized method's
+        // result left on the operand stack after the monitor exit, whose call reuses that stack,
+        // and handed the sensor 16 for a dropped event (docs/HVM.md, "Known compiler defects").
+        boolean admitted = decision[k] == ADMITTED;
+        return admitted;
+    }
+
+    /**
+     * The policy's decision for event j, released at {@code requestNs}. Synchronized although only
+     * {@link #admitAt} calls it (re-entering the monitor it holds): the static P2 rule wants every
+     * access to {@code owner}, {@code latest} and {@code records} under the gate's monitor.
+     */
+    private synchronized boolean decide(int j, boolean busy, long requestNs) {
         if (policy == OverrunPolicy.SKIP) {
-            if (owner != FREE) {
+            if (busy || owner != FREE) {
                 return false;
             }
-            owner = k;
+            owner = j;
         } else if (policy == OverrunPolicy.TERMINATE) {
             int superseded = latest;
-            latest = k; // the job in progress sees this at its next poll and aborts
+            latest = j; // the job in progress sees this at its next poll and aborts
             if (superseded != FREE && records != null) {
-                records.requestAbort(superseded, records.wakeNs[k]);
+                records.requestAbort(superseded, requestNs);
             }
         }
         return true;
@@ -87,7 +150,7 @@ public class JobGate {
      */
     public boolean admitPeriodic(int k, long releaseNs) {
         if (policy == OverrunPolicy.SKIP && periodicEndNs > releaseNs) {
-            return false;
+            return admitAt(k, true); // decided already (by the sensor at the same time), or dropped
         }
         return admit(k);
     }
@@ -121,7 +184,8 @@ public class JobGate {
     /** Counts one ended event (done, late, skipped or terminated); true for the last of them. */
     public synchronized boolean ended() {
         ended++;
-        return ended == events;
+        boolean last = ended == events; // through a local: see admitAt
+        return last;
     }
 
     /** The number of events ended so far. */

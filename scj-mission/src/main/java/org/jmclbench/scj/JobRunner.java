@@ -81,28 +81,41 @@ final class JobRunner implements AbortSignal {
 
     /**
      * Runs k's job; {@code abortAtNs} is when the gate stops it whatever the polls say
-     * (Long.MAX_VALUE: never). Returns the job's end, ns from the mission start.
+     * (Long.MAX_VALUE: never). A job whose abort was asked while it waited for the robot never
+     * starts (terminated, start and end -1), as in the other engines. Returns the job's end, ns
+     * from the mission start.
      */
     long run(int k, boolean update, long abortAtNs) {
         event = k;
         this.abortAtNs = abortAtNs;
         seenNs = -1;
-        long start;
+        long start = -1;
         long end;
-        boolean completed;
+        boolean completed = false;
         synchronized (robot) {
-            start = nowNs();
-            completed = update ? robot.update(k, this) : robot.predict(k, this);
-            end = nowNs();
+            if (abortRequested()) {
+                end = nowNs(); // superseded before it had the robot
+            } else {
+                start = nowNs();
+                completed = update ? robot.update(k, this) : robot.predict(k, this);
+                end = nowNs();
+            }
         }
         gate.release(k);
         if (abortAtNs < end) {
             gate.periodicAbortRequested(k, abortAtNs);
         }
         JobRecords r = entry.records;
+        r.cpuNs[k] = -1; // SCJ has no per-thread CPU clock
+        if (start < 0) {
+            r.startNs[k] = -1;
+            r.endNs[k] = -1;
+            r.outcome[k] = JobRecords.TERMINATED;
+            ended();
+            return end;
+        }
         r.startNs[k] = start;
         r.endNs[k] = end;
-        r.cpuNs[k] = -1; // SCJ has no per-thread CPU clock
         if (seenNs >= 0) {
             r.abortSeen(k, seenNs);
         }

@@ -21,10 +21,13 @@ import java.util.Set;
 /**
  * JPF checks of the real mission ({@link MissionDriver}: scj-mission on rtsj-compat with virtual
  * time), under skip, terminate and queue, in both memory styles. The input ({@link MissionRun#of}):
- * two odometry events 50 ms apart and two laser events, each at the instant of an odometry event,
- * one particle. Virtual time stands still while a job runs, so a release falls within a job only
- * at the same instant: on this input the terminate policy aborts, skip drops and queue waits, and
- * the periodic, one-shot and aperiodic handlers are each released twice.
+ * two odometry events 50 ms apart and two laser events, 2 ms after the first and 2 ms before the
+ * second, one particle. Each job takes 5 ms of virtual time ({@link MissionDriver#JOB_COST_NS}), so
+ * the first laser event falls within the first predict and the second predict within the second
+ * update: on this input the terminate policy aborts a job of each task, skip drops an event of each
+ * task and queue makes them wait, and the periodic, one-shot and aperiodic handlers are each
+ * released twice. (Events at one instant no longer overlap: the rule decides them all before any
+ * of their jobs starts, docs/RELEASE-ENGINE.md.)
  *
  * <p>One search per policy and style checks {@link #SEARCH}: P1 (JPF's deadlock property), P3 and
  * P4 (the {@link org.jmclbench.verification.mission.CheckedRobot} around every job, and the
@@ -140,13 +143,12 @@ public final class MissionChecks {
     }
 
     /**
-     * The P4 interval search's input (terminate, one odometry and one laser event at the same
-     * instant): five particles and a poll every two, so that a job polling less than once per
+     * The P4 interval search's input (terminate, the mission searches' events): five particles and a poll every two, so that a job polling less than once per
      * interval makes fewer polls than a complete pass needs; with the covariance computed, so
      * that the {@code -c} path runs too.
      */
     public static MissionRun intervalRun() {
-        return MissionRun.of("terminate", "preallocated").events(1, 1).particles(5, 2).withCovariance();
+        return MissionRun.of("terminate", "preallocated").particles(5, 2).withCovariance();
     }
 
     /** Per policy and style, the shipped mission's search; the interval search; per policy, its P2 search. */

@@ -60,7 +60,7 @@ public final class SeededCatalog implements CheckCatalog {
                         PrivateIntoMission.class, "predict", "private-memory array kept by the mission's localizer"),
                 mission("cached-scratch", Property.P6, scopedQueue, CachedScratch.class, CachedScratch.class,
                         "update", "private-memory array cached in a thread-local"),
-                mission("lock-inversion", Property.P1, queue, LockInversion.class, LockInversion.InvertingRobot.class,
+                mission("lock-inversion", Property.P1, queue.atOdometryInstants(), LockInversion.class, LockInversion.InvertingRobot.class,
                         "predict", "robot/gate lock-order inversion"),
                 mission("lost-release", Property.P5, queue, LostRelease.class, LostRelease.EarlyEnd.class, "ended",
                         "gate ending the mission after the first event"),

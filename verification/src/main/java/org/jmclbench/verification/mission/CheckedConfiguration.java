@@ -23,6 +23,8 @@ public final class CheckedConfiguration extends MissionConfiguration {
     private final MissionFault fault;
     private CheckedRobot robot;
     private JobGate gate;
+    private HorizonTimeSource clock;
+    private long jobCostNs;
 
     /** {@code fault}: a seeded fault's class, or null for the shipped mission. */
     public CheckedConfiguration(MclConfig mcl, OverrunPolicy policy, Class<?> fault)
@@ -56,6 +58,7 @@ public final class CheckedConfiguration extends MissionConfiguration {
         CheckedRobot r = fault.robot(localizer, entry);
         robot = r != null ? r : new CheckedRobot(localizer, entry);
         robot.expectPolls(mcl.pollInterval);
+        robot.executesIn(clock, jobCostNs);
         return robot;
     }
 
@@ -64,6 +67,12 @@ public final class CheckedConfiguration extends MissionConfiguration {
         JobGate g = fault.gate(this, events);
         gate = g != null ? g : super.newGate(events);
         return gate;
+    }
+
+    /** Each job of the mission takes {@code costNs} of {@code clock}'s virtual time (before the mission starts). */
+    void jobsTake(HorizonTimeSource clock, long costNs) {
+        this.clock = clock;
+        this.jobCostNs = costNs;
     }
 
     /** The robot the mission got. */

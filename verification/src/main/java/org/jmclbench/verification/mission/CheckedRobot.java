@@ -21,6 +21,8 @@ import org.jmclbench.verification.Property;
  * particle loop that polls every I particles makes), so a job polling every k-th interval is
  * seen when N exceeds two intervals. The static rule bounds the steps between polls exactly.
  * </ul>
+ * Each job takes virtual time before it polls ({@link #executesIn}), so that a release can fall
+ * within it: events at one instant are decided before any of their jobs starts.
  * Allocation-free after construction: a violation throws a failure made beforehand, so the
  * release-allocation rule does not report it as an allocation. Jobs run one at a time (they
  * hold this robot's monitor), so one poll watch serves both tasks.
@@ -40,6 +42,8 @@ public class CheckedRobot extends Robot {
     private final long[] completedState;
     private int completedCount;
     private int minimumPolls;
+    private HorizonTimeSource clock;
+    private long costNs;
 
     public CheckedRobot(Localizer localizer, ImmortalEntry entry) {
         super(localizer, entry);
@@ -51,6 +55,12 @@ public class CheckedRobot extends Robot {
     /** A completed job must poll at least once per {@code pollInterval} particles. */
     void expectPolls(int pollInterval) {
         minimumPolls = (localizer.particleCount() + pollInterval - 1) / pollInterval;
+    }
+
+    /** Each job takes {@code costNs} of {@code clock}'s virtual time, before its first poll. */
+    void executesIn(HorizonTimeSource clock, long costNs) {
+        this.clock = clock;
+        this.costNs = costNs;
     }
 
     @Override
@@ -69,6 +79,9 @@ public class CheckedRobot extends Robot {
         long before = fingerprint();
         long record = record(k);
         watch.arm(abort, localizer, job);
+        if (clock != null) {
+            clock.execute(costNs);
+        }
         boolean done = update ? super.update(k, watch) : super.predict(k, watch);
         jobEnded(k, done, before, record, job);
         return done;

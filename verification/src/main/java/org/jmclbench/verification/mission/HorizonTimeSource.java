@@ -10,6 +10,7 @@ import org.jmclbench.verification.Property;
  * (the mission is still running when every event should long have ended). A mission that
  * never ends then is a short counterexample on one search path, not a search that runs until
  * the check's wall-clock budget is gone. The failure names the gate, which ends the mission.
+ * A checked job takes virtual time ({@link #execute(long)}), so that a release can fall within it.
  */
 public final class HorizonTimeSource extends TimeSource {
     private final VirtualTimeSource time = new VirtualTimeSource(0L);
@@ -39,6 +40,17 @@ public final class HorizonTimeSource extends TimeSource {
     @Override
     public String name() {
         return "virtual, horizon " + horizonNs + " ns";
+    }
+
+    /**
+     * A job's execution time: the clock moves on by {@code costNs} while the calling thread runs,
+     * waking the handlers whose release has come; JPF then explores their releases before and
+     * after the job's next synchronisation action (its abort poll, its end). Sleeping instead would
+     * not do: a job holds the robot's monitor, and virtual time stands still while the thread
+     * waiting for that monitor can run.
+     */
+    public void execute(long costNs) {
+        time.advanceTo(time.nanoTime() + costNs);
     }
 
     @Override

@@ -40,15 +40,27 @@ import org.jmclbench.verification.jpf.Coverage;
 public final class MissionDriver extends PlacedMissionInput implements MissionOutput {
     /** Virtual time after which the mission must have ended: far beyond the last event's deadline. */
     static final long HORIZON_NS = 1_000_000_000L;
+    /**
+     * A job's virtual execution time: more than the 2 ms between an odometry event and the laser
+     * event next to it (see {@link #readLaser}), far less than the 50 ms odometry period.
+     */
+    public static final long JOB_COST_NS = 5_000_000L;
     /** The outcome names reported per task ({@link Timeline#PREDICT}, {@link Timeline#UPDATE}) and outcome. */
     private static final String[][] OUTCOMES = {
         {"predict pending", "predict done", "predict late", "predict skipped", "predict terminated"},
         {"update pending", "update done", "update late", "update skipped", "update terminated"}};
 
+    /** How far a laser event is from its odometry event (s), less than a job's execution time. */
+    static final double LASER_OFFSET_S = 0.002;
+
     private JobRecords records;
 
-    MissionDriver(int odometry, int laser) {
+    /** True: laser event k at the instant of odometry event k ({@link org.jmclbench.verification.MissionRun#atOdometryInstants}). */
+    private final boolean coinciding;
+
+    MissionDriver(int odometry, int laser, boolean coinciding) {
         super(odometry, laser, Playground.thesis(), 1.5, 1.0, 0.0);
+        this.coinciding = coinciding;
     }
 
     public static void main(String[] args) throws ReflectiveOperationException {
@@ -56,14 +68,17 @@ public final class MissionDriver extends PlacedMissionInput implements MissionOu
         MclConfig mcl = MclConfig.builder().memory(MclConfig.Memory.valueOf(args[1].toUpperCase()))
                 .particles(Integer.parseInt(args[4])).pollInterval(Integer.parseInt(args[5]))
                 .covariance(Boolean.parseBoolean(args[6])).build();
-        MissionDriver d = new MissionDriver(Integer.parseInt(args[2]), Integer.parseInt(args[3]));
-        Class<?> fault = args.length > 7 ? Class.forName(args[7]) : null;
+        MissionDriver d = new MissionDriver(Integer.parseInt(args[2]), Integer.parseInt(args[3]),
+                Boolean.parseBoolean(args[7]));
+        Class<?> fault = args.length > 8 ? Class.forName(args[8]) : null;
         // Virtual time: the run is a function of the interleaving, not of the host's clock.
         System.setProperty("jmclbench.scj.meter", "none");
         // Non-daemon handler threads: JPF hands over at a thread's end only to a runnable non-daemon.
         System.setProperty("jmclbench.scj.daemon", "false");
         CheckedConfiguration config = new CheckedConfiguration(mcl, policy, fault);
-        TimeSource.install(new HorizonTimeSource(HORIZON_NS, config));
+        HorizonTimeSource clock = new HorizonTimeSource(HORIZON_NS, config);
+        config.jobsTake(clock, JOB_COST_NS);
+        TimeSource.install(clock);
         // Load the job code's classes before the mission, as an SCJ VM does before it starts and
         // as the JVM engine's class-loading mission does: JPF creates a class's objects (its
         // Class, its name) on first use, which must not count as a release's allocation.
@@ -180,10 +195,12 @@ public final class MissionDriver extends PlacedMissionInput implements MissionOu
 
     @Override
     public void readLaser(double[] time, double[] angle) {
-        // Virtual time stands still while a job runs, so a job overruns only when another release
-        // falls at the same instant: laser event k coincides with odometry event k.
+        // A job takes 5 ms of virtual time: laser event k falls 2 ms after odometry event k (k even:
+        // within that predict) or 2 ms before it (k odd: that predict falls within the update);
+        // coinciding, at the instant of odometry event k.
+        double offset = coinciding ? 0.0 : LASER_OFFSET_S;
         for (int k = 0; k < laserCount(); k++) {
-            time[k] = 0.05 * k;
+            time[k] = 0.05 * k + (k % 2 == 0 ? offset : -offset);
             angle[k] = 1.0 + 0.5 * k;
         }
     }

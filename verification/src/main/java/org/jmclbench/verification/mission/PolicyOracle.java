@@ -4,10 +4,12 @@ import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.verification.Property;
 
 /**
- * P7 on a run's job records in virtual time, where a job takes no time and "busy" is exact: skip
- * drops an event only while an admitted job holds the robot (one released at or before it that
- * ended at or after its release), and terminate aborts a job only when another event was released
- * at or after it and before its end. A drop or abort with no such event is the policy's decision
+ * P7 on a run's job records in virtual time, where a job takes a fixed time and "busy" is exact: skip
+ * drops an event only while an admitted job holds the robot (one before it in timeline order that
+ * ended at or after its release), and terminate aborts a job only when an event after it in
+ * timeline order was released before its end. Timeline order, not release time: of two events at
+ * one instant only the first can make the second's drop, and only the second the first's abort
+ * (docs/RELEASE-ENGINE.md, "Events at the same time"). A drop or abort with no such event is the policy's decision
  * made wrongly; it is blamed on {@code culprit}'s {@code dropMethod} or {@code abortMethod}.
  */
 public final class PolicyOracle {
@@ -21,7 +23,7 @@ public final class PolicyOracle {
             if (r.outcome[k] == JobRecords.SKIPPED) {
                 boolean busy = false;
                 for (int j = 0; j < r.size(); j++) {
-                    busy |= j != k && r.outcome[j] != JobRecords.SKIPPED && r.releaseNs[j] <= r.releaseNs[k]
+                    busy |= j < k && r.outcome[j] != JobRecords.SKIPPED && r.releaseNs[j] <= r.releaseNs[k]
                             && r.endNs[j] >= r.releaseNs[k];
                 }
                 p7.unless(busy, culprit, dropMethod);
@@ -29,7 +31,7 @@ public final class PolicyOracle {
                 long end = r.startNs[k] < 0 ? Long.MAX_VALUE : r.endNs[k];
                 boolean superseded = false;
                 for (int j = 0; j < r.size(); j++) {
-                    superseded |= j != k && r.releaseNs[j] >= r.releaseNs[k] && r.releaseNs[j] <= end;
+                    superseded |= j > k && r.releaseNs[j] >= r.releaseNs[k] && r.releaseNs[j] <= end;
                 }
                 p7.unless(superseded, culprit, abortMethod);
             }

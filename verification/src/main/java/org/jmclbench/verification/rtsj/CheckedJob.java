@@ -6,6 +6,7 @@ import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.verification.Property;
 import org.jmclbench.verification.mission.CheckedRobot;
+import org.jmclbench.verification.mission.HorizonTimeSource;
 import org.jmclbench.verification.mission.PropertyFailure;
 import org.jmclbench.workload.release.EventJob;
 
@@ -14,7 +15,9 @@ import org.jmclbench.workload.release.EventJob;
  * it, or it stopped on its signal) leaves every particle, the estimate, the covariance and its
  * event's record bit-identical; completed jobs are logged in their commit order with the state
  * after each, for the oracle ({@link #replayCompleted}). A violation is kept and thrown: the
- * replay records it as a handler's failure, and the driver throws it again, located.
+ * replay records it as a handler's failure, and the driver throws it again, located. Each job
+ * takes virtual time before it runs ({@link HorizonTimeSource#execute}), so that a release can fall
+ * within it: events at one instant are decided before any of their jobs starts.
  */
 final class CheckedJob implements EventJob {
     private final EventJob inner;
@@ -27,6 +30,8 @@ final class CheckedJob implements EventJob {
     private final long[] after;
     private int completed;
     private volatile PropertyFailure failure;
+    private HorizonTimeSource clock;
+    private long costNs;
 
     CheckedJob(EventJob inner, Localizer localizer, JobRecords records) {
         this.inner = inner;
@@ -37,11 +42,24 @@ final class CheckedJob implements EventJob {
         this.after = new long[records.size()];
     }
 
+    /** Each job takes {@code costNs} of {@code clock}'s virtual time, before the job's own code. */
+    void executesIn(HorizonTimeSource clock, long costNs) {
+        this.clock = clock;
+        this.costNs = costNs;
+    }
+
     @Override
     public boolean run(int k, AbortSignal abort) {
         long before = CheckedRobot.fingerprint(localizer, pose, cov);
         boolean done = false;
         try {
+            if (clock != null) {
+                clock.execute(costNs);
+                // a scheduling point: a release whose time has come may fire at this job before its
+                // first delivery point, which no synchronisation action precedes (without it no path
+                // reached "predict interrupted": the clock's monitor is inside rtsj-compat)
+                Thread.yield();
+            }
             done = inner.run(k, abort);
         } finally {
             if (done) {

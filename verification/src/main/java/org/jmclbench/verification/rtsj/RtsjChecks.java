@@ -22,10 +22,12 @@ import java.util.Set;
  * JPF checks of the rtsj engine ({@link RtsjDriver}: the engine's replay, woven, on rtsj-compat's
  * RTSJ layer in virtual time) under terminate in both designs, and under queue (the policy where
  * two jobs contend for the robot's locks) in the thesis design only, the one that takes both of
- * those locks. The input, one particle: under terminate two odometry
- * events 50 ms apart and one laser event at the first's instant (the first predict job is fired
- * at, and the handler runs a second job after it); under queue one odometry and one laser event
- * at one instant (two jobs contend for the robot's locks).
+ * those locks. The input, one particle, each job taking 5 ms of virtual time ({@link RtsjDriver}
+ * has the times): under terminate, thesis: two odometry events and one laser event (the first
+ * predict is fired at, the second superseded by the laser event of its instant before it starts);
+ * atomic: one odometry and two laser events (the first laser release interrupts the predict, the
+ * second fires at the first update while it waits for the robot); under queue one odometry and
+ * one laser event at one instant (two jobs contend for the robot's locks).
  *
  * <p>One search per design and policy checks {@link #SEARCH}. The reduction is the mission
  * checks': JPF switches threads at the engine's monitors, its volatiles (the dispatcher's
@@ -44,7 +46,8 @@ public final class RtsjChecks {
 
     /** The input of the searches: policy and design, odometry and laser events, one particle, a poll every 64. */
     public static List<String> args(String policy, String design, Class<?> fault) {
-        List<String> a = new ArrayList<>(List.of(policy, design, String.valueOf(odometryEvents(policy)), "1", "1", "64"));
+        List<String> a = new ArrayList<>(List.of(policy, design, String.valueOf(odometryEvents(policy, design)),
+                String.valueOf(laserEvents(policy, design)), "1", "64"));
         if (fault != null) {
             a.add(fault.getName());
         }
@@ -74,8 +77,8 @@ public final class RtsjChecks {
     /** What a policy's search must reach on some path (else it passed vacuously). */
     static Set<String> coverage(String policy, String design) {
         return switch (policy) {
-            // in virtual time a job takes no time: only a job released at the same instant as a later
-            // event is fired at, and on this input that is predict's (laser events follow odometry)
+            // thesis: the first predict is fired at (deferred), the second superseded before it starts;
+            // atomic: the laser release interrupts the first predict
             case "terminate" -> design.equals("atomic") ? Set.of("predict terminated", "predict interrupted")
                     : Set.of("predict terminated", "predict deferred");
             default -> Set.of();
@@ -83,15 +86,20 @@ public final class RtsjChecks {
     }
 
     /** terminate: a predict job fired at, and a later one in the same handler; queue: two jobs contending. */
-    private static int odometryEvents(String policy) {
-        return policy.equals("queue") ? 1 : 2;
+    private static int odometryEvents(String policy, String design) {
+        return policy.equals("queue") || design.equals("atomic") ? 1 : 2;
+    }
+
+    private static int laserEvents(String policy, String design) {
+        return policy.equals("terminate") && design.equals("atomic") ? 2 : 1;
     }
 
     /** A check of the engine with a seeded fault (null: the shipped engine). */
     public static JpfCheck check(String id, Set<Property> properties, String policy, String design,
                                  Map<String, String> config, Expectation expect, Class<?> fault, String what) {
         return new JpfCheck(id, properties, policy, RtsjDriver.class.getName(), args(policy, design, fault), config,
-                expect, design + " design, " + odometryEvents(policy) + " odometry + 1 laser events (coinciding), 1 particle"
+                expect, design + " design, " + odometryEvents(policy, design) + " odometry + "
+                        + laserEvents(policy, design) + " laser events (RtsjDriver's times), 1 particle"
                         + (what == null ? "" : ", " + what));
     }
 

@@ -11,6 +11,7 @@ import org.jmclbench.rtsjcompat.TimeSource;
 import org.jmclbench.verification.Property;
 import org.jmclbench.verification.jpf.Coverage;
 import org.jmclbench.verification.mission.HorizonTimeSource;
+import org.jmclbench.verification.mission.MissionDriver;
 import org.jmclbench.verification.mission.PolicyOracle;
 import org.jmclbench.verification.mission.PropertyFailure;
 import org.jmclbench.workload.RunFailure;
@@ -24,7 +25,17 @@ import org.jmclbench.workload.rtsj.RtsjReplay;
  * The rtsj engine's replay ({@link RtsjReplay}: its dispatcher, its bound handlers, their AIEs and
  * the robot's locks, woven with delivery points as the build ships them) on rtsj-compat's RTSJ
  * layer and virtual time, on a tiny synthetic timeline: the program Java PathFinder explores.
- * Odometry event k and laser event k are both at 50 ms * k, so a release falls within a job.
+ * A job takes {@link MissionDriver#JOB_COST_NS} (5 ms) of virtual time, and the times depend on the
+ * design. Thesis: odometry events 2 ms apart, laser events at the last odometry event's instant, so
+ * the second odometry release fires at the first predict (deferred: it holds the robot's monitor)
+ * and, under terminate, the second predict is superseded by the laser event of its instant before
+ * it starts (the rule decides the events of one instant before any of their jobs starts); under
+ * queue (one of each) the two share an instant. Atomic: one odometry event at 0, laser events at
+ * 2 and 3 ms, so the first laser release interrupts the predict and the second fires at the first
+ * update while it waits for the robot's lock (an AIE pending in non-AI code, where no delivery
+ * point may be), and the update handler runs a job after an interrupted one. (A second odometry
+ * event at 3 ms instead made three jobs contend for the lock: 325,000 states, past the check's
+ * budget; the second update waits in its handler, not at the lock.)
  * <ul>
  * <li>P3: {@link CheckedJob} compares the robot before and after every job that did not complete
  * (an AIE unwound it, or it stopped), and after the run the completed jobs, replayed in their
@@ -43,6 +54,12 @@ import org.jmclbench.workload.rtsj.RtsjReplay;
 public final class RtsjDriver {
     /** Virtual time after which every event must have ended. */
     static final long HORIZON_NS = 1_000_000_000L;
+    /** Between two odometry events (thesis design): less than a job's virtual execution time. */
+    static final double THESIS_GAP_S = 0.002;
+    /** Between two laser events (atomic design): the second falls while the first update waits for the robot. */
+    static final double ATOMIC_LASER_GAP_S = 0.001;
+    /** From the odometry event to the first laser event (atomic design): within that predict job. */
+    static final double LASER_OFFSET_S = 0.002;
     private static final String[] TASKS = {"predict", "update"};
     private static final String[] OUTCOMES = {"pending", "done", "late", "skipped", "terminated"};
 
@@ -68,12 +85,12 @@ public final class RtsjDriver {
         double[] dtheta = new double[odometry];
         double[] angle = new double[laser];
         for (int k = 0; k < odometry; k++) {
-            odoTime[k] = 0.05 * k;
+            odoTime[k] = THESIS_GAP_S * k;
             dx[k] = 0.01;
             dtheta[k] = 0.01;
         }
         for (int k = 0; k < laser; k++) {
-            laserTime[k] = 0.05 * k;
+            laserTime[k] = design == RtsjDesign.THESIS ? odoTime[odometry - 1] : LASER_OFFSET_S + ATOMIC_LASER_GAP_S * k;
             angle[k] = 1.0 + 0.5 * k;
         }
         Timeline timeline = Timeline.merge(odoTime, laserTime);
@@ -87,7 +104,9 @@ public final class RtsjDriver {
         CheckedJob job = new CheckedJob(new LocalizerJob(dx, dy, dtheta, angle, timeline, localizer, records),
                 localizer, records);
         RtsjReplay replay = new RtsjReplay(schedule, policy, design, job, records);
-        TimeSource.install(new HorizonTimeSource(HORIZON_NS, replay, "ended"));
+        HorizonTimeSource clock = new HorizonTimeSource(HORIZON_NS, replay, "ended");
+        job.executesIn(clock, MissionDriver.JOB_COST_NS);
+        TimeSource.install(clock);
         RunFailure failed = null;
         try {
             replay.run(HORIZON_NS);

@@ -30,7 +30,7 @@ class BuildJpfScriptTest {
     @Test
     void aBuildOfThePinnedCommitIsUsedWithoutCloning() throws Exception {
         Path home = fakeHome("7ea25de-0123456789ab");
-        Files.writeString(home.resolve("PINNED"), PINNED + "\n");
+        Files.writeString(home.resolve("PINNED"), PINNED + " patches " + patchHash() + "\n");
         Result r = run();
         assertEquals(0, r.exit, r.err);
         assertEquals(home.toString(), r.out.strip());
@@ -45,6 +45,27 @@ class BuildJpfScriptTest {
         assertEquals(1, r.exit, r.out);
         assertTrue(r.err.contains("no JPF_CORE_SRC: cloning"), r.err);
         assertTrue(r.err.contains("set JPF_CORE_SRC to a jpf-core folder or tarball"), r.err);
+    }
+
+    @Test
+    void aBuildOfThePinnedCommitWithoutOurPatchesIsNotUsed() throws Exception {
+        // a build made before jpf-patches/ (its model Thread has no onSpinWait) was taken as it was
+        Path home = fakeHome("7ea25de-0123456789ab");
+        Files.writeString(home.resolve("PINNED"), PINNED + "\n");
+        Result r = run();
+        assertEquals(1, r.exit, r.out);
+        assertTrue(r.err.contains("no JPF_CORE_SRC: cloning"), r.err);
+    }
+
+    /** What build-jpf.sh marks a build with: the first 12 hex digits of the SHA-256 of jpf-patches/*.patch, in name order. */
+    private static String patchHash() throws Exception {
+        java.security.MessageDigest md = java.security.MessageDigest.getInstance("SHA-256");
+        try (java.util.stream.Stream<Path> s = Files.list(SCRIPT.getParent().resolve("jpf-patches"))) {
+            for (Path p : s.filter(f -> f.toString().endsWith(".patch")).sorted().toList()) {
+                md.update(Files.readAllBytes(p));
+            }
+        }
+        return java.util.HexFormat.of().formatHex(md.digest()).substring(0, 12);
     }
 
     @Test

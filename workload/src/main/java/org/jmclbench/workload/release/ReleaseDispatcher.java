@@ -6,7 +6,8 @@ import org.jmclbench.core.record.JobRecords;
 /**
  * The one thread that walks the merged timeline: it sleeps until each event's absolute
  * release time on the monotonic clock, notes when it actually woke, lets the
- * {@link PolicyGate} admit or drop the event, and releases it to its task's handler.
+ * {@link PolicyGate} admit or drop the event, and releases it to its task's handler. Events of
+ * the same release time are all decided, in timeline order, before any is released.
  *
  * <p>The wait is cyclictest's: park until the absolute target (re-parking after early
  * returns), optionally park only until {@code spinNs} before it and busy-spin the rest.
@@ -61,18 +62,32 @@ public final class ReleaseDispatcher implements Runnable {
         final long t0 = runStartNs;
         final JobRecords r = records;
         try {
-            for (int k = 0; k < releaseNs.length; k++) {
+            int k = 0;
+            while (k < releaseNs.length) {
                 long wake = sleepUntil(t0 + releaseNs[k], spinNs);
-                r.wakeNs[k] = wake - t0;
-                if (policy.admit(k)) {
-                    handlers[task[k]].release(k);
-                } else {
-                    r.outcome[k] = JobRecords.SKIPPED;
+                // Events of one release instant: the policy decides each, in timeline order, before
+                // any reaches its handler, so none of them has started when the next is decided
+                // (RELEASE-ENGINE.md, "Events at the same time").
+                int end = k + 1;
+                while (end < releaseNs.length && releaseNs[end] == releaseNs[k]) {
+                    end++;
                 }
-                int aborted = policy.superseded();
-                if (aborted >= 0) {
-                    r.requestAbort(aborted, wake - t0); // the request is the admit just made
+                for (int j = k; j < end; j++) {
+                    r.wakeNs[j] = wake - t0;
+                    if (!policy.admit(j)) {
+                        r.outcome[j] = JobRecords.SKIPPED;
+                    }
+                    int aborted = policy.superseded();
+                    if (aborted >= 0) {
+                        r.requestAbort(aborted, wake - t0); // the request is the admit just made
+                    }
                 }
+                for (int j = k; j < end; j++) {
+                    if (r.outcome[j] != JobRecords.SKIPPED) {
+                        handlers[task[j]].release(j);
+                    }
+                }
+                k = end;
             }
         } finally {
             for (TaskHandler h : handlers) {

@@ -26,9 +26,11 @@ import org.jmclbench.workload.shim.RuntimeShim;
  * {@link RealtimeThread}, above the tasks' priority, sleeps to each event's absolute release time
  * and fires its task's {@link AsyncEvent}; each task (predict, update) is a
  * {@link BoundAsyncEventHandler} whose logic takes the events released to it in order (RTSJ keeps
- * one pending fire per release). Whether a job is running is the robot's {@link ReentrantLock}
- * ({@code isLocked()}, as in the thesis). The policy is applied by the dispatcher at each release:
- * skip drops the event while a job runs; queue releases it to wait; terminate fires the
+ * one pending fire per release). The job in progress holds the robot's {@link ReentrantLock} (the
+ * thesis's). The policy is applied by the dispatcher at each release (those of one instant all
+ * decided, in timeline order, before any is fired): skip drops the event while an admitted event
+ * has not ended, started or not (the thesis's {@code isLocked()} counted only started jobs);
+ * queue releases it to wait; terminate fires the
  * {@link AsynchronouslyInterruptedException} of the job in progress, and a job superseded before
  * it started never starts. Every event ends once: done, late, skipped or terminated.
  *
@@ -55,6 +57,12 @@ public final class RtsjReplay {
     private final Task[] tasks = new Task[TASK_NAMES.length];
     /** terminate: the latest released event, the only one that may run. */
     private volatile int latest = -1;
+    /**
+     * skip: the event that holds the robot from its release to its job's end, or -1. The thesis
+     * tested {@code busy.isLocked()}, busy only from a job's start: an event released while another
+     * waited to start queued behind it, and of two events at one instant both usually ran.
+     */
+    private volatile int reserved = -1;
     /** The event whose job is in its doInterruptible (terminate), or -1. */
     private volatile int running = -1;
     private volatile int ended;
@@ -210,29 +218,51 @@ public final class RtsjReplay {
 
         private void dispatch() throws InterruptedException {
             int n = schedule.size();
-            for (int k = 0; k < n; k++) {
+            int k = 0;
+            while (k < n) {
                 long at = t0 + schedule.releaseNs(k);
                 next.set(at / 1_000_000L, (int) (at % 1_000_000L));
                 RealtimeThread.sleep(next);
-                Task task = tasks[schedule.task(k)];
-                if (policy == OverrunPolicy.SKIP && busy.isLocked()) {
+                // Events of one release instant: the policy decides each, in timeline order, before
+                // any is fired, so none of them has started when the next is decided
+                // (docs/RELEASE-ENGINE.md, "Events at the same time").
+                int end = k + 1;
+                while (end < n && schedule.releaseNs(end) == schedule.releaseNs(k)) {
+                    end++;
+                }
+                for (int j = k; j < end; j++) {
+                    admit(j);
+                }
+                for (int j = k; j < end; j++) {
+                    if (records.outcome[j] != JobRecords.SKIPPED) {
+                        Task task = tasks[schedule.task(j)];
+                        task.offer(j);
+                        task.event.fire();
+                    }
+                }
+                k = end;
+            }
+        }
+
+        /** The policy's decision at k's release; a dropped event ends here. */
+        private void admit(int k) {
+            if (policy == OverrunPolicy.SKIP) {
+                if (reserved >= 0) {
                     records.wakeNs[k] = -1;
                     records.outcome[k] = JobRecords.SKIPPED; // the robot is busy: dropped
                     ended();
-                    continue;
+                    return;
                 }
-                if (policy == OverrunPolicy.TERMINATE) {
-                    latest = k; // a job not started yet sees this and never starts
-                    int r = running;
-                    if (r >= 0) {
-                        long fired = now(clock) - t0;
-                        if (tasks[schedule.task(r)].aie.fire()) { // false: it ended meanwhile, nothing was asked of it
-                            records.requestAbort(r, fired);
-                        }
+                reserved = k;
+            } else if (policy == OverrunPolicy.TERMINATE) {
+                latest = k; // a job not started yet sees this and never starts
+                int r = running;
+                if (r >= 0) {
+                    long fired = now(clock) - t0;
+                    if (tasks[schedule.task(r)].aie.fire()) { // false: it ended meanwhile, nothing was asked of it
+                        records.requestAbort(r, fired);
                     }
                 }
-                task.offer(k);
-                task.event.fire();
             }
         }
     }
@@ -341,6 +371,9 @@ public final class RtsjReplay {
                 running = -1;
                 if (busy.isHeldByCurrentThread()) {
                     busy.unlock();
+                }
+                if (reserved == k) {
+                    reserved = -1; // skip: the robot is free for the next release
                 }
             }
         }

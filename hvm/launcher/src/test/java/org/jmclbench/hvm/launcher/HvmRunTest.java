@@ -63,7 +63,7 @@ class HvmRunTest {
     }
 
     /** Points the workload at the project (for hvm/build-mission.sh) and skips when the tool chain cannot be built here. */
-    private static void assumeHvm() throws Exception {
+    static void assumeHvm() throws Exception {
         File home = projectHome();
         Assumptions.assumeTrue(home != null, "no hvm/ folder above the working directory");
         System.setProperty("jmclbench.home", home.getPath());

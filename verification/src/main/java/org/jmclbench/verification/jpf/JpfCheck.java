@@ -19,9 +19,22 @@ import java.util.stream.Collectors;
  * @param config     JPF settings ({@code key=value}, passed as {@code +key=value}); listeners included
  * @param expect     holds, or the property a seeded bug violates and where
  * @param scope      what the inputs cover, e.g. "3 events, 4 particles, poll 2"
+ * @param budgetFactor how many times the run's wall-clock budget this check gets: 1, or more for a
+ *                     search known to need it (its states said where it is made), never to hide a hang
  */
 public record JpfCheck(String id, Set<Property> properties, String policy, String mainClass, List<String> args,
-                       Map<String, String> config, Expectation expect, String scope) {
+                       Map<String, String> config, Expectation expect, String scope, int budgetFactor) {
+
+    /** A check within the run's budget. */
+    public JpfCheck(String id, Set<Property> properties, String policy, String mainClass, List<String> args,
+                    Map<String, String> config, Expectation expect, String scope) {
+        this(id, properties, policy, mainClass, args, config, expect, scope, 1);
+    }
+
+    /** This check with {@code factor} times the run's budget. */
+    public JpfCheck withBudgetFactor(int factor) {
+        return new JpfCheck(id, properties, policy, mainClass, args, config, expect, scope, factor);
+    }
 
     /**
      * What a check's run must report: nothing (and the search finished without hitting a limit,

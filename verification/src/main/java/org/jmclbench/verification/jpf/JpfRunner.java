@@ -84,7 +84,8 @@ public final class JpfRunner {
                 .redirectErrorStream(true)
                 .redirectOutput(log.toFile());
         Process p = pb.start();
-        boolean finished = p.waitFor(timeoutSeconds, TimeUnit.SECONDS);
+        int budget = timeoutSeconds * check.budgetFactor();
+        boolean finished = p.waitFor(budget, TimeUnit.SECONDS);
         if (!finished) {
             p.descendants().forEach(ProcessHandle::destroyForcibly);
             p.destroyForcibly();
@@ -168,7 +169,7 @@ public final class JpfRunner {
         String verdict;
         boolean passed = false;
         if (!finished) {
-            verdict = "FAILED: over the " + timeoutSeconds + " s budget";
+            verdict = "FAILED: over the " + timeoutSeconds * check.budgetFactor() + " s budget";
         } else if (!"true".equals(v.getProperty("done"))) {
             verdict = "FAILED: JPF ended (exit " + exit + ") without a verdict: " + tail(log);
         } else if (v.getProperty("constraint") != null) {

@@ -109,8 +109,12 @@ public final class RtsjChecks {
         for (String design : DESIGNS) {
             // queue (two jobs contending for the robot) in the design that takes both of its locks
             for (String policy : design.equals("thesis") ? List.of("terminate", "queue") : List.of("terminate")) {
-                l.add(check("rtsj-" + design + "-" + policy, SEARCH, policy, design, config(),
-                        Expectation.holdsReaching(coverage(policy, design)), null, null));
+                JpfCheck c = check("rtsj-" + design + "-" + policy, SEARCH, policy, design, config(),
+                        Expectation.holdsReaching(coverage(policy, design)), null, null);
+                // atomic terminate: three jobs of 5 ms virtual time contend for the robot's lock (the laser
+                // release must fire at an update waiting for it); the search holds in about 190,000 states,
+                // 294 s on the shared 2-core VM, past the 120 s every other check finishes in
+                l.add(design.equals("atomic") && policy.equals("terminate") ? c.withBudgetFactor(5) : c);
             }
         }
         return l;

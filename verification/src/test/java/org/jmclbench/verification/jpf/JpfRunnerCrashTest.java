@@ -41,4 +41,19 @@ class JpfRunnerCrashTest {
         assertTrue(r.verdict().startsWith("FAILED: JPF ended (exit 134) without a verdict"), r.verdict());
         assertEquals("# internal error\n", Files.readString(logs.resolve("crash-check.hs_err_pid4242.log")));
     }
+
+    @Test
+    void aCheckGivenMoreBudgetRunsPastTheRunsBudgetAndNotForever() throws Exception {
+        // a "java" that searches for 3 s and writes no verdict; the run's budget is 1 s
+        Path java = dir.resolve("java");
+        Files.writeString(java, "#!/bin/sh\nsleep 3\nexit 0\n");
+        Files.setPosixFilePermissions(java, PosixFilePermissions.fromString("rwxr-xr-x"));
+        JpfRunner runner = new JpfRunner(new JpfHome(dir, java), List.of(), dir.resolve("logs"), 1, 64);
+        JpfCheck check = new JpfCheck("slow-check", Set.of(Property.P1), "-", "some.Main", List.of(), Map.of(),
+                JpfCheck.Expectation.holds(), "-");
+
+        assertEquals("FAILED: over the 1 s budget", runner.run(check).verdict(), "stopped at the run's budget");
+        // given 5 times the budget it runs to its end (here: no verdict, a failure of another kind)
+        assertTrue(runner.run(check.withBudgetFactor(5)).verdict().startsWith("FAILED: JPF ended (exit 0) without a verdict"));
+    }
 }

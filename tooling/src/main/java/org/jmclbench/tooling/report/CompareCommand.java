@@ -161,8 +161,10 @@ public final class CompareCommand implements Callable<Integer> {
             compared++;
         }
         if (compared == 0) {
+            // name what each side holds: rows apart by a setting (a time scale, a version) look alike otherwise
             throw new BadUsageException("compare: no setting (dataset, policy, particles" + (pairByConfig ? ", runtime" : "")
-                    + ") has runs in both A and B" + (hasFilter() ? " with the given filters" : ""));
+                    + ") has runs in both A and B" + (hasFilter() ? " with the given filters" : "")
+                    + ": A has " + someOf(groupsA.keySet()) + "; B has " + someOf(groupsB.keySet()));
         }
         out.println();
         out.println("A, B: mean [95% percentile-bootstrap interval]; B/A CI: percentile bootstrap, " + Stats.BOOTSTRAP_RESAMPLES
@@ -170,6 +172,14 @@ public final class CompareCommand implements Callable<Integer> {
                 + " runs a side, two-sided Mann-Whitney U p < " + Stats.ALPHA + " and the B/A interval excluding 1"
                 + " (docs/REPORT.md); n = completed runs.");
         return 0;
+    }
+
+    /** The first few of a side's settings, in order, and how many more there are. */
+    private static String someOf(Set<String> settings) {
+        List<String> sorted = settings.stream().sorted().toList();
+        int shown = Math.min(3, sorted.size());
+        String some = String.join(", ", sorted.subList(0, shown));
+        return sorted.size() > shown ? some + " and " + (sorted.size() - shown) + " more" : some;
     }
 
     /** Whether two paths name one file (the same path, another spelling of it, a link to it). */

@@ -77,6 +77,19 @@ class CompareCommandTest {
     }
 
     @Test
+    void twoStoresWithNoSettingInCommonSayWhatEachSideHolds() throws Exception {
+        // B measured every configuration again, at --time-scale 0.5: its rows are named apart from A's
+        Path scaled = java.nio.file.Files.copy(b, dir.resolve("b-scaled.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + scaled); var st = c.createStatement()) {
+            st.execute("UPDATE matrices SET spec_json = '{\"timeScale\":0.5,\"workloadArgs\":[]}'");
+        }
+        String err = oneLine("compare", a.toString(), scaled.toString());
+        assertTrue(err.contains("no setting (dataset, policy, particles, runtime) has runs in both A and B"), err);
+        assertTrue(err.contains("A has match-short  skip  400 particles  native, ")
+                && err.contains("B has match-short  skip  400 particles  native [time scale 0.5], "), err);
+    }
+
+    @Test
     void twoVersionsOfOneRuntimeAreComparedByTheirRowNamesNeverPooled() throws Exception {
         // temurin-17 updated to 17.0.16+8 before repetitions 7 to 10
         Path updated = java.nio.file.Files.copy(a, dir.resolve("two-versions.db"));

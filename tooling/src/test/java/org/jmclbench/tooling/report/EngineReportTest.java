@@ -39,11 +39,11 @@ class EngineReportTest {
     @Test
     void anHvmRowSaysWhetherTheMissionRanCompiledOrInterpreted() throws Exception {
         com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
-        assertTrue(ReportModel.facts(json.readTree("{\"engine\": {\"kind\": \"hvm\", \"level\": 1, \"mode\": \"compiled\"}}"))
+        assertTrue(ConfigurationFacts.facts(json.readTree("{\"engine\": {\"kind\": \"hvm\", \"level\": 1, \"mode\": \"compiled\"}}"))
                 .contains("engine hvm (SCJ level 1, compiled)"));
-        assertTrue(ReportModel.facts(json.readTree("{\"engine\": {\"kind\": \"hvm\", \"level\": 1, \"mode\": \"interpreted\"}}"))
+        assertTrue(ConfigurationFacts.facts(json.readTree("{\"engine\": {\"kind\": \"hvm\", \"level\": 1, \"mode\": \"interpreted\"}}"))
                 .contains("engine hvm (SCJ level 1, interpreted)"));
-        assertTrue(ReportModel.facts(json.readTree("{\"engine\": {\"kind\": \"scj\", \"level\": 1}}"))
+        assertTrue(ConfigurationFacts.facts(json.readTree("{\"engine\": {\"kind\": \"scj\", \"level\": 1}}"))
                 .contains("engine scj (SCJ level 1)"), "no mode, none said");
     }
 

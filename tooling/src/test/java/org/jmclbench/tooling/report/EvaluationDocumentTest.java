@@ -617,9 +617,9 @@ class EvaluationDocumentTest {
     void theHeaderSaysWhichCodeMadeTheRunsOldestFirst() {
         assertEquals("made by more than one version of jmclbench, oldest first: 2 runs by a version not recorded,"
                         + " 1 run by commit 1a2b3c4-dirty, 2 runs by commit 9f8e7d6",
-                ReportModel.codeVersions(List.of(run("2026-11-27T11:00Z", "9f8e7d6"), run("2026-11-27T02:00Z", null),
+                ConfigurationFacts.codeVersions(List.of(run("2026-11-27T11:00Z", "9f8e7d6"), run("2026-11-27T02:00Z", null),
                         run("2026-11-27T10:00Z", "1a2b3c4-dirty"), run("2026-11-27T12:00Z", "9f8e7d6"), run("2026-11-27T03:00Z", null))));
-        assertEquals("every run by jmclbench commit 9f8e7d6", ReportModel.codeVersions(List.of(run("t", "9f8e7d6"))));
+        assertEquals("every run by jmclbench commit 9f8e7d6", ConfigurationFacts.codeVersions(List.of(run("t", "9f8e7d6"))));
         assertTrue(doc.contains("which jmclbench version made them is not recorded: the store predates that"),
                 "the fixture store is schema 2: " + doc.lines().findFirst().orElse(""));
     }

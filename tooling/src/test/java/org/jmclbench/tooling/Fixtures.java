@@ -18,6 +18,18 @@ public final class Fixtures {
     }
 
     /** A project home with {@code data/tiny} (1 s) and a stand-in workload jar; sets the system properties. */
+    /** The project's folder (the one holding data/README.md), found above the working directory. */
+    public static Path projectHome() {
+        Path p = Path.of("").toAbsolutePath();
+        while (p != null && !Files.isRegularFile(p.resolve("data/README.md"))) {
+            p = p.getParent();
+        }
+        if (p == null) {
+            throw new IllegalStateException("data/README.md not found above " + Path.of("").toAbsolutePath());
+        }
+        return p;
+    }
+
     public static Path home(Path dir) throws IOException {
         Path ds = dir.resolve("data/tiny");
         Files.createDirectories(ds);

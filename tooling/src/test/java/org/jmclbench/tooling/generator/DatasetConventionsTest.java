@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.jmclbench.core.mcl.Angles;
+import org.jmclbench.tooling.Fixtures;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -23,7 +24,7 @@ class DatasetConventionsTest {
     private static final double[][] BEACONS = {{0, 1}, {3, 0}, {3, 2}};
 
     static Path folder(String name) {
-        Path home = ShippedDatasetsTest.projectHome();
+        Path home = Fixtures.projectHome();
         return name.equals("independent") ? home.resolve("tooling/src/test/resources/independent")
                 : home.resolve("data").resolve(name);
     }

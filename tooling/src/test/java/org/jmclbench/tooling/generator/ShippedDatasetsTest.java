@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.regex.Pattern;
 
+import org.jmclbench.tooling.Fixtures;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -18,21 +19,10 @@ import org.junit.jupiter.params.provider.ValueSource;
 class ShippedDatasetsTest {
     private static final Pattern NUMBER = Pattern.compile("-?[0-9]\\.[0-9]{16}e[+-][0-9]{2,3}");
 
-    static Path projectHome() {
-        Path p = Path.of("").toAbsolutePath();
-        while (p != null && !Files.isRegularFile(p.resolve("data/README.md"))) {
-            p = p.getParent();
-        }
-        if (p == null) {
-            throw new IllegalStateException("data/README.md not found above " + Path.of("").toAbsolutePath());
-        }
-        return p;
-    }
-
     @ParameterizedTest
     @ValueSource(strings = {"match", "match-short", "match-quick", "stay", "figure8", "kidnap"})
     void regeneratingGivesTheSameBytes(String name, @TempDir Path tmp) throws Exception {
-        Path shipped = projectHome().resolve("data").resolve(name);
+        Path shipped = Fixtures.projectHome().resolve("data").resolve(name);
         Scenario s = Scenario.byName(name);
         SimulatedRun run = new Simulator(Playground.thesis(), SensorNoise.DEFAULT)
                 .run(s, 1, GenerateCommand.odometryCount(s.defaultDuration()));
@@ -50,7 +40,7 @@ class ShippedDatasetsTest {
     @ParameterizedTest
     @ValueSource(strings = {"match", "match-short", "match-quick", "stay", "figure8", "kidnap"})
     void filesFollowTheFormat(String name) throws IOException {
-        Path dir = projectHome().resolve("data").resolve(name);
+        Path dir = Fixtures.projectHome().resolve("data").resolve(name);
         checkTable(dir.resolve("odometry.txt"), 4);
         checkTable(dir.resolve("laser.txt"), 2);
         checkTable(dir.resolve("real.txt"), 4);

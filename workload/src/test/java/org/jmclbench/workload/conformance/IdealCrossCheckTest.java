@@ -1,18 +1,16 @@
 package org.jmclbench.workload.conformance;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.File;
-import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
@@ -33,7 +31,6 @@ import org.junit.jupiter.params.provider.ValueSource;
  * implementations (one formula, order of draws or rule changed), not rounding.
  */
 class IdealCrossCheckTest {
-    private static final double TOL = 1e-9;
     private static Path home;
     private static Path nativeProgram;
 
@@ -46,7 +43,7 @@ class IdealCrossCheckTest {
         Process make = new ProcessBuilder("make", "-s", "-C", home.resolve("native").toString(), "all")
                 .redirectErrorStream(true).redirectOutput(log.toFile()).start();
         assertTrue(make.waitFor(300, TimeUnit.SECONDS), "make -C native did not finish in 300 s");
-        assertEquals(0, make.exitValue(), () -> "make -C native failed:\n" + read(log));
+        assertEquals(0, make.exitValue(), () -> "make -C native failed:\n" + IdealRunComparison.read(log));
         nativeProgram = home.resolve("native/build/jmclbench-native");
         assertTrue(Files.isExecutable(nativeProgram), nativeProgram + " was not built");
     }
@@ -70,37 +67,9 @@ class IdealCrossCheckTest {
         Path cRun = run(new ArrayList<>(Arrays.asList(nativeProgram.toString())), opts, tmp.resolve("c"), "c",
                 particles, cov);
 
-        int lines = compareLines(javaRun.resolve("position.txt"), cRun.resolve("position.txt"), true);
-        assertTrue(lines > 100, "position.txt has only " + lines + " lines");
-        if (cov) {
-            compareLines(javaRun.resolve("covariance.txt"), cRun.resolve("covariance.txt"), false);
-        }
-        Map<String, Double> dj = keyValues(javaRun.resolve("data.txt"));
-        Map<String, Double> dc = keyValues(cRun.resolve("data.txt"));
-        for (String k : new String[] {"deviationXY", "deviationX", "deviationY", "deviationAngle"}) {
-            assertTrue(dj.containsKey(k) && dc.containsKey(k), "data.txt lacks " + k);
-            assertTrue(Math.abs(dj.get(k) - dc.get(k)) <= TOL,
-                    k + ": Java " + dj.get(k) + ", C " + dc.get(k) + " (" + options + ")");
-        }
-        // The deadline accounting of summary.json (predict, update, all in order) is the same in both.
-        String sj = read(javaRun.resolve("summary.json"));
-        String sc = read(cRun.resolve("summary.json"));
-        for (String k : new String[] {"released", "completed", "done", "late", "skipped", "terminated", "missCount",
-            "deadlineMisses", "missRatio"}) {
-            List<String> vj = jsonNumbers(sj, k);
-            assertTrue(vj.size() >= 3, "summary.json lacks " + k);
-            assertEquals(vj, jsonNumbers(sc, k), k + " in summary.json (Java, C; " + options + ")");
-        }
-    }
-
-    /** Every value of the key {@code "name": <number>} in the text, in order, as numbers' texts normalised. */
-    private static List<String> jsonNumbers(String json, String name) {
-        List<String> out = new ArrayList<>();
-        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\"" + name + "\": (-?[0-9.eE+-]+)").matcher(json);
-        while (m.find()) {
-            out.add(Double.toString(Double.parseDouble(m.group(1))));
-        }
-        return out;
+        IdealRunComparison c = IdealRunComparison.of(javaRun, "Java", cRun, "C", cov);
+        assertNull(c.difference, () -> c.difference + "; " + options);
+        assertTrue(c.positionLines > 100, "position.txt has only " + c.positionLines + " lines");
     }
 
     /** Runs one ideal run and returns its run folder. */
@@ -113,72 +82,11 @@ class IdealCrossCheckTest {
         Path log = out.resolve("log.txt");
         Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
         assertTrue(p.waitFor(300, TimeUnit.SECONDS), runtime + " ideal run did not finish in 300 s: " + command);
-        assertEquals(0, p.exitValue(), () -> runtime + " ideal run failed: " + command + "\n" + read(log));
+        assertEquals(0, p.exitValue(),
+                () -> runtime + " ideal run failed: " + command + "\n" + IdealRunComparison.read(log));
         Path dir = out.resolve(runtime).resolve(cov ? "cov" : "nocov").resolve(particles).resolve("IdealTest")
                 .resolve("1");
         assertTrue(Files.isDirectory(dir), "no run folder " + dir);
         return dir;
-    }
-
-    /** Compares two files of 'time v1 v2 ...' lines; the last column is an angle when lastIsAngle. */
-    private static int compareLines(Path javaFile, Path cFile, boolean lastIsAngle) throws IOException {
-        List<double[]> a = rows(javaFile);
-        List<double[]> b = rows(cFile);
-        assertEquals(a.size(), b.size(), "line counts of " + javaFile.getFileName() + " (Java, C)");
-        for (int i = 0; i < a.size(); i++) {
-            double[] r = a.get(i);
-            double[] s = b.get(i);
-            assertEquals(r.length, s.length, javaFile.getFileName() + " row " + (i + 1) + ": column counts");
-            assertEquals(r[0], s[0], javaFile.getFileName() + " row " + (i + 1) + ": times");
-            for (int c = 1; c < r.length; c++) {
-                double d = lastIsAngle && c == r.length - 1 ? VectorFile.circularDistance(r[c], s[c])
-                        : Math.abs(r[c] - s[c]);
-                int row = i + 1;
-                int col = c;
-                assertTrue(d <= TOL, () -> javaFile.getFileName() + " row " + row + " column " + col + ": Java "
-                        + r[col] + ", C " + s[col] + " (the implementations diverge here)");
-            }
-        }
-        return a.size();
-    }
-
-    private static List<double[]> rows(Path p) throws IOException {
-        List<double[]> rows = new ArrayList<>();
-        for (String line : Files.readAllLines(p, StandardCharsets.UTF_8)) {
-            line = line.trim();
-            if (line.isEmpty() || line.startsWith("#")) {
-                continue;
-            }
-            String[] t = line.split("\\s+");
-            double[] v = new double[t.length];
-            for (int i = 0; i < t.length; i++) {
-                v[i] = Double.parseDouble(t[i]);
-            }
-            rows.add(v);
-        }
-        return rows;
-    }
-
-    private static Map<String, Double> keyValues(Path p) throws IOException {
-        Map<String, Double> m = new HashMap<>();
-        for (String line : Files.readAllLines(p, StandardCharsets.UTF_8)) {
-            String[] t = line.trim().split("\\s+");
-            if (t.length == 2 && !t[0].startsWith("#")) {
-                try {
-                    m.put(t[0], Double.parseDouble(t[1]));
-                } catch (NumberFormatException e) {
-                    // not a number-valued key
-                }
-            }
-        }
-        return m;
-    }
-
-    private static String read(Path p) {
-        try {
-            return new String(Files.readAllBytes(p), StandardCharsets.UTF_8);
-        } catch (IOException e) {
-            return e.toString();
-        }
     }
 }

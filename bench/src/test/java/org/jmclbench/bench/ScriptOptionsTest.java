@@ -28,6 +28,7 @@ class ScriptOptionsTest {
     @ParameterizedTest(name = "{0} {1}")
     @CsvSource({
             "atc-latency, --aborts", "atc-latency, --java",
+            "crosscheck, --generate",
             "hvm-compare, --particles", "hvm-compare, -O",
             "kernel-ratio, --out",
             "record-cost, --java", "record-cost, --out",
@@ -51,6 +52,8 @@ class ScriptOptionsTest {
             "atc-latency, --work, 99999999999, not a count",
             "release-accuracy, --loops-50ms, 0, not a positive count",
             "fuzz, --seconds, 0, not a positive count",
+            "crosscheck, --cases, 0, not a positive count",
+            "crosscheck, --first, 1e3, not a count",
             "fuzz, --runs, lots, not a count",
             // lists and choices each run would refuse only after a build, the loop going on past it
             "hvm-compare, --particles, '100,x', not a positive count",

@@ -124,8 +124,13 @@ public final class ScjRun {
         return c;
     }
 
-    /** Extra room in every area of the warm-up and class-loading missions: loading classes allocates there. */
-    static final long LOADING_ROOM = 8L << 20;
+    /**
+     * Extra room in every area of the warm-up and class-loading missions: loading classes allocates
+     * there, and more under a Java agent that rewrites classes as they load (a profiler's, or Jazzer's
+     * in the test JVM after a fuzz test: 8.4 MiB were needed where 8 were given). The areas are budgets
+     * counted on the heap, not reserved memory, so the room costs nothing.
+     */
+    static final long LOADING_ROOM = 64L << 20;
 
     /** The configuration with every area {@link #LOADING_ROOM} larger than the workload needs. */
     private static MissionConfiguration roomy(MissionConfiguration c, DatasetInput input) {

@@ -49,6 +49,7 @@ tests=(
     "ArrayBounds 19-array-bounds interpreted,compiled"
     "FloorCeil 21-strictmath-floor-ceil interpreted,compiled"
     "HotMethods 22-aot-listed-methods hot"
+    "SyncReturn 23-aot-synchronized-return compiled"
 )
 
 # A name no row has ran nothing and passed.

@@ -45,7 +45,7 @@ public final class RunOptionsParser {
             "  --warmup S               replay the first S seconds of data first and discard them (default 0)",
             "  --spin-us N              park until N us before each release, then spin (default 0)",
             "  --gc-log                 keep the runtime's GC log as gc.log in the run folder",
-            "  --no-cpu-time            javase, ideal: no per-job CPU time (cpu_ns -1), two clock reads per job fewer",
+            "  --no-cpu-time            javase, rtsj, ideal: no per-job CPU time (cpu_ns -1), two clock reads per job fewer",
             "  --load-alloc MBPS,LIVEMB background allocation load: MB/s allocated, MB kept live (default off)",
             "  --load-name NAME         load scenario recorded with the run (default alloc with --load-alloc, else none)",
             "  --force                  overwrite a complete run folder",

@@ -90,4 +90,19 @@ class AttributionEndToEndTest {
         assertTrue(a.stream().anyMatch(j -> j.causes().stream().anyMatch(c -> c.kind().equals("compute"))),
                 "300,000 particles cannot be predicted within 50 ms; causes: " + Attribution.countCauses(a));
     }
+
+    /**
+     * The same overload on the rtsj engine: its jobs carry their CPU time now (through the shim's
+     * clock on a JVM), so a miss is told as compute there too, not only as overlap or os.
+     */
+    @Test
+    void anRtsjJobThatCannotFitItsDeadlineIsAttributedToCompute(@TempDir Path tmp) throws Exception {
+        List<String> args = new ArrayList<>(shortData(tmp, 3.0));
+        args.addAll(List.of("-p", "300000", "--engine", "rtsj"));
+        RunEvidence run = run(tmp, List.of("-Xmx512m"), args);
+        assertEquals("rtsj", run.summary().path("engine").path("kind").asText());
+        List<JobAttribution> a = run.attribute(Attribution.Settings.defaults());
+        assertTrue(a.stream().anyMatch(j -> j.causes().stream().anyMatch(c -> c.kind().equals("compute"))),
+                "300,000 particles cannot be predicted within 50 ms; causes: " + Attribution.countCauses(a));
+    }
 }

@@ -3,11 +3,14 @@ package org.jmclbench.workload.release;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 
+import org.jmclbench.workload.shim.CpuClock;
+
 /**
  * The calling thread's CPU time, for the per-job cpu_ns column, or -1 where the runtime cannot
- * tell it without allocating (the measured window must stay allocation-free).
+ * tell it without allocating (the measured window must stay allocation-free). The javase and
+ * ideal runs' clock, and the rtsj engine's on a JVM (through rtsj-compat's shim).
  */
-public final class ThreadCpuClock {
+public final class ThreadCpuClock implements CpuClock {
     private static final int PROBE_CALLS = 100_000;
     /**
      * Allocation over PROBE_CALLS calls below which the call counts as allocation-free: the
@@ -50,9 +53,6 @@ public final class ThreadCpuClock {
         }
         return new ThreadCpuClock(bean, "used (allocation-free)");
     }
-
-    /** The status of the clock {@code --no-cpu-time} asks for, as summary.json's engine.cpuTime says it. */
-    public static final String OFF = "off (--no-cpu-time)";
 
     /** The clock of a run: {@link #probe()}, or with {@code --no-cpu-time} (cpuTime false) none ({@link #OFF}). */
     public static ThreadCpuClock forRun(boolean cpuTime) {
@@ -102,16 +102,19 @@ public final class ThreadCpuClock {
     }
 
     /** CPU nanoseconds of the calling thread, or -1. */
+    @Override
     public long now() {
         return bean != null ? bean.getCurrentThreadCpuTime() : -1;
     }
 
     /** Whether {@link #now()} gives real values. */
+    @Override
     public boolean usable() {
         return bean != null;
     }
 
     /** One line for the run's summary: how per-job CPU time was obtained. */
+    @Override
     public String status() {
         return status;
     }

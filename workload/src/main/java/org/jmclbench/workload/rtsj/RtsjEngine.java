@@ -21,13 +21,15 @@ import org.jmclbench.workload.release.AbortRehearsal;
 import org.jmclbench.workload.release.JavaSeEngine;
 import org.jmclbench.workload.release.LocalizerJob;
 import org.jmclbench.workload.release.ReleaseSchedule;
+import org.jmclbench.workload.shim.CpuClock;
 import org.jmclbench.workload.shim.RuntimeShim;
 
 /**
  * {@code --engine rtsj}: the thesis's RTSJ program on rtsj-compat's RTSJ layer ({@link RtsjReplay}),
  * with terminate by asynchronous transfer of control in the design {@code --rtsj-design} names
  * ({@link RtsjDesign}); the job code's delivery points are woven at build time (rtsj-weaver).
- * Its one memory area is the heap.
+ * Its one memory area is the heap. Per-job CPU time is the shim's clock ({@link RuntimeShim#cpuClock}):
+ * the javase engine's on a JVM, none on an RTSJ VM.
  */
 public final class RtsjEngine implements Engine {
     /** Events of the class-loading replay that runs before the measured one when there is no warm-up. */
@@ -65,6 +67,12 @@ public final class RtsjEngine implements Engine {
         facts.prioritiesApplied = RuntimeShim.get().prioritiesApplied();
         int warmup = o.warmupS > 0 ? schedule.countBefore(o.warmupS, o.timeScale) : 0;
         facts.warmupEvents = warmup;
+        // probed before any replay, so that the warm-up and class-loading replays read it too
+        CpuClock cpuClock = RuntimeShim.get().cpuClock(o.cpuTime);
+        if (o.cpuTime && !cpuClock.usable()) {
+            in.err.println("jmclbench: per-job CPU time: " + cpuClock.status() + "; cpu_ns is -1");
+        }
+        facts.cpuTime = cpuClock.status();
         try {
             if (o.policy == OverrunPolicy.TERMINATE) {
                 // before the replays below compile the job code: code compiled while no AIE was
@@ -72,25 +80,25 @@ public final class RtsjEngine implements Engine {
                 RuntimeShim.get().beforeAborts();
             }
             if (warmup > 0) {
-                replay(in, schedule.prefix(warmup), o.policy);
+                replay(in, schedule.prefix(warmup), o.policy, cpuClock);
             } else {
                 // Class loading out of the measured window: queue runs every job of the first
                 // events, then the run's own policy loads what only its path touches.
                 ReleaseSchedule first = schedule.prefix(Math.min(PRELOAD_EVENTS, schedule.size()));
-                replay(in, first, OverrunPolicy.QUEUE);
+                replay(in, first, OverrunPolicy.QUEUE, cpuClock);
                 if (o.policy != OverrunPolicy.QUEUE) {
-                    replay(in, first, o.policy);
+                    replay(in, first, o.policy, cpuClock);
                 }
             }
             if (o.policy == OverrunPolicy.TERMINATE) {
-                rehearseAborts(in);
+                rehearseAborts(in, cpuClock);
             }
             JobRecords records = new JobRecords(timeline, o.covariance);
             Localizer localizer = in.newLocalizer();
             records.setInitialEstimate(localizer.estimateX(), localizer.estimateY(), localizer.estimateTheta());
             HeapUse heap = HeapUse.begin();
             RtsjReplay replay = new RtsjReplay(schedule, o.policy, o.rtsjDesign,
-                    new LocalizerJob(d, timeline, localizer, records), records);
+                    new LocalizerJob(d, timeline, localizer, records), records, cpuClock);
             replay.run(hangNs(schedule));
             records.durationNs = replay.elapsedNs();
             return new EngineResult(records, Collections.singletonList(heap.end(null, records)), facts);
@@ -101,12 +109,13 @@ public final class RtsjEngine implements Engine {
     }
 
     /** A replay on a throwaway localizer and records (class loading, warm-up). */
-    private static void replay(EngineInput in, ReleaseSchedule schedule, OverrunPolicy policy)
+    private static void replay(EngineInput in, ReleaseSchedule schedule, OverrunPolicy policy, CpuClock cpuClock)
             throws RunFailure, InterruptedException {
         Timeline timeline = in.dataset.timeline();
         JobRecords scratch = new JobRecords(timeline, in.options.covariance);
         new RtsjReplay(schedule, policy, in.options.rtsjDesign,
-                new LocalizerJob(in.dataset, timeline, in.newLocalizer(), scratch), scratch).run(hangNs(schedule));
+                new LocalizerJob(in.dataset, timeline, in.newLocalizer(), scratch), scratch, cpuClock)
+                .run(hangNs(schedule));
     }
 
     /**
@@ -115,10 +124,10 @@ public final class RtsjEngine implements Engine {
      * ATC code (the class loading that {@link #PRELOAD_EVENTS} keeps out of the window for the
      * other paths).
      */
-    private static void rehearseAborts(EngineInput in) throws RunFailure, InterruptedException {
+    private static void rehearseAborts(EngineInput in, CpuClock cpuClock) throws RunFailure, InterruptedException {
         ReleaseSchedule schedule = AbortRehearsal.schedule();
-        new RtsjReplay(schedule, OverrunPolicy.TERMINATE, in.options.rtsjDesign, AbortRehearsal.job(), AbortRehearsal.records())
-                .run(hangNs(schedule));
+        new RtsjReplay(schedule, OverrunPolicy.TERMINATE, in.options.rtsjDesign, AbortRehearsal.job(), AbortRehearsal.records(),
+                cpuClock).run(hangNs(schedule));
     }
 
     private static long hangNs(ReleaseSchedule schedule) {

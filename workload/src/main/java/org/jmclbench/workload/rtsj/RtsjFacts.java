@@ -10,6 +10,8 @@ final class RtsjFacts implements EngineFacts {
     int dispatcherPriority;
     int handlerPriority;
     boolean prioritiesApplied;
+    /** How per-job CPU time was obtained, or why it was not (the shim's clock's status). */
+    String cpuTime;
 
     @Override
     public void writeTo(Json j) {
@@ -18,5 +20,6 @@ final class RtsjFacts implements EngineFacts {
         j.name("dispatcherPriority").value(dispatcherPriority);
         j.name("handlerPriority").value(handlerPriority);
         j.name("prioritiesApplied").value(prioritiesApplied);
+        j.name("cpuTime").value(cpuTime);
     }
 }

@@ -19,6 +19,7 @@ import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.release.EventJob;
 import org.jmclbench.workload.release.ReleaseSchedule;
+import org.jmclbench.workload.shim.CpuClock;
 import org.jmclbench.workload.shim.RuntimeShim;
 
 /**
@@ -39,6 +40,14 @@ import org.jmclbench.workload.shim.RuntimeShim;
  * ({@link JobRecords#abortNs}) is when its AIE was fired, so that abort latency (request to the
  * job's end) is measured: for the thesis design, the job's remaining time. Only RTSJ 1.0.2 API and the
  * {@link RuntimeShim} are used: {@code ant rtsj-engine} builds it for an RTSJ VM.
+ *
+ * <p>A job's CPU time ({@link JobRecords#cpuNs}) is read from the shim's {@link CpuClock} on the
+ * handler's thread: once its release is taken (before the doInterruptible under terminate), and
+ * again when the job's event is recorded, after the robot is handed on. It so covers the job, its
+ * time stamps and the hand-over, the wait for the robot (blocked: no CPU) and, for an aborted job,
+ * the AIE's delivery and its unwinding to the doInterruptible's return (the abort taking hold).
+ * It is -1 for a job that never started and wherever the clock is not usable (an RTSJ VM, Java
+ * PathFinder, {@code --no-cpu-time}): then no clock is read.
  */
 public final class RtsjReplay {
     /** The handlers are started this long before the release of time 0. */
@@ -50,6 +59,7 @@ public final class RtsjReplay {
     private final RtsjDesign design;
     private final EventJob job;
     private final JobRecords records;
+    private final CpuClock cpuClock;
     /** The thesis's {@code synchronized (robot)}: the robot's monitor. */
     private final Object robot = new Object();
     /** Held by the job in progress: the thesis's test of whether a task is running. */
@@ -74,13 +84,23 @@ public final class RtsjReplay {
     // The main thread's clock reading (each thread reads into its own AbsoluteTime: no allocation).
     private final AbsoluteTime mainClock = new AbsoluteTime();
 
-    /** A replay of {@code schedule} under {@code policy}: each released event runs {@code job} on the robot. */
-    public RtsjReplay(ReleaseSchedule schedule, OverrunPolicy policy, RtsjDesign design, EventJob job, JobRecords records) {
+    /**
+     * A replay of {@code schedule} under {@code policy}: each released event runs {@code job} on the
+     * robot, its CPU time read from {@code cpuClock} ({@link RuntimeShim#cpuClock}).
+     */
+    public RtsjReplay(ReleaseSchedule schedule, OverrunPolicy policy, RtsjDesign design, EventJob job, JobRecords records,
+                      CpuClock cpuClock) {
         this.schedule = schedule;
         this.policy = policy;
         this.design = design;
         this.job = job;
         this.records = records;
+        this.cpuClock = cpuClock;
+    }
+
+    /** A replay that reads no CPU clock (every {@code cpu_ns} -1): Java PathFinder's, which has none. */
+    public RtsjReplay(ReleaseSchedule schedule, OverrunPolicy policy, RtsjDesign design, EventJob job, JobRecords records) {
+        this(schedule, policy, design, job, records, RuntimeShim.noCpuClock("not measured"));
     }
 
     /** ns from the release of time 0 to now, on the real-time clock (the run's duration, after {@link #run}). */
@@ -286,6 +306,8 @@ public final class RtsjReplay {
         private long start;
         private long end;
         private boolean committed;
+        /** The handler thread's CPU clock when it took the release, or -1 (no usable clock). */
+        private long cpuStart;
 
         Task(String name, int capacity, int priority) {
             this.name = name;
@@ -311,6 +333,7 @@ public final class RtsjReplay {
             k = fifo[h % fifo.length];
             head = h + 1;
             records.wakeNs[k] = now(clock) - t0;
+            cpuStart = cpuClock.now(); // out of the AI-enabled code: no AIE can land between it and the job
             start = -1;
             end = -1;
             committed = false;
@@ -388,15 +411,17 @@ public final class RtsjReplay {
 
         /** The event's record, from what the job did (an AIE may have cut it short anywhere). */
         private void finish() {
+            long cpuEnd = cpuClock.now(); // the robot is handed on, the AIE (if any) has unwound
             long now = now(clock);
             long seen = aie.delivered ? aie.deliveredNanoTime + nanoToClock : -1;
             JobRecords r = records;
-            r.cpuNs[k] = -1;
             if (start < 0) {
+                r.cpuNs[k] = -1;
                 r.startNs[k] = -1;
                 r.endNs[k] = -1;
                 r.outcome[k] = JobRecords.TERMINATED; // superseded before it started
             } else {
+                r.cpuNs[k] = cpuStart < 0 ? -1 : cpuEnd - cpuStart;
                 long jobEnd = end >= 0 ? end : now;
                 r.startNs[k] = start - t0;
                 r.endNs[k] = jobEnd - t0;

@@ -3,6 +3,7 @@ package org.jmclbench.workload.shim;
 import java.util.List;
 
 import org.jmclbench.rtsjcompat.Atc;
+import org.jmclbench.workload.release.ThreadCpuClock;
 import org.jmclbench.rtsjcompat.RtsjRuntime;
 import org.jmclbench.rtsjcompat.ScjLauncher;
 
@@ -28,6 +29,12 @@ public final class CompatShim extends RuntimeShim {
     @Override
     public void beforeAborts() {
         Atc.prime(PRIMING_ROUNDS);
+    }
+
+    /** The javase engine's clock (ThreadMXBean, used only if its reads do not allocate). */
+    @Override
+    public CpuClock cpuClock(boolean wanted) {
+        return ThreadCpuClock.forRun(wanted);
     }
 
     @Override

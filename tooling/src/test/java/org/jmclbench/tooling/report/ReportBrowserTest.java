@@ -533,6 +533,36 @@ class ReportBrowserTest {
     }
 
     @Test
+    void anIntervalIsWrittenWithItsMeansDecimals() {
+        // the evaluation store's miss ratios: a low of 0.00998 beside a mean of 0.0100 read "0.010 [0.0100, 0.011]",
+        // the low as if above the mean, and a mean of 0.00998 "0.0100 [0.0085, 0.011]", the high as if rounder
+        assertEquals("0.010 [0.010, 0.011]", js().executeScript(
+                "return window.jmclbenchText.interval({ mean: 0.01002, low: 0.00998, high: 0.0112 })"));
+        assertEquals("0.0100 [0.0085, 0.0112]", js().executeScript(
+                "return window.jmclbenchText.interval({ mean: 0.00998, low: 0.0085, high: 0.0112 })"));
+        assertEquals("0 [0, 0.300]", js().executeScript("return window.jmclbenchText.interval({ mean: 0, low: 0, high: 0.3 })"));
+        assertEquals("4.38", js().executeScript("return window.jmclbenchText.interval({ mean: 4.38, low: null, high: null })"));
+        // and the table writes its cells so: the three numbers of an interval with one number of decimals
+        int intervals = 0;
+        for (WebElement td : driver.findElements(By.cssSelector("#results-table td"))) {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("(\\S+) \\[(\\S+), (\\S+)\\]").matcher(td.getText());
+            if (!m.matches()) {
+                continue;
+            }
+            intervals++;
+            java.util.Set<Integer> decimals = new java.util.HashSet<>();
+            for (int g = 1; g <= 3; g++) {
+                String v = m.group(g);
+                if (!v.equals("0")) {
+                    decimals.add(v.indexOf('.') < 0 ? 0 : v.length() - v.indexOf('.') - 1);
+                }
+            }
+            assertTrue(decimals.size() <= 1, td.getText());
+        }
+        assertTrue(intervals > 0, "no interval in the table");
+    }
+
+    @Test
     void aLowestMeanOfZeroIsSaidAsNoneAndNeverAsTheFewest() {
         int before = renderCount();
         new Select(driver.findElement(By.id("sel-particles"))).selectByValue("100");

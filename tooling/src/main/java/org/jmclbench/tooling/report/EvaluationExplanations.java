@@ -40,7 +40,7 @@ final class EvaluationExplanations extends EvaluationSections {
     }
 
     void memoryModel() throws IOException {
-        line("### 2.10 The memory-model experiment (Table 10, Figure 4)");
+        line("### 2.10 The memory-model experiment (Table 10, Figure 10)");
         line("");
         // One runtime, profile and engine at one count in more than one memory style: a memory style
         // is compared only with its own engine's others, never across engines (the rtsj engine, say,
@@ -84,7 +84,7 @@ final class EvaluationExplanations extends EvaluationSections {
                         .filter(c -> c.particles == n && !c.memoryAreas.isEmpty()).count()).thenComparing(n -> n))
                 .orElseThrow();
         List<ReportModel.Cell> fig = exp.stream().filter(c -> c.particles == shown).toList();
-        figure("memory-" + shown, "Figure 4: peak bytes per memory area, " + shown + " particles (log scale).",
+        figure("memory-" + shown, "Figure 10: peak bytes per memory area, " + shown + " particles (log scale).",
                 () -> charts.write(ChartSpecs.memory(scope(shown, fig)).withStem("memory-" + shown)));
         styleAgainstPreallocated(fig, shown);
     }
@@ -235,7 +235,7 @@ final class EvaluationExplanations extends EvaluationSections {
     }
 
     void attribution() throws IOException {
-        line("### 2.12 Why deadlines were missed (Table 12, Figure 5)");
+        line("### 2.12 Why deadlines were missed (Table 12, Figure 12)");
         line("");
         List<ReportModel.Cell> missed = data.sweep().stream().filter(c -> c.ok > 0 && !c.causes.isEmpty()
                 && c.causes.values().stream().anyMatch(v -> v > 0)).toList();
@@ -259,7 +259,7 @@ final class EvaluationExplanations extends EvaluationSections {
                 + "missed\"); mean over the attributed repetitions.", count));
         line("");
         table(header, rows);
-        figure("causes-skip-" + count, "Figure 5: missed or late jobs per run by primary cause, " + count + " particles.",
+        figure("causes-skip-" + count, "Figure 12: missed or late jobs per run by primary cause, " + count + " particles.",
                 () -> charts.write(ChartSpecs.causes(scope(count, at)).withStem("causes-skip-" + count)));
         line("The largest primary cause per configuration (Table 12):");
         line("");

@@ -586,9 +586,35 @@ class EvaluationDocumentTest {
     }
 
     @Test
+    void everyFigureIsNumberedAfterTheTableOfItsSection() {
+        // the document ran Figure 1, 2a-2d, 2, 3-3h, 6, 6b, 7, 8, 4, 5: the spectrum (Table 3's section) was
+        // "Figure 2" after 2a-2d (the completion curves of Table 2's), and the memory and cause figures came
+        // after Figure 8; a figure now carries its section's table number, lettered after it
+        String heading = null;
+        int figures = 0;
+        for (String line : doc.lines().toList()) {
+            if (line.startsWith("### ")) {
+                heading = line;
+            }
+            Matcher m = Pattern.compile("^\\*Figure (\\w+):").matcher(line);
+            if (!m.find()) {
+                continue;
+            }
+            figures++;
+            assertTrue(heading != null, line);
+            Matcher t = Pattern.compile("\\(Table (\\w+)").matcher(heading);
+            assertTrue(t.find(), "a figure in a section of no table: " + heading);
+            String figure = m.group(1), table = t.group(1);
+            assertTrue(figure.equals(table) || figure.matches(Pattern.quote(table) + "[a-z]"),
+                    "Figure " + figure + " in the section of Table " + table + ": " + heading);
+        }
+        assertTrue(figures >= 10, "figures: " + figures);
+    }
+
+    @Test
     void spectrumAndAbortCaptionsSayWhichJobsTheyCover() {
         // a dropped job has no task latency, and abort latency is over the jobs an abort took hold of, not over all jobs
-        assertTrue(doc.contains("*Figure 2: task latency by percentile (every completed job of every repetition"), doc);
+        assertTrue(doc.contains("*Figure 3: task latency by percentile (every completed job of every repetition"), doc);
         assertTrue(doc.contains("particles (every job an abort took hold of, "), doc);
         assertFalse(doc.contains("all jobs of all repetitions") || doc.contains("every aborted job"), doc);
     }

@@ -245,18 +245,20 @@ final class EvaluationExplanations extends EvaluationSections {
         }
         int count = missed.stream().mapToInt(c -> c.particles).max().orElseThrow();
         List<ReportModel.Cell> at = data.order(missed.stream().filter(c -> c.particles == count).toList());
-        List<String> kinds = at.stream().flatMap(c -> c.causes.keySet().stream()).distinct().sorted().toList();
+        // a cause recorded but never a job's primary one is no column and no "0.0" beside the blanks of causes not recorded
+        List<String> kinds = at.stream().flatMap(c -> c.causes.entrySet().stream()).filter(e -> e.getValue() > 0)
+                .map(Map.Entry::getKey).distinct().sorted().toList();
         List<String> header = new ArrayList<>(List.of("configuration"));
         header.addAll(kinds);
         List<List<String>> rows = new ArrayList<>();
         for (ReportModel.Cell c : at) {
             List<String> row = new ArrayList<>(List.of(c.config));
-            kinds.forEach(k -> row.add(c.causes.containsKey(k) ? num(c.causes.get(k), 1) : ""));
+            kinds.forEach(k -> row.add(c.causes.getOrDefault(k, 0.0) > 0 ? num(c.causes.get(k), 1) : ""));
             rows.add(row);
         }
         line(String.format(Locale.ROOT, "Table 12: at %d particles (policy skip), the missed or late jobs per run by primary cause, "
                 + "from the runtime's own events (JFR, GC log) aligned with the job records (docs/RUNNER.md, \"Why a deadline was "
-                + "missed\"); mean over the attributed repetitions.", count));
+                + "missed\"); mean over the attributed repetitions; blank: no job had that primary cause.", count));
         line("");
         table(header, rows);
         figure("causes-skip-" + count, "Figure 12: missed or late jobs per run by primary cause, " + count + " particles.",

@@ -149,7 +149,7 @@ class ReportBrowserTest {
         m.put("misses", configs);
         m.put("deviation", configs);
         m.put("latency-jitter", 2 * configs);       // task latency and release jitter per runtime
-        m.put("causes", FixtureDb.CAUSES_JAVA.size()); // one stack segment per cause kind (the JVMs' kinds include native's)
+        m.put("causes", causeKindsWithAPrimary()); // a stack segment per cause kind that was some job's primary cause
         m.put("latency-index", 2 * configs);        // predict and update per runtime
         m.put("deviation-time", configs * repetitions);
         m.put("trajectory", configs + 2);           // the real trajectory, one estimate per runtime, the beacons
@@ -166,6 +166,16 @@ class ReportBrowserTest {
         m.put("accuracy", 2 * configs);             // a point per runtime and policy (skip, terminate)
         m.put("conditions-load", 1);                // one load scenario: none
         return m;
+    }
+
+    /** The cause kinds some cell at the chosen setting has as a primary cause (the JVMs' kinds include native's). */
+    static int causeKindsWithAPrimary() {
+        return ((Number) js().executeScript("var D = JSON.parse(document.getElementById('jmclbench-data').textContent);"
+                + " var ds = document.getElementById('sel-dataset').value, po = document.getElementById('sel-policy').value;"
+                + " var pa = Number(document.getElementById('sel-particles').value), kinds = {};"
+                + " D.cells.forEach(function (c) { if (c.dataset === ds && c.policy === po && c.particles === pa) {"
+                + " Object.keys(c.causes || {}).forEach(function (k) { if (c.causes[k] > 0) { kinds[k] = true; } }); } });"
+                + " return Object.keys(kinds).length;")).intValue();
     }
 
     static List<String> tableConfigs() {

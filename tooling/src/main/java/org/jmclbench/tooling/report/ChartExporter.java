@@ -254,8 +254,8 @@ final class ChartExporter {
     }
 
     /**
-     * Bars whose values carry their own colours (one series of bars in the runtimes' colours); on a
-     * log axis a value of 0 has no bar, so a "0" under the axis says it is zero, not missing; a
+     * Bars whose values carry their own colours (one series of bars in the runtimes' colours); a
+     * value of 0 has no bar to see, so a "0" at the axis says it is zero, not missing; a
      * value's interval [low, high] is drawn as it is (cut at zero where the spec cut it), over the bar.
      */
     private static BarRenderer perItemColours(ChartSpec spec) {
@@ -296,7 +296,7 @@ final class ChartExporter {
                     g2.setStroke(new BasicStroke(1f));
                     g2.draw(bar);
                 }
-                if (log && v == 0) {
+                if (v == 0) { // no bar on a log axis, none to see on a linear one: either way not "no value"
                     g2.setPaint(Color.DARK_GRAY);
                     g2.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
                     g2.drawString("0", (float) (x - g2.getFontMetrics().stringWidth("0") / 2.0), (float) dataArea.getMaxY() - 3);

@@ -68,7 +68,7 @@
       ctx.restore();
     }
   };
-  // A value of 0 has no bar on a log axis: a "0" marks it at the axis.
+  // A value of 0 has no bar on a log axis, and none to see on a linear one: a "0" marks it at the axis.
   var zeroMarks = {
     id: 'jmclbenchZeroMarks',
     afterDatasetsDraw: function (chart) {

@@ -434,7 +434,8 @@
     }
     var log = spec.y.scale === 'LOG', stacked = spec.kind === 'STACKED_BARS';
     return { label: s.name, borderColor: s.color, backgroundColor: s.colors || s.color, errorBars: s.errors, notes: s.notes,
-      zeros: log ? s.values.map(function (v) { return v === 0; }) : null,
+      // a bar of 0 is no bar to see, on a linear axis as on a log one: a "0" tells it from a runtime not run there
+      zeros: !stacked && !spec.horizontal ? s.values.map(function (v) { return v === 0; }) : null,
       data: s.values.map(function (v) { return v === null || v === undefined ? (stacked ? 0 : null) : (log && v <= 0 ? null : v); }) };
   }
   /** Whether a series or a bar drawn belongs to a runtime (ChartSpec.aboutNoRuntime): the beacons alone do not. */

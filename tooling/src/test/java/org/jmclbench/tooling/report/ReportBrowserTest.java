@@ -573,6 +573,25 @@ class ReportBrowserTest {
     }
 
     @Test
+    void aBarOfZeroIsMarkedOnALinearAxisAsOnALogOne() {
+        // the evaluation's missCount chart drew nothing for a runtime with no dropped job (400 particles) and
+        // nothing for one not run at that count (25600): the zero bars now carry their "0" (jmclbenchZeroMarks)
+        @SuppressWarnings("unchecked")
+        List<Object> checked = (List<Object>) js().executeScript("var out = [];"
+                + " Object.keys(window.jmclbenchCharts).forEach(function (id) {"
+                + "   var c = window.jmclbenchCharts[id];"
+                + "   if (c.config.type !== 'bar' || c.options.indexAxis === 'y' || c.options.scales.y.stacked) { return; }"
+                + "   c.data.datasets.forEach(function (d) { d.data.forEach(function (v, i) {"
+                + "     if (v === 0) { out.push(id + ':' + (d.zeros && d.zeros[i] === true)); } }); });"
+                + " });"
+                + " return out;");
+        assertFalse(checked.isEmpty(), "no bar of 0 at this setting: the test would prove nothing");
+        for (Object c : checked) {
+            assertTrue(String.valueOf(c).endsWith(":true"), "a bar of 0 without its mark: " + checked);
+        }
+    }
+
+    @Test
     void aLowestMeanOfZeroIsSaidAsNoneAndNeverAsTheFewest() {
         int before = renderCount();
         new Select(driver.findElement(By.id("sel-particles"))).selectByValue("100");

@@ -235,7 +235,8 @@ public final class EvaluationDocument extends EvaluationSections {
             rows.add(row);
         }
         line("Table 4: the thesis's missCount per run (under skip, the dropped jobs), policy skip (mean [95% CI] over "
-                + "repetitions, the percentile-bootstrap interval; empty: not run).");
+                + "repetitions, the percentile-bootstrap interval; empty: not run; n/a: run, and no run completed, as the "
+                + "Configurations table counts).");
         line("");
         table(header, rows);
         // The figures show the configurations of the whole sweep; the HVM gets its own panel, as its

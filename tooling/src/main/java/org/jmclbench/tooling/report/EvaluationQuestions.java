@@ -194,11 +194,11 @@ final class EvaluationQuestions extends EvaluationSections {
                 + "particle step of these runs (the slowest job of either task over its particles), in ms; the C baseline has no "
                 + "bytecode to analyse. The last column: whether the largest " + (split ? "p50, p99 and max of noticing"
                 : "abort latency") + " of any run is within it (where not, that largest value, ms: a mean under the bound "
-                + "can hold a run over it).", n));
+                + "can hold a run over it). n/a: no run of the configuration recorded the value.", n));
         line("");
         if (split) {
             line("Noticing runs from the request to the poll (or delivery point) that saw it, stopping from there to the "
-                    + "job's end (`seen_ns` in the job files; `-` where no job saw its abort: the RTSJ thesis design, whose job "
+                    + "job's end (`seen_ns` in the job files; n/a where no job saw its abort: the RTSJ thesis design, whose job "
                     + "never sees its AIE, and runs recorded before the column). The static bound bounds noticing only.");
             line("");
             table(List.of("configuration", "runs", "aborted per run", "abort latency p50", "abort latency p99", "abort latency max",

@@ -621,6 +621,47 @@ class EvaluationDocumentTest {
     }
 
     @Test
+    void aTableThatWritesNaSaysWhatItMeans() throws Exception {
+        // Table 4 said "empty: not run" and wrote n/a, unexplained, for configurations run but never completed;
+        // Table 6b said "`-` where no job saw its abort" and wrote n/a there
+        FixtureDb f = new FixtureDb();
+        f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("temurin-21", "shenandoah", "21.0.5", 1.1, "unsupported")));
+        f.policies = List.of("skip");
+        f.particles = List.of(100, 400);
+        f.repetitions = 2;
+        f.durationS = 6;
+        String unsupported = document(ReportFixtures.write(f, dir, "unsupported.db"), "unsupported.db", dir.resolve("unsupported"));
+        assertTrue(tablesWithNa(unsupported).contains("Table 4"), "Table 4 of a runtime never completed");
+        assertTrue(tablesWithNa(doc).contains("Table 6b"), "Table 6b of runs with no abort latency");
+    }
+
+    /** The tables of {@code document} that write n/a, each checked to say in its caption what n/a is. */
+    private static List<String> tablesWithNa(String document) {
+        List<String> out = new ArrayList<>();
+        String[] lines = document.split("\n");
+        for (int i = 0; i < lines.length; i++) {
+            if (!lines[i].matches("^Table \\w+: .*")) {
+                continue;
+            }
+            StringBuilder text = new StringBuilder(lines[i]);
+            int j = i + 1;
+            for (; j < lines.length && !lines[j].startsWith("|"); j++) {
+                text.append('\n').append(lines[j]);
+            }
+            boolean na = false;
+            for (; j < lines.length && lines[j].startsWith("|"); j++) {
+                na |= lines[j].contains("| n/a |");
+            }
+            if (na) {
+                out.add(lines[i].substring(0, lines[i].indexOf(':')));
+                assertTrue(text.toString().contains("n/a"), "a table of n/a cells that does not say what n/a is: " + lines[i]);
+            }
+        }
+        return out;
+    }
+
+    @Test
     void spectrumAndAbortCaptionsSayWhichJobsTheyCover() {
         // a dropped job has no task latency, and abort latency is over the jobs an abort took hold of, not over all jobs
         assertTrue(doc.contains("*Figure 3: task latency by percentile (every completed job of every repetition"), doc);

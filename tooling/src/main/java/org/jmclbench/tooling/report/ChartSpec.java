@@ -27,6 +27,15 @@ import com.fasterxml.jackson.annotation.JsonInclude;
 public record ChartSpec(String id, String stem, Setting setting, String title, Kind kind, boolean horizontal, Axis x, Axis y,
                         List<Category> categories, List<Series> series, List<Band> bands, Frame frame, boolean valueLabels) {
 
+    /**
+     * Whether nothing drawn belongs to a runtime: no series and no bar category names one (the
+     * playground's beacons alone, say), so the chart says nothing of any run.
+     */
+    boolean aboutNoRuntime() {
+        return series.stream().noneMatch(s -> s.config() != null)
+                && (categories == null || categories.stream().noneMatch(c -> c.config() != null));
+    }
+
     /** How the series are drawn. */
     public enum Kind {
         /** Grouped bars, one value per category and series, optional error bars. */

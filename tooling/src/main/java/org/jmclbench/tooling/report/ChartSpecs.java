@@ -351,7 +351,8 @@ final class ChartSpecs {
         rows.stream().flatMap(c -> c.causes.keySet().stream()).filter(k -> !kinds.contains(k)).distinct().sorted().forEach(kinds::add);
         List<Series> series = new ArrayList<>();
         for (String k : kinds) {
-            if (rows.stream().anyMatch(c -> c.causes.containsKey(k))) {
+            // a cause recorded but never a job's primary one draws no segment: no legend entry either
+            if (rows.stream().anyMatch(c -> c.causes.getOrDefault(k, 0.0) > 0)) {
                 List<Double> values = rows.stream().map(c -> c.causes.get(k)).toList();
                 series.add(new Series(k, null, null, Palette.CAUSE_COLORS.getOrDefault(k, Palette.color(series.size())),
                         Style.BAR, null, values, null, null, null));

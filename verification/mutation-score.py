@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """The mutation score of the SCJ mission's checks: how many realistic bugs they catch.
 
-    verification/mutation-score.py [--only ID,...] [--work DIR] [--retries N] [--list] [--check]
+    verification/mutation-score.py [--only ID,...] [--work DIR] [--retries N] [--unit-timeout S] [--list] [--check]
 
 Copies the tree (the files git knows, as they are now) to a work folder, never touching the
 tree itself, and for each mutant of the catalogue below: writes the bug into the copy, runs the
 unit tests of the modules the mission is made of (core-immortal, rtsj-compat, scj-mission) and,
-when they pass, `./jmclbench verify` on the checks of the real mission (the toy program's checks
+when they pass (or are killed after their timeout), `./jmclbench verify` on the checks of the real mission (the toy program's checks
 never run shipped code), stopping at the first failing check; then puts the file back (first of
 all the copy without a mutant, which must pass both, or every mutant would look caught). A mutant
 is caught when a unit test fails or a check fails by what it checks (verify's results file says
@@ -174,15 +174,14 @@ def copy_tree(src, dst):
             shutil.copy(os.path.join(src, f), target)  # a new mtime: Maven recompiles what changed
 
 
-def judge(mid, tree, logs):
+def judge(mid, tree, logs, unit_timeout):
     """(verdict, by) of the mutant now written in tree: caught, MISSED, INCONCLUSIVE, INVALID or ERROR."""
     unit_log = os.path.join(logs, mid + "-unit.log")
-    rc = run(["mvn", "-o", "-q", "-B", "-pl", UNIT_MODULES, "test"], tree, unit_log, UNIT_TIMEOUT_S)
-    if rc == HUNG:
-        return "INCONCLUSIVE", f"unit tests: killed after {UNIT_TIMEOUT_S} s"
-    if rc != 0 and "COMPILATION ERROR" in open(unit_log).read():
+    rc = run(["mvn", "-o", "-q", "-B", "-pl", UNIT_MODULES, "test"], tree, unit_log, unit_timeout)
+    unit_hung = rc == HUNG
+    if rc != 0 and not unit_hung and "COMPILATION ERROR" in open(unit_log).read():
         return "INVALID", "does not compile"
-    if rc != 0:
+    if rc != 0 and not unit_hung:
         failed = sorted(set(re.findall(r"\[ERROR\]\s+(?:\x1b\[[0-9;]*m)*(\w+Test)\.", open(unit_log).read())))
         return "caught", "unit tests: " + (", ".join(failed[:3]) or "failed")
     verify_log = os.path.join(logs, mid + "-verify.log")
@@ -191,11 +190,20 @@ def judge(mid, tree, logs):
         os.remove(results)  # a file left by an earlier run must not be read as this one's
     rc = run(["./jmclbench", "verify", "--only", VERIFY_ONLY, "--fail-fast", "--out", results,
               "--logs", os.path.join(logs, mid + "-jpf")], tree, verify_log, VERIFY_TIMEOUT_S)
+    # Unit tests killed after their timeout say nothing (a mutant that hangs them, or load); a check
+    # that fails by what it checks still catches the mutant.
+    hung = f"unit tests killed after {unit_timeout} s" if unit_hung else None
     if rc == HUNG:
-        return "INCONCLUSIVE", f"verify: killed after {VERIFY_TIMEOUT_S} s"
-    if rc == 0:
-        return "MISSED", "-"
-    return verify_verdict(results, rc, verify_log)
+        verdict, by = "INCONCLUSIVE", f"verify: killed after {VERIFY_TIMEOUT_S} s"
+    elif rc == 0:
+        verdict, by = "MISSED", "-"
+    else:
+        verdict, by = verify_verdict(results, rc, verify_log)
+    if hung and verdict == "MISSED":
+        return "INCONCLUSIVE", hung + ", verify passes"
+    if hung:
+        return verdict, f"{by}; {hung}"
+    return verdict, by
 
 
 def verify_verdict(results, rc, verify_log):
@@ -233,12 +241,16 @@ def main():
                    help="the folder of the tree's copy (kept, so later runs build incrementally)")
     p.add_argument("--retries", type=int, default=0, metavar="N",
                    help="run an inconclusive mutant (killed after its timeout, a check over its budget) up to N more times")
+    p.add_argument("--unit-timeout", type=int, default=UNIT_TIMEOUT_S, metavar="S",
+                   help=f"kill the unit tests after S seconds (default {UNIT_TIMEOUT_S}; they take about 25 s)")
     p.add_argument("--list", action="store_true", help="list the catalogue and exit")
     p.add_argument("--check", action="store_true",
                    help="check that every mutant's text occurs once in the sources (the catalogue is not stale) and exit")
     a = p.parse_args()
     if a.retries < 0:
         p.error(f"--retries: {a.retries} is below 0")
+    if a.unit_timeout < 1:
+        p.error(f"--unit-timeout: {a.unit_timeout} is below 1")
     ids = [m[0] for m in MUTANTS]
     if a.list:
         for m in MUTANTS:
@@ -279,7 +291,7 @@ def main():
     copy_tree(repo, tree)
     print(f"mutation-score: {len(chosen)} mutants on a copy in {tree}", flush=True)
     # The unmutated copy must pass, or every mutant would look caught.
-    verdict, by = judge("baseline", tree, logs)
+    verdict, by = judge("baseline", tree, logs, a.unit_timeout)
     if verdict != "MISSED":
         print(f"mutation-score: the copy without a mutant does not pass: {verdict.lower()}, {by} (logs {logs}/baseline-*)",
               file=sys.stderr)
@@ -292,7 +304,7 @@ def main():
         open(f, "w").write(original.replace(text, replacement, 1))
         try:
             for attempt in range(1 + a.retries):
-                verdict, by = judge(mid, tree, logs)
+                verdict, by = judge(mid, tree, logs, a.unit_timeout)
                 if verdict != "INCONCLUSIVE":
                     break
                 if attempt < a.retries:

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.List;
@@ -81,21 +82,34 @@ class MutationScoreScriptTest {
         assertTrue(r.out.contains("mutation score: 1 of 1 caught (100%), 0 inconclusive (not scored)\n"), r.out);
     }
 
+    @Test
+    void unitTestsKilledAfterTheirTimeoutAreInconclusiveUnlessACheckCatchesTheMutant() throws Exception {
+        // a hang was counted caught: the tests of a loaded VM past the timeout scored as a bug found
+        Run r = score("none", "--unit-timeout", "1");
+        assertEquals(1, r.exit, r.out);
+        assertTrue(r.out.contains("gate-ended-early                   INCONCLUSIVE unit tests killed after 1 s, verify passes"), r.out);
+        Files.delete(dir.resolve("work/calls"));
+        r = score("violation", "--unit-timeout", "1");
+        assertEquals(0, r.exit, r.out);
+        assertTrue(r.out.contains("caught       verify: mission-skip (violation); unit tests killed after 1 s"), r.out);
+    }
+
     private record Run(int exit, String out) {
     }
 
     /**
      * The score of mutant gate-ended-early on a tree holding only JobGate.java: Maven's tests pass,
      * and verify passes without the mutant and fails mission-skip with it, once per call with
-     * each of {@code failures} in turn (verify's failure field).
+     * each of {@code failures} in turn (verify's failure field; "none" passes). With
+     * {@code --unit-timeout}, Maven's tests hang on the mutant.
      */
     private Run score(String failures, String... args) throws Exception {
         Path tree = dir.resolve("tree");
         String gate = "scj-mission/src/main/java/org/jmclbench/scj/JobGate.java";
         Files.createDirectories(tree.resolve(gate).getParent());
-        Files.copy(SCRIPT.getParent().getParent().resolve(gate), tree.resolve(gate));
+        Files.copy(SCRIPT.getParent().getParent().resolve(gate), tree.resolve(gate), StandardCopyOption.REPLACE_EXISTING);
         Files.createDirectories(tree.resolve("verification"));
-        Files.copy(SCRIPT, tree.resolve("verification/mutation-score.py"));
+        Files.copy(SCRIPT, tree.resolve("verification/mutation-score.py"), StandardCopyOption.REPLACE_EXISTING);
         Path verify = tree.resolve("jmclbench");
         // verify's table line and, with --out, its results file
         Files.writeString(verify, """
@@ -103,6 +117,7 @@ class MutationScoreScriptTest {
                 grep -q 'ended == events - 1' %s || exit 0
                 echo x >> ../calls
                 failure=$(echo "%s" | cut -d, -f$(wc -l < ../calls))
+                [ "$failure" != none ] || exit 0
                 while [ $# -gt 0 ]; do [ "$1" = --out ] && out=$2; shift; done
                 echo "mission-skip                       P1 ended  skip      FAILS          0    120.0"
                 [ -z "$out" ] || printf '{"checks": [{"id": "mission-skip", "passed": false, "failure": "%%s"}]}' \
@@ -110,7 +125,8 @@ class MutationScoreScriptTest {
                 exit 1
                 """.formatted(gate, failures));
         Path bin = Files.createDirectories(dir.resolve("bin"));
-        Files.writeString(bin.resolve("mvn"), "#!/bin/sh\nexit 0\n");
+        Files.writeString(bin.resolve("mvn"), "#!/bin/sh\n" + (List.of(args).contains("--unit-timeout")
+                ? "! grep -q 'ended == events - 1' " + gate + " || sleep 60\n" : "") + "exit 0\n");
         for (Path f : List.of(verify, bin.resolve("mvn"))) {
             Files.setPosixFilePermissions(f, PosixFilePermissions.fromString("rwxr-xr-x"));
         }

@@ -30,6 +30,8 @@ class MutationScoreScriptTest {
         // argparse printed its usage line first
         assertBad("mutation-score: unrecognized arguments: --bogus", "--bogus");
         assertBad("mutation-score: argument --only: expected one argument", "--only");
+        assertBad("mutation-score: --retries: -1 is below 0", "--retries", "-1");
+        assertBad("mutation-score: --unit-timeout: 0 is below 1", "--unit-timeout", "0");
     }
 
     @Test

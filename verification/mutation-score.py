@@ -1,23 +1,30 @@
 #!/usr/bin/env python3
 """The mutation score of the SCJ mission's checks: how many realistic bugs they catch.
 
-    verification/mutation-score.py [--only ID,...] [--work DIR] [--list] [--check]
+    verification/mutation-score.py [--only ID,...] [--work DIR] [--retries N] [--unit-timeout S] [--list] [--check]
 
 Copies the tree (the files git knows, as they are now) to a work folder, never touching the
 tree itself, and for each mutant of the catalogue below: writes the bug into the copy, runs the
 unit tests of the modules the mission is made of (core-immortal, rtsj-compat, scj-mission) and,
-when they pass, `./jmclbench verify` on the checks of the real mission (the toy program's checks
-never run shipped code), stopping at the first failing check; then puts the file back. A mutant
-is caught when the unit tests or a check fail, missed when everything passes. Prints a row per
-mutant and the score, and writes them to verification/target/mutation-score.md in the copy's
-source tree (the table for a closing note). Needs what verify needs (JPF_CORE_SRC, Maven's
-cache warm: it runs Maven offline). About an hour on a 2-core VM: a benchmark script, not CI.
+when they pass (or are killed after their timeout), `./jmclbench verify` on the checks of the real mission (the toy program's checks
+never run shipped code), stopping at the first failing check; then puts the file back (first of
+all the copy without a mutant, which must pass both, or every mutant would look caught). A mutant
+is caught when a unit test fails or a check fails by what it checks (verify's results file says
+why each check failed: a property violated, a vacuous search, a search limit, a JPF crash), missed
+when everything passes, and inconclusive when the run was cut short: the unit tests or verify
+killed after their timeout, or the failing check over its wall-clock budget (on a loaded VM that
+is load, not a bug found). Inconclusive mutants are not scored; `--retries N` runs each again up
+to N times, and any left make the exit status 1. Prints a row per mutant and the score, and
+writes them to verification/target/mutation-score.md in the copy's source tree. Needs what
+verify needs (JPF_CORE_SRC, Maven's cache warm: it runs Maven offline). About an hour on a
+2-core VM: a benchmark script, not CI.
 
 Each mutant is a bug a developer could write in the shipped code: one exact text (it must
 occur exactly once in its file, else the catalogue is stale and the script stops with exit 2;
 `--check` checks only that, and MutationScoreScriptTest runs it) and its replacement.
 """
 import argparse
+import json
 import os
 import re
 import shutil
@@ -137,7 +144,7 @@ VERIFY_ONLY = "P2-static,P6-static,P4-static,mission-"
 UNIT_MODULES = "core-immortal,rtsj-compat,scj-mission"
 
 
-# A mutant that makes a test or a check hang is caught (the suite does not pass), after this long.
+# A run killed after this long is inconclusive: a mutant that hangs, or a machine too loaded to tell.
 UNIT_TIMEOUT_S = 180
 VERIFY_TIMEOUT_S = 900
 HUNG = -9
@@ -167,6 +174,56 @@ def copy_tree(src, dst):
             shutil.copy(os.path.join(src, f), target)  # a new mtime: Maven recompiles what changed
 
 
+def judge(mid, tree, logs, unit_timeout):
+    """(verdict, by) of the mutant now written in tree: caught, MISSED, INCONCLUSIVE, INVALID or ERROR."""
+    unit_log = os.path.join(logs, mid + "-unit.log")
+    rc = run(["mvn", "-o", "-q", "-B", "-pl", UNIT_MODULES, "test"], tree, unit_log, unit_timeout)
+    unit_hung = rc == HUNG
+    if rc != 0 and not unit_hung and "COMPILATION ERROR" in open(unit_log).read():
+        return "INVALID", "does not compile"
+    if rc != 0 and not unit_hung:
+        failed = sorted(set(re.findall(r"\[ERROR\]\s+(?:\x1b\[[0-9;]*m)*(\w+Test)\.", open(unit_log).read())))
+        return "caught", "unit tests: " + (", ".join(failed[:3]) or "failed")
+    verify_log = os.path.join(logs, mid + "-verify.log")
+    results = os.path.join(logs, mid + "-verify.json")
+    if os.path.exists(results):
+        os.remove(results)  # a file left by an earlier run must not be read as this one's
+    rc = run(["./jmclbench", "verify", "--only", VERIFY_ONLY, "--fail-fast", "--out", results,
+              "--logs", os.path.join(logs, mid + "-jpf")], tree, verify_log, VERIFY_TIMEOUT_S)
+    # Unit tests killed after their timeout say nothing (a mutant that hangs them, or load); a check
+    # that fails by what it checks still catches the mutant.
+    hung = f"unit tests killed after {unit_timeout} s" if unit_hung else None
+    if rc == HUNG:
+        verdict, by = "INCONCLUSIVE", f"verify: killed after {VERIFY_TIMEOUT_S} s"
+    elif rc == 0:
+        verdict, by = "MISSED", "-"
+    else:
+        verdict, by = verify_verdict(results, rc, verify_log)
+    if hung and verdict == "MISSED":
+        return "INCONCLUSIVE", hung + ", verify passes"
+    if hung:
+        return verdict, f"{by}; {hung}"
+    return verdict, by
+
+
+def verify_verdict(results, rc, verify_log):
+    """(verdict, by) of a verify that failed, from its results file: each failing check's failure field."""
+    try:
+        checks = json.load(open(results))["checks"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return "ERROR", f"verify exit {rc}, no results file (log {verify_log})"
+    failing = [c for c in checks if not c.get("passed")]
+    if not failing:
+        return "ERROR", f"verify exit {rc}, every check passed (log {verify_log})"
+    first = failing[0]  # --fail-fast: the only one
+    why = first.get("failure")
+    if why == "over-budget":
+        return "INCONCLUSIVE", f"verify: {first['id']} over its budget"
+    if why is None:
+        return "ERROR", f"verify: {first['id']} failed with no failure reason (log {verify_log})"
+    return "caught", f"verify: {first['id']} ({why})"
+
+
 class OneLineParser(argparse.ArgumentParser):
     """argparse, with bad usage as one line (argparse prints the usage before it) and exit 2."""
 
@@ -182,10 +239,18 @@ def main():
     p.add_argument("--only", help="comma-separated mutant ids")
     p.add_argument("--work", default=os.path.join(os.environ.get("TMPDIR", "/tmp"), "jmclbench-mutants"),
                    help="the folder of the tree's copy (kept, so later runs build incrementally)")
+    p.add_argument("--retries", type=int, default=0, metavar="N",
+                   help="run an inconclusive mutant (killed after its timeout, a check over its budget) up to N more times")
+    p.add_argument("--unit-timeout", type=int, default=UNIT_TIMEOUT_S, metavar="S",
+                   help=f"kill the unit tests after S seconds (default {UNIT_TIMEOUT_S}; they take about 25 s)")
     p.add_argument("--list", action="store_true", help="list the catalogue and exit")
     p.add_argument("--check", action="store_true",
                    help="check that every mutant's text occurs once in the sources (the catalogue is not stale) and exit")
     a = p.parse_args()
+    if a.retries < 0:
+        p.error(f"--retries: {a.retries} is below 0")
+    if a.unit_timeout < 1:
+        p.error(f"--unit-timeout: {a.unit_timeout} is below 1")
     ids = [m[0] for m in MUTANTS]
     if a.list:
         for m in MUTANTS:
@@ -226,9 +291,10 @@ def main():
     copy_tree(repo, tree)
     print(f"mutation-score: {len(chosen)} mutants on a copy in {tree}", flush=True)
     # The unmutated copy must pass, or every mutant would look caught.
-    if run(["mvn", "-o", "-q", "-B", "-pl", UNIT_MODULES, "test"], tree, os.path.join(logs, "baseline-unit.log"),
-           UNIT_TIMEOUT_S) != 0:
-        print(f"mutation-score: the unit tests fail without a mutant (log {logs}/baseline-unit.log)", file=sys.stderr)
+    verdict, by = judge("baseline", tree, logs, a.unit_timeout)
+    if verdict != "MISSED":
+        print(f"mutation-score: the copy without a mutant does not pass: {verdict.lower()}, {by} (logs {logs}/baseline-*)",
+              file=sys.stderr)
         return 1
     rows = []
     for mid, path, text, replacement, why in chosen:
@@ -237,38 +303,26 @@ def main():
         original = open(f).read()
         open(f, "w").write(original.replace(text, replacement, 1))
         try:
-            unit_log = os.path.join(logs, mid + "-unit.log")
-            rc = run(["mvn", "-o", "-q", "-B", "-pl", UNIT_MODULES, "test"], tree, unit_log, UNIT_TIMEOUT_S)
-            if rc == HUNG:
-                verdict, by = "caught", f"unit tests: hung (killed after {UNIT_TIMEOUT_S} s)"
-            elif rc != 0 and "COMPILATION ERROR" in open(unit_log).read():
-                verdict, by = "INVALID", "does not compile"
-            elif rc != 0:
-                failed = sorted(set(re.findall(r"\[ERROR\]\s+(?:\x1b\[[0-9;]*m)*(\w+Test)\.", open(unit_log).read())))
-                verdict, by = "caught", "unit tests: " + (", ".join(failed[:3]) or "failed")
-            else:
-                verify_log = os.path.join(logs, mid + "-verify.log")
-                rc = run(["./jmclbench", "verify", "--only", VERIFY_ONLY, "--fail-fast",
-                          "--logs", os.path.join(logs, mid + "-jpf")], tree, verify_log, VERIFY_TIMEOUT_S)
-                failing = [l.split()[0] for l in open(verify_log) if re.search(r"\b(FAILS|MISSED)\b", l)]
-                if rc == HUNG:
-                    verdict, by = "caught", f"verify: hung (killed after {VERIFY_TIMEOUT_S} s)"
-                elif rc == 0:
-                    verdict, by = "MISSED", "-"
-                elif failing:
-                    verdict, by = "caught", "verify: " + failing[0]
-                else:
-                    verdict, by = "ERROR", f"verify exit {rc} (log {verify_log})"
+            for attempt in range(1 + a.retries):
+                verdict, by = judge(mid, tree, logs, a.unit_timeout)
+                if verdict != "INCONCLUSIVE":
+                    break
+                if attempt < a.retries:
+                    print(f"{mid:34} inconclusive ({by}), again", flush=True)
         finally:
             open(f, "w").write(original)
         secs = time.time() - t0
         rows.append((mid, verdict, by, secs, why))
-        print(f"{mid:34} {verdict:8} {by:48} {secs:6.0f} s", flush=True)
+        print(f"{mid:34} {verdict:12} {by:48} {secs:6.0f} s", flush=True)
 
     scored = [r for r in rows if r[1] in ("caught", "MISSED")]
     caught = sum(1 for r in scored if r[1] == "caught")
+    inconclusive = [r[0] for r in rows if r[1] == "INCONCLUSIVE"]
     score = f"{caught} of {len(scored)} caught ({100.0 * caught / max(1, len(scored)):.0f}%)"
+    score += f", {len(inconclusive)} inconclusive (not scored)"
     print("mutation score: " + score)
+    if inconclusive:
+        print(f"inconclusive: {len(inconclusive)}, run them again: --only {','.join(inconclusive)}")
     out = os.path.join(tree, "verification", "target", "mutation-score.md")
     os.makedirs(os.path.dirname(out), exist_ok=True)
     with open(out, "w") as md:

@@ -80,6 +80,52 @@ class RobotTest {
         return bits;
     }
 
+    /**
+     * Every predict and update job works holding the robot's monitor: under terminate a job
+     * admitted while the previous one polls towards its abort, and under queue the two tasks'
+     * handlers, reach the one localizer at once, and only the monitor makes them take turns. The
+     * JPF searches do not see a job without it: their checked robot takes the monitor itself
+     * around the shipped job (the mutation score's robot-predict-unsynchronised went unnoticed).
+     */
+    @Test
+    void everyJobWorksHoldingTheRobotsMonitor() {
+        MissionConfiguration c = new MissionConfiguration(MclConfig.builder().particles(PARTICLES).pollInterval(POLL)
+                .covariance(true).build(), OverrunPolicy.TERMINATE, 1.0);
+        ImmortalEntry entry = new ImmortalEntry(new SyntheticInput(1.0), c);
+        Robot robot = c.newRobot(c.newLocalizer(entry.playground, entry.startX, entry.startY, entry.startTheta), entry);
+        Timeline t = entry.timeline;
+        boolean[] tasks = new boolean[2];
+        for (int k = 0; k < t.size(); k++) {
+            MonitorAtPoll poll = new MonitorAtPoll(robot);
+            assertTrue(run(robot, t, k, poll));
+            assertTrue(poll.polls > 0, "event " + k + ": the job never polled");
+            assertEquals(0, poll.unheld, (t.task(k) == Timeline.PREDICT ? "predict" : "update") + " job of event " + k
+                    + " polled without the robot's monitor");
+            tasks[t.task(k) == Timeline.PREDICT ? 0 : 1] = true;
+        }
+        assertTrue(tasks[0] && tasks[1], "the input has no event of one task");
+    }
+
+    /** Never aborts; counts the polls made without the robot's monitor held. */
+    private static final class MonitorAtPoll implements AbortSignal {
+        private final Robot robot;
+        private int polls;
+        private int unheld;
+
+        MonitorAtPoll(Robot robot) {
+            this.robot = robot;
+        }
+
+        @Override
+        public boolean abortRequested() {
+            polls++;
+            if (!Thread.holdsLock(robot)) {
+                unheld++;
+            }
+            return false;
+        }
+    }
+
     private static boolean run(Robot robot, Timeline t, int k, AbortSignal abort) {
         return t.task(k) == Timeline.PREDICT ? robot.predict(k, abort) : robot.update(k, abort);
     }

@@ -200,6 +200,7 @@ public final class VerifyMain {
                 }
                 Map<String, Object> row = row(catalog.name(), s.id(), s.propertyText(), List.of(s.property()), "-", "static", verdict, met,
                         !s.expected().isEmpty(), secs);
+                row.put("failure", met ? null : s.expected().isEmpty() ? "violation" : "missed");
                 row.put("violations", found.stream().map(Violation::toString).toList());
                 rows.add(row);
             }
@@ -224,6 +225,7 @@ public final class VerifyMain {
                 Map<String, Object> row = row(catalog.name(), c.id(), c.propertyText(), c.properties(), c.policy(), "jpf", verdict,
                         r.passed(), c.seeded(), r.seconds());
                 row.put("detail", r.verdict());
+                row.put("failure", r.failure() == null ? null : r.failure().key());
                 row.put("scope", c.scope());
                 row.put("states", r.newStates());
                 row.put("endStates", r.endStates());

@@ -75,6 +75,21 @@ class LikelihoodTest {
         }
     }
 
+    /**
+     * The weights become a distribution. Weights scaled by any other factor keep their ratios, and
+     * the mission's tests compare its estimates with the ideal runs' of this same code, so a
+     * wrong factor passed them all (the mutation score's weights-not-normalised).
+     */
+    @Test
+    void normaliseDividesEveryWeightByTheTotal() {
+        double[] w = {1.0, 2.0, 3.0, 4.0, 5.0};
+        assertTrue(Likelihood.normalise(w, 4, 10.0, AbortSignal.NEVER, 1));
+        double[] expected = {0.1, 0.2, 0.3, 0.4, 5.0}; // the fifth is past n: untouched
+        for (int i = 0; i < w.length; i++) {
+            assertEquals(expected[i], w[i], 1e-15, "weight " + i);
+        }
+    }
+
     @Test
     void heaviestIsTheFirstLargestWeight() {
         double[] w = {0.1, 0.3, 0.2, 0.3, 0.1};

@@ -168,18 +168,23 @@ public final class JpfRunner {
         }
         String verdict;
         boolean passed = false;
+        JpfResult.Failure failure;
         if (!finished) {
             verdict = "FAILED: over the " + timeoutSeconds * check.budgetFactor() + " s budget";
+            failure = JpfResult.Failure.OVER_BUDGET;
         } else if (!"true".equals(v.getProperty("done"))) {
             verdict = "FAILED: JPF ended (exit " + exit + ") without a verdict: " + tail(log);
+            failure = JpfResult.Failure.NO_VERDICT;
         } else if (v.getProperty("constraint") != null) {
             verdict = "FAILED: search limit hit (" + v.getProperty("constraint") + "), the state space was not covered";
+            failure = JpfResult.Failure.SEARCH_LIMIT;
         } else if (check.expect().mustHold()) {
             Set<String> missing = new TreeSet<>(check.expect().coverage());
             missing.removeAll(List.of(v.getProperty("reached", "").split(",")));
             passed = n == 0 && missing.isEmpty();
             verdict = n > 0 ? "VIOLATED: " + shorten(errors.get(0))
                     : passed ? "holds" : "FAILED: vacuous, no path reached " + String.join(", ", missing);
+            failure = passed ? null : n > 0 ? JpfResult.Failure.VIOLATION : JpfResult.Failure.VACUOUS;
         } else {
             JpfCheck.Expectation x = check.expect();
             String violates = v.getProperty("error.0.violates", "");
@@ -189,9 +194,10 @@ public final class JpfRunner {
                     : n == 0 ? "MISSED: the seeded bug went unreported"
                     : "MISSED: expected " + x.describe() + ", got " + (violates.isEmpty() ? "" : violates + " at ")
                             + String.join(" and ", at) + ": " + shorten(errors.get(0));
+            failure = passed ? null : n == 0 ? JpfResult.Failure.MISSED : JpfResult.Failure.VIOLATION;
         }
         return new JpfResult(check, passed, verdict, errors, newStates, endStates, maxDepth, insns, seconds,
-                log.toString());
+                log.toString(), failure);
     }
 
     private static long longOf(Properties p, String key) {

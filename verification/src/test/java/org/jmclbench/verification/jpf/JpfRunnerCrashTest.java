@@ -39,6 +39,7 @@ class JpfRunnerCrashTest {
 
         assertFalse(r.passed());
         assertTrue(r.verdict().startsWith("FAILED: JPF ended (exit 134) without a verdict"), r.verdict());
+        assertEquals(JpfResult.Failure.NO_VERDICT, r.failure(), "a crash is a failure of the check, not a run cut short");
         assertEquals("# internal error\n", Files.readString(logs.resolve("crash-check.hs_err_pid4242.log")));
     }
 
@@ -52,7 +53,10 @@ class JpfRunnerCrashTest {
         JpfCheck check = new JpfCheck("slow-check", Set.of(Property.P1), "-", "some.Main", List.of(), Map.of(),
                 JpfCheck.Expectation.holds(), "-");
 
-        assertEquals("FAILED: over the 1 s budget", runner.run(check).verdict(), "stopped at the run's budget");
+        JpfResult over = runner.run(check);
+        assertEquals("FAILED: over the 1 s budget", over.verdict(), "stopped at the run's budget");
+        // what the mutation score reads to call a mutant inconclusive, not caught
+        assertEquals(JpfResult.Failure.OVER_BUDGET, over.failure());
         // given 5 times the budget it runs to its end (here: no verdict, a failure of another kind)
         assertTrue(runner.run(check.withBudgetFactor(5)).verdict().startsWith("FAILED: JPF ended (exit 0) without a verdict"));
     }

@@ -100,7 +100,7 @@ public final class SeededCatalog implements CheckCatalog {
                                 alloc + "$Mode:values", alloc + "$Table:<clinit>")),
                 new StaticCheck("static-seeded-guarded", Property.P2, StaticCheck.Kind.GUARDED,
                         n -> n.equals(internal(GuardedCounter.class.getName())), n -> false, n -> false,
-                        Set.of(GuardedCounter.class.getName() + ":offer")),
+                        Set.of(GuardedCounter.class.getName() + ":offer", GuardedCounter.class.getName() + ":recordLater")),
                 new StaticCheck("static-seeded-abort-poll", Property.P4, StaticCheck.Kind.ABORT_POLL,
                         n -> n.equals(internal(poll)), n -> false, n -> false, Set.of(poll + ":update", poll + ":siblings", poll + ":wide",
                                 poll + ":sparse", poll + ":normalise", poll + ":walk")));

@@ -130,11 +130,15 @@
           ((a.metrics.LATENCY_MEAN.mean || Infinity) - (b.metrics.LATENCY_MEAN.mean || Infinity));
       });
       var j = javas[0];
+      // a tie at the lowest is said as one: the latency only chose among the tied, it ranks nothing
+      var tied = javas.filter(function (c) { return c !== j && c.metrics.MISS_COUNT.mean === j.metrics.MISS_COUNT.mean; }).length;
+      var who = tied === 0 ? ', the chosen Java runtime with the lowest mean ' + jobs + ', '
+        : ', of the ' + (tied + 1) + ' chosen Java runtimes tied at the lowest mean ' + jobs + ' the one with the lowest mean task latency, ';
       nat = nativeFor(j, withMiss);
       var lr = ratio(j.metrics.LATENCY_MEAN.mean, nat.metrics.LATENCY_MEAN.mean);
       var mr = ratio(j.metrics.MISS_COUNT.mean, nat.metrics.MISS_COUNT.mean);
       // fewer dropped jobs can come from later releases (a dispatcher that waits for the job), so the jitter stands beside them
-      p.textContent = 'Java vs C: ' + j.config + ', the chosen Java runtime with the lowest mean ' + jobs + ', has a mean task latency ' + lr + ' that of ' +
+      p.textContent = 'Java vs C: ' + j.config + who + 'has a mean task latency ' + lr + ' that of ' +
         nat.config + ' (' + fmt(j.metrics.LATENCY_MEAN.mean) + ' vs ' + fmt(nat.metrics.LATENCY_MEAN.mean) + ' ms), a release jitter p99 of ' +
         fmt(j.metrics.JITTER_P99.mean) + ' vs ' + fmt(nat.metrics.JITTER_P99.mean) + ' ms, and ' +
         fmt(j.metrics.MISS_COUNT.mean) + ' vs ' + fmt(nat.metrics.MISS_COUNT.mean) + ' ' + jobs + ' per run (' + mr + ').';

@@ -422,6 +422,29 @@ class ReportBrowserTest {
     }
 
     @Test
+    void javaRuntimesTiedAtTheLowestAreSaidToBeTiedInTheJavaVsCSentence() throws Exception {
+        // three JVMs of one speed drop alike: the sentence named one as "the ... with the lowest mean", a ranking the data lack
+        List<FixtureDb.Config> configs = List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("temurin-25", "g1", "25+36", 1.0, "ok"),
+                new FixtureDb.Config("temurin-21", "g1", "21.0.8", 1.0, "ok"),
+                new FixtureDb.Config("temurin-17", "g1", "17.0.15", 1.0, "ok"));
+        try {
+            openSkipReport("tied", configs, 400, 3);
+            String ratio = driver.findElement(By.id("headline-ratio")).getText();
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("^Java vs C: (\\S+), of the (\\d+) chosen Java runtimes tied at"
+                    + " the lowest mean dropped jobs the one with the lowest mean task latency, has a mean task latency ").matcher(ratio);
+            assertTrue(m.find() && Integer.parseInt(m.group(2)) >= 2, ratio);
+            String named = m.group(1);
+            long tied = configs.stream().map(c -> c.runtime() + "/g1").filter(c -> !c.startsWith("native"))
+                    .filter(c -> cell(c, "miss").split(" ")[0].equals(cell(named, "miss").split(" ")[0])).count();
+            assertEquals(Integer.parseInt(m.group(2)), tied, "the tied are those of the named one's dropped jobs: " + ratio);
+        } finally {
+            driver.get(mixedPage);
+            waitForRender(0);
+        }
+    }
+
+    @Test
     void aRowAtAnotherTimeScaleIsComparedWithTheCAtItsTimeScale() throws Exception {
         FixtureDb f = new FixtureDb();
         f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),

@@ -147,6 +147,11 @@ public record ChartSpec(String id, String stem, Setting setting, String title, K
         return new ChartSpec(id, stem, setting, title, kind, horizontal, x, y, categories, newSeries, bands, frame, valueLabels);
     }
 
+    /** The same chart under another title (what it lacks, said). */
+    ChartSpec withTitle(String newTitle) {
+        return new ChartSpec(id, stem, setting, newTitle, kind, horizontal, x, y, categories, series, bands, frame, valueLabels);
+    }
+
     /** The same chart under another file name (the evaluation's figures). */
     public ChartSpec withStem(String newStem) {
         return new ChartSpec(id, newStem, setting, title, kind, horizontal, x, y, categories, series, bands, frame, valueLabels);

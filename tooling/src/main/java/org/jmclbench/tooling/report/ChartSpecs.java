@@ -438,6 +438,11 @@ final class ChartSpecs {
                         null, null, null, null));
             }
         }
+        if (series.size() == c.series().size()) {
+            // the caption promises dashed bounds: a chart without them says why
+            return c.withSeries(series).withTitle(c.title() + "; no static bound drawn: " + (s.model().abortBounds == AbortBounds.NONE
+                    ? "no verify results (" + VerificationSection.FILE + ") beside the store" : "verify bounds none of these jobs"));
+        }
         return c.withSeries(series);
     }
 

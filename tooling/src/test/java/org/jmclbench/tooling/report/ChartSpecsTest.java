@@ -93,6 +93,8 @@ class ChartSpecsTest {
         ChartSpec c = chart("abort-latency", "terminate", 1600);
         assertEquals("match-short-terminate-1600-abort-latency", c.stem());
         assertEquals(ChartSpec.Scale.LOG, c.y().scale());
+        // the caption promises verify's bounds dashed: a store without verify's results draws none and says so
+        assertTrue(c.title().endsWith("; no static bound drawn: no verify results (verification.json) beside the store"), c.title());
         assertFalse(c.series().isEmpty());
         for (ChartSpec.Series s : c.series()) {
             ReportModel.Cell cell = cell(s.config(), "terminate", 1600);
@@ -142,6 +144,7 @@ class ChartSpecsTest {
         }
         ChartSpec c = bounded.charts.stream().filter(x -> x.id().equals("abort-latency") && x.setting().policy().equals("terminate")
                 && x.setting().particles() == 1600).findFirst().orElseThrow();
+        assertFalse(c.title().contains("no static bound"), c.title());
         int lines = 0;
         for (ReportModel.Cell cell : bounded.cells) {
             if (!cell.policy.equals("terminate") || cell.particles != 1600 || cell.abortSpectrum.isEmpty()) {

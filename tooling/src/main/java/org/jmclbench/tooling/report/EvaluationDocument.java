@@ -59,7 +59,7 @@ public final class EvaluationDocument extends EvaluationSections {
         d.build();
         Path parent = document.toAbsolutePath().getParent();
         Files.createDirectories(parent);
-        Files.writeString(document, d.text(), StandardCharsets.UTF_8);
+        Files.writeString(document, headingsNamingWhatTheyHave(d.text()), StandardCharsets.UTF_8);
     }
 
     /** A figure of an earlier store (another heaviest count, say) must not stay beside the new document. */

@@ -5,6 +5,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -61,6 +63,29 @@ abstract class EvaluationSections {
     String text() {
         return md.toString();
     }
+
+    /**
+     * The document with each section heading naming only the tables and figures the document has:
+     * a section left without data ("no run under queue") printed "(Table 1, Figure 1)" and neither.
+     */
+    static String headingsNamingWhatTheyHave(String doc) {
+        Matcher m = HEADING_NUMBERS.matcher(doc);
+        StringBuilder out = new StringBuilder();
+        while (m.find()) {
+            List<String> kept = new ArrayList<>();
+            for (String item : m.group(2).split(", ")) {
+                // a table's caption starts its line ("Table 1: ..."), a figure's is set in italics ("*Figure 1: ...")
+                if (doc.contains("\n" + item + ":") || doc.contains("*" + item + ":")) {
+                    kept.add(item);
+                }
+            }
+            m.appendReplacement(out, Matcher.quoteReplacement(m.group(1) + (kept.isEmpty() ? "" : " (" + String.join(", ", kept) + ")")));
+        }
+        m.appendTail(out);
+        return out.toString();
+    }
+
+    private static final Pattern HEADING_NUMBERS = Pattern.compile("(?m)^(### .*?) \\(((?:Table|Figure) [0-9a-z]+(?:, (?:Table|Figure) [0-9a-z]+)*)\\)$");
 
     interface ChartJob {
         void run() throws IOException;

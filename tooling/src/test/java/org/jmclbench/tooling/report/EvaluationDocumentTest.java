@@ -449,6 +449,23 @@ class EvaluationDocumentTest {
     }
 
     @Test
+    void aSectionNamesOnlyTheTablesAndFiguresItHas() throws Exception {
+        // a section with no data printed "(Table 12, Figure 12)" under its heading and neither below it
+        String small = document(ReportFixtures.write(ReportFixtures.engines(), dir, "sections.db"), "sections.db", dir.resolve("sections"));
+        int empty = 0;
+        for (String heading : small.lines().filter(l -> l.startsWith("### ")).toList()) {
+            Matcher m = Pattern.compile("\\((Table [0-9a-z]+)(?:, (Figure [0-9a-z]+))?\\)$").matcher(heading);
+            if (!m.find()) {
+                empty++;
+                continue;
+            }
+            assertTrue(small.contains("\n" + m.group(1) + ":"), heading + ": no " + m.group(1));
+            assertTrue(m.group(2) == null || small.contains("*" + m.group(2) + ":"), heading + ": no " + m.group(2));
+        }
+        assertTrue(empty > 0, "the small store leaves some section without data");
+    }
+
+    @Test
     void figuresOfAnEarlierStoreAreRemoved() throws Exception {
         Path small = ReportFixtures.write(ReportFixtures.engines(), dir, "stale.db");
         Path out = dir.resolve("stale");

@@ -73,7 +73,7 @@
     id: 'jmclbenchBeyond',
     beforeDatasetsDraw: function (chart) {
       var b = chart.options.plugins.jmclbenchBeyond;
-      if (!b) { return; }
+      if (!b || b.from === undefined) { return; } // Chart.js hands a plugin {} for its null options
       var y = chart.scales.y, area = chart.chartArea, ctx = chart.ctx, from = y.getPixelForValue(b.from);
       ctx.save(); ctx.fillStyle = '#eeeeee'; ctx.fillRect(area.left, area.top, area.right - area.left, from - area.top);
       ctx.strokeStyle = '#888'; ctx.lineWidth = 1.2; ctx.setLineDash([6, 4]);

@@ -65,7 +65,7 @@ final class BeyondAxis extends NumberAxis {
     public List<ValueTick> refreshTicks(Graphics2D g2, AxisState state, Rectangle2D dataArea, RectangleEdge edge) {
         List<ValueTick> ticks = new ArrayList<>();
         for (Object t : super.refreshTicks(g2, state, dataArea, edge)) {
-            if (t instanceof ValueTick v && v.getValue() <= band.from()) {
+            if (t instanceof ValueTick v && v.getValue() <= band.from() * (1 + 1e-9)) { // a tick at the break, computed a little above it, is the last number
                 ticks.add(v); // no number inside the band: nothing there is one
             }
         }

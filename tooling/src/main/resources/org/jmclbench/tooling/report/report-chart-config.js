@@ -24,7 +24,7 @@
    */
   function beyond(s, band) {
     s.afterBuildTicks = function (sc) {
-      sc.ticks = sc.ticks.filter(function (t) { return t.value <= band.from; }).concat([{ value: band.at }]);
+      sc.ticks = sc.ticks.filter(function (t) { return t.value <= band.from * (1 + 1e-9); }).concat([{ value: band.at }]);
     };
     s.ticks = { callback: function (v, i, ticks) {
       return v === band.at ? band.tick : Chart.Ticks.formatters.numeric.call(this, v, i, ticks.slice(0, -1));

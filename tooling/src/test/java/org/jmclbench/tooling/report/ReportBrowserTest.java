@@ -628,7 +628,7 @@ class ReportBrowserTest {
                 + " Object.keys(window.jmclbenchCharts).forEach(function (id) {"
                 + "   var c = window.jmclbenchCharts[id], b = c.options.plugins.jmclbenchBeyond, y = c.scales.y;"
                 + "   if (!b || b.from === undefined) { return; }"
-                + "   var over = y.ticks.filter(function (t) { return t.value > b.from; });"
+                + "   var over = y.ticks.filter(function (t) { return t.value > b.from * (1 + 1e-9); });"
                 + "   var marks = c.data.datasets.filter(function (d) { return / \u221e$/.test(d.label); });"
                 + "   out.push(id + ' ticks above the band start ' + over.map(function (t) { return t.value + '=' + t.label; }).join(',')"
                 + "     + ' marks ' + marks.length + ' off the band ' + marks.filter(function (d) {"

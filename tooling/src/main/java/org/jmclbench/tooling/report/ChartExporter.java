@@ -374,6 +374,9 @@ final class ChartExporter {
         floor(plot.getRangeAxis(), spec.y());
         plot.setDomainGridlinePaint(Color.LIGHT_GRAY);
         plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
+        if (spec.y().beyond() != null) {
+            BeyondAxis.shade(plot, spec.y().beyond(), spec.y().max());
+        }
         String bandsOf = spec.bands().stream().map(ChartSpec.Band::config).findFirst().orElse(null);
         for (ChartSpec.Band b : spec.bands()) {
             if (java.util.Objects.equals(b.config(), bandsOf)) { // one run's pauses, as on the page
@@ -485,6 +488,8 @@ final class ChartExporter {
             });
             log.setSmallestValue(a.min() != null ? a.min() : 1e-4);
             out = log;
+        } else if (a.beyond() != null) {
+            return BeyondAxis.of(a);
         } else {
             NumberAxis n = new NumberAxis(a.label());
             n.setAutoRangeIncludesZero(false);

@@ -48,7 +48,8 @@ final class ChartSpecs {
             + "released, per run; mean over repetitions with its 95% interval cut at 0 and 1, on a log particle axis.";
     private static final String RESPONSE_P99 = "The 99th percentile of the response time (end \u2212 release, ms) over every "
             + "released job, a dropped or aborted job counting as +\u221e; mean over repetitions with its 95% interval cut at "
-            + "0. A hollow triangle at the top: the p99 of a repetition fell among the jobs that never completed (+\u221e).";
+            + "0. A hollow triangle in the shaded band above the numbers, at the tick \u221e: the p99 of a repetition fell among "
+            + "the jobs that never completed (+\u221e), which is no height; runtimes there at one count stand side by side.";
 
     /** The page's figures, in page order. */
     static final List<Figure> FIGURES = List.of(

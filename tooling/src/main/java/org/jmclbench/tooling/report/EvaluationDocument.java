@@ -264,8 +264,8 @@ public final class EvaluationDocument extends EvaluationSections {
         }
         for (String task : List.of("predict", "update")) {
             figure("response-p99-" + task + "-skip", "Figure 4" + (task.equals("predict") ? "f" : "g") + ": " + task
-                    + "'s response time p99 over released jobs vs particles, policy skip (a hollow mark at the top: a run "
-                    + "whose top 1% holds a dropped job).", () -> charts.write(TaskCharts.vsParticlesPerTask(scope(null, main), task,
+                    + "'s response time p99 over released jobs vs particles, policy skip (a hollow mark in the band \u221e above "
+                    + "the numbers: a run whose top 1% holds a dropped job, which never completed; no height).", () -> charts.write(TaskCharts.vsParticlesPerTask(scope(null, main), task,
                     TaskMetric.RESPONSE_P99).withStem("response-p99-" + task + "-skip")));
         }
         figure("jitter-p99-skip", "Figure 4h: release jitter p99 vs particles, both tasks, policy skip, 95% CI.",

@@ -65,8 +65,9 @@ final class TaskCharts {
     /**
      * {@code m} of {@code task} (predict, update or all) against the particle count on a log axis,
      * one line per configuration: the mean over repetitions with its 95% interval (cut at zero, a
-     * ratio's also at one). Where a repetition's value is +infinity (a response-time quantile among
-     * dropped jobs) the point is a hollow triangle at the top of the chart.
+     * ratio's also at one). Where the mean is +infinity (a response-time quantile among dropped
+     * jobs: never completed) the point is a hollow triangle in a band above the axis' numbers
+     * ({@link ChartSpec.Beyond}), the marks of several runtimes at one count side by side.
      */
     static ChartSpec vsParticlesPerTask(Scope s, String task, TaskMetric m) {
         return lines(s, perTaskId(m, task), m.label + " vs particles, " + task, m.label + " (" + m.unit + ", mean, 95% CI)",
@@ -114,13 +115,41 @@ final class TaskCharts {
                 missing.add(e.getKey());
             }
         }
-        double mark = top > 0 ? top * 1.08 : 1;
-        infinite.forEach((config, counts) -> series.add(new Series(config + " \u221e", config, s.configs().get(config), s.color(config),
-                Style.marks("triangle", 5, "none"), counts.stream().map(n -> new double[] {n, mark}).toList(), null, null, null,
-                counts.stream().map(n -> config + ": +\u221e at " + n + " particles (among the dropped or aborted jobs)").toList())));
+        Axis y = Axis.linear(yLabel).range(0.0, null);
+        if (!infinite.isEmpty()) {
+            // +infinity is no height: its marks sit in a band above the numbers, named, not at a number past the highest
+            double from = top > 0 ? top * 1.05 : 1;
+            ChartSpec.Beyond band = new ChartSpec.Beyond(from, from * (1 + BAND / 2), ChartSpec.Beyond.TICK, ChartSpec.Beyond.NEVER_COMPLETED);
+            y = y.beyond(band, from * (1 + BAND));
+            Map<Integer, List<String>> atCount = new LinkedHashMap<>(); // per count, the configurations infinite there
+            infinite.forEach((config, counts) -> counts.forEach(n -> atCount.computeIfAbsent(n, k -> new ArrayList<>()).add(config)));
+            infinite.forEach((config, counts) -> series.add(new Series(config + " \u221e", config, s.configs().get(config),
+                    s.color(config), Style.marks("triangle", 5, "none"),
+                    counts.stream().map(n -> new double[] {spread(n, atCount.get(n).indexOf(config), atCount.get(n).size()), band.at()})
+                            .toList(), null, null, null,
+                    counts.stream().map(n -> config + ": +\u221e at " + n + " particles (never completed: among the dropped or aborted jobs)")
+                            .toList())));
+        }
         return s.spec(id, title + without("no value", missing), Kind.LINES, false,
-                new Axis("particles (log)", Scale.LOG, Format.NUMBER, null, null),
-                Axis.linear(yLabel).range(0.0, null), null, series);
+                new Axis("particles (log)", Scale.LOG, Format.NUMBER, null, null), y, null, series);
+    }
+
+    /** The band for +infinity's height, as a fraction of the numbers' range below it. */
+    static final double BAND = 0.25;
+    /** The widest spread of the +infinity marks at one count, as a factor of the count (the particle axis is log). */
+    static final double SPREAD = 1.5;
+
+    /**
+     * Where the {@code k}-th of {@code m} +infinity marks at {@code count} is drawn: side by side,
+     * a few pixels apart on the log axis around the count, so that one runtime's mark does not hide
+     * another's at the one height they share (the note still names the count).
+     */
+    static double spread(int count, int k, int m) {
+        if (m < 2) {
+            return count;
+        }
+        double step = Math.min(1.08, Math.pow(SPREAD, 1.0 / (m - 1)));
+        return count * Math.pow(step, k - (m - 1) / 2.0);
     }
 
     /** The 95% interval of a mean cut at zero (and at one for a ratio); null without one. */

@@ -13,9 +13,22 @@
     if (axis.scale === 'LOG' && axis.max === undefined && axis.format !== 'PERCENTILE') {
       s.afterDataLimits = function (sc) { sc.max = chartText.threeLabelMax(sc.min, sc.max); };
     }
+    if (axis.beyond) { beyond(s, axis.beyond); }
     if (axis.min !== undefined) { s.min = axis.min; }
     if (axis.max !== undefined) { s.max = axis.max; }
     return s;
+  }
+  /**
+   * A band for +infinity on top (ChartSpec.Beyond): no number inside it, one tick reading "\u221e"
+   * where its marks sit (report-plugins.js shades it and draws the break).
+   */
+  function beyond(s, band) {
+    s.afterBuildTicks = function (sc) {
+      sc.ticks = sc.ticks.filter(function (t) { return t.value <= band.from * (1 + 1e-9); }).concat([{ value: band.at }]);
+    };
+    s.ticks = { callback: function (v, i, ticks) {
+      return v === band.at ? band.tick : Chart.Ticks.formatters.numeric.call(this, v, i, ticks.slice(0, -1));
+    } };
   }
   function dataset(spec, s) {
     var st = s.style;
@@ -62,7 +75,7 @@
       plugins: { title: { display: true, text: chartText.titleLines(spec.title) }, legend: { display: !single, position: 'bottom', labels: { boxWidth: 12,
         // marks without lines (the policies' shapes): the legend shows each mark's shape
         usePointStyle: !bars && view.series.length > 0 && view.series.every(function (s) { return !s.style.line; }) } },
-        jmclbenchPauses: view.bands, jmclbenchFrame: spec.frame || null },
+        jmclbenchPauses: view.bands, jmclbenchFrame: spec.frame || null, jmclbenchBeyond: spec.y.beyond || null },
       scales: !bars ? { x: scale(spec.x, false), y: value } : spec.horizontal ? { y: category, x: value } : { x: category, y: value }
     };
     // the vertical axis's title runs along the plot's height: a long one ran off the chart's top

@@ -1,7 +1,7 @@
 /*
  * jmclbench report page: the Chart.js plugins the charts of report.js use, registered once before
  * report.js runs: intervals as error bars, the playground's frame, GC and safepoint pause bands,
- * and a "0" where a log axis cannot draw a bar; and how the charts write their text
+ * the band for +infinity, and a "0" where a log axis cannot draw a bar; and how the charts write their text
  * (window.jmclbenchText): bytes, log-axis tick labels, long titles, a legend per runtime.
  */
 (function () {
@@ -65,6 +65,21 @@
         ctx.fillStyle = b.color;
         ctx.fillRect(a, area.top, Math.max(1, e - a), area.bottom - area.top); // a pause shorter than a pixel still shows
       });
+      ctx.restore();
+    }
+  };
+  // A band for +infinity above the numbers (ChartSpec.Beyond): shaded, named, with a dashed break where the numbers end.
+  var beyond = {
+    id: 'jmclbenchBeyond',
+    beforeDatasetsDraw: function (chart) {
+      var b = chart.options.plugins.jmclbenchBeyond;
+      if (!b || b.from === undefined) { return; } // Chart.js hands a plugin {} for its null options
+      var y = chart.scales.y, area = chart.chartArea, ctx = chart.ctx, from = y.getPixelForValue(b.from);
+      ctx.save(); ctx.fillStyle = '#eeeeee'; ctx.fillRect(area.left, area.top, area.right - area.left, from - area.top);
+      ctx.strokeStyle = '#888'; ctx.lineWidth = 1.2; ctx.setLineDash([6, 4]);
+      ctx.beginPath(); ctx.moveTo(area.left, from); ctx.lineTo(area.right, from); ctx.stroke();
+      ctx.fillStyle = '#444'; ctx.font = '11px sans-serif'; ctx.textAlign = 'left'; ctx.textBaseline = 'top';
+      ctx.fillText(b.label, area.left + 4, area.top + 2);
       ctx.restore();
     }
   };
@@ -178,7 +193,7 @@
   window.jmclbenchText = { bytes: bytes, number: number, interval: interval, tickLabel: tickLabel, threeLabelMax: threeLabelMax,
     titleLines: titleLines, legendPerRuntime: legendPerRuntime };
 
-  Chart.register(errorBars, frame, bands, zeroMarks);
+  Chart.register(errorBars, frame, bands, beyond, zeroMarks);
   Chart.defaults.animation = false;
   Chart.defaults.font.size = 12;
 })();

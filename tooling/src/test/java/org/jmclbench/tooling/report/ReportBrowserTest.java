@@ -620,6 +620,30 @@ class ReportBrowserTest {
     }
 
     @Test
+    void infinityIsATickInABandAboveTheNumbersNotANumber() {
+        // the response-time p99 charts drew +infinity at 1.08x the highest value on a plain linear
+        // axis, where it read as a number (2.25 ms); it now sits in a band whose one tick reads the sign
+        @SuppressWarnings("unchecked")
+        List<Object> checked = (List<Object>) js().executeScript("var out = [];"
+                + " Object.keys(window.jmclbenchCharts).forEach(function (id) {"
+                + "   var c = window.jmclbenchCharts[id], b = c.options.plugins.jmclbenchBeyond, y = c.scales.y;"
+                + "   if (!b || b.from === undefined) { return; }"
+                + "   var over = y.ticks.filter(function (t) { return t.value > b.from * (1 + 1e-9); });"
+                + "   var marks = c.data.datasets.filter(function (d) { return / \u221e$/.test(d.label); });"
+                + "   out.push(id + ' ticks above the band start ' + over.map(function (t) { return t.value + '=' + t.label; }).join(',')"
+                + "     + ' marks ' + marks.length + ' off the band ' + marks.filter(function (d) {"
+                + "       return d.data.some(function (p) { return p.y !== b.at; }); }).length"
+                + "     + ' band above numbers ' + (y.getPixelForValue(b.at) < y.getPixelForValue(b.from) && y.max > b.at));"
+                + " });"
+                + " return out;");
+        assertFalse(checked.isEmpty(), "no chart with +infinity at this setting: the test would prove nothing");
+        for (Object c : checked) {
+            assertTrue(String.valueOf(c).matches(".* ticks above the band start [0-9.e-]+=\u221e marks [1-9]\\d* off the band 0 "
+                    + "band above numbers true"), String.valueOf(c));
+        }
+    }
+
+    @Test
     void aBarOfZeroIsMarkedOnALinearAxisAsOnALogOne() {
         // the evaluation's missCount chart drew nothing for a runtime with no dropped job (400 particles) and
         // nothing for one not run at that count (25600): the zero bars now carry their "0" (jmclbenchZeroMarks)

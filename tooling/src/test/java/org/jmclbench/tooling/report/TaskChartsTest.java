@@ -198,12 +198,19 @@ class TaskChartsTest {
         ChartSpec spec = TaskCharts.vsParticlesPerTask(scope("skip", null), "predict", TaskMetric.RESPONSE_P99);
         double top = spec.series().stream().filter(s -> s.errors() != null).flatMap(s -> s.errors().stream())
                 .mapToDouble(e -> e[1]).max().orElseThrow();
+        ChartSpec.Beyond band = spec.y().beyond();
+        assertTrue(band != null, "the chart has a band for +infinity");
+        assertTrue(band.from() > top && band.at() > band.from() && spec.y().max() > band.at(),
+                "the band lies above every number drawn, its marks inside it, under the axis' top");
+        assertEquals("\u221e", band.tick(), "the band's tick reads infinity, not a number");
+        assertTrue(band.label().contains("never completed"), band.label());
         int marks = 0;
         for (ReportModel.Cell c : scope("skip", null).cells()) {
             double mean = c.metrics.get("predict.RESPONSE_P99").mean();
             if (Double.isInfinite(mean)) {
                 ChartSpec.Series inf = series(spec, c.config + " \u221e");
-                assertTrue(inf.points().stream().anyMatch(p -> p[0] == c.particles && p[1] > top), c.config);
+                assertTrue(inf.points().stream().anyMatch(p -> Math.abs(Math.log(p[0] / c.particles)) < Math.log(TaskCharts.SPREAD)
+                        && p[1] == band.at()), c.config);
                 assertEquals("triangle", inf.style().marker());
                 marks++;
             } else {
@@ -211,6 +218,32 @@ class TaskChartsTest {
             }
         }
         assertTrue(marks > 0);
+    }
+
+    @Test
+    void infiniteMarksOfSeveralRuntimesAtOneCountStandApart() {
+        ChartSpec spec = TaskCharts.vsParticlesPerTask(scope("skip", null), "predict", TaskMetric.RESPONSE_P99);
+        Map<String, List<Double>> xsAtCount = new java.util.TreeMap<>(); // per count (its note names it), the marks' x
+        spec.series().stream().filter(s -> s.name().endsWith(" \u221e")).forEach(s -> {
+            for (int i = 0; i < s.points().size(); i++) {
+                String count = s.notes().get(i).replaceAll(".* at (\\d+) particles.*", "$1");
+                xsAtCount.computeIfAbsent(count, k -> new ArrayList<>()).add(s.points().get(i)[0]);
+            }
+        });
+        assertTrue(xsAtCount.values().stream().anyMatch(xs -> xs.size() > 1), "the fixture has two runtimes infinite at one count");
+        for (List<Double> xs : xsAtCount.values()) {
+            assertEquals(xs.size(), xs.stream().distinct().count(), "no mark drawn on another: " + xs);
+        }
+        assertEquals(1600, TaskCharts.spread(1600, 0, 1), 0);
+        assertEquals(1600 * 1600, TaskCharts.spread(1600, 0, 3) * TaskCharts.spread(1600, 2, 3), 1e-6, "spread evenly around the count");
+        assertTrue(TaskCharts.spread(1600, 9, 10) / TaskCharts.spread(1600, 0, 10) <= TaskCharts.SPREAD + 1e-9, "never far from it");
+    }
+
+    @Test
+    void aChartWithoutInfinityHasNoBand() {
+        ChartSpec spec = TaskCharts.vsParticlesPerTask(scope("skip", null), "predict", TaskMetric.MISS_RATIO);
+        assertNull(spec.y().beyond());
+        assertNull(spec.y().max());
     }
 
     @Test

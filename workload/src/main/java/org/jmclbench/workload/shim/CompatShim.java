@@ -3,9 +3,9 @@ package org.jmclbench.workload.shim;
 import java.util.List;
 
 import org.jmclbench.rtsjcompat.Atc;
-import org.jmclbench.workload.release.ThreadCpuClock;
 import org.jmclbench.rtsjcompat.RtsjRuntime;
 import org.jmclbench.rtsjcompat.ScjLauncher;
+import org.jmclbench.workload.release.ThreadCpuClock;
 
 /**
  * The shim on a JVM: rtsj-compat's runtime (the one class of the javase and rtsj engines that

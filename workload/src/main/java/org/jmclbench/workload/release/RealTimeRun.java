@@ -52,9 +52,7 @@ public final class RealTimeRun {
                 writeNote(gcLog.file(), "# no GC log: " + gcLog.status() + "\n");
             }
             ThreadCpuClock cpuClock = ThreadCpuClock.forRun(options.cpuTime);
-            if (options.cpuTime && !cpuClock.usable()) {
-                err.println("jmclbench: per-job CPU time: " + cpuClock.status() + "; cpu_ns is -1");
-            }
+            cpuClock.warnIfNotUsable(options.cpuTime, err);
             facts.cpuTime = cpuClock.status();
             facts.gcLog = gcLog == null ? null : gcLog.status();
             ReleaseSchedule schedule = ReleaseSchedule.of(timeline, options.timeScale);

@@ -69,9 +69,7 @@ public final class RtsjEngine implements Engine {
         facts.warmupEvents = warmup;
         // probed before any replay, so that the warm-up and class-loading replays read it too
         CpuClock cpuClock = RuntimeShim.get().cpuClock(o.cpuTime);
-        if (o.cpuTime && !cpuClock.usable()) {
-            in.err.println("jmclbench: per-job CPU time: " + cpuClock.status() + "; cpu_ns is -1");
-        }
+        cpuClock.warnIfNotUsable(o.cpuTime, in.err);
         facts.cpuTime = cpuClock.status();
         try {
             if (o.policy == OverrunPolicy.TERMINATE) {

@@ -1,5 +1,7 @@
 package org.jmclbench.workload.shim;
 
+import java.io.PrintStream;
+
 /**
  * The calling thread's CPU time, for the per-job {@code cpu_ns} column: what a run's jobs read
  * before and after each job. On a JVM it is {@code release.ThreadCpuClock} (ThreadMXBean, probed
@@ -18,4 +20,11 @@ public interface CpuClock {
 
     /** How per-job CPU time was obtained, or why it was not (summary.json's {@code engine.cpuTime}). */
     String status();
+
+    /** Says on {@code err} when per-job CPU time was {@code wanted} and this clock cannot give it. */
+    default void warnIfNotUsable(boolean wanted, PrintStream err) {
+        if (wanted && !usable()) {
+            err.println("jmclbench: per-job CPU time: " + status() + "; cpu_ns is -1");
+        }
+    }
 }

@@ -13,14 +13,16 @@ import org.jmclbench.core.timeline.Timeline;
  * <p>Protocol per merged event k: at its release, {@link #admit(int)}, or for the periodic task
  * {@link #admitPeriodic(int, long)} (false: k is skipped); its job polls
  * {@link #abortRequested(int)} and, periodic, also stops at {@link #periodicAbortAtNs(long)};
- * when the job has ended, {@link #release(int)} (periodic: also {@link #periodicEnded(long)});
+ * when the job has ended, {@link #release(int)} (periodic: after {@link #periodicEnded(long)});
  * and exactly once per event, whatever its outcome, {@link #ended()}. Allocation-free; no
  * wait/notify (SCJ Level 1): a job waits for the robot only on the robot's monitor.
  *
- * <p>Events at the same time ({@link #orderTies(Timeline)}) are decided together, in timeline
+ * <p>Events at the same time ({@link #orderTies(Timeline, long[])}) are decided together, in timeline
  * order, at the first of their releases, whichever handler brings it: the periodic handler and the
  * sensor wake in an order of their own, and the other engines' dispatcher decides such events in
- * timeline order before any starts (docs/RELEASE-ENGINE.md, "Events at the same time").
+ * timeline order before any starts (docs/RELEASE-ENGINE.md, "Events at the same time"). Under
+ * skip, the periodic task's previous job overrunning the instant's scheduled release drops the
+ * whole instant whichever handler decides it, also a sensor that arrives after that job ended.
  * Not final: a verification test may replace it (see {@link MissionConfiguration#newGate}).
  */
 public class JobGate {
@@ -37,13 +39,15 @@ public class JobGate {
     private final byte[] decision;
     // the merged timeline, whose events at equal times are decided together; null: each alone
     private Timeline timeline;
+    // each event's scheduled release, ns from the mission start (with the timeline)
+    private long[] releaseNs;
     // skip: the event whose job holds (or, released but not started, has reserved) the robot
     private int owner = FREE;
     // terminate: the latest released event, the only one allowed to run; read by the polls
     private volatile int latest = FREE;
     private int ended;
-    // skip: when the periodic task's previous job ended, ns from the mission start; written and
-    // read by that task's handler only, so it needs no lock
+    // skip: when the periodic task's previous job ended, ns from the mission start; written by
+    // that task's handler before its job frees the robot, read by whichever handler decides an instant
     private long periodicEndNs = Long.MIN_VALUE;
     // terminate: where abort requests are recorded (JobRecords.abortNs); null, not recorded
     private JobRecords records;
@@ -54,9 +58,13 @@ public class JobGate {
         this.decision = new byte[Math.max(0, events)];
     }
 
-    /** Events at equal times in {@code t} (the mission's merged timeline) are decided together, in its order. */
-    public synchronized void orderTies(Timeline t) {
+    /**
+     * Events at equal times in {@code t} (the mission's merged timeline) are decided together, in its
+     * order, as at their scheduled release {@code releaseNs[k]} (ns from the mission start).
+     */
+    public synchronized void orderTies(Timeline t, long[] releaseNs) {
         timeline = t;
+        this.releaseNs = releaseNs;
     }
 
     /** The policy. */
@@ -96,6 +104,11 @@ public class JobGate {
                 }
                 while (last + 1 < timeline.size() && timeline.time(last + 1) == t) {
                     last++;
+                }
+                // The periodic release of this instant, if any, judged as admitPeriodic judges it: the
+                // sensor may decide the instant after the task's overrunning job freed the robot.
+                for (int j = first; j <= last; j++) {
+                    busy |= timeline.task(j) == Timeline.PREDICT && overran(releaseNs[j]);
                 }
             }
             long requestNs = records != null ? records.wakeNs[k] : -1; // the release that decides
@@ -149,10 +162,13 @@ public class JobGate {
      * overran into this release: the robot was busy with it).
      */
     public boolean admitPeriodic(int k, long releaseNs) {
-        if (policy == OverrunPolicy.SKIP && periodicEndNs > releaseNs) {
-            return admitAt(k, true); // decided already (by the sensor at the same time), or dropped
-        }
-        return admit(k);
+        return admitAt(k, overran(releaseNs));
+    }
+
+    /** Skip: the periodic task's previous job ended after {@code releaseNs}, so it held the robot then. */
+    private synchronized boolean overran(long releaseNs) {
+        boolean overran = policy == OverrunPolicy.SKIP && periodicEndNs > releaseNs; // through a local: see admitAt
+        return overran;
     }
 
     /**
@@ -164,8 +180,11 @@ public class JobGate {
         return policy == OverrunPolicy.TERMINATE ? nextReleaseNs : Long.MAX_VALUE;
     }
 
-    /** The periodic task's job ended at {@code endNs} (ns from the mission start), completed or not. */
-    public void periodicEnded(long endNs) {
+    /**
+     * The periodic task's job ended at {@code endNs} (ns from the mission start), completed or not;
+     * called before its {@link #release(int)}, so that no handler sees the robot free without it.
+     */
+    public synchronized void periodicEnded(long endNs) {
         periodicEndNs = endNs;
     }
 

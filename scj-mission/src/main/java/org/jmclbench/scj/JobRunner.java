@@ -101,6 +101,9 @@ final class JobRunner implements AbortSignal {
                 end = nowNs();
             }
         }
+        if (!update) {
+            gate.periodicEnded(end); // before the robot is free: a sensor deciding a tie next sees an overrun
+        }
         gate.release(k);
         if (abortAtNs < end) {
             gate.periodicAbortRequested(k, abortAtNs);

@@ -44,7 +44,7 @@ public class MclMission extends Mission {
         JobGate gate = config.newGate(entry.size());
         MissionOutput output = safelet.output();
         gate.recordAbortsIn(records);
-        gate.orderTies(entry.timeline);
+        gate.orderTies(entry.timeline, entry.releaseNs);
 
         // The sensor stands for an interrupt: above the two tasks, which share one priority.
         int top = PriorityScheduler.instance().getMaxPriority();

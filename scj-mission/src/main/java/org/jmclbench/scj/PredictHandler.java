@@ -43,6 +43,6 @@ public class PredictHandler extends PeriodicEventHandler {
             return;
         }
         long nextReleaseNs = i + 1 < entry.odoEvent.length ? entry.releaseNs[entry.odoEvent[i + 1]] : Long.MAX_VALUE;
-        gate.periodicEnded(runner.run(k, false, gate.periodicAbortAtNs(nextReleaseNs)));
+        runner.run(k, false, gate.periodicAbortAtNs(nextReleaseNs)); // reports its end to the gate
     }
 }

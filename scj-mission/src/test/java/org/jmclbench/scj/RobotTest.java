@@ -4,9 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import javax.realtime.AbsoluteTime;
+
 import org.jmclbench.core.mcl.AbortAt;
 import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.MclConfig;
+import org.jmclbench.core.mcl.Playground;
 import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
@@ -160,6 +163,80 @@ class RobotTest {
         assertTrue(g.admitPeriodic(2, 100), "ended before this release: admitted");
         assertFalse(g.admit(3), "the periodic job holds the robot");
         assertEquals(Long.MAX_VALUE, g.periodicAbortAtNs(150), "skip never aborts");
+    }
+
+    /**
+     * Under skip, an odometry and a laser event at one instant that the predict task's previous job
+     * overran are both dropped, whichever handler decides them: the periodic handler, late behind
+     * its own job, or the sensor arriving after that job freed the robot but before the periodic
+     * handler's next release (the other engines' dispatcher would find the robot busy at that
+     * instant; docs/RELEASE-ENGINE.md, "Events at the same time"). The sensor's decision is taken
+     * inside the gate's release of the robot, the latest point at which a sensor can come first.
+     */
+    @Test
+    void skipDropsATieThePeriodicJobOverranIntoEvenWhenTheSensorDecidesItOnceTheRobotIsFree() {
+        // ms become ns: events 0 (odometry, 1 ns), 1 (odometry, 2 ns) and 2 (laser, 2 ns); any job outlasts 1 ns
+        MissionConfiguration c = new MissionConfiguration(MclConfig.builder().particles(PARTICLES).build(),
+                OverrunPolicy.SKIP, 1e-6);
+        ImmortalEntry entry = new ImmortalEntry(new OdometryWithATie(), c);
+        assertEquals(entry.releaseNs[1], entry.releaseNs[2], "events 1 and 2 are at one instant");
+        SensorOnRobotRelease gate = new SensorOnRobotRelease(entry.size());
+        gate.orderTies(entry.timeline, entry.releaseNs);
+        Robot robot = c.newRobot(c.newLocalizer(entry.playground, entry.startX, entry.startY, entry.startTheta), entry);
+        MissionClock clock = new MissionClock();
+        clock.start(new AbsoluteTime());
+        JobRunner predict = new JobRunner(robot, gate, entry, clock, null, null, MissionSizes.PREDICT);
+        assertTrue(gate.admitPeriodic(0, entry.releaseNs[0]));
+        long end = predict.run(0, false, gate.periodicAbortAtNs(entry.releaseNs[1]));
+        assertTrue(end > entry.releaseNs[1], "the job of event 0 overran the instant of events 1 and 2: " + end);
+        assertEquals(1, gate.sensorDecisions, "the sensor decided while the robot was being freed");
+        assertFalse(gate.sensorAdmitted, "the laser event of the tie was admitted");
+        assertFalse(gate.admitPeriodic(1, entry.releaseNs[1]),
+                "the odometry event of the tie was admitted: the sensor decided it as if the robot had been free then");
+        assertTrue(gate.admit(3), "the robot is free for the next instant");
+    }
+
+    /** Two odometry events 1 ms apart, a laser event with the second, one more laser event after. */
+    private static final class OdometryWithATie extends PlacedMissionInput {
+        OdometryWithATie() {
+            super(2, 2, Playground.thesis(), 1.5, 1.0, 0.0);
+        }
+
+        @Override
+        public void readOdometry(double[] time, double[] dx, double[] dy, double[] dtheta) {
+            for (int i = 0; i < time.length; i++) {
+                time[i] = 0.001 * (i + 1);
+                dx[i] = 0.01;
+                dtheta[i] = 0.01;
+            }
+        }
+
+        @Override
+        public void readLaser(double[] time, double[] angle) {
+            time[0] = 0.002;
+            time[1] = 0.010;
+            angle[0] = 1.0;
+            angle[1] = 1.1;
+        }
+    }
+
+    /** A gate whose robot release of event 0 lets the laser sensor decide event 2 right after it. */
+    private static final class SensorOnRobotRelease extends JobGate {
+        int sensorDecisions;
+        boolean sensorAdmitted;
+
+        SensorOnRobotRelease(int events) {
+            super(OverrunPolicy.SKIP, events);
+        }
+
+        @Override
+        public synchronized void release(int k) {
+            super.release(k);
+            if (k == 0) {
+                sensorDecisions++;
+                sensorAdmitted = admit(2);
+            }
+        }
     }
 
     @Test

@@ -19,7 +19,6 @@ public final class TaskHandler implements Runnable {
     private final String name;
     private final PolicyGate policy;
     private final EventJob job;
-    private final JobRecords records;
     private final JobRecorder recorder;
     private final int[] queue;
     private final JobAbortSignal abortSignal = new JobAbortSignal();
@@ -38,7 +37,6 @@ public final class TaskHandler implements Runnable {
         this.name = name;
         this.policy = policy;
         this.job = job;
-        this.records = records;
         this.recorder = new JobRecorder(records, cpuClock, 0);
         this.queue = new int[capacity + 1];
     }
@@ -101,7 +99,6 @@ public final class TaskHandler implements Runnable {
     }
 
     private void handle() {
-        final JobRecords r = records;
         final JobRecorder recorder = this.recorder;
         while (true) {
             int k = take();
@@ -109,7 +106,7 @@ public final class TaskHandler implements Runnable {
                 return;
             }
             if (!policy.acquire(k)) {
-                r.outcome[k] = JobRecords.TERMINATED; // superseded before it could start
+                recorder.recordNeverStarted(k); // superseded before it could start
                 continue;
             }
             abortSignal.begin(k);

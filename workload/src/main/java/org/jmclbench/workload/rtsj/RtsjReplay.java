@@ -18,6 +18,7 @@ import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.release.EventJob;
+import org.jmclbench.workload.release.JobRecorder;
 import org.jmclbench.workload.release.ReleaseSchedule;
 import org.jmclbench.workload.shim.CpuClock;
 import org.jmclbench.workload.shim.RuntimeShim;
@@ -41,9 +42,10 @@ import org.jmclbench.workload.shim.RuntimeShim;
  * job's end) is measured: for the thesis design, the job's remaining time. Only RTSJ 1.0.2 API and the
  * {@link RuntimeShim} are used: {@code ant rtsj-engine} builds it for an RTSJ VM.
  *
- * <p>A job's CPU time ({@link JobRecords#cpuNs}) is read from the shim's {@link CpuClock} on the
- * handler's thread: once its release is taken (before the doInterruptible under terminate), and
- * again when the job's event is recorded, after the robot is handed on. It so covers the job, its
+ * <p>Each task records its jobs through a {@link JobRecorder}, the javase handlers' recorder, on
+ * the real-time clock. A job's CPU time ({@link JobRecords#cpuNs}) is read from the shim's
+ * {@link CpuClock} on the handler's thread: once its release is taken (before the doInterruptible
+ * under terminate), and again when the job's event is recorded, after the robot is handed on. It so covers the job, its
  * time stamps and the hand-over, the wait for the robot (blocked: no CPU) and, for an aborted job,
  * the AIE's delivery and its unwinding to the doInterruptible's return (the abort taking hold).
  * It is -1 for a job that never started and wherever the clock is not usable (an RTSJ VM, Java
@@ -161,6 +163,9 @@ public final class RtsjReplay {
         thread.setDaemon(true);
         nanoToClock = clockOffset(mainClock);
         t0 = now(mainClock) + LEAD_NS;
+        for (Task task : tasks) {
+            task.recorder.runStart(t0);
+        }
         thread.start();
         thread.join(Math.max(1, (hangNs + LEAD_NS) / 1_000_000L));
         List<String> alive = RuntimeShim.get().endHandlers(10_000);
@@ -299,19 +304,19 @@ public final class RtsjReplay {
         private final String name;
         private final AbsoluteTime clock = new AbsoluteTime();
         private final int[] fifo;
+        /** Records this task's jobs, on the real-time clock from t0; used by the handler's thread only. */
+        final JobRecorder recorder;
         private volatile int head;
         private volatile int tail;
         // The job in progress, written by the handler's thread only.
         private int k;
-        private long start;
-        private long end;
+        private boolean started;
         private boolean committed;
-        /** The handler thread's CPU clock when it took the release, or -1 (no usable clock). */
-        private long cpuStart;
 
         Task(String name, int capacity, int priority) {
             this.name = name;
             fifo = new int[Math.max(1, capacity)];
+            recorder = new JobRecorder(records, cpuClock, 0);
             event.addHandler(new BoundAsyncEventHandler(new PriorityParameters(priority), null, null, null, null,
                     false, this));
         }
@@ -333,9 +338,8 @@ public final class RtsjReplay {
             k = fifo[h % fifo.length];
             head = h + 1;
             records.wakeNs[k] = now(clock) - t0;
-            cpuStart = cpuClock.now(); // out of the AI-enabled code: no AIE can land between it and the job
-            start = -1;
-            end = -1;
+            recorder.startCpu(); // out of the AI-enabled code: no AIE can land between it and the job
+            started = false;
             committed = false;
             try {
                 if (policy == OverrunPolicy.TERMINATE) {
@@ -377,7 +381,8 @@ public final class RtsjReplay {
         private void lockAndRun(AbortSignal signal) {
             try {
                 busy.lock();
-                start = now(clock);
+                recorder.started(now(clock));
+                started = true;
                 if (design == RtsjDesign.THESIS) {
                     synchronized (robot) {
                         runJob(signal);
@@ -386,10 +391,10 @@ public final class RtsjReplay {
                     runJob(signal);
                 }
             } finally {
-                if (!committed && start >= 0) {
+                if (!committed && started) {
                     // an aborted job ends here, before the robot is handed on (the next job's
                     // thread may take the CPU at the unlock), as the other engines take its end
-                    end = now(clock);
+                    recorder.ended(now(clock));
                 }
                 running = -1;
                 if (busy.isHeldByCurrentThread()) {
@@ -404,35 +409,19 @@ public final class RtsjReplay {
         /** The job on the robot; a completed job's end is taken before anything else can happen. */
         private void runJob(AbortSignal signal) {
             if (job.run(k, signal)) {
-                end = now(clock);
+                recorder.ended(now(clock));
                 committed = true;
             }
         }
 
         /** The event's record, from what the job did (an AIE may have cut it short anywhere). */
         private void finish() {
-            long cpuEnd = cpuClock.now(); // the robot is handed on, the AIE (if any) has unwound
-            long now = now(clock);
-            long seen = aie.delivered ? aie.deliveredNanoTime + nanoToClock : -1;
-            JobRecords r = records;
-            if (start < 0) {
-                r.cpuNs[k] = -1;
-                r.startNs[k] = -1;
-                r.endNs[k] = -1;
-                r.outcome[k] = JobRecords.TERMINATED; // superseded before it started
+            if (!started) {
+                recorder.recordNeverStarted(k); // superseded before it started
             } else {
-                r.cpuNs[k] = cpuStart < 0 ? -1 : cpuEnd - cpuStart;
-                long jobEnd = end >= 0 ? end : now;
-                r.startNs[k] = start - t0;
-                r.endNs[k] = jobEnd - t0;
-                if (seen >= 0) {
-                    r.abortSeen(k, seen - t0);
-                }
-                if (!committed) {
-                    r.outcome[k] = JobRecords.TERMINATED;
-                } else {
-                    r.outcome[k] = jobEnd - t0 <= r.deadlineNs[k] ? JobRecords.DONE : JobRecords.LATE;
-                }
+                // The CPU clock's second read is the record's first: the robot is handed on, the
+                // AIE (if any) has unwound. An aborted job's end was taken in lockAndRun.
+                recorder.record(k, committed, aie.delivered ? aie.deliveredNanoTime + nanoToClock : -1);
             }
             aie.reset(); // the next job starts with no delivery noted
             ended();

@@ -63,4 +63,43 @@ class JobRecorderTest {
             assertEquals(-1, r.cpuNs[0], clock.status());
         }
     }
+
+    /**
+     * A thread with its own clock (the rtsj engine's tasks, on RTSJ's real-time clock) gives the
+     * times: stored from the run start on that clock; the CPU time from {@code startCpu} to the
+     * record; a job that never started has no times.
+     */
+    @Test
+    void aCallersClockGivesTheTimesAndTheCpuTimeBeginsAtStartCpu() {
+        ThreadCpuClock clock = ThreadCpuClock.probe();
+        JobRecords r = records();
+        r.deadlineNs[0] = 2_000;
+        r.deadlineNs[1] = 2_000;
+        JobRecorder rec = new JobRecorder(r, clock, 0);
+        rec.runStart(10_000);
+        rec.startCpu();
+        spin(clock, 3_000_000); // before the start: the wait for the robot and the doInterruptible's entry
+        rec.started(11_000);
+        rec.ended(12_000);
+        rec.record(0, true, -1);
+        rec.startCpu();
+        rec.started(11_500);
+        rec.ended(12_500);
+        rec.record(1, false, 12_100);
+        rec.recordNeverStarted(2);
+        assertEquals(1_000, r.startNs[0]);
+        assertEquals(2_000, r.endNs[0]);
+        assertEquals(JobRecords.DONE, r.outcome[0], "ended at its deadline");
+        assertEquals(JobRecords.TERMINATED, r.outcome[1]);
+        assertEquals(2_100, r.abortSeenNs[1]);
+        assertEquals(JobRecords.TERMINATED, r.outcome[2]);
+        assertEquals(-1, r.startNs[2]);
+        assertEquals(-1, r.endNs[2]);
+        assertEquals(-1, r.cpuNs[2]);
+        if (clock.usable()) {
+            assertTrue(r.cpuNs[0] >= 3_000_000, "from startCpu: " + r.cpuNs[0] + " ns");
+        } else {
+            assertEquals(-1, r.cpuNs[0], clock.status());
+        }
+    }
 }

@@ -644,6 +644,33 @@ class ReportBrowserTest {
     }
 
     @Test
+    void aChartWithTheInfinityBandNamesEachRuntimeOnceInItsColour() {
+        // the response-time p99 legends read every runtime twice, "<config>" and "<config> \u221e"; the band's
+        // label says what the marks are, so each runtime is one entry in its one colour, hiding all its series
+        @SuppressWarnings("unchecked")
+        List<Object> checked = (List<Object>) js().executeScript("var out = [];"
+                + " Object.keys(window.jmclbenchCharts).forEach(function (id) {"
+                + "   var c = window.jmclbenchCharts[id], b = c.options.plugins.jmclbenchBeyond;"
+                + "   if (!b || b.from === undefined) { return; }"
+                + "   var configs = [], colour = {};"
+                + "   c.data.datasets.forEach(function (d) {"
+                + "     if (configs.indexOf(d.config) < 0) { configs.push(d.config); colour[d.config] = d.borderColor; } });"
+                + "   var items = c.legend.legendItems, texts = items.map(function (i) { return i.text; });"
+                + "   out.push(id + ' legend [' + texts.join('|') + '] runtimes [' + configs.join('|') + '] off colour '"
+                + "     + items.filter(function (i) { return i.strokeStyle !== colour[i.text]; }).length"
+                + "     + ' marks ' + c.data.datasets.filter(function (d) { return / \u221e$/.test(d.label); }).length);"
+                + " });"
+                + " return out;");
+        assertFalse(checked.isEmpty(), "no chart with +infinity at this setting: the test would prove nothing");
+        for (Object c : checked) {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile(".* legend \\[(.*)\\] runtimes \\[(.*)\\] off colour (\\d+) marks (\\d+)")
+                    .matcher(String.valueOf(c));
+            assertTrue(m.matches() && m.group(1).equals(m.group(2)) && m.group(3).equals("0") && !m.group(4).equals("0"),
+                    String.valueOf(c));
+        }
+    }
+
+    @Test
     void aBarOfZeroIsMarkedOnALinearAxisAsOnALogOne() {
         // the evaluation's missCount chart drew nothing for a runtime with no dropped job (400 particles) and
         // nothing for one not run at that count (25600): the zero bars now carry their "0" (jmclbenchZeroMarks)

@@ -125,6 +125,22 @@ class IndependentAuditTest {
         assertAgrees(audit);
         assertTrue(audit.contains("report: 3 cells checked of 3"), audit);
         assertTrue(audit.matches("(?s).*compare .*: (\\d{2,}) means checked.*"), "compare's table was read: " + audit);
+
+        // three javase runs from a store that kept no runtime version: the report pooled them with the seven on the
+        // version it knows, and the audit, which groups by version, found a cell of ten runs where it had seven; they
+        // are a group of their own ("[version unknown]") in both
+        Path untold = Files.copy(db, db.resolveSibling("untold.db"));
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + untold); Statement s = c.createStatement()) {
+            s.execute("UPDATE runs SET runtime_version = NULL WHERE run_key IN"
+                    + " (SELECT run_key FROM runs WHERE engine = 'javase' ORDER BY run_key LIMIT 3)");
+        }
+        Path untoldReport = dir.resolve("untold-report");
+        assertEquals(0, Fixtures.cli("report", "--db", untold.toString(), "--out", untoldReport.toString(), "--no-export").exitCode());
+        String untoldAudit = python(List.of(PROJECT.resolve("scripts/audit_store.py").toString(), untold.toString(),
+                "--report", untoldReport.resolve("index.html").toString()));
+        assertAgrees(untoldAudit);
+        assertTrue(untoldAudit.contains("report: 3 cells checked of 3"), untoldAudit);
+        assertTrue(Files.readString(untoldReport.resolve("index.html")).contains("/ javase [version unknown]"), "the group is named");
     }
 
     /**

@@ -779,7 +779,7 @@ def run_settings(con):
     """run_key -> (time scale, workload arguments, dataset digest, runtime version, alloc MB/s, alloc MB
     live), read here from the spec_json of the matrix that ran it (the time scale and the alloc rates,
     failing that, from its summary; the rates only under a load that allocates): None where the store
-    does not tell. Two datasets of one label in one matrix are told apart by the path the summary names."""
+    does not tell, a value of its own (the report's "[version unknown]" rows: never pooled with runs that tell it). Two datasets of one label in one matrix are told apart by the path the summary names."""
     specs = {}
     for mid, spec in con.execute("select matrix_id, spec_json from matrices"):
         try:

@@ -453,10 +453,11 @@ class ReportBrowserTest {
         f.particles = List.of(400);
         f.repetitions = 4;
         Path db = ReportFixtures.write(f, ARTIFACTS, "time-scales.db");
-        // repetitions 3 and 4 made again by a matrix at --time-scale 0.5, whose jobs took twice as long
+        // repetitions 3 and 4 made again by a matrix at --time-scale 0.5, whose jobs took twice as long (telling no
+        // workload arguments, as the fixture's first matrix: one that told them would set its runs apart)
         try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + db); var st = c.createStatement()) {
             st.execute("INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --time-scale 0.5', 8,"
-                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5,\"workloadArgs\":[]}')");
+                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5}')");
             st.execute("UPDATE runs SET matrix_id = 'x-2' WHERE repetition > 2");
             st.execute("UPDATE metrics SET value = value * 2 WHERE metric = 'taskLatencyNs'"
                     + " AND run_key IN (SELECT run_key FROM runs WHERE repetition > 2)");

@@ -10,7 +10,7 @@ taskLatency and deviation series. With --report, the page's cells (each Metric a
 aggregate: runs, mean, min, max over the repetitions) and its histogram charts (the latency and
 abort latency spectra, the jitter CDF, the completion curves: each point within HdrHistogram's
 precision of the pooled jobs' exact value), each aggregate's bootstrap interval and each cell's
-missSeparation. With --compare, the A and B means compare printed, their bootstrap intervals, the
+missSeparation. With --evaluation, every Wilson interval of the evaluation document's miss-ratio columns. With --compare, the A and B means compare printed, their bootstrap intervals, the
 ratios B/A and their intervals, the Mann-Whitney p-values and the separation verdicts.
 
 The statistics (docs/REPORT.md "Statistics") are recomputed from their definitions: the Mann-Whitney
@@ -18,8 +18,9 @@ p exactly (the rank-sum distribution counted in integers, or the normal approxim
 it; a bootstrap bound, which the tool draws from its own seeded generator, within a band of this
 script's own resamples (BOOT_K below says why the band is that wide).
 
-usage: python3 scripts/audit_store.py DB [--report DIR/index.html] [--compare OUT]... [--home DIR]
+usage: python3 scripts/audit_store.py DB [--report DIR/index.html [--evaluation EVALUATION.md]] [--compare OUT]... [--home DIR]
   --compare OUT   a file holding `jmclbench compare --db DB --a SPEC --b SPEC`'s output
+  --evaluation F  `jmclbench evaluate --no-run --db DB`'s document: each Wilson interval of its miss ratios
 exit code: 0 every number agrees, 1 some disagree (listed), 2 the store or a file cannot be read
 """
 import base64
@@ -690,6 +691,78 @@ def check_series(con, key, folder, rc, note):
     return checked
 
 
+# --- the evaluation document's Wilson intervals (docs/EVALUATION.md, `jmclbench evaluate`) --------
+WILSON_CELL = re.compile(r"^(%s) \[(%s), (%s)\] %%" % (NUM, NUM, NUM))
+
+
+def table_cells(line):
+    """The cells of a markdown table row as EvaluationSections.table escapes them (a pipe as \\|)."""
+    cells = re.split(r"(?<!\\)\|", line.strip())[1:-1]
+    return [c.strip().replace("\\|", "|").replace("&lt;", "<").replace("&gt;", ">").replace("\\\\", "\\") for c in cells]
+
+
+def miss_counts(rcs, column):
+    """(k, n) behind a miss-ratio column over a cell's runs, from the job lines: a task's deadline misses over
+    its released jobs ("predict/update miss ratio", else both tasks), or a window's missed or late jobs over
+    the jobs released in it ("warm-up", "steady")."""
+    if column.startswith("warm-up") or column.startswith("steady"):
+        w = "WARM" if column.startswith("warm-up") else "STEADY"
+        vs = [warm_values(rc) for rc in rcs]
+        return sum(v[w + "_MISSES"] or 0 for v in vs), sum(v[w + "_RELEASED"] or 0 for v in vs)
+    task = column.split()[0] if column.split()[0] in ("predict", "update") else "all"
+    return (sum(rc["tasks"][task]["deadlineMisses"] for rc in rcs), sum(rc["tasks"][task]["released"] for rc in rcs))
+
+
+def check_evaluation(path, cell_runs, note):
+    """Every Wilson interval of the evaluation document's tables (a "miss ratio" column: "p [low, high] %") against
+    the 95% Wilson score interval of the misses and released jobs recomputed from the cell's runs (the row's
+    configuration, policy and particles, the caption's "at N particles" without that column, the document's
+    dataset without a dataset column, any policy without that column). The intervals checked."""
+    lines = open(path, encoding="utf-8").read().splitlines()
+    main = re.search(r"dataset `([^`]+)`", "\n".join(lines))
+    checked, caption, header = 0, "", None
+    for i, line in enumerate(lines):
+        if re.match(r"Table \d+:", line):
+            caption, header = line, None
+            continue
+        if not line.startswith("|"):
+            header = None
+            continue
+        if header is None:
+            header = table_cells(line)
+            continue
+        if line.startswith("| ---"):
+            continue
+        row = dict(zip(header, table_cells(line)))
+        for column in (h for h in header if "miss ratio" in h):
+            text = row[column]
+            at = re.search(r"at (\d+) particles", caption)
+            where = "evaluation %s line %d: %s %s" % (os.path.basename(path), i + 1, row.get("configuration"), column)
+            try:
+                key = (row.get("dataset") or (main.group(1) if main else None), row.get("policy"),
+                       int(row["particles"]) if "particles" in row else int(at.group(1)), row.get("configuration"))
+            except (AttributeError, ValueError):
+                note("%s: the row names no particle count" % where)
+                continue
+            # a table without a policy column (Table 9) names a cell by the rest, which must then be one
+            found = [k for k in cell_runs if all(want is None or want == got for want, got in zip(key, k))]
+            if len(found) != 1:
+                note("%s: %s report cell %r" % (where, "no" if not found else "more than one", key))
+                continue
+            rcs = cell_runs[found[0]]
+            k, n = miss_counts(rcs, column)
+            checked += 1
+            m = WILSON_CELL.match(text)
+            if n == 0 or not m:
+                if not (n == 0 and text == "n/a"):
+                    note("%s: printed %r, recomputed %d of %d" % (where, text, k, n))
+                continue
+            want = [100 * v for v in wilson(k, n)]
+            if not all(printed_close(t, w) for t, w in zip(m.groups(), want)):
+                note("%s: printed %r, recomputed the Wilson interval of %d of %d: %.4f [%.4f, %.4f] %%" % (where, text, k, n, *want))
+    return checked
+
+
 def cell_key(cell):
     """A report cell's configuration as the runs table spells it (the profile empty when none), with
     the machine label the report appends to its name (" @label") when the store holds several machines,
@@ -706,7 +779,7 @@ def run_settings(con):
     """run_key -> (time scale, workload arguments, dataset digest, runtime version, alloc MB/s, alloc MB
     live), read here from the spec_json of the matrix that ran it (the time scale and the alloc rates,
     failing that, from its summary; the rates only under a load that allocates): None where the store
-    does not tell. Two datasets of one label in one matrix are told apart by the path the summary names."""
+    does not tell, a value of its own (the report's "[version unknown]" rows: never pooled with runs that tell it). Two datasets of one label in one matrix are told apart by the path the summary names."""
     specs = {}
     for mid, spec in con.execute("select matrix_id, spec_json from matrices"):
         try:
@@ -762,25 +835,29 @@ def main(argv):
     try:
         return audit(argv)
     except (OSError, ValueError, KeyError, sqlite3.Error, StopIteration) as e:
-        print("audit_store: %s" % (str(e) or "usage: audit_store.py DB [--report INDEX_HTML] [--compare OUT]... [--home DIR]"),
+        print("audit_store: %s" % (str(e) or "usage: audit_store.py DB [--report INDEX_HTML [--evaluation EVALUATION_MD]] [--compare OUT]... [--home DIR]"),
               file=sys.stderr)
         return 2
 
 
 def audit(argv):
     """Checks the store and the files argv names; the exit code."""
-    db, report, compares, it = None, None, [], iter(argv)
+    db, report, evaluation, compares, it = None, None, None, [], iter(argv)
     for a in it:
         if a == "--compare":
             compares.append(next(it))
         elif a == "--report":
             report = next(it)
+        elif a == "--evaluation":
+            evaluation = next(it)
         elif a == "--home":
             oracle.HOMES.insert(0, next(it))
         else:
             db = a
     if db is None or not os.path.isfile(db):
         raise ValueError("%s: no such results store" % db if db else "")
+    if evaluation and not report:
+        raise ValueError("--evaluation %s: give --report too (the document's rows are the report's cells)" % evaluation)
     base = os.path.dirname(os.path.abspath(db))
     con = sqlite3.connect("file:%s?mode=ro" % db, uri=True)
     runs = con.execute("select run_key, run_dir, summary_json, runtime, profile, engine, memory, policy, particles, "
@@ -919,6 +996,10 @@ def audit(argv):
         pts = check_charts(data, cell_runs, bad.append)
         compared += pts
         print("report: %d chart points checked against the jobs within HdrHistogram precision" % pts)
+        if evaluation:
+            k = check_evaluation(evaluation, cell_runs, bad.append)
+            compared += k
+            print("evaluation: %d Wilson intervals checked" % k)
 
     named = None
     if report:

@@ -316,6 +316,7 @@ final class ChartExporter {
         Map<String, XYSeries> byName = new LinkedHashMap<>();
         List<ChartSpec.Style> styles = new ArrayList<>();
         List<String> colors = new ArrayList<>();
+        List<String> owners = new ArrayList<>(); // per drawn series, its legend entry's name
         for (ChartSpec.Series s : spec.series()) {
             XYSeries xy = byName.get(s.name());
             if (xy == null) {
@@ -323,6 +324,7 @@ final class ChartExporter {
                 byName.put(s.name(), xy);
                 styles.add(s.style());
                 colors.add(s.color());
+                owners.add(spec.legendPerRuntime() && s.config() != null ? s.config() : s.name());
             }
             boolean marksOnly = !s.style().line();
             List<double[]> pts = marksOnly ? thin(s.points(), EXPORT_POINTS) : s.points();
@@ -354,7 +356,9 @@ final class ChartExporter {
             float w = (float) Math.max(st.width(), 1.0);
             r.setSeriesStroke(i, st.dash() == null ? new BasicStroke(w)
                     : new BasicStroke(w, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, st.dash(), 0f));
+            r.setSeriesVisibleInLegend(i, owners.indexOf(owners.get(i)) == i); // a runtime once, by its first series
         }
+        r.setLegendItemLabelGenerator((dataset, series) -> owners.get(series));
         // before the plot: its axes' ranges then include the intervals
         for (ChartSpec.Series s : spec.series()) {
             for (int i = 0; i < s.points().size(); i++) {

@@ -22,10 +22,20 @@ import com.fasterxml.jackson.annotation.JsonInclude;
  * @param bands      shaded intervals of x behind the data (pauses), or empty
  * @param frame      a rectangle from (0, 0) drawn behind the data (the playground), or null
  * @param valueLabels each bar's value written at its end
+ * @param legendPerRuntime the legend names each runtime once, by its runtime's name, in the colour of its
+ *                   first series, and shows or hides all its series: the +infinity marks of a runtime are
+ *                   explained by their band's label, not by an entry of their own
  */
 @JsonInclude(JsonInclude.Include.NON_NULL)
 public record ChartSpec(String id, String stem, Setting setting, String title, Kind kind, boolean horizontal, Axis x, Axis y,
-                        List<Category> categories, List<Series> series, List<Band> bands, Frame frame, boolean valueLabels) {
+                        List<Category> categories, List<Series> series, List<Band> bands, Frame frame, boolean valueLabels,
+                        boolean legendPerRuntime) {
+
+    /** A chart whose legend names every series. */
+    public ChartSpec(String id, String stem, Setting setting, String title, Kind kind, boolean horizontal, Axis x, Axis y,
+                     List<Category> categories, List<Series> series, List<Band> bands, Frame frame, boolean valueLabels) {
+        this(id, stem, setting, title, kind, horizontal, x, y, categories, series, bands, frame, valueLabels, false);
+    }
 
     /**
      * Whether nothing drawn belongs to a runtime: no series and no bar category names one (the
@@ -165,21 +175,30 @@ public record ChartSpec(String id, String stem, Setting setting, String title, K
 
     /** The same chart with bands and a frame behind its data. */
     ChartSpec behind(List<Band> newBands, Frame newFrame) {
-        return new ChartSpec(id, stem, setting, title, kind, horizontal, x, y, categories, series, newBands, newFrame, valueLabels);
+        return new ChartSpec(id, stem, setting, title, kind, horizontal, x, y, categories, series, newBands, newFrame,
+                valueLabels, legendPerRuntime);
     }
 
     /** The same chart with other series (a reference line added, say). */
     ChartSpec withSeries(List<Series> newSeries) {
-        return new ChartSpec(id, stem, setting, title, kind, horizontal, x, y, categories, newSeries, bands, frame, valueLabels);
+        return new ChartSpec(id, stem, setting, title, kind, horizontal, x, y, categories, newSeries, bands, frame,
+                valueLabels, legendPerRuntime);
     }
 
     /** The same chart under another title (what it lacks, said). */
     ChartSpec withTitle(String newTitle) {
-        return new ChartSpec(id, stem, setting, newTitle, kind, horizontal, x, y, categories, series, bands, frame, valueLabels);
+        return new ChartSpec(id, stem, setting, newTitle, kind, horizontal, x, y, categories, series, bands, frame,
+                valueLabels, legendPerRuntime);
+    }
+
+    /** The same chart with a legend naming each runtime once ({@code legendPerRuntime}). */
+    ChartSpec withLegendPerRuntime() {
+        return new ChartSpec(id, stem, setting, title, kind, horizontal, x, y, categories, series, bands, frame, valueLabels, true);
     }
 
     /** The same chart under another file name (the evaluation's figures). */
     public ChartSpec withStem(String newStem) {
-        return new ChartSpec(id, newStem, setting, title, kind, horizontal, x, y, categories, series, bands, frame, valueLabels);
+        return new ChartSpec(id, newStem, setting, title, kind, horizontal, x, y, categories, series, bands, frame,
+                valueLabels, legendPerRuntime);
     }
 }

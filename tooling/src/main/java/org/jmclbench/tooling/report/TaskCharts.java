@@ -130,8 +130,10 @@ final class TaskCharts {
                     counts.stream().map(n -> config + ": +\u221e at " + n + " particles (never completed: among the dropped or aborted jobs)")
                             .toList())));
         }
-        return s.spec(id, title + without("no value", missing), Kind.LINES, false,
+        ChartSpec spec = s.spec(id, title + without("no value", missing), Kind.LINES, false,
                 new Axis("particles (log)", Scale.LOG, Format.NUMBER, null, null), y, null, series);
+        // a runtime's +infinity marks are its colour in the band named for them: no second entry "<config> \u221e"
+        return infinite.isEmpty() ? spec : spec.withLegendPerRuntime();
     }
 
     /** The band for +infinity's height, as a fraction of the numbers' range below it. */

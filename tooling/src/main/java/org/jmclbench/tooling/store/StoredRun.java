@@ -2,15 +2,16 @@ package org.jmclbench.tooling.store;
 
 import java.math.BigDecimal;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Objects;
 import java.util.Set;
 import java.util.function.Function;
 import java.util.stream.Collectors;
 
+import org.jmclbench.tooling.load.LoadScenario;
 import org.jmclbench.tooling.load.LoadSettings;
 import org.jmclbench.tooling.runner.MatrixDefaults;
 
@@ -92,7 +93,8 @@ public final class StoredRun {
      * digest, {@code native [data 0123abcd]}, when two datasets of one name differ in content; first of
      * them the runtime's version, {@code temurin-17/g1 [17.0.16+8]}, when the runs of one runtime name
      * differ in it; and the alloc load's rates in its bracket, {@code [load alloc 200 MB/s, 64 MB live]},
-     * when the allocating runs differ in them.
+     * when the allocating runs differ in them. A setting shown that the run's store does not tell reads
+     * {@code unknown} ({@code temurin-17/g1 [version unknown]}).
      */
     public String config() {
         String c = profile == null || profile.isEmpty() ? runtime : runtime + "/" + profile;
@@ -113,30 +115,46 @@ public final class StoredRun {
      * allocating runs shown together differ in them ({@code alloc 200 MB/s, 64 MB live}).
      */
     public String loadCondition() {
-        return showAllocRates && allocMbPerS != null && allocLiveMb != null
-                ? loadScenario() + " " + LoadSettings.allocText(allocMbPerS, allocLiveMb) : loadScenario();
+        if (!showAllocRates || !underAllocLoad()) {
+            return loadScenario();
+        }
+        return loadScenario() + " " + (allocMbPerS != null && allocLiveMb != null ? LoadSettings.allocText(allocMbPerS, allocLiveMb)
+                : "rates " + UNKNOWN);
+    }
+
+    /** Whether the run's load scenario allocates (alloc, mixed): only then has it rates, told or not. */
+    public boolean underAllocLoad() {
+        return Arrays.stream(LoadScenario.values()).anyMatch(l -> l.alloc() && l.label().equals(loadScenario()));
     }
 
     /**
      * What {@link #config()} adds for the settings shown; empty for a run at the defaults (time scale 1,
-     * no workload arguments) and for a setting the store does not tell, as a run of an unknown load is idle.
+     * no workload arguments); {@link #UNKNOWN} for a setting shown that the store does not tell of it.
      */
     private String settingsLabel() {
         StringBuilder b = new StringBuilder();
-        if (showRuntimeVersion && runtimeVersion != null) {
-            b.append(" [").append(runtimeVersion).append(']');
+        if (showRuntimeVersion) {
+            b.append(" [").append(runtimeVersion == null ? "version " + UNKNOWN : runtimeVersion).append(']');
         }
-        if (showDatasetDigest && datasetDigest != null) {
-            b.append(" [data ").append(datasetDigest, 0, Math.min(8, datasetDigest.length())).append(']');
+        if (showDatasetDigest) {
+            b.append(" [data ").append(datasetDigest == null ? UNKNOWN : datasetDigest.substring(0, Math.min(8, datasetDigest.length())))
+                    .append(']');
         }
-        if (showTimeScale && timeScale != null && timeScale != MatrixDefaults.TIME_SCALE) {
-            b.append(" [time scale ").append(BigDecimal.valueOf(timeScale).stripTrailingZeros().toPlainString()).append(']');
+        if (showTimeScale && (timeScale == null || timeScale != MatrixDefaults.TIME_SCALE)) {
+            b.append(" [time scale ").append(timeScale == null ? UNKNOWN : BigDecimal.valueOf(timeScale).stripTrailingZeros().toPlainString())
+                    .append(']');
         }
-        if (showWorkloadArgs && workloadArgs != null && !workloadArgs.isEmpty()) {
-            b.append(" [").append(workloadArgs).append(']');
+        if (showWorkloadArgs && (workloadArgs == null || !workloadArgs.isEmpty())) {
+            b.append(" [").append(workloadArgs == null ? "workload arguments " + UNKNOWN : workloadArgs).append(']');
         }
         return b.toString();
     }
+
+    /**
+     * What a label says of a setting the store does not tell for a run, while other runs shown with it
+     * tell theirs: the run may or may not share it, so it is pooled with neither (its own group).
+     */
+    static final String UNKNOWN = "unknown";
 
     /** The load scenario the run ran under; a store row without one ran on an idle machine ({@code none}). */
     public String loadScenario() {
@@ -203,8 +221,11 @@ public final class StoredRun {
      * short labels ({@code temurin-25/g1}); likewise the load scenario, so that runs on an idle and
      * on a loaded machine are never pooled into one configuration, and each setting of the run key the
      * columns lack ({@link #timeScale}, {@link #workloadArgs}, {@link #datasetDigest}, the alloc load's
-     * rates; a run whose store does not tell one is not counted as differing in it), and the version of a
-     * runtime name whose runs ran on more than one (a JVM updated between two matrices).
+     * rates), and the version of a runtime name whose runs ran on more than one (a JVM updated between two
+     * matrices). A run whose store does not tell a setting that other runs of its runtime (of its dataset,
+     * for the digest) tell differs from them in it: it may not share their value, so it is a group of its
+     * own, labelled {@code [version unknown]}, {@code [time scale unknown]} and so on; a runtime none of
+     * whose runs tells a setting keeps its name.
      */
     public static void labelEngines(Collection<StoredRun> runs) {
         boolean engines = runs.stream().filter(r -> !"native".equals(r.engine)).map(r -> r.engine).distinct().count() > 1;
@@ -215,29 +236,47 @@ public final class StoredRun {
         // distinct datasets differ in content by nature: only two contents of one name need telling apart
         Set<String> reused = severalOf(runs, r -> r.dataset, r -> r.datasetDigest);
         Set<String> updated = severalOf(runs, r -> r.runtime, r -> r.runtimeVersion);
-        boolean allocRates = differ(runs, r -> r.allocMbPerS == null ? null : List.of(r.allocMbPerS, r.allocLiveMb));
+        // only an allocating run has rates: an idle one's are no unknown rates
+        List<StoredRun> allocating = runs.stream().filter(StoredRun::underAllocLoad).toList();
+        Function<StoredRun, Object> rates = r -> r.allocMbPerS == null || r.allocLiveMb == null ? null : List.of(r.allocMbPerS, r.allocLiveMb);
+        boolean allocRates = differ(allocating, rates);
+        Set<String> scaleUntold = partlyTold(runs, r -> r.timeScale);
+        Set<String> argsUntold = partlyTold(runs, r -> r.workloadArgs);
+        Set<String> ratesUntold = partlyTold(allocating, rates);
         for (StoredRun r : runs) {
             r.showEngine = engines;
             r.showMemory = memory;
             r.showLoad = loads;
-            r.showTimeScale = timeScales;
-            r.showWorkloadArgs = workloadArgs;
+            r.showTimeScale = r.timeScale != null ? timeScales : scaleUntold.contains(r.runtime);
+            r.showWorkloadArgs = r.workloadArgs != null ? workloadArgs : argsUntold.contains(r.runtime);
             r.showDatasetDigest = reused.contains(r.dataset);
             r.showRuntimeVersion = updated.contains(r.runtime);
-            r.showAllocRates = allocRates;
+            r.showAllocRates = rates.apply(r) != null ? allocRates : ratesUntold.contains(r.runtime);
         }
     }
 
-    /** The names ({@code name}) whose runs have more than one known value of {@code setting}. */
+    /**
+     * The names ({@code name}) whose runs have more than one value of {@code setting}, a run that does not
+     * tell it ({@code null}) having a value of its own beside a known one ({@link #UNKNOWN}).
+     */
     private static Set<String> severalOf(Collection<StoredRun> runs, Function<StoredRun, String> name,
                                          Function<StoredRun, String> setting) {
         return runs.stream().collect(Collectors.groupingBy(name, Collectors.mapping(setting, Collectors.toSet()))).entrySet()
-                .stream().filter(e -> e.getValue().stream().filter(Objects::nonNull).count() > 1).map(Map.Entry::getKey)
-                .collect(Collectors.toSet());
+                .stream().filter(e -> e.getValue().size() > 1).map(Map.Entry::getKey).collect(Collectors.toSet());
     }
 
     /** Whether the runs have more than one known value of {@code setting}. */
     private static boolean differ(Collection<StoredRun> runs, Function<StoredRun, Object> setting) {
-        return runs.stream().map(setting).filter(Objects::nonNull).distinct().count() > 1;
+        return runs.stream().map(setting).filter(java.util.Objects::nonNull).distinct().count() > 1;
+    }
+
+    /**
+     * The runtimes some of whose runs tell {@code setting} and some do not: those that do not are
+     * labelled {@link #UNKNOWN}, apart from the others (a runtime none of whose runs tells it keeps its name).
+     */
+    private static Set<String> partlyTold(Collection<StoredRun> runs, Function<StoredRun, Object> setting) {
+        return runs.stream().collect(Collectors.groupingBy(r -> r.runtime, Collectors.mapping(r -> setting.apply(r) != null,
+                Collectors.toSet()))).entrySet().stream().filter(e -> e.getValue().size() > 1).map(Map.Entry::getKey)
+                .collect(Collectors.toSet());
     }
 }

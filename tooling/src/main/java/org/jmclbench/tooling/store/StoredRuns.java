@@ -10,7 +10,6 @@ import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Statement;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Base64;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
@@ -20,7 +19,6 @@ import java.util.zip.DataFormatException;
 
 import org.HdrHistogram.Histogram;
 import org.jmclbench.tooling.cli.BadUsageException;
-import org.jmclbench.tooling.load.LoadScenario;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -188,7 +186,7 @@ public final class StoredRuns implements AutoCloseable {
             datasets.removeIf(d -> !d.path("path").asText().equals(path));
         }
         r.datasetDigest = datasets.size() == 1 ? datasets.get(0).path("digest").asText() : null;
-        if (Arrays.stream(LoadScenario.values()).anyMatch(l -> l.alloc() && l.label().equals(r.loadScenario()))) {
+        if (r.underAllocLoad()) {
             // the spec writes them "200,64"; the summary of a run the spec does not tell, under parameters.load
             String[] rates = s.path("loadAlloc").asText("").split(",");
             if (rates.length == 2 && rates[0].strip().matches("\\d+") && rates[1].strip().matches("\\d+")) {

@@ -52,9 +52,15 @@
   }
   /** One series of bars in the runtimes' colours: the categories name them, and no legend is drawn. */
   function oneSeriesInRuntimeColours(view) { return view.series.length === 1 && !!view.series[0].colors; }
+  /**
+   * Whether the legend names each runtime once: the figure's caption tells its series apart
+   * (Figure.legendPerRuntime), or the chart says so for the page and the files alike (its +infinity
+   * marks, explained by their band: ChartSpec.legendPerRuntime).
+   */
+  function perRuntime(f, spec) { return !!((f && f.legendPerRuntime) || (spec && spec.legendPerRuntime)); }
   /** The legend's entries: one per series, or one per runtime. */
-  function legendItems(f, view) {
-    if (!f.legendPerRuntime) { return view.series.length; }
+  function legendItems(f, spec, view) {
+    if (!perRuntime(f, spec)) { return view.series.length; }
     var seen = {};
     view.series.forEach(function (s) { seen[s.config || s.name] = true; });
     return Object.keys(seen).length;
@@ -81,7 +87,7 @@
     // the vertical axis's title runs along the plot's height: a long one ran off the chart's top
     o.scales.y.title.text = chartText.titleLines(String(o.scales.y.title.text), AXIS_TITLE_LINE);
     if (!bars) { o.parsing = false; }
-    if (f && f.legendPerRuntime) { chartText.legendPerRuntime(o.plugins.legend); }
+    if (perRuntime(f, spec)) { chartText.legendPerRuntime(o.plugins.legend); }
     if (!spec.horizontal) {
       // the axes reach the intervals' ends, so that no error bar runs off the plot
       view.series.forEach(function (s) {

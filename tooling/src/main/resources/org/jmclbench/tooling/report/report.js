@@ -426,7 +426,7 @@
     if (charts[f.id]) { charts[f.id].destroy(); }
     var canvas = document.getElementById('chart-' + f.id);
     var rows = spec && spec.kind !== 'LINES' ? view.categories.length : 0;
-    var items = spec && !oneSeriesInRuntimeColours(view) ? legendItems(f, view) : 0;
+    var items = spec && !oneSeriesInRuntimeColours(view) ? legendItems(f, spec, view) : 0;
     // many rows: a horizontal chart grows a line per row, a vertical one makes room for its turned
     // labels; a long legend (three entries a line across the page) may take half the box and no more,
     // so the box grows until it needs no more than that (Chart.js cuts a legend that needs more)

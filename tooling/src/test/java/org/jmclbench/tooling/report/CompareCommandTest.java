@@ -64,11 +64,11 @@ class CompareCommandTest {
 
     @Test
     void runsAtTwoTimeScalesAreComparedByTheirRowNamesNeverPooled() throws Exception {
-        // repetitions 7 to 10 made again by a second matrix at --time-scale 0.5
+        // repetitions 7 to 10 made again by a second matrix at --time-scale 0.5 (telling no workload arguments, as the first)
         Path scaled = java.nio.file.Files.copy(a, dir.resolve("time-scales.db"));
         try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + scaled); var st = c.createStatement()) {
             st.execute("INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --time-scale 0.5', 8,"
-                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5,\"workloadArgs\":[]}')");
+                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5}')");
             st.execute("UPDATE runs SET matrix_id = 'x-2' WHERE repetition > 6");
         }
         String out = run(0, "compare", "--db", scaled.toString(), "--a", "native", "--b", "native [time scale 0.5]")[0];
@@ -81,7 +81,7 @@ class CompareCommandTest {
         // B measured every configuration again, at --time-scale 0.5: its rows are named apart from A's
         Path scaled = java.nio.file.Files.copy(b, dir.resolve("b-scaled.db"));
         try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + scaled); var st = c.createStatement()) {
-            st.execute("UPDATE matrices SET spec_json = '{\"timeScale\":0.5,\"workloadArgs\":[]}'");
+            st.execute("UPDATE matrices SET spec_json = '{\"timeScale\":0.5}'");
         }
         String err = oneLine("compare", a.toString(), scaled.toString());
         assertTrue(err.contains("no setting (dataset, policy, particles, runtime) has runs in both A and B"), err);

@@ -61,6 +61,17 @@ class ExportedInfinityBandTest {
     }
 
     @Test
+    void aRuntimeWithOnlyInfinityMarksIsNamedInTheLegendByItsName() {
+        // javase has no number at any count: its marks are its only series, and its entry reads "javase", not "javase \u221e"
+        org.jfree.chart.LegendItemCollection items = ChartExporter.render(spec().withLegendPerRuntime()).getXYPlot().getLegendItems();
+        List<String> labels = new java.util.ArrayList<>();
+        for (int i = 0; i < items.getItemCount(); i++) {
+            labels.add(items.get(i).getLabel());
+        }
+        assertEquals(List.of("native", "javase"), labels);
+    }
+
+    @Test
     void theSvgNamesTheBand() throws Exception {
         new ChartExporter(dir).write(spec());
         String svg = Files.readString(dir.resolve("p99.svg"));

@@ -453,10 +453,11 @@ class ReportBrowserTest {
         f.particles = List.of(400);
         f.repetitions = 4;
         Path db = ReportFixtures.write(f, ARTIFACTS, "time-scales.db");
-        // repetitions 3 and 4 made again by a matrix at --time-scale 0.5, whose jobs took twice as long
+        // repetitions 3 and 4 made again by a matrix at --time-scale 0.5, whose jobs took twice as long (telling no
+        // workload arguments, as the fixture's first matrix: one that told them would set its runs apart)
         try (var c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + db); var st = c.createStatement()) {
             st.execute("INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --time-scale 0.5', 8,"
-                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5,\"workloadArgs\":[]}')");
+                    + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5}')");
             st.execute("UPDATE runs SET matrix_id = 'x-2' WHERE repetition > 2");
             st.execute("UPDATE metrics SET value = value * 2 WHERE metric = 'taskLatencyNs'"
                     + " AND run_key IN (SELECT run_key FROM runs WHERE repetition > 2)");
@@ -640,6 +641,33 @@ class ReportBrowserTest {
         for (Object c : checked) {
             assertTrue(String.valueOf(c).matches(".* ticks above the band start [0-9.e-]+=\u221e marks [1-9]\\d* off the band 0 "
                     + "band above numbers true"), String.valueOf(c));
+        }
+    }
+
+    @Test
+    void aChartWithTheInfinityBandNamesEachRuntimeOnceInItsColour() {
+        // the response-time p99 legends read every runtime twice, "<config>" and "<config> \u221e"; the band's
+        // label says what the marks are, so each runtime is one entry in its one colour, hiding all its series
+        @SuppressWarnings("unchecked")
+        List<Object> checked = (List<Object>) js().executeScript("var out = [];"
+                + " Object.keys(window.jmclbenchCharts).forEach(function (id) {"
+                + "   var c = window.jmclbenchCharts[id], b = c.options.plugins.jmclbenchBeyond;"
+                + "   if (!b || b.from === undefined) { return; }"
+                + "   var configs = [], colour = {};"
+                + "   c.data.datasets.forEach(function (d) {"
+                + "     if (configs.indexOf(d.config) < 0) { configs.push(d.config); colour[d.config] = d.borderColor; } });"
+                + "   var items = c.legend.legendItems, texts = items.map(function (i) { return i.text; });"
+                + "   out.push(id + ' legend [' + texts.join('|') + '] runtimes [' + configs.join('|') + '] off colour '"
+                + "     + items.filter(function (i) { return i.strokeStyle !== colour[i.text]; }).length"
+                + "     + ' marks ' + c.data.datasets.filter(function (d) { return / \u221e$/.test(d.label); }).length);"
+                + " });"
+                + " return out;");
+        assertFalse(checked.isEmpty(), "no chart with +infinity at this setting: the test would prove nothing");
+        for (Object c : checked) {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile(".* legend \\[(.*)\\] runtimes \\[(.*)\\] off colour (\\d+) marks (\\d+)")
+                    .matcher(String.valueOf(c));
+            assertTrue(m.matches() && m.group(1).equals(m.group(2)) && m.group(3).equals("0") && !m.group(4).equals("0"),
+                    String.valueOf(c));
         }
     }
 

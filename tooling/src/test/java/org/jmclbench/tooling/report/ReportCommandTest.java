@@ -228,10 +228,11 @@ class ReportCommandTest {
 
     @Test
     void runsAtTwoTimeScalesAreNeverPooled() throws Exception {
-        // the third repetition of every configuration made again by a second matrix at --time-scale 0.5
+        // the third repetition of every configuration made again by a second matrix at --time-scale 0.5 (which, like the
+        // fixture's first, tells no workload arguments: a matrix that told them would set its runs apart from the others)
         Map<String, Integer> ok = okRuns(edited("time-scales.db",
                 "INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --time-scale 0.5', 8,"
-                        + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5,\"workloadArgs\":[]}')",
+                        + " '2026-11-22T03:00:00Z', '{\"timeScale\":0.5}')",
                 "UPDATE runs SET matrix_id = 'x-2', summary_json = json_set(summary_json, '$.parameters.timeScale', 0.5)"
                         + " WHERE repetition = 3"));
         assertEquals(2, ok.get("native"), "repetitions 1 and 2, at 1: " + ok);
@@ -253,12 +254,38 @@ class ReportCommandTest {
     }
 
     @Test
+    void runsThatDoNotTellTheirVersionAreAGroupOfTheirOwn() throws Exception {
+        // temurin-17's third repetitions from a store that kept no version: they were pooled with the runs on
+        // 17.0.15+6 as if they had run on it (the audit, grouping by version, then found a cell of 3 runs where it had 2)
+        Map<String, Integer> ok = okRuns(edited("unknown-version.db",
+                "UPDATE runs SET runtime_version = NULL WHERE runtime = 'temurin-17' AND repetition = 3"));
+        assertEquals(2, ok.get("temurin-17/g1 [17.0.15+6]"), "repetitions 1 and 2, on 17.0.15: " + ok);
+        assertEquals(1, ok.get("temurin-17/g1 [version unknown]"), "repetition 3, on a version not told: " + ok);
+        assertEquals(3, ok.get("native"), "a runtime of one version keeps its name: " + ok);
+        // no run tells its version: nothing to tell apart, the names stay
+        Map<String, Integer> none = okRuns(edited("no-version.db", "UPDATE runs SET runtime_version = NULL"));
+        assertEquals(3, none.get("temurin-17/g1"), none.toString());
+    }
+
+    @Test
+    void runsThatDoNotTellTheirTimeScaleAreAGroupOfTheirOwn() throws Exception {
+        // repetition 3 by a matrix whose spec kept no time scale, nor its summary: not pooled with the runs at 1
+        Map<String, Integer> ok = okRuns(edited("unknown-scale.db",
+                "INSERT INTO matrices SELECT 'x-2', machine_id, command, order_seed, started_at, json_remove(spec_json, '$.timeScale')"
+                        + " FROM matrices LIMIT 1",
+                "UPDATE runs SET matrix_id = 'x-2', summary_json = json_remove(summary_json, '$.parameters.timeScale')"
+                        + " WHERE repetition = 3"));
+        assertEquals(2, ok.get("native"), "repetitions 1 and 2, at 1: " + ok);
+        assertEquals(1, ok.get("native [time scale unknown]"), "repetition 3: " + ok);
+    }
+
+    @Test
     void runsUnderTwoAllocRatesAreNeverPooled() throws Exception {
         // temurin-17 under --load alloc: repetitions 1 and 2 at the default rates, 3 by a second matrix at 200 MB/s, 64 MB
         Map<String, Integer> ok = okRuns(edited("alloc-rates.db",
                 "UPDATE matrices SET spec_json = json_set(spec_json, '$.loadAlloc', '100,16')",
                 "INSERT INTO matrices VALUES ('x-2', 'm-1', 'jmclbench matrix --load alloc --load-alloc 200,64', 8,"
-                        + " '2026-11-22T03:00:00Z', '{\"timeScale\":1.0,\"workloadArgs\":[],\"loadAlloc\":\"200,64\"}')",
+                        + " '2026-11-22T03:00:00Z', '{\"timeScale\":1.0,\"loadAlloc\":\"200,64\"}')",
                 "UPDATE runs SET load = 'alloc' WHERE runtime = 'temurin-17'",
                 "UPDATE runs SET matrix_id = 'x-2' WHERE runtime = 'temurin-17' AND repetition = 3"));
         assertEquals(2, ok.get("temurin-17/g1 [load alloc 100 MB/s, 16 MB live]"), "repetitions 1 and 2: " + ok);

@@ -1,6 +1,7 @@
 package org.jmclbench.tooling.report;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -240,6 +241,29 @@ class TaskChartsTest {
     }
 
     @Test
+    void theLegendNamesEachRuntimeOnceInItsColourBesideTheInfinityBand() throws Exception {
+        // the p99 charts' legends listed every runtime twice, "<config>" and "<config> \u221e", on the page and in the
+        // files; the band's label says what the marks are, so a runtime is one entry in its one colour
+        ChartSpec spec = TaskCharts.vsParticlesPerTask(scope("skip", null), "predict", TaskMetric.RESPONSE_P99);
+        assertTrue(spec.y().beyond() != null && spec.series().stream().anyMatch(s -> s.name().endsWith(" \u221e")),
+                "the fixture has +infinity marks: the test would prove nothing");
+        assertTrue(spec.legendPerRuntime(), "the chart says its legend names each runtime once, for the page and the files");
+        Map<String, String> colours = new java.util.LinkedHashMap<>();
+        spec.series().forEach(s -> colours.putIfAbsent(s.config(), s.color()));
+        org.jfree.chart.LegendItemCollection items = ChartExporter.render(spec).getXYPlot().getLegendItems();
+        List<String> labels = new ArrayList<>();
+        for (int i = 0; i < items.getItemCount(); i++) {
+            String label = items.get(i).getLabel();
+            labels.add(label);
+            assertTrue(colours.containsKey(label), "the entry " + label + " names no runtime");
+            assertEquals(ChartExporter.color(colours.get(label)), items.get(i).getLinePaint(), label);
+        }
+        assertEquals(new ArrayList<>(colours.keySet()), labels, "each runtime once, by its name");
+        assertFalse(TaskCharts.vsParticlesPerTask(scope("skip", null), "predict", TaskMetric.MISS_RATIO).legendPerRuntime(),
+                "a chart without the band names its series as before");
+    }
+
+    @Test
     void aChartWithoutInfinityHasNoBand() {
         ChartSpec spec = TaskCharts.vsParticlesPerTask(scope("skip", null), "predict", TaskMetric.MISS_RATIO);
         assertNull(spec.y().beyond());
@@ -327,7 +351,10 @@ class TaskChartsTest {
             exporter.write(spec);
             String svg = Files.readString(dir.resolve("charts/" + spec.stem() + ".svg"));
             for (ChartSpec.Series s : spec.series()) {
-                assertTrue(svg.contains(">" + s.name() + "<"), s.name() + " in " + spec.stem());
+                String entry = spec.legendPerRuntime() ? s.config() : s.name(); // the +infinity marks under their runtime's entry
+                assertTrue(svg.contains(">" + entry + "<"), entry + " in " + spec.stem());
+                assertEquals(!spec.legendPerRuntime() || s.name().equals(s.config()), svg.contains(">" + s.name() + "<"),
+                        s.name() + " named in " + spec.stem());
             }
         }
         // the error bars are drawn, one SVG path each: points both ways, bars with their cut intervals

@@ -115,6 +115,16 @@ class RunOptionsParserTest {
         return assertThrows(BadInputException.class, () -> RunOptionsParser.parse(args)).getMessage();
     }
 
+    /** The usage's --policy line names every policy of OverrunPolicy (it listed three by hand). */
+    @Test
+    void usageNamesEveryPolicy() {
+        String line = java.util.Arrays.stream(RunOptionsParser.USAGE.split("\n")).filter(l -> l.startsWith("  --policy "))
+                .findFirst().orElseThrow(AssertionError::new);
+        for (OverrunPolicy p : OverrunPolicy.values()) {
+            assertTrue(line.contains(p.label), p.label + " in " + line);
+        }
+    }
+
     @Test
     void errorsNameTheOption() {
         assertEquals("--frobnicate: unknown option (see --help)", error("--frobnicate"));
@@ -123,7 +133,9 @@ class RunOptionsParserTest {
         assertEquals("-p: needs a value", error("-p"));
         assertEquals("-p: not an integer: 'many'", error("-p", "many"));
         assertEquals("-p: 0 is out of range [1, 100000000]", error("-p", "0"));
-        assertEquals("--policy: 'later' is not one of skip|terminate|queue", error("--policy", "later"));
+        // every policy, in code order: a policy added to OverrunPolicy is named without a change here
+        assertEquals("--policy: 'later' is not one of " + RunOptionsParser.policyLabels(), error("--policy", "later"));
+        assertTrue(RunOptionsParser.policyLabels().startsWith("skip|terminate|queue"), RunOptionsParser.policyLabels());
         assertEquals("--memory: 'pooled' is not one of preallocated|allocating|scoped", error("--memory", "pooled"));
         assertTrue(error("--time-scale", "0").startsWith("--time-scale:"));
         assertTrue(error("--time-scale", "NaN").startsWith("--time-scale:"));

@@ -34,7 +34,7 @@ while [ $# -gt 0 ]; do
 done
 # checked now: each run would refuse them only after a build, and the loop goes on past a failed run
 require_counts --particles "$particles" ,
-require_choice --policy "$policy" "skip|terminate|queue" ,
+require_choice --policy "$policy" "$POLICY_CHOICES" ,
 require_choice --hvm-modes "$hvm_modes" "compiled|interpreted|hot" ,
 [ -d "$ROOT/data/$dataset" ] || { echo "hvm-compare: --dataset: $dataset: no such dataset under $ROOT/data" >&2; exit 2; }
 [ -z "$out" ] || require_creatable -O "$out"

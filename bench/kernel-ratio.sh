@@ -13,24 +13,15 @@ set -euo pipefail
 home=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)
 . "$home/bench/options.sh"
 
-java=${JAVA_HOME:+$JAVA_HOME/bin/java}
-java=${java:-java}
+java_c_defaults kernel-ratio
 dataset=$home/data/match-short
 particles=1000,4000
-out=$home/results/kernel-ratio/$(date -u +%Y%m%dT%H%M%SZ)
-build=1
-jmh_opts=(-f 1 -wi 3 -i 5 -w 1s -r 1s)
 while [ $# -gt 0 ]; do
     case "$1" in
-        --java) java=$(value_of "$@"); shift 2 ;;
         # -m: readlink -f fails, silently, below a missing folder; the check below names it
         --dataset) dataset=$(value_of "$@"); dataset=$(readlink -m "$dataset"); shift 2 ;;
         --particles) particles=$(value_of "$@"); require_counts --particles "$particles" ,; shift 2 ;;
-        --out) out=$(value_of "$@"); require_creatable --out "$out"; shift 2 ;;
-        --no-build) build=0; shift ;;
-        --) shift; jmh_opts=("$@"); break ;;
-        -h|--help) usage ;;
-        *) unknown_option "$1" ;;
+        *) java_c_option "$@"; shift "$taken" ;;
     esac
 done
 [ -f "$dataset/odometry.txt" ] || { echo "kernel-ratio: --dataset: $dataset: not a dataset folder" >&2; exit 2; }

@@ -45,6 +45,11 @@ require_counts() {
     done
 }
 
+# The overrun policies in code order, '|'-separated, as the C baseline's policy.h defines them (a
+# test holds it equal to core-immortal's OverrunPolicy): the choices of a script's --policy.
+POLICY_CHOICES=$(sed -n 's/^#define JM_POLICY_LABELS "\(.*\)"$/\1/p' \
+    "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/native/src/policy.h")
+
 # Ends the script unless each word of option $1's value $2 (one or several, separated by $4: ","
 # or " ") is one of the '|'-separated $3.
 require_choice() {
@@ -99,6 +104,30 @@ build_benchmarks() {
     if [ $# -gt 0 ]; then
         make -s -C "$home/native" "$@" >&2
     fi
+}
+
+# The defaults of a Java/C comparison (kernel-ratio, record-cost) whose results go to
+# results/$1/<time>: the JVM of JAVA_HOME (else java on the PATH), a build first, a short JMH run.
+java_c_defaults() {
+    java=${JAVA_HOME:+$JAVA_HOME/bin/java}
+    java=${java:-java}
+    out=$home/results/$1/$(date -u +%Y%m%dT%H%M%SZ)
+    build=1
+    jmh_opts=(-f 1 -wi 3 -i 5 -w 1s -r 1s)
+}
+
+# One option every Java/C comparison takes, from the script's "$@" at that option: --java PATH,
+# --out DIR, --no-build, -- and the JMH options (all the rest), --help; any other is unknown.
+# Sets what it reads and taken, the count of arguments it used (shift "$taken").
+java_c_option() {
+    case "$1" in
+        --java) java=$(value_of "$@"); taken=2 ;;
+        --out) out=$(value_of "$@"); require_creatable --out "$out"; taken=2 ;;
+        --no-build) build=0; taken=1 ;;
+        --) shift; jmh_opts=("$@"); taken=$(($# + 1)) ;;
+        -h|--help) usage ;;
+        *) unknown_option "$1" ;;
+    esac
 }
 
 # The set-up of a Java/C comparison (kernel-ratio, record-cost), once its options are read: checks

@@ -34,7 +34,7 @@ done
 extra=("$@")
 # checked now: the first run would refuse them only after the build and the table's header
 require_counts --particles "$particles" " "
-require_choice --policies "$policies" "skip|terminate|queue" " "
+require_choice --policies "$policies" "$POLICY_CHOICES" " "
 require_number --warmup "$warmup"
 [ -z "$dataset" ] || [ -d "$dataset" ] || { echo "overload: --dataset: $dataset: no such folder" >&2; exit 2; }
 [ -z "$out" ] || require_creatable --out "$out"

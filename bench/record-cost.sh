@@ -14,19 +14,10 @@ set -euo pipefail
 home=$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)
 . "$home/bench/options.sh"
 
-java=${JAVA_HOME:+$JAVA_HOME/bin/java}
-java=${java:-java}
-out=$home/results/record-cost/$(date -u +%Y%m%dT%H%M%SZ)
-build=1
-jmh_opts=(-f 1 -wi 3 -i 5 -w 1s -r 1s)
+java_c_defaults record-cost
 while [ $# -gt 0 ]; do
     case "$1" in
-        --java) java=$(value_of "$@"); shift 2 ;;
-        --out) out=$(value_of "$@"); require_creatable --out "$out"; shift 2 ;;
-        --no-build) build=0; shift ;;
-        --) shift; jmh_opts=("$@"); break ;;
-        -h|--help) usage ;;
-        *) unknown_option "$1" ;;
+        *) java_c_option "$@"; shift "$taken" ;;
     esac
 done
 start_java_c_comparison build/record-cost

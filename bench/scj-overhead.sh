@@ -36,7 +36,7 @@ while [ $# -gt 0 ]; do
     esac
 done
 require_positive --particles "$particles"
-require_choice --policy "$policy" "skip|terminate|queue" ,
+require_choice --policy "$policy" "$POLICY_CHOICES" ,
 require_positive --repeat "$repeat"
 [ -d "$dataset" ] || { echo "scj-overhead: --dataset: $dataset: no such folder" >&2; exit 2; }
 [ -z "$out" ] || require_creatable --out "$out"

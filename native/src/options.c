@@ -41,7 +41,7 @@ static const struct opt options[] = {
 	{ "-real", "--real", "FILE", "thesis-format ground truth: time x y theta (with -odo, -laser)", OPT_REAL },
 	{ NULL, "--dataset", "DIR", "dataset folder (default data/match-short under $JMCLBENCH_HOME)", OPT_DATASET },
 	{ "-T", NULL, NULL, "shorthand for --policy terminate", OPT_T },
-	{ NULL, "--policy", "P", "skip|terminate|queue: an event released while a job runs (default skip)", OPT_POLICY },
+	{ NULL, "--policy", "P", JM_POLICY_LABELS ": an event released while a job runs (default skip)", OPT_POLICY },
 	{ NULL, "--ideal", NULL, "one thread, no timing: the infinitely fast computer (default off)", OPT_IDEAL },
 	{ "-c", "--covariance", NULL, "compute and write the covariance after each update (default off)", OPT_COV },
 	{ NULL, "--memory", "M", "preallocated|allocating: malloc/free per job or not (default preallocated)", OPT_MEMORY },

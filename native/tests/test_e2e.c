@@ -240,6 +240,8 @@ static void test_bad_options(void)
 	CHECK_CONTAINS(out_text, "-p, --particles N");
 	CHECK_CONTAINS(out_text, "(default 400)");
 	CHECK_CONTAINS(out_text, "-odo FILE");
+	/* every policy of policy.h, not a list of its own */
+	CHECK_CONTAINS(out_text, JM_POLICY_LABELS ": an event released");
 }
 
 /* Every non-comment line of path has ncols whitespace-separated fields; returns the line count. */

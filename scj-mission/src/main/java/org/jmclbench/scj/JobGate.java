@@ -59,6 +59,14 @@ public class JobGate {
     }
 
     /**
+     * Whether the gate has {@code policy}'s rule (skip, terminate, queue): one it lacks would run as
+     * queue, so the engines refuse it. A policy added to OverrunPolicy is added here with its rule.
+     */
+    public static boolean hasRule(OverrunPolicy policy) {
+        return policy == OverrunPolicy.SKIP || policy == OverrunPolicy.TERMINATE || policy == OverrunPolicy.QUEUE;
+    }
+
+    /**
      * Events at equal times in {@code t} (the mission's merged timeline) are decided together, in its
      * order, as at their scheduled release {@code releaseNs[k]} (ns from the mission start).
      */

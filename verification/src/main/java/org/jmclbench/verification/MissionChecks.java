@@ -1,5 +1,6 @@
 package org.jmclbench.verification;
 
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.verification.jpf.AreaReferenceListener;
 import org.jmclbench.verification.jpf.AtomicRuntimeSyncPolicy;
 import org.jmclbench.verification.jpf.ConstructedFinalsSharednessPolicy;
@@ -17,6 +18,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.stream.Stream;
 
 /**
  * JPF checks of the real mission ({@link MissionDriver}: scj-mission on rtsj-compat with virtual
@@ -50,7 +52,8 @@ public final class MissionChecks {
     /** What one mission search checks. */
     public static final Set<Property> SEARCH = EnumSet.of(Property.P1, Property.P3, Property.P4, Property.P5,
             Property.P6, Property.P7);
-    static final List<String> POLICIES = List.of("skip", "terminate", "queue");
+    /** Every policy of the one definition (core-immortal's OverrunPolicy): a new one is searched as the others are. */
+    static final List<String> POLICIES = Stream.of(OverrunPolicy.values()).map(p -> p.label).toList();
     static final List<String> STYLES = List.of("preallocated", "scoped");
 
     /**

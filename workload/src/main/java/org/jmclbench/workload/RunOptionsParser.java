@@ -25,7 +25,7 @@ public final class RunOptionsParser {
             "  -odo F -laser F -real F  thesis-format data files (all three together)",
             "  --dataset DIR            dataset folder (default data/match-short under the project home)",
             "  -T                       same as --policy terminate",
-            "  --policy skip|terminate|queue   event released while a job runs (default skip)",
+            "  --policy " + policyLabels() + "   event released while a job runs (default skip)",
             "  --ideal                  one thread, no timing: the infinitely fast computer",
             "  -c, --covariance         compute and write the covariance after each update",
             "  --engine javase|scj|rtsj|hvm  the Java SE release engine, the SCJ mission, the thesis's RTSJ",
@@ -231,13 +231,18 @@ public final class RunOptionsParser {
     private static OverrunPolicy policy(String name, String v) throws BadInputException {
         OverrunPolicy p = OverrunPolicy.ofLabel(v);
         if (p == null) {
-            StringBuilder allowed = new StringBuilder();
-            for (OverrunPolicy each : OverrunPolicy.values()) {
-                allowed.append(allowed.length() == 0 ? "" : "|").append(each.label);
-            }
-            throw BadInputException.ofOption(name, "'" + v + "' is not one of " + allowed);
+            throw BadInputException.ofOption(name, "'" + v + "' is not one of " + policyLabels());
         }
         return p;
+    }
+
+    /** The {@code --policy} values in code order, {@code skip|terminate|queue}: the usage's and the errors' one list. */
+    public static String policyLabels() {
+        StringBuilder allowed = new StringBuilder();
+        for (OverrunPolicy each : OverrunPolicy.values()) {
+            allowed.append(allowed.length() == 0 ? "" : "|").append(each.label);
+        }
+        return allowed.toString();
     }
 
     /** The command line as it is read: the arguments, the next one's index and the current option's inline value. */

@@ -115,6 +115,40 @@ class RunOptionsParserTest {
         return assertThrows(BadInputException.class, () -> RunOptionsParser.parse(args)).getMessage();
     }
 
+    /** The usage's --policy line names every policy of OverrunPolicy (it listed three by hand). */
+    @Test
+    void usageNamesEveryPolicy() {
+        String line = java.util.Arrays.stream(RunOptionsParser.USAGE.split("\n")).filter(l -> l.startsWith("  --policy "))
+                .findFirst().orElseThrow(AssertionError::new);
+        for (OverrunPolicy p : OverrunPolicy.values()) {
+            assertTrue(line.contains(p.label), p.label + " in " + line);
+        }
+    }
+
+    /**
+     * An engine whose rule is its own (rtsj's replay, the SCJ mission's gate, so also hvm) runs
+     * every policy it has a rule for and refuses the others; it ran one it lacked as queue.
+     */
+    @Test
+    void anEngineRefusesAPolicyItHasNoRuleFor() throws BadInputException {
+        for (OverrunPolicy p : OverrunPolicy.values()) {
+            for (String engine : new String[] {"rtsj", "scj"}) {
+                String[] args = {"--engine", engine, "--policy", p.label};
+                boolean rule = engine.equals("rtsj") ? org.jmclbench.workload.rtsj.RtsjReplay.hasRule(p)
+                        : org.jmclbench.scj.JobGate.hasRule(p);
+                if (rule) {
+                    assertEquals(p, RunOptionsParser.parse(args).policy);
+                } else {
+                    assertEquals("--policy: the " + engine + " engine has no rule for the policy '" + p.label + "'",
+                            error(args));
+                }
+            }
+        }
+        for (OverrunPolicy p : new OverrunPolicy[] {OverrunPolicy.SKIP, OverrunPolicy.TERMINATE, OverrunPolicy.QUEUE}) {
+            assertTrue(org.jmclbench.workload.rtsj.RtsjReplay.hasRule(p) && org.jmclbench.scj.JobGate.hasRule(p), p.label);
+        }
+    }
+
     @Test
     void errorsNameTheOption() {
         assertEquals("--frobnicate: unknown option (see --help)", error("--frobnicate"));
@@ -123,7 +157,9 @@ class RunOptionsParserTest {
         assertEquals("-p: needs a value", error("-p"));
         assertEquals("-p: not an integer: 'many'", error("-p", "many"));
         assertEquals("-p: 0 is out of range [1, 100000000]", error("-p", "0"));
-        assertEquals("--policy: 'later' is not one of skip|terminate|queue", error("--policy", "later"));
+        // every policy, in code order: a policy added to OverrunPolicy is named without a change here
+        assertEquals("--policy: 'later' is not one of " + RunOptionsParser.policyLabels(), error("--policy", "later"));
+        assertTrue(RunOptionsParser.policyLabels().startsWith("skip|terminate|queue"), RunOptionsParser.policyLabels());
         assertEquals("--memory: 'pooled' is not one of preallocated|allocating|scoped", error("--memory", "pooled"));
         assertTrue(error("--time-scale", "0").startsWith("--time-scale:"));
         assertTrue(error("--time-scale", "NaN").startsWith("--time-scale:"));

@@ -18,6 +18,7 @@ import java.util.stream.Collectors;
 
 import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.tooling.cli.Counts;
+import org.jmclbench.tooling.runner.Engines;
 import org.jmclbench.tooling.store.StoredRun;
 import org.jmclbench.tooling.store.StoredRuns;
 
@@ -348,7 +349,7 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     /** Engines and memory styles a configuration can name (the rest of a name is a profile). */
-    static final List<String> ENGINES = List.of("javase", "scj", "rtsj", "rtsj-atomic", "native", "hvm");
+    static final List<String> ENGINES = Engines.ALL;
     static final List<String> MEMORY_STYLES = List.of("preallocated", "allocating", "scoped");
 
     private static Map<String, List<StoredRun>> group(List<StoredRun> runs, boolean withConfig) {

@@ -1,8 +1,12 @@
 package org.jmclbench.tooling.runner;
 
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
+import java.util.stream.Stream;
 
 import org.jmclbench.tooling.runtime.RuntimeInfo;
+import org.jmclbench.tooling.runtime.RuntimeKind;
 
 /**
  * The workload's engines and the memory styles each one has (docs/FORMATS.md section 2): on a
@@ -19,8 +23,17 @@ public final class Engines {
     /** The RTSJ program, design thesis (the AIE deferred by the robot's monitor) and design atomic. */
     public static final String RTSJ = "rtsj";
     public static final String RTSJ_ATOMIC = "rtsj-atomic";
-    /** The engines a JVM runtime can run, for {@code --engines}. */
-    public static final List<String> JVM_ENGINES = List.of(JAVASE, SCJ, RTSJ, RTSJ_ATOMIC);
+    /**
+     * The engines a JVM runtime can run, for {@code --engines}: the workload's registry
+     * ({@code org.jmclbench.workload.engine.Engines}), its rtsj engine as its two designs. The hvm
+     * engine, when its launcher is on the class path, is a host of its own runtime
+     * ({@link org.jmclbench.tooling.runtime.RuntimeKind#HVM}), not an engine of a JVM.
+     */
+    public static final List<String> JVM_ENGINES = jvmEngines(org.jmclbench.workload.engine.Engines.list());
+
+    /** Every engine a stored run can have: the JVM ones, then each program that is its own engine ({@code native}, {@code hvm}). */
+    public static final List<String> ALL = Stream.concat(JVM_ENGINES.stream(), Stream.of(RuntimeKind.values())
+            .filter(k -> k != RuntimeKind.JVM).map(k -> k.name().toLowerCase(Locale.ROOT))).toList();
 
     public static final String PREALLOCATED = "preallocated";
     /** Every memory style some engine has, for {@code --memory}. */
@@ -29,12 +42,25 @@ public final class Engines {
     private Engines() {
     }
 
+    /** The matrix's engines of the workload's {@code --engine} values. */
+    static List<String> jvmEngines(List<String> workloadEngines) {
+        List<String> out = new ArrayList<>();
+        for (String e : workloadEngines) {
+            if (e.equals(RTSJ)) {
+                out.addAll(List.of(RTSJ, RTSJ_ATOMIC));
+            } else if (!e.equals(RuntimeKind.HVM.name().toLowerCase(Locale.ROOT))) {
+                out.add(e);
+            }
+        }
+        return List.copyOf(out);
+    }
+
     /**
      * The engine a run of {@code runtime} gets when {@code asked} is the matrix's engine: a program
      * that is not a JVM is its own engine, named by its kind ({@code native}).
      */
     public static String of(RuntimeInfo runtime, String asked) {
-        return runtime.isJvm() ? asked : runtime.kind().name().toLowerCase(java.util.Locale.ROOT);
+        return runtime.isJvm() ? asked : runtime.kind().name().toLowerCase(Locale.ROOT);
     }
 
     /** The workload's options that choose an engine of a JVM runtime (none for javase, the default). */

@@ -23,8 +23,9 @@ final class MatrixOptions {
             new Setting("runtimes", true, "LIST", "runtime names from `jvms`, `native`, `hvm`, `jvms` (all JVMs), `all` (default: all found)"),
             new Setting("java", true, "PATH", "a JVM by path (java executable or JDK folder), repeatable"),
             new Setting("profiles", true, "LIST", "profiles, components joined by '+': default, serial, parallel, g1, zgc, shenandoah, epsilon, int, c1, pretouch, heap<N>m or heap<N>g (-Xmx), fifo, pinned, aot (default: default)"),
-            new Setting("policies", true, "LIST", "skip, terminate, queue, ideal (default: skip)"),
-            new Setting("engines", true, "LIST", "engines of the JVM runs: javase, scj, rtsj, rtsj-atomic (default: javase; native runs are engine native)"),
+            new Setting("policies", true, "LIST", String.join(", ", MatrixDefaults.KNOWN_POLICIES) + " (default: skip)"),
+            new Setting("engines", true, "LIST", "engines of the JVM runs: " + String.join(", ", Engines.JVM_ENGINES)
+                    + " (default: javase; native runs are engine native)"),
             new Setting("memory", true, "LIST", "memory styles: preallocated, allocating (javase, rtsj, rtsj-atomic, native), scoped (scj, hvm); one an engine lacks is recorded unsupported (default: preallocated)"),
             new Setting("particles", true, "LIST", "particle counts (default: 400)"),
             new Setting("datasets", true, "LIST", "dataset names under data/ or folders (default: match-short)"),

@@ -210,6 +210,16 @@ class CompareCommandTest {
         run(0, "compare", "--db", a.toString(), "--a", "native", "--b", "temurin-17");
     }
 
+    /**
+     * An engine registered with the workload only (the tests' runner.RegisteredProbeEngine) is an
+     * engine in a configuration's name, not taken for a profile; so are native and hvm.
+     */
+    @Test
+    void anEngineOfTheWorkloadsRegistryIsAnEngineOfAConfiguration() {
+        assertTrue(CompareCommand.ENGINES.containsAll(List.of("registered-probe", "javase", "rtsj-atomic", "native", "hvm")),
+                CompareCommand.ENGINES.toString());
+    }
+
     @Test
     void tooFewRepetitionsSaySoAndRankNothing() throws Exception {
         FixtureDb f = new FixtureDb();

@@ -62,6 +62,16 @@ class EngineMatrixTest extends FakeJvmHome {
         assertEquals(m.plan().size(), m.plan().stream().map(PlannedRun::runKey).distinct().count(), "every run its own key");
     }
 
+    /** An engine registered with the workload (one class, one registration) is one the matrix takes, as it is named. */
+    @Test
+    void anEngineOfTheWorkloadsRegistryIsAMatrixEngine() {
+        ResolvedMatrix m = plan("java", fake.toString(), "engines", RegisteredProbeEngine.NAME + ",rtsj-atomic", "datasets", "tiny");
+        assertEquals(List.of(RegisteredProbeEngine.NAME, Engines.RTSJ_ATOMIC), m.plan().stream().map(PlannedRun::engine).sorted().toList());
+        assertEquals(List.of("--engine", RegisteredProbeEngine.NAME), Engines.workloadArgs(RegisteredProbeEngine.NAME));
+        assertEquals("-" + RegisteredProbeEngine.NAME, Engines.runtimeSuffix(RegisteredProbeEngine.NAME));
+        assertTrue(Engines.ALL.containsAll(List.of(RegisteredProbeEngine.NAME, Engines.NATIVE, "hvm")), Engines.ALL.toString());
+    }
+
     @Test
     void theDefaultEngineAndStyleKeepTheKeysOfAStoreMadeBeforeThem() {
         ResolvedMatrix m = plan("java", fake.toString(), "datasets", "tiny");
@@ -87,7 +97,9 @@ class EngineMatrixTest extends FakeJvmHome {
         Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--engines", "javase,jamaica",
                 "--datasets", "tiny", "--db", db.toString());
         assertEquals(2, r.exitCode(), r.out() + r.err());
-        assertEquals("jmclbench: --engines: unknown engine 'jamaica' (known: javase, scj, rtsj, rtsj-atomic)", r.err().strip());
+        // the tests' class path registers one more engine with the workload
+        assertEquals("jmclbench: --engines: unknown engine 'jamaica' (known: javase, scj, rtsj, rtsj-atomic, "
+                + RegisteredProbeEngine.NAME + ")", r.err().strip());
         assertFalse(Files.exists(db));
 
         r = Fixtures.cli("matrix", "--java", fake.toString(), "--memory", "immortal", "--datasets", "tiny", "--db", db.toString());

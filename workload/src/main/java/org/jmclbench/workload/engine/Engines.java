@@ -69,9 +69,21 @@ public final class Engines {
     /** The engines' names as messages write them: {@code javase|scj|rtsj}, and {@code |hvm} with the HVM launcher. */
     public static String names() {
         StringBuilder b = new StringBuilder();
-        for (Engine e : ALL) {
-            b.append(b.length() == 0 ? "" : "|").append(e.name());
+        for (String name : list()) {
+            b.append(b.length() == 0 ? "" : "|").append(name);
         }
         return b.toString();
+    }
+
+    /**
+     * The {@code --engine} values, in registration order: what the tooling's matrix and comparison
+     * accept, so that a new engine registered here is one they take without a list of their own.
+     */
+    public static List<String> list() {
+        List<String> names = new ArrayList<>();
+        for (Engine e : ALL) {
+            names.add(e.name());
+        }
+        return names;
     }
 }

@@ -87,6 +87,14 @@ public final class RtsjReplay {
     private final AbsoluteTime mainClock = new AbsoluteTime();
 
     /**
+     * Whether this replay has {@code policy}'s rule: skip and terminate in the dispatcher's admit and
+     * the task's run, queue as neither; a policy added to OverrunPolicy needs its own here.
+     */
+    public static boolean hasRule(OverrunPolicy policy) {
+        return policy == OverrunPolicy.SKIP || policy == OverrunPolicy.TERMINATE || policy == OverrunPolicy.QUEUE;
+    }
+
+    /**
      * A replay of {@code schedule} under {@code policy}: each released event runs {@code job} on the
      * robot, its CPU time read from {@code cpuClock} ({@link RuntimeShim#cpuClock}).
      */

@@ -1,5 +1,7 @@
 package org.jmclbench.verification;
 
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.scj.Robot;
 import org.jmclbench.verification.jpf.JpfCheck;
 import org.jmclbench.verification.jpf.JpfCheck.Expectation;
 import org.jmclbench.verification.jpf.JpfRunner;
@@ -24,6 +26,9 @@ import org.jmclbench.verification.seeded.rtsj.EngineMutant;
 import org.jmclbench.verification.seeded.rtsj.RtsjSeededChecks;
 import org.jmclbench.verification.toy.ToyChecks;
 
+import java.io.IOException;
+import java.lang.reflect.Modifier;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.EnumSet;
@@ -101,11 +106,20 @@ public final class SeededCatalog implements CheckCatalog {
      */
     static JpfCheck predictUnlocked(MissionRun run) {
         String id = "mission-seeded-predict-unlocked";
-        Path root = RtsjSeededChecks.mutantsRoot();
-        EngineMutant.RUNNER_ROBOT_UNLOCKED.writeUnder(root, id);
+        Path dir = EngineMutant.RUNNER_ROBOT_UNLOCKED.writeUnder(RtsjSeededChecks.mutantsRoot(), id);
+        try {
+            Path robot = dir.resolve(Robot.class.getName().replace('.', '/') + ".class");
+            if (Modifier.isSynchronized(Robot.class.getMethod("predict", int.class, AbortSignal.class).getModifiers())) {
+                EngineMutant.ROBOT_PREDICT_UNSYNCHRONISED.writeUnder(RtsjSeededChecks.mutantsRoot(), id);
+            } else {
+                // a tree whose predict lacks it already (the mutation score's robot-predict-unsynchronised)
+                Files.deleteIfExists(robot);
+            }
+        } catch (NoSuchMethodException | IOException e) {
+            throw new IllegalStateException(id + ": " + e, e);
+        }
         Map<String, String> config = MissionChecks.config(run.memory());
-        config.put(JpfRunner.PREPEND, EngineMutant.ROBOT_PREDICT_UNSYNCHRONISED.writeUnder(root, id)
-                .toAbsolutePath().toString());
+        config.put(JpfRunner.PREPEND, dir.toAbsolutePath().toString());
         return MissionChecks.check(id, EnumSet.of(Property.P2), run, config,
                 Expectation.violation(Property.P2, CheckedRobot.class, "predict"), null,
                 "seeded predict job run without the robot's monitor (JobRunner and Robot edited)");

@@ -87,8 +87,8 @@ class RobotTest {
      * Every predict and update job works holding the robot's monitor: under terminate a job
      * admitted while the previous one polls towards its abort, and under queue the two tasks'
      * handlers, reach the one localizer at once, and only the monitor makes them take turns. The
-     * JPF searches do not see a job without it: their checked robot takes the monitor itself
-     * around the shipped job (the mutation score's robot-predict-unsynchronised went unnoticed).
+     * JPF searches cannot see a robot job without it (the mutation score's
+     * robot-predict-unsynchronised): the mission's job runner holds the monitor around every job too.
      */
     @Test
     void everyJobWorksHoldingTheRobotsMonitor() {

@@ -31,9 +31,10 @@ import java.util.stream.Stream;
  * released twice. (Events at one instant no longer overlap: the rule decides them all before any
  * of their jobs starts, docs/RELEASE-ENGINE.md.)
  *
- * <p>One search per policy and style checks {@link #SEARCH}: P1 (JPF's deadlock property), P3 and
- * P4 (the {@link org.jmclbench.verification.mission.CheckedRobot} around every job, and the
- * driver's functional oracle), P5 (the driver, from the gate's count and the job records, and the
+ * <p>One search per policy and style checks {@link #SEARCH}: P1 (JPF's deadlock property), P2 of
+ * the robot (no two jobs in its localizer at once), P3 and P4 (the
+ * {@link org.jmclbench.verification.mission.CheckedRobot} inside every job, and the driver's
+ * functional oracle), P5 (the driver, from the gate's count and the job records, and the
  * horizon of virtual time), P6 (in the preallocated style: no allocation in a release; in both:
  * no reference to a shorter-lived area, and the private memory empty after each release) and P7
  * (the driver, from the job records: {@link org.jmclbench.verification.mission.PolicyOracle}). A
@@ -50,8 +51,8 @@ import java.util.stream.Stream;
  */
 public final class MissionChecks {
     /** What one mission search checks. */
-    public static final Set<Property> SEARCH = EnumSet.of(Property.P1, Property.P3, Property.P4, Property.P5,
-            Property.P6, Property.P7);
+    public static final Set<Property> SEARCH = EnumSet.of(Property.P1, Property.P2, Property.P3, Property.P4,
+            Property.P5, Property.P6, Property.P7);
     /** Every policy of the one definition (core-immortal's OverrunPolicy): a new one is searched as the others are. */
     static final List<String> POLICIES = Stream.of(OverrunPolicy.values()).map(p -> p.label).toList();
     static final List<String> STYLES = List.of("preallocated", "scoped");
@@ -89,7 +90,8 @@ public final class MissionChecks {
      * each switch for two threads about to make conflicting plain accesses to the same field.
      * The localizer's own fields and arrays are not switch points (switching there too took
      * 186,613 states and 99 s for terminate alone): the mission reaches it only inside the
-     * robot's synchronized predict and update, which these searches do not re-check.
+     * robot's synchronized predict and update, and the mission searches check that no two jobs
+     * are in it at once (the checked robot's P2).
      */
     public static Map<String, String> raceConfig() {
         Map<String, String> c = scheduling(JmmRaceDetector.class);

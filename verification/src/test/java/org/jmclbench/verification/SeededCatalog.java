@@ -1,7 +1,11 @@
 package org.jmclbench.verification;
 
+import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.scj.Robot;
 import org.jmclbench.verification.jpf.JpfCheck;
 import org.jmclbench.verification.jpf.JpfCheck.Expectation;
+import org.jmclbench.verification.jpf.JpfRunner;
+import org.jmclbench.verification.mission.CheckedRobot;
 import org.jmclbench.verification.seeded.AllocatingRelease;
 import org.jmclbench.verification.seeded.GuardedCounter;
 import org.jmclbench.verification.seeded.PollingJob;
@@ -18,12 +22,18 @@ import org.jmclbench.verification.seeded.mission.RobotKept;
 import org.jmclbench.verification.seeded.mission.StrayAllocation;
 import org.jmclbench.verification.seeded.mission.UnguardedRead;
 import org.jmclbench.verification.seeded.mission.WidePoll;
+import org.jmclbench.verification.seeded.rtsj.EngineMutant;
 import org.jmclbench.verification.seeded.rtsj.RtsjSeededChecks;
 import org.jmclbench.verification.toy.ToyChecks;
 
+import java.io.IOException;
+import java.lang.reflect.Modifier;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 /**
@@ -81,9 +91,38 @@ public final class SeededCatalog implements CheckCatalog {
                         "job that carries on after seeing the request"),
                 mission("wide-poll", Property.P4, MissionChecks.intervalRun(), WidePoll.class, WidePoll.class, "predict",
                         "job polling every fourth interval")));
+        l.add(predictUnlocked(terminate));
         l.addAll(ToyChecks.all());
         l.addAll(RtsjSeededChecks.all());
         return l;
+    }
+
+    /**
+     * A predict job without the robot's monitor: the shipped mission takes it twice (the job
+     * runner's {@code synchronized (robot)} and the robot's synchronized predict), so the bug is
+     * both dropped, as edits of {@code JobRunner} and {@code Robot} put first on JPF's class path.
+     * A laser event released within a predict job then starts an update job at once, and the
+     * checked robot sees two jobs in the localizer, blamed on predict, the one without the monitor.
+     */
+    static JpfCheck predictUnlocked(MissionRun run) {
+        String id = "mission-seeded-predict-unlocked";
+        Path dir = EngineMutant.RUNNER_ROBOT_UNLOCKED.writeUnder(RtsjSeededChecks.mutantsRoot(), id);
+        try {
+            Path robot = dir.resolve(Robot.class.getName().replace('.', '/') + ".class");
+            if (Modifier.isSynchronized(Robot.class.getMethod("predict", int.class, AbortSignal.class).getModifiers())) {
+                EngineMutant.ROBOT_PREDICT_UNSYNCHRONISED.writeUnder(RtsjSeededChecks.mutantsRoot(), id);
+            } else {
+                // a tree whose predict lacks it already (the mutation score's robot-predict-unsynchronised)
+                Files.deleteIfExists(robot);
+            }
+        } catch (NoSuchMethodException | IOException e) {
+            throw new IllegalStateException(id + ": " + e, e);
+        }
+        Map<String, String> config = MissionChecks.config(run.memory());
+        config.put(JpfRunner.PREPEND, dir.toAbsolutePath().toString());
+        return MissionChecks.check(id, EnumSet.of(Property.P2), run, config,
+                Expectation.violation(Property.P2, CheckedRobot.class, "predict"), null,
+                "seeded predict job run without the robot's monitor (JobRunner and Robot edited)");
     }
 
     @Override

@@ -18,8 +18,8 @@ import org.jmclbench.verification.jpf.Coverage;
 
 /**
  * The real SCJ mission (scj-mission on rtsj-compat, virtual time) on a tiny synthetic sensor log,
- * as the program Java PathFinder explores. During the mission {@link CheckedRobot} checks P3 and
- * P4 around every job; virtual time has a horizon, so a mission that never ends fails (P5) on the
+ * as the program Java PathFinder explores. During the mission {@link CheckedRobot} checks P2 (the
+ * robot's jobs take turns), P3 and P4 in every job; virtual time has a horizon, so a mission that never ends fails (P5) on the
  * path where it hangs. After the mission:
  * <ul>
  * <li>P5: the gate counted exactly as many ended events as there are events, and every event has
@@ -119,7 +119,7 @@ public final class MissionDriver extends PlacedMissionInput implements MissionOu
 
     /** P3's oracle: the completed jobs replayed on a fresh localizer equal what the mission recorded. */
     private void replay(CheckedConfiguration config, MclConfig mcl) {
-        Localizer mission = config.robot().localizer();
+        Localizer mission = config.robot().jobLocalizer();
         Localizer fresh = config.shipped(playground(), startX(), startY(), startTheta());
         int odometry = odometryCount();
         int laser = laserCount();

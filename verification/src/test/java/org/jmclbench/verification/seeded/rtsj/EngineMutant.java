@@ -21,7 +21,8 @@ import java.nio.file.Path;
 import java.util.function.Consumer;
 
 /**
- * A seeded bug that is an edit of one shipped class, the rtsj engine's or the RTSJ layer's: the
+ * A seeded bug that is an edit of one shipped class, the rtsj engine's, the RTSJ layer's or the
+ * SCJ mission's: the
  * class as the build made it (woven) is read from the class path, one method is edited with ASM
  * and the result is written to a folder of its own, which the check puts first on JPF's class
  * path. So the program checked is the shipped one with exactly that slip in it, and nothing of
@@ -105,8 +106,20 @@ public enum EngineMutant {
                 replace(m, i, new InsnNode(Opcodes.POP), new InsnNode(Opcodes.POP));
             }
         }
+    }),
+    /** The mission's robot: predict no longer takes the robot's monitor (update still does). */
+    ROBOT_PREDICT_UNSYNCHRONISED(EngineMutant.ROBOT, "predict", m -> m.access &= ~Opcodes.ACC_SYNCHRONIZED),
+    /** The mission's job runner no longer holds the robot's monitor around the job (the robot's methods still may). */
+    RUNNER_ROBOT_UNLOCKED(EngineMutant.RUNNER, "run", m -> {
+        for (AbstractInsnNode i : m.instructions.toArray()) {
+            if (i.getOpcode() == Opcodes.MONITORENTER || i.getOpcode() == Opcodes.MONITOREXIT) {
+                replace(m, i, new InsnNode(Opcodes.POP));
+            }
+        }
     });
 
+    static final String ROBOT = "org/jmclbench/scj/Robot";
+    static final String RUNNER = "org/jmclbench/scj/JobRunner";
     static final String REPLAY = "org/jmclbench/workload/rtsj/RtsjReplay";
     static final String TASK = REPLAY + "$Task";
     static final String AIE = "javax/realtime/AsynchronouslyInterruptedException";

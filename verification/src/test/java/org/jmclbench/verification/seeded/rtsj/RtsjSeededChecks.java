@@ -25,9 +25,9 @@ public final class RtsjSeededChecks {
     private RtsjSeededChecks() {
     }
 
-    /** The checks; the edited classes are written under the test classes' sibling folder {@code seeded-mutants}. */
+    /** The checks; the edited classes are written under {@link #mutantsRoot}. */
     public static List<JpfCheck> all() {
-        Path root = testClasses().resolveSibling("seeded-mutants");
+        Path root = mutantsRoot();
         String task = EngineMutant.TASK.replace('/', '.');
         String replay = EngineMutant.REPLAY.replace('/', '.');
         String aie = EngineMutant.AIE.replace('/', '.');
@@ -62,6 +62,11 @@ public final class RtsjSeededChecks {
         config.put(JpfRunner.PREPEND, m.writeUnder(root, id).toAbsolutePath().toString());
         return RtsjChecks.check(id, EnumSet.of(p), policy, design, config, new Expectation(p, location, Set.of()), null,
                 "seeded " + what + " (" + m.className() + " edited)");
+    }
+
+    /** The folder the edited classes are written under: the test classes' sibling {@code seeded-mutants}. */
+    public static Path mutantsRoot() {
+        return testClasses().resolveSibling("seeded-mutants");
     }
 
     private static Path testClasses() {

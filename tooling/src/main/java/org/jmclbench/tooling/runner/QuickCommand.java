@@ -21,7 +21,8 @@ import picocli.CommandLine.Option;
         header = "The main job: every JVM found, C and the HVM, then the report.",
         description = {"Runs every JVM found (with its default GC) with the javase and scj engines, the native "
                 + "baseline and, with HVM_SRC set, the icecap HVM (compiled to C), x {skip, terminate} x {100, 1600} particles x 1 repetition "
-                + "on dataset " + QuickCommand.DATASET + " (10 s) into results/results.db, then builds the report. It is a matrix: "
+                + "on dataset " + QuickCommand.DATASET + " (10 s), then the rtsj engine's two designs (rtsj, rtsj-atomic) under "
+                + "terminate at 1600 particles on the newest JVM, into results/results.db, then builds the report. It is a matrix: "
                 + "rerunning it resumes, and `matrix` can add to the same database. With many runtimes, the replay is sped up "
                 + "to stay under 5 minutes (--time-scale, which scales deadlines too); the estimate and the chosen scale are printed."})
 public final class QuickCommand implements Callable<Integer> {

@@ -24,6 +24,22 @@ class QuickPlanTest {
     @TempDir
     Path dir;
 
+    /** The help named the javase and scj engines only, while quick also runs both RTSJ designs. */
+    @Test
+    void theHelpNamesEveryEngineAndTheRtsjRunsCount() {
+        Fixtures.CliResult r = Fixtures.cli("quick", "--help");
+        assertEquals(0, r.exitCode(), r.err());
+        String help = String.join(" ", r.out().split("\\s+"));
+        for (String engine : QuickCommand.ENGINES) {
+            assertTrue(help.contains(engine), "quick --help names the engine " + engine + ": " + help);
+        }
+        for (String engine : QuickCommand.RTSJ_ENGINES) {
+            assertTrue(help.contains(engine), "quick --help names the engine " + engine + ": " + help);
+        }
+        int heavier = QuickCommand.PARTICLES.get(QuickCommand.PARTICLES.size() - 1);
+        assertTrue(help.contains("terminate at " + heavier + " particles"), help);
+    }
+
     @Test
     void everyJvmRunsBothEnginesAndNativeOncePerSetting() throws Exception {
         Fixtures.home(dir);

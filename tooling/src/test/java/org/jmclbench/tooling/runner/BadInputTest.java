@@ -39,6 +39,21 @@ class BadInputTest extends FakeJvmHome {
     }
 
     @Test
+    void aDatasetWithABadLineIsRefusedBeforeAnythingRuns() throws Exception {
+        // every run of the dataset exited 2 and was recorded failed, and the matrix exited 0
+        Path bad = dir.resolve("data/bad");
+        Files.createDirectories(bad);
+        for (String f : new String[] {"odometry.txt", "laser.txt", "real.txt", "dataset.properties"}) {
+            Files.copy(dir.resolve("data/tiny").resolve(f), bad.resolve(f));
+        }
+        List<String> odometry = new ArrayList<>(Files.readAllLines(bad.resolve("odometry.txt")));
+        odometry.set(2, "1.0e-01  garbage  0.0");
+        Files.write(bad.resolve("odometry.txt"), odometry);
+        assertMatrixRejected("--datasets: dataset 'bad': " + bad.resolve("odometry.txt") + ":3: expected 4 columns but found 3",
+                "--datasets", "tiny,bad");
+    }
+
+    @Test
     void whatAnIdealRunRefusesIsRefusedByTheMatrixThatPlansOne() {
         // the workload refuses --ideal with a spin or SCJ area sizes (exit 2): each ideal run of the
         // matrix would have been recorded failed

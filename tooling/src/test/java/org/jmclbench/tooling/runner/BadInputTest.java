@@ -54,6 +54,19 @@ class BadInputTest extends FakeJvmHome {
     }
 
     @Test
+    void aFileWhereTheRunFoldersGoLeavesNoStoreBehind() throws Exception {
+        // the refusal came after the store was created: an empty results.db stayed beside the file
+        Files.createDirectories(db.getParent());
+        Path runs = Files.writeString(db.resolveSibling("runs"), "a file");
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
+        assertEquals(2, r.exitCode(), r.out() + r.err());
+        assertEquals(1, r.err().strip().lines().count(), r.err());
+        assertTrue(r.err().startsWith("jmclbench: --db: " + db + ": cannot write its run folders in " + db.getParent()), r.err());
+        assertFalse(Files.exists(db), "no store left behind");
+        assertEquals("a file", Files.readString(runs));
+    }
+
+    @Test
     void whatAnIdealRunRefusesIsRefusedByTheMatrixThatPlansOne() {
         // the workload refuses --ideal with a spin or SCJ area sizes (exit 2): each ideal run of the
         // matrix would have been recorded failed

@@ -62,7 +62,14 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
             if (!Files.isRegularFile(p)) {
                 throw new BadUsageException(p + ": missing");
             }
-            jobs.addAll(JobFileReader.read(p, f[1]));
+            List<JobRecord> task = JobFileReader.read(p, f[1]);
+            // one line a released job (docs/FORMATS.md): a file cut at a line end read as a run with fewer jobs
+            JsonNode released = summary.path("tasks").path(f[1]).path("released");
+            if (released.canConvertToLong() && released.asLong() != task.size()) {
+                throw new BadUsageException(p + ": " + task.size() + " job lines, but summary.json says " + released.asLong()
+                        + " " + f[1] + " jobs were released (a damaged run folder)");
+            }
+            jobs.addAll(task);
         }
         RunClock clock = RunClock.fromSummary(summary);
         List<VmEvent> events = List.of();

@@ -57,6 +57,7 @@ public final class JmclbenchCli implements Callable<Integer> {
     /** Runs the command line and returns the exit code (tests call this instead of main). */
     public static int execute(String... args) {
         CommandLine cli = new CommandLine(new JmclbenchCli());
+        cli.registerConverter(java.nio.file.Path.class, JmclbenchCli::path);
         cli.setParameterExceptionHandler((ex, a) -> {
             System.err.println("jmclbench: " + oneLine(ex.getMessage()));
             return EXIT_BAD_INPUT;
@@ -78,6 +79,17 @@ public final class JmclbenchCli implements Callable<Integer> {
             throw ex;
         });
         return cli.execute(args);
+    }
+
+    /**
+     * A path option's value. An empty one is refused: Path.of("") is the working folder, so an unset
+     * variable ({@code --out "$DIR"}) wrote a report or figures there, and evaluate's document beside it.
+     */
+    private static java.nio.file.Path path(String value) {
+        if (value.isEmpty()) {
+            throw new CommandLine.TypeConversionException("an empty path ('.' names the working folder)");
+        }
+        return java.nio.file.Path.of(value);
     }
 
     /**

@@ -43,6 +43,10 @@ public final class DatasetWriter {
         if (parent == null) {
             throw BadUsageException.ofOption("--out", "cannot write a dataset at " + out);
         }
+        if (target.equals(Path.of("").toAbsolutePath().normalize())) {
+            // an empty --out or '.' names the working folder: replacing it leaves the caller's shell in a deleted folder
+            throw BadUsageException.ofOption("--out", "'" + out + "' is the working folder; name the dataset's folder (e.g. data/NAME)");
+        }
         checkTarget(target, out, force);
         Files.createDirectories(parent);
         Path partial = newFolder(parent, "." + target.getFileName() + ".partial-");

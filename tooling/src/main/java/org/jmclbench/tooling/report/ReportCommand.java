@@ -52,6 +52,14 @@ public final class ReportCommand implements Callable<Integer> {
         }
         // a folder that cannot be made would fail the report only after the store is read and the charts built
         OutputPaths.checkFolder(out, "--out");
+        // and what goes in it: a folder named index.html, or a file named charts, failed the report (exit 1)
+        // after the page was written, which then stood as if the report were whole
+        if (Files.isDirectory(out.resolve("index.html"))) {
+            throw BadUsageException.ofOption("--out", out.resolve("index.html") + ": a folder, where the page goes");
+        }
+        if (export) {
+            OutputPaths.checkFolder(out.resolve("charts"), "--out");
+        }
         Path resultsDir = db.toAbsolutePath().getParent();
         ReportModel model;
         try (StoredRuns store = StoredRuns.open(db, "--db")) {

@@ -13,6 +13,7 @@ import java.util.HexFormat;
 import org.jmclbench.tooling.cli.BadUsageException;
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.data.DatasetMetadata;
+import org.jmclbench.workload.data.DatasetReader;
 
 /**
  * A dataset folder given to a matrix by name ({@code match-short}: the project's {@code data/})
@@ -34,6 +35,13 @@ public record Dataset(String label, Path dir, double durationS, String digest) {
             if (!Files.isRegularFile(dir.resolve(f))) {
                 throw new BadUsageException(where + ": dataset '" + nameOrPath + "': missing " + dir.resolve(f));
             }
+        }
+        try {
+            // read here, once, as the workload and the native baseline read it (one grammar, docs/FORMATS.md 1):
+            // a bad line would otherwise fail every run of the dataset, each recorded failed, and the matrix exit 0
+            DatasetReader.readFolder(dir.toFile());
+        } catch (BadInputException e) {
+            throw new BadUsageException(where + ": dataset '" + nameOrPath + "': " + e.getMessage());
         }
         String label = dir.getFileName().toString();
         return new Dataset(label, dir, duration(dir), digest(dir));

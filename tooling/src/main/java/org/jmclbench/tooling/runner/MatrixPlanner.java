@@ -239,7 +239,7 @@ public final class MatrixPlanner {
 
     /**
      * The workload's refusal of a warm-up that leaves no event of the dataset in {@code dir} after it,
-     * or null; a dataset the workload cannot read is left to it, which names the file and line.
+     * or null; a dataset the workload cannot read was refused by {@link Dataset#resolve}, naming the file and line.
      */
     private static String warmupRefusal(Path dir, double warmupS) {
         try {

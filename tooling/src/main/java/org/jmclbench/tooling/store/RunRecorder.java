@@ -50,13 +50,17 @@ public final class RunRecorder implements AutoCloseable {
      * @throws org.jmclbench.tooling.cli.BadUsageException when the file is not a store this tool writes
      */
     public static RunRecorder open(Path dbFile, String option) {
+        boolean existed = Files.exists(dbFile);
         ResultsDatabase db = ResultsDatabase.openToWrite(dbFile, option);
         try {
             return new RunRecorder(db, claimRunsFolder(db.baseDir(), db.file().getFileName().toString()));
         } catch (IOException e) {
             try {
                 db.close();
-            } catch (SQLException ignored) {
+                if (!existed) {
+                    Files.deleteIfExists(db.file()); // the store this refusal made would stay, empty, as if it had been used
+                }
+            } catch (SQLException | IOException ignored) {
                 // the refusal below is what the user needs to see
             }
             throw new BadUsageException((option == null ? "" : option + ": ") + dbFile + ": cannot write its run folders in "

@@ -104,6 +104,23 @@ class ExplainCommandTest {
     }
 
     @Test
+    void jobLinesFewerThanTheSummaryReleasedAreADamagedRunFolder(@TempDir Path tmp) throws Exception {
+        // an emptied laserData.txt was explained as a run without update jobs: "0 of N jobs missed"
+        Path key = runnerStyleRun(tmp, true);
+        Path leaf = key.resolve("local/nocov/400/QueueTest/1");
+        Path summary = leaf.resolve("summary.json");
+        String good = Files.readString(summary);
+        Files.writeString(summary, good.replaceFirst("\\}$", ", \"tasks\": {\"update\": {\"released\": 3}}}"));
+        String[] r = run("explain", key.toString());
+        assertEquals("2", r[0], r[1] + r[2]);
+        assertEquals("jmclbench: " + leaf.resolve("laserData.txt") + ": 0 job lines, but summary.json says 3 update jobs"
+                + " were released (a damaged run folder)", r[2].strip());
+        assertEquals("", r[1], "nothing explained");
+        Files.writeString(summary, good.replaceFirst("\\}$", ", \"tasks\": {\"update\": {\"released\": 0}}}"));
+        assertEquals("0", run("explain", key.toString())[0], "the counts agree");
+    }
+
+    @Test
     void aFolderWithoutARunIsBadInput(@TempDir Path tmp) {
         String[] r = run("explain", tmp.toString());
         assertEquals("2", r[0]);

@@ -39,6 +39,21 @@ class JmclbenchCliTest {
     }
 
     @Test
+    void anEmptyPathIsRefusedNotTakenForTheWorkingFolder() throws Exception {
+        // Path.of("") is the working folder: report and evaluate wrote there (evaluate's document in its parent)
+        Path db = Files.writeString(tmp.resolve("results.db"), "not read: the value is refused first");
+        assertOneLine("jmclbench: Invalid value for option '--out': an empty path ('.' names the working folder)",
+                Fixtures.cli("report", "--db", db.toString(), "--out", "", "--no-export"));
+        assertOneLine("jmclbench: Invalid value for option '--out': an empty path ('.' names the working folder)",
+                Fixtures.cli("evaluate", "--no-run", "--out", ""));
+        assertOneLine("jmclbench: Invalid value for option '--into': an empty path ('.' names the working folder)",
+                Fixtures.cli("merge", db.toString(), "--into", ""));
+        assertOneLine("jmclbench: Invalid value for positional parameter at index 0 (RUN_DIR): an empty path"
+                + " ('.' names the working folder)", Fixtures.cli("explain", ""));
+        assertFalse(Files.exists(Path.of("index.html")), "nothing written in the working folder");
+    }
+
+    @Test
     void aBackslashOrAnAccentStaysAsItIsAndUnicodeLineBreaksAreEscaped() {
         String known = " (known: match, match-short, match-quick, stay, figure8, kidnap)";
         String out = tmp.resolve("y").toString();

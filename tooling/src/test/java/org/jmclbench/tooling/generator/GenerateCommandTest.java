@@ -132,6 +132,27 @@ class GenerateCommandTest {
     }
 
     @Test
+    void theWorkingFolderIsNotADatasetFolder() throws Exception {
+        // '.' (or an empty --out, now refused as every empty path is) named the working folder: when it was
+        // empty, the write replaced it by a new folder, leaving the caller's shell in a deleted one (a child
+        // JVM: this one's folder is not empty)
+        Path cwd = Files.createDirectories(tmp.resolve("cwd"));
+        Object before = Files.readAttributes(cwd, java.nio.file.attribute.BasicFileAttributes.class).fileKey();
+        for (String out : new String[] {".", "sub/.."}) {
+            Process p = new ProcessBuilder(Fixtures.childCli(tmp, "generate", "--scenario", "stay", "--duration", "1",
+                    "--out", out)).directory(cwd.toFile()).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            String err = new String(p.getErrorStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+            assertEquals(2, p.waitFor(), err);
+            assertEquals("jmclbench: --out: '" + out + "' is the working folder; name the dataset's folder (e.g. data/NAME)",
+                    err.strip());
+        }
+        assertEquals(before, Files.readAttributes(cwd, java.nio.file.attribute.BasicFileAttributes.class).fileKey());
+        try (var entries = Files.list(cwd)) {
+            assertEquals(0, entries.count());
+        }
+    }
+
+    @Test
     void writesIntoAnEmptyExistingFolder() throws Exception {
         Path dir = tmp.resolve("empty");
         Files.createDirectories(dir);

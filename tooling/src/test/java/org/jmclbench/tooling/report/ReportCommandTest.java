@@ -380,6 +380,18 @@ class ReportCommandTest {
     }
 
     @Test
+    void aFileInThePlaceOfTheChartsFolderIsRefusedBeforeThePageIsWritten() throws Exception {
+        Path r = Files.createDirectories(dir.resolve("charts-is-a-file"));
+        Path charts = Files.writeString(r.resolve("charts"), "a file");
+        assertEquals("jmclbench: --out: " + charts + ": not a folder",
+                refusal("report", "--db", db.toString(), "--out", r.toString()).strip());
+        assertFalse(Files.exists(r.resolve("index.html")), "no page of a report that failed");
+        Path page = Files.createDirectories(dir.resolve("page-is-a-folder/index.html"));
+        assertEquals("jmclbench: --out: " + page + ": a folder, where the page goes",
+                refusal("report", "--db", db.toString(), "--out", page.getParent().toString(), "--no-export").strip());
+    }
+
+    @Test
     void aVerificationFileBesideTheStoreThatIsNotJsonIsOneLineNamingIt() throws Exception {
         Path results = Files.createDirectories(dir.resolve("bad-verification"));
         Path store = Files.copy(db, results.resolve("results.db"));

@@ -39,6 +39,34 @@ class BadInputTest extends FakeJvmHome {
     }
 
     @Test
+    void aDatasetWithABadLineIsRefusedBeforeAnythingRuns() throws Exception {
+        // every run of the dataset exited 2 and was recorded failed, and the matrix exited 0
+        Path bad = dir.resolve("data/bad");
+        Files.createDirectories(bad);
+        for (String f : new String[] {"odometry.txt", "laser.txt", "real.txt", "dataset.properties"}) {
+            Files.copy(dir.resolve("data/tiny").resolve(f), bad.resolve(f));
+        }
+        List<String> odometry = new ArrayList<>(Files.readAllLines(bad.resolve("odometry.txt")));
+        odometry.set(2, "1.0e-01  garbage  0.0");
+        Files.write(bad.resolve("odometry.txt"), odometry);
+        assertMatrixRejected("--datasets: dataset 'bad': " + bad.resolve("odometry.txt") + ":3: expected 4 columns but found 3",
+                "--datasets", "tiny,bad");
+    }
+
+    @Test
+    void aFileWhereTheRunFoldersGoLeavesNoStoreBehind() throws Exception {
+        // the refusal came after the store was created: an empty results.db stayed beside the file
+        Files.createDirectories(db.getParent());
+        Path runs = Files.writeString(db.resolveSibling("runs"), "a file");
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--datasets", "tiny", "--db", db.toString());
+        assertEquals(2, r.exitCode(), r.out() + r.err());
+        assertEquals(1, r.err().strip().lines().count(), r.err());
+        assertTrue(r.err().startsWith("jmclbench: --db: " + db + ": cannot write its run folders in " + db.getParent()), r.err());
+        assertFalse(Files.exists(db), "no store left behind");
+        assertEquals("a file", Files.readString(runs));
+    }
+
+    @Test
     void whatAnIdealRunRefusesIsRefusedByTheMatrixThatPlansOne() {
         // the workload refuses --ideal with a spin or SCJ area sizes (exit 2): each ideal run of the
         // matrix would have been recorded failed

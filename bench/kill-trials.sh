@@ -9,7 +9,7 @@
 #            run missing from the finished store, or an ok run whose folder has no summary.json
 #   doubled  a configuration recorded twice, or a run folder without its row
 #   corrupt  a store that fails PRAGMA integrity_check after the kill or after the rerun
-# evaluate also needs its document after the rerun. verify (the static checks and the toy JPF
+# evaluate also needs its document after the rerun. verify (--only static,toy-: the seeded static checks and the toy JPF
 # checks; JPF_CORE_SRC as for ./jmclbench verify) has no store: its results file must be absent or
 # whole JSON after the kill (else corrupt) and after the rerun hold every check once (else lost or
 # doubled); temporary files left by a killed writer are counted apart. Prints one line per trial

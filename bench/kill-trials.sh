@@ -9,12 +9,12 @@
 #            run missing from the finished store, or an ok run whose folder has no summary.json
 #   doubled  a configuration recorded twice, or a run folder without its row
 #   corrupt  a store that fails PRAGMA integrity_check after the kill or after the rerun
-# evaluate also needs its document after the rerun. verify (--only static,toy-: the seeded static checks and the toy JPF
-# checks; JPF_CORE_SRC as for ./jmclbench verify) has no store: its results file must be absent or
-# whole JSON after the kill (else corrupt) and after the rerun hold every check once (else lost or
-# doubled); temporary files left by a killed writer are counted apart. Prints one line per trial
-# and the totals; exit 1 when anything was lost, doubled or corrupt. Long (10-20 s a trial): not
-# part of CI, whose short version is tooling's KillTrialsTest.
+# evaluate also needs its document after the rerun. verify (--only static,toy-: the seeded static
+# checks and the toy JPF checks; JPF_CORE_SRC as for ./jmclbench verify) has no store: its results
+# file must be absent or whole JSON after the kill (else corrupt) and after the rerun hold every
+# check once (else lost or doubled); temporary files left by a killed writer are counted apart.
+# Prints one line per trial and the totals; exit 1 when anything was lost, doubled or corrupt.
+# Long (10-20 s a trial): not part of CI, whose short version is tooling's KillTrialsTest.
 #
 # usage: bench/kill-trials.sh [--trials N] [--command matrix|evaluate|verify] [--seed N] [--keep DIR]
 #   --keep DIR   keep every trial's folder (store, logs) under DIR instead of a temporary folder

@@ -53,6 +53,15 @@ class VerifyMainTest {
     }
 
     @Test
+    void aHeapNoJvmCanReserveIsOneLineBeforeAnyCheck() throws Exception {
+        // every JPF check failed (exit 1, "verification: 0 passed, 1 failed"): a failure of the
+        // benchmark for what is bad usage
+        assertBadInput("jmclbench: verify: --heap: 2147483647 MB: no JVM starts with it"
+                + " (Could not reserve enough space for 2199023255552KB object heap)",
+                "--only", "mission-seeded-stray-allocation", "--heap", "2147483647");
+    }
+
+    @Test
     void anEmptyPathIsOneLineNamingTheOption() throws Exception {
         // --logs "" was the working folder; --out "" said '--out:  is a folder' (an unset "$DIR")
         String empty = "an empty path ('.' names the working folder)";

@@ -2,6 +2,7 @@ package org.jmclbench.verification;
 
 import java.io.PrintStream;
 import java.io.PrintWriter;
+import java.nio.file.Path;
 
 import picocli.CommandLine;
 import picocli.CommandLine.ITypeConverter;
@@ -20,10 +21,11 @@ final class CommandLines {
      * Fills {@code command}'s options from {@code args} ({@code name}: the launcher's command).
      * Returns null when the command should go on, else its exit code: 0 after printing the usage
      * for {@code --help}, 2 after one line on {@code err}. An option given twice takes its last
-     * value (the launcher gives defaults first).
+     * value (the launcher gives defaults first). An empty path is refused, as tooling's commands do.
      */
     static Integer parse(Object command, String name, String[] args, PrintStream out, PrintStream err) {
         CommandLine cli = new CommandLine(command).setCommandName("jmclbench " + name).setOverwrittenOptionsAllowed(true);
+        cli.registerConverter(Path.class, CommandLines::path);
         try {
             cli.parseArgs(args);
         } catch (ParameterException e) {
@@ -42,6 +44,18 @@ final class CommandLines {
     static int bad(PrintStream err, String command, String message) {
         err.println("jmclbench: " + command + ": " + message);
         return EXIT_BAD_INPUT;
+    }
+
+    /**
+     * A path option's value. An empty one is refused: Path.of("") is the working folder, so an unset
+     * variable ({@code --logs "$DIR"}) put the logs there. Tooling's converter (JmclbenchCli) does the
+     * same; verification does not depend on tooling, so it is repeated here.
+     */
+    static Path path(String value) {
+        if (value.isEmpty()) {
+            throw new TypeConversionException("an empty path ('.' names the working folder)");
+        }
+        return Path.of(value);
     }
 
     /** A whole number above zero. */

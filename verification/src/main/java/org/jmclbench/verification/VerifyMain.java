@@ -174,6 +174,14 @@ public final class VerifyMain {
                 usage(unwritable);
             }
         }
+        if (catalogs.stream().flatMap(c -> c.jpfChecks().stream()).anyMatch(c -> selected(c.id(), only))) {
+            // A heap no JVM can reserve failed every JPF check (exit 1): it is the option that is wrong.
+            runner = new JpfRunner(JpfHome.locate(), classPath, logs, timeout, heap);
+            String refused = runner.unstartable();
+            if (refused != null) {
+                usage("--heap: " + heap + " MB: no JVM starts with it (" + refused + ")");
+            }
+        }
         System.out.printf("%-34s %-48s %-9s %-8s %9s %8s%n", "check", "property", "policy", "verdict", "states",
                 "seconds");
         checks:
@@ -210,9 +218,6 @@ public final class VerifyMain {
                 }
                 if (!selected(c.id(), only)) {
                     continue;
-                }
-                if (runner == null) {
-                    runner = new JpfRunner(JpfHome.locate(), classPath, logs, timeout, heap);
                 }
                 JpfResult r = runner.run(c);
                 seeded |= c.seeded();

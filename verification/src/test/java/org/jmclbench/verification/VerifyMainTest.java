@@ -53,6 +53,23 @@ class VerifyMainTest {
     }
 
     @Test
+    void aHeapNoJvmCanReserveIsOneLineBeforeAnyCheck() throws Exception {
+        // every JPF check failed (exit 1, "verification: 0 passed, 1 failed"): a failure of the
+        // benchmark for what is bad usage
+        assertBadInput("jmclbench: verify: --heap: 2147483647 MB: no JVM starts with it"
+                + " (Could not reserve enough space for 2199023255552KB object heap)",
+                "--only", "mission-seeded-stray-allocation", "--heap", "2147483647");
+    }
+
+    @Test
+    void anEmptyPathIsOneLineNamingTheOption() throws Exception {
+        // --logs "" was the working folder; --out "" said '--out:  is a folder' (an unset "$DIR")
+        String empty = "an empty path ('.' names the working folder)";
+        assertBadInput("jmclbench: verify: Invalid value for option '--logs': " + empty, "--only", "P2-static", "--logs", "");
+        assertBadInput("jmclbench: verify: Invalid value for option '--out': " + empty, "--only", "P2-static", "--out", "");
+    }
+
+    @Test
     void anUnknownOptionIsNamedAsUnknown() throws Exception {
         // the hand-written parser took it for an option that needs a value
         assertBadInput("jmclbench: verify: Unknown option: '--bogus'", "--bogus");
@@ -97,11 +114,21 @@ class VerifyMainTest {
         Path out = dir.resolve("out.txt");
         Path err = dir.resolve("err.txt");
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), VerifyMain.class.getName()));
+                "-cp", System.getProperty("java.class.path")));
+        String jpfHome = System.getProperty("jpf.home");
+        if (jpfHome != null && !jpfHome.isBlank()) {
+            cmd.add("-Djpf.home=" + jpfHome); // as the launcher gives it
+        }
+        cmd.add(VerifyMain.class.getName());
         cmd.addAll(List.of(args));
         Process p = new ProcessBuilder(cmd).directory(dir.toFile()).redirectOutput(out.toFile())
                 .redirectError(err.toFile()).start();
-        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "verify did not end");
+        if (!p.waitFor(120, TimeUnit.SECONDS)) {
+            // a whole verify taken for bad input: do not leave it (and its JPF JVMs) running
+            p.descendants().forEach(ProcessHandle::destroyForcibly);
+            p.destroyForcibly();
+            throw new AssertionError("verify did not end");
+        }
         assertEquals(2, p.exitValue(), Files.readString(err));
         assertEquals(List.of(message), Files.readAllLines(err, StandardCharsets.UTF_8));
         assertEquals("", Files.readString(out), "nothing on stdout: no table header before the error");

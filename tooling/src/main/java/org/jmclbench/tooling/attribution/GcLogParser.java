@@ -53,7 +53,52 @@ public final class GcLogParser {
             .appendPattern("yyyy-MM-dd'T'HH:mm:ss").appendFraction(ChronoField.MILLI_OF_SECOND, 3, 3, true)
             .appendPattern("xx").toFormatter();
 
+    /** The JDK 8 {@code -Xloggc} file's third header line, written before any entry. */
+    private static final String JDK8_FLAGS_HEADER = "CommandLine flags: ";
+
     private GcLogParser() {
+    }
+
+    /**
+     * Whether {@code log} can be a GC log of either format: some line of it is one a GC log writes
+     * (a unified-logging line tagged gc or safepoint, such as "Using Serial"; a JDK 8 entry or its
+     * "CommandLine flags:" header), or it has no line at all (a log that --gc-log starts at run time
+     * stays empty when nothing stopped the world). Another text, read by {@link #parse}, is a log of
+     * no events: a wrong file that would explain nothing. Bytes that are not UTF-8 do not throw.
+     */
+    public static boolean isGcLog(Path log) throws IOException {
+        boolean text = false;
+        for (String line : (Iterable<String>) new String(Files.readAllBytes(log), StandardCharsets.UTF_8).lines()::iterator) {
+            if (line.isBlank()) {
+                continue;
+            }
+            text = true;
+            if (isGcLogLine(line)) {
+                return true;
+            }
+        }
+        return !text;
+    }
+
+    private static boolean isGcLogLine(String line) {
+        if (line.startsWith("[")) {
+            Decorated d;
+            try {
+                d = Decorated.of(line);
+            } catch (RuntimeException e) {
+                return false; // a bracketed date that is not one
+            }
+            return d != null && (d.tags.startsWith("gc") || d.tags.startsWith("safepoint"));
+        }
+        if (line.startsWith(JDK8_FLAGS_HEADER)) {
+            return true;
+        }
+        Matcher s = JDK8_STAMPS.matcher(line);
+        if (!s.matches() || (s.group(1) == null && s.group(2) == null)) {
+            return false;
+        }
+        String rest = s.group(3);
+        return rest.startsWith("[GC") || rest.startsWith("[Full GC") || STOPPED.matcher(rest).find();
     }
 
     /** Every pause and safepoint in the log, sorted by start. */

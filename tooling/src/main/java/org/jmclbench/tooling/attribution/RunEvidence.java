@@ -51,6 +51,11 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
         if (eventsFile != null && !Files.isRegularFile(eventsFile)) {
             throw BadUsageException.ofOption("--events", eventsFile + ": no such file");
         }
+        // Read as a GC log, any other text was a log of no events: the run explained without them, exit 0.
+        if (eventsFile != null && !eventsFile.getFileName().toString().endsWith(".jfr") && !GcLogParser.isGcLog(eventsFile)) {
+            throw BadUsageException.ofOption("--events", eventsFile + ": neither a JFR recording (named .jfr) nor a GC log"
+                    + " (no line of it is one a GC log writes)");
+        }
         if (!Files.isDirectory(dir)) {
             throw new BadUsageException(dir + ": not a folder");
         }

@@ -147,4 +147,30 @@ class ExplainCommandTest {
         assertEquals("2", missing[0], missing[1] + missing[2]);
         assertEquals("jmclbench: --events: " + tmp.resolve("nosuch.jfr") + ": no such file", missing[2].strip());
     }
+
+    /** A text that is neither a recording nor a GC log was read as a GC log of no events: explained without them, exit 0. */
+    @Test
+    void eventsThatAreNoGcLogAreRefusedWhileAGcLogWithoutPausesIsRead(@TempDir Path tmp) throws Exception {
+        Path key = runnerStyleRun(tmp, true);
+        Files.delete(key.resolve("recording.jfr"));
+        Path notes = tmp.resolve("notes.txt");
+        Files.writeString(notes, "run 3 was slow\nsee the recording\n");
+        String[] wrong = run("explain", "--events", notes.toString(), key.toString());
+        assertEquals("2", wrong[0], wrong[1] + wrong[2]);
+        assertEquals("jmclbench: --events: " + notes + ": neither a JFR recording (named .jfr) nor a GC log"
+                + " (no line of it is one a GC log writes)", wrong[2].strip());
+        assertEquals("", wrong[1], "nothing explained");
+        // What --gc-log wrote for a -p 10 run (JDK 17): one safepoint, no pause; and a log of a run
+        // in which nothing stopped the world, which stays empty.
+        Path quiet = tmp.resolve("quiet.log");
+        Files.writeString(quiet, "[1.043s][87624488262750ns][info][safepoint] Safepoint \"Cleanup\", Time since last:"
+                + " 1000103065 ns, Reaching safepoint: 7423 ns, Cleanup: 67807 ns, At safepoint: 2374 ns, Total: 77604 ns\n");
+        Path empty = Files.createFile(tmp.resolve("empty.log"));
+        for (Path log : new Path[] {quiet, empty}) {
+            String[] read = run("explain", "--limit", "0", "--events", log.toString(), key.toString());
+            assertEquals("0", read[0], read[2]);
+            assertTrue(read[1].matches("(?s).*events:  GC log " + java.util.regex.Pattern.quote(log.toString())
+                    + " \\(\\d events\\)\n.*"), read[1]);
+        }
+    }
 }

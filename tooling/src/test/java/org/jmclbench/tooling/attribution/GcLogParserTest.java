@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -99,5 +100,36 @@ class GcLogParserTest {
     private static long epochNs(String jdk8Stamp) {
         OffsetDateTime t = OffsetDateTime.parse(jdk8Stamp.replace("+0000", "+00:00"));
         return t.toEpochSecond() * 1_000_000_000L + t.getNano();
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"jdk11/gc.log", "jdk17/gc.log", "jdk21/gc.log", "jdk25/gc.log", "jdk17/uptime/gc.log",
+            "jdk25/zgc/gc.log", "jdk8-handwritten/gc.log", "jdk8-handwritten/gc-uptime.log"})
+    void aRecordedLogIsAGcLog(String fixture) throws Exception {
+        assertTrue(GcLogParser.isGcLog(Fixtures.dir(fixture)), fixture);
+    }
+
+    /** Where explain --events draws the line: a log's format lines without a pause are a GC log, other text is not. */
+    @Test
+    void aLogWithoutPausesIsAGcLogButOtherTextIsNot(@TempDir Path tmp) throws Exception {
+        // -Xlog:gc of a JVM that never collected: its start line only
+        assertTrue(isGcLog(tmp, "[0.003s][1044737680321ns][info][gc] Using Serial\n"));
+        // a JDK 8 -Xloggc file before its first entry: the header
+        assertTrue(isGcLog(tmp, "OpenJDK 64-Bit Server VM (25.392-b08) for linux-amd64 JRE (1.8.0_392-b08)\n"
+                + "Memory: 4k page, physical 8000000k(1000000k free), swap 0k(0k free)\n"
+                + "CommandLine flags: -XX:+PrintGC -XX:+PrintGCDateStamps\n"));
+        assertTrue(isGcLog(tmp, ""), "--gc-log's file when nothing stopped the world");
+        assertTrue(GcLogParser.parse(List.of("[0.003s][1044737680321ns][info][gc] Using Serial"),
+                RunClock.fromText(Fixtures.dir("jdk17").resolve("clock.txt"))).isEmpty(), "a log of no events");
+        assertTrue(!isGcLog(tmp, "run 3 was slow\n\nsee the recording\n"));
+        assertTrue(!isGcLog(tmp, "[section]\nkey=value\n"), "bracketed, but tagged neither gc nor safepoint");
+        assertTrue(!isGcLog(tmp, "3.14: [pi]\n[2026-13-45Tx] odd\n"), "stamped, but no GC entry");
+        Files.write(tmp.resolve("bin"), new byte[] {'F', 'L', 'R', 0, (byte) 0xff, (byte) 0xfe, '\n', 1, 2});
+        assertTrue(!GcLogParser.isGcLog(tmp.resolve("bin")), "a recording not named .jfr");
+    }
+
+    private static boolean isGcLog(Path tmp, String text) throws Exception {
+        Path f = Files.writeString(Files.createTempFile(tmp, "log", ".txt"), text);
+        return GcLogParser.isGcLog(f);
     }
 }

@@ -123,13 +123,37 @@ public final class JpfRunner {
         }
     }
 
-    /** The forked JVM's command line: JDK 17, JPF's flags, budgets, then JPF's own arguments. */
-    List<String> command(JpfCheck check, Path verdict) {
+    /**
+     * Why the forked JVM cannot start with this runner's flags (its heap cap), or null: one
+     * {@code java ... -version} before any check, so that a heap no JVM can reserve is refused as
+     * bad usage instead of failing every JPF check. The reason is the JVM's own last line, for
+     * example "Could not reserve enough space for 2199023255552KB object heap".
+     */
+    public String unstartable() throws IOException, InterruptedException {
+        List<String> cmd = jvm();
+        cmd.add("-version");
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+        List<String> lines = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).lines()
+                .filter(l -> !l.isBlank()).toList();
+        if (p.waitFor() == 0) {
+            return null;
+        }
+        return lines.isEmpty() ? "exit " + p.exitValue() : lines.get(lines.size() - 1).strip();
+    }
+
+    /** The forked JVM up to its class path: JDK 17, the heap cap, the collector and JPF's flags. */
+    private List<String> jvm() {
         List<String> cmd = new ArrayList<>();
         cmd.add(jpf.java().toString());
         cmd.add("-Xmx" + heapMegabytes + "m");
         cmd.add("-XX:+UseSerialGC");
         cmd.addAll(HOST_JVM_FLAGS);
+        return cmd;
+    }
+
+    /** The forked JVM's command line: JDK 17, JPF's flags, budgets, then JPF's own arguments. */
+    List<String> command(JpfCheck check, Path verdict) {
+        List<String> cmd = jvm();
         cmd.add("-cp");
         List<String> host = new ArrayList<>();
         host.add(jpf.jpfJar().toString());

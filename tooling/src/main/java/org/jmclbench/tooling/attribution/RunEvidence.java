@@ -91,6 +91,10 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
         } else if (jfr != null) {
             events = readJfr(jfr, clock);
             source = "JFR " + jfr;
+            if (events == null && givenJfr) {
+                // the user's file, not a run's recording cut short by a crash: the run explained without it, exit 0
+                throw BadUsageException.ofOption("--events", jfr + ": not a JFR recording JFR can read");
+            }
             if (events == null) {
                 events = gcLog != null ? GcLogParser.parse(gcLog, clock) : List.of();
                 source = "JFR " + jfr + " unreadable (the run may have crashed before dumping it)"

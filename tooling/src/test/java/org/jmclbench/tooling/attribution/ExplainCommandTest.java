@@ -160,6 +160,12 @@ class ExplainCommandTest {
         assertEquals("jmclbench: --events: " + notes + ": neither a JFR recording (named .jfr) nor a GC log"
                 + " (no line of it is one a GC log writes)", wrong[2].strip());
         assertEquals("", wrong[1], "nothing explained");
+        // named .jfr but no recording: the user's file, not a recording a crashed run left unfinished
+        Path fake = Files.writeString(tmp.resolve("notes.jfr"), "not a recording\n");
+        String[] notJfr = run("explain", "--events", fake.toString(), key.toString());
+        assertEquals("2", notJfr[0], notJfr[1] + notJfr[2]);
+        assertEquals("jmclbench: --events: " + fake + ": not a JFR recording JFR can read", notJfr[2].strip());
+        assertEquals("", notJfr[1], "nothing explained");
         // What --gc-log wrote for a -p 10 run (JDK 17): one safepoint, no pause; and a log of a run
         // in which nothing stopped the world, which stays empty.
         Path quiet = tmp.resolve("quiet.log");

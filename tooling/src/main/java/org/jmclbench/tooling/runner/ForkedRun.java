@@ -32,6 +32,8 @@ public final class ForkedRun {
     static final int UNSUPPORTED_EXIT = 3;
     static final int STDERR_TAIL_LINES = 20;
     static final int STDERR_TAIL_CHARS = 4000;
+    /** How much of the end of stderr.txt is read for its tail. */
+    static final int TAIL_READ_BYTES = 64 * 1024;
 
     private static final ObjectMapper JSON = new ObjectMapper();
     /** The child in progress (a run, or the aot profile's training run), killed by the shutdown hook if the runner is interrupted (Ctrl-C). */
@@ -240,10 +242,24 @@ public final class ForkedRun {
         return why + (tail.isBlank() ? "" : ": " + lastLine(tail));
     }
 
-    /** The last lines of a file (the end of a stack trace says most). */
+    /**
+     * The last lines of a file (the end of a stack trace says most), read from its last
+     * {@link #TAIL_READ_BYTES} only: a runtime that floods its stderr with gigabytes must not take
+     * the runner's memory with it.
+     */
     static String tail(Path file) {
-        try {
-            List<String> lines = org.jmclbench.tooling.runtime.ProcessRunner.readText(file).lines().toList();
+        try (java.nio.channels.FileChannel ch = java.nio.channels.FileChannel.open(file)) {
+            long size = ch.size();
+            long from = Math.max(0, size - TAIL_READ_BYTES);
+            java.nio.ByteBuffer buf = java.nio.ByteBuffer.allocate((int) (size - from));
+            while (buf.hasRemaining() && ch.read(buf, from + buf.position()) > 0) {
+                // read until the end seen above (the file may still grow: an orphan writing on)
+            }
+            String text = new String(buf.array(), 0, buf.position(), StandardCharsets.UTF_8);
+            List<String> lines = text.lines().toList();
+            if (from > 0 && lines.size() > 1) {
+                lines = lines.subList(1, lines.size()); // the first line read is cut
+            }
             String t = String.join("\n", lines.subList(Math.max(0, lines.size() - STDERR_TAIL_LINES), lines.size()));
             return t.length() > STDERR_TAIL_CHARS ? t.substring(t.length() - STDERR_TAIL_CHARS) : t;
         } catch (IOException e) {

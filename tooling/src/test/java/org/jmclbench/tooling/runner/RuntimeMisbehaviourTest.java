@@ -1,0 +1,64 @@
+package org.jmclbench.tooling.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.ResultSet;
+import java.sql.Statement;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.jmclbench.tooling.Fixtures;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Runtimes under test that misbehave in ways MatrixIsolationTest's do not: each is that run's
+ * recorded failure (nothing of it stored as a result), never the runner's, and the matrix goes on.
+ */
+class RuntimeMisbehaviourTest extends FakeJvmHome {
+
+    /** A run's row: status, failure, stderr tail, summary kept, metrics kept. */
+    record Row(String status, String failure, String tail, String summary, int metrics) {
+    }
+
+    private Map<String, Row> matrix(String... modes) throws Exception {
+        List<String> args = new ArrayList<>(List.of("matrix", "--datasets", "tiny", "--particles", "100",
+                "--timeout", "15", "--db", db.toString(), "--java", fake.toString()));
+        for (int i = 0; i < modes.length; i++) {
+            args.add("--java");
+            args.add(Fixtures.fakeJava(dir, modes[i], modes[i], 0, null, 22 + i).toString());
+        }
+        Fixtures.CliResult r = Fixtures.cli(args.toArray(String[]::new));
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+        Map<String, Row> rows = new HashMap<>();
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
+             ResultSet rs = s.executeQuery("SELECT runtime, status, failure, stderr_tail, summary_json,"
+                     + " (SELECT count(*) FROM metrics m WHERE m.run_key = runs.run_key) FROM runs")) {
+            while (rs.next()) {
+                rows.put(rs.getString(1), new Row(rs.getString(2), rs.getString(3), rs.getString(4), rs.getString(5), rs.getInt(6)));
+            }
+        }
+        assertEquals(modes.length + 1, rows.size(), rows.toString());
+        assertEquals("ok", rows.get("fake-21").status(), "the well-behaved runtime's run is made: " + rows);
+        return rows;
+    }
+
+    /**
+     * Gigabytes of stderr: the runner reads only the end of stderr.txt for the run's tail (it read
+     * the whole file, and a 3 GB one ended the runner with OutOfMemoryError, losing the matrix).
+     */
+    @Test
+    void aRuntimeFloodingItsStderrIsItsFailureAndTheRunnerReadsOnlyTheTail() throws Exception {
+        Row flood = matrix("flood").get("fake-22");
+        assertEquals("failed", flood.status(), flood.toString());
+        assertEquals("exit code 1: jmclbench: failure: flooded its stderr", flood.failure());
+        assertTrue(flood.tail().length() <= ForkedRun.STDERR_TAIL_CHARS, "" + flood.tail().length());
+        assertNull(flood.summary());
+    }
+}

@@ -59,8 +59,8 @@ public final class RunFolderIngest {
         flattenSummary(summary, d);
         d.areas.addAll(memoryAreas(summary));
         Map<String, List<Job>> jobs = new LinkedHashMap<>();
-        jobs.put("predict", readJobs(dir.resolve("odoData.txt")));
-        jobs.put("update", readJobs(dir.resolve("laserData.txt")));
+        jobs.put("predict", releasedJobs(dir.resolve("odoData.txt"), summary, "predict"));
+        jobs.put("update", releasedJobs(dir.resolve("laserData.txt"), summary, "update"));
         List<Job> all = new ArrayList<>();
         jobs.values().forEach(all::addAll);
         jobs.put("all", all);
@@ -185,6 +185,21 @@ public final class RunFolderIngest {
         if (v != null && v.isNumber() && Double.isFinite(v.asDouble())) {
             d.metrics.add(new RunDetails.Metric(task, metric, stat, v.asDouble()));
         }
+    }
+
+    /**
+     * The job lines of {@code task}, which must be as many as summary.json says were released (one
+     * line a released job, docs/FORMATS.md section 3): a summary that claims jobs its job file does
+     * not hold (a runtime cut short, a file cut at a line end) would store counts no job backs.
+     */
+    static List<Job> releasedJobs(Path file, JsonNode summary, String task) throws IOException {
+        List<Job> jobs = readJobs(file);
+        JsonNode released = summary.path("tasks").path(task).path("released");
+        if (released.canConvertToLong() && released.asLong() != jobs.size()) {
+            throw new IOException(file + ": " + jobs.size() + " job lines, but summary.json says " + released.asLong()
+                    + " " + task + " jobs were released");
+        }
+        return jobs;
     }
 
     static List<Job> readJobs(Path file) throws IOException {

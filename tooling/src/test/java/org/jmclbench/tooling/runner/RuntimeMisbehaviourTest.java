@@ -61,4 +61,22 @@ class RuntimeMisbehaviourTest extends FakeJvmHome {
         assertTrue(flood.tail().length() <= ForkedRun.STDERR_TAIL_CHARS, "" + flood.tail().length());
         assertNull(flood.summary());
     }
+
+    /**
+     * A summary.json that claims jobs its job files do not hold (20 predict jobs released for 10
+     * lines; a job file cut to 5 of its 10): the run was recorded ok with the summary's counts,
+     * which no job backs; now failed, naming the file and both counts, nothing of it stored.
+     */
+    @Test
+    void aSummaryClaimingJobsTheJobFilesDoNotHoldIsGarbageNotAResult() throws Exception {
+        Map<String, Row> rows = matrix("overclaim", "shortjobs");
+        for (String[] c : new String[][] {{"fake-22", "10 job lines, but summary.json says 20 predict jobs were released"},
+                {"fake-23", "5 job lines, but summary.json says 10 predict jobs were released"}}) {
+            Row r = rows.get(c[0]);
+            assertEquals("failed", r.status(), r.toString());
+            assertTrue(r.failure().startsWith("garbage output: ") && r.failure().contains("odoData.txt: " + c[1]), r.failure());
+            assertNull(r.summary());
+            assertEquals(0, r.metrics(), "no metric of a failed run");
+        }
+    }
 }

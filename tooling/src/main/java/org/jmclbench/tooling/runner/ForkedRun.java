@@ -47,6 +47,7 @@ public final class ForkedRun {
             Process p = CURRENT.get();
             if (p != null) {
                 ProcessTree.kill(p);
+                ProcessTree.killSession(p.pid());
             }
         }, "jmclbench-kill-run"));
     }
@@ -62,7 +63,7 @@ public final class ForkedRun {
                                      java.util.Map<String, String> env) throws IOException {
         Path stdout = folder.resolve("stdout.txt");
         Path stderr = folder.resolve("stderr.txt");
-        ProcessBuilder pb = new ProcessBuilder(command);
+        ProcessBuilder pb = new ProcessBuilder(inOwnSession(command));
         pb.redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
         pb.redirectOutput(stdout.toFile());
         pb.redirectError(stderr.toFile());
@@ -93,6 +94,8 @@ public final class ForkedRun {
             ProcessTree.kill(p);
             CURRENT.set(null);
         }
+        // whatever the run left behind (a child that outlived it, re-parented) would overlap the next run
+        ProcessTree.killSession(p.pid());
         double wall = (System.nanoTime() - t0) / 1e9;
         String tail = tail(stderr);
         if (!finished) {
@@ -136,6 +139,20 @@ public final class ForkedRun {
         return new ForkOutcome(RunRow.OK, code, null, tail, wall, leaf, text, summary);
     }
 
+    /**
+     * {@code command} started by {@code setsid}, which leaves the runner's session and then runs
+     * it in the same process (a child of the runner never leads a process group, so setsid does
+     * not fork): the session, numbered by the run's pid, holds everything the run starts, found
+     * and killed after it even when re-parented. Unchanged where setsid is not installed.
+     */
+    static List<String> inOwnSession(List<String> command) {
+        return org.jmclbench.tooling.load.CpuLoad.onPath("setsid").map(setsid -> {
+            List<String> c = new ArrayList<>(List.of(setsid.toString(), "--wait"));
+            c.addAll(command);
+            return c;
+        }).orElse(command);
+    }
+
     static final String PID_FILE = "runner.pid";
 
     /** Notes the child's pid and start time, so that a later runner can kill it if this one dies first. */
@@ -166,6 +183,9 @@ public final class ForkedRun {
                     h.descendants().forEach(ProcessHandle::destroyForcibly);
                     h.destroyForcibly();
                     h.onExit().orTimeout(10, TimeUnit.SECONDS).exceptionally(e -> h).join();
+                    // and what it started in its session (only while the pid is surely the run's:
+                    // an old pid file's number may lead someone else's session by now)
+                    ProcessTree.killSession(pid);
                 }
             });
         } catch (IOException | RuntimeException ignored) {

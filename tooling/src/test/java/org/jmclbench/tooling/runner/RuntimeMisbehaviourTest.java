@@ -79,4 +79,25 @@ class RuntimeMisbehaviourTest extends FakeJvmHome {
             assertEquals(0, r.metrics(), "no metric of a failed run");
         }
     }
+
+    /**
+     * A runtime that exits 0 with a good run but leaves a child running (holding its output open):
+     * the child was re-parented and lived on beside the following runs, which must never overlap;
+     * now everything left in the run's session is killed when the run ends.
+     */
+    @Test
+    void aChildThatOutlivesTheRuntimeIsKilledWhenTheRunEnds() throws Exception {
+        String mark = Fixtures.hangMark(dir);
+        try {
+            Row orphan = matrix("orphan").get("fake-22");
+            assertEquals("ok", orphan.status(), "the run itself completed: " + orphan);
+            assertEquals(List.of(), survivors(mark), "a child of the run outlived the matrix");
+        } finally {
+            survivors(mark).forEach(ProcessHandle::destroyForcibly);
+        }
+    }
+
+    private static List<ProcessHandle> survivors(String mark) {
+        return ProcessHandle.allProcesses().filter(p -> p.info().commandLine().orElse("").contains(mark)).toList();
+    }
 }

@@ -32,6 +32,8 @@ public final class ForkedRun {
     static final int UNSUPPORTED_EXIT = 3;
     static final int STDERR_TAIL_LINES = 20;
     static final int STDERR_TAIL_CHARS = 4000;
+    /** The largest summary.json read (a real one is about 10 KB: a few counts and quantiles per task). */
+    static final long MAX_SUMMARY_BYTES = 16L * 1024 * 1024;
     /** How much of the end of stderr.txt is read for its tail. */
     static final int TAIL_READ_BYTES = 64 * 1024;
 
@@ -123,6 +125,12 @@ public final class ForkedRun {
             return new ForkOutcome(RunRow.FAILED, code, e.getMessage(), tail, wall, null, null, null);
         }
         Path summaryFile = leaf.resolve("summary.json");
+        long summaryBytes = Files.size(summaryFile);
+        if (summaryBytes > MAX_SUMMARY_BYTES) {
+            // read whole, a runaway one would take the runner's memory with it
+            return new ForkOutcome(RunRow.FAILED, code, "garbage output: summary.json is " + summaryBytes
+                    + " bytes, more than a summary's " + MAX_SUMMARY_BYTES, tail, wall, leaf, null, null);
+        }
         String text = org.jmclbench.tooling.runtime.ProcessRunner.readText(summaryFile);
         JsonNode summary;
         try {

@@ -63,6 +63,19 @@ class RuntimeMisbehaviourTest extends FakeJvmHome {
     }
 
     /**
+     * A runaway summary.json of 3 GB (sparse, after a good summary): read whole, it ended the runner
+     * with OutOfMemoryError; now the run's failure, the matrix going on.
+     */
+    @Test
+    void aRunawaySummaryIsGarbageAndNotReadWhole() throws Exception {
+        Row r = matrix("hugesummary").get("fake-22");
+        assertEquals("failed", r.status(), r.toString());
+        assertEquals("garbage output: summary.json is 3221225472 bytes, more than a summary's " + ForkedRun.MAX_SUMMARY_BYTES,
+                r.failure());
+        assertNull(r.summary());
+    }
+
+    /**
      * A summary.json that claims jobs its job files do not hold (20 predict jobs released for 10
      * lines; a job file cut to 5 of its 10): the run was recorded ok with the summary's counts,
      * which no job backs; now failed, naming the file and both counts, nothing of it stored.

@@ -5,7 +5,7 @@
 # exit 3 under -XX:+ExitOnOutOfMemoryError; sigstop: stops itself; flood: 3 GB of stderr, exit 1;
 # nosummary: a complete folder without summary.json; overclaim: a summary claiming 20 predict jobs for
 # 10 job lines; shortjobs: a job file cut to 5 of its 10 lines; segvmid: SIGSEGV after its whole
-# folder was written; hugesummary: a 3 GB summary.json (sparse); orphan: an ok run that leaves a child running; limit-at-N: ok
+# folder was written; hugesummary, hugejobs: a 3 GB summary.json, odoData.txt (sparse); orphan: an ok run that leaves a child running; limit-at-N: ok
 # up to N particles, unsupported above; gate: an ok run that first creates ../started beside its
 # bin/ and waits for ../open, so that a test can act while a matrix is surely mid-run). Tests copy
 # it with the placeholders replaced. Never a real measurement.
@@ -162,6 +162,7 @@ JSON
 fi
 case $MODE in
     nosummary) rm "$leaf.partial/summary.json" ;;
+    hugejobs) truncate -s 3G "$leaf.partial/odoData.txt" ;;
     hugesummary) truncate -s 3G "$leaf.partial/summary.json" ;;
     overclaim) sed -i 's/"released": 10,/"released": 20,/' "$leaf.partial/summary.json" ;;
     shortjobs) sed -i '/^[5-9] /d' "$leaf.partial/odoData.txt" ;;

@@ -226,7 +226,7 @@ public final class RunFolderIngest {
     private static <T> List<T> readRows(Path file, int columns, Function<String[], T> row) throws IOException {
         List<T> rows = new ArrayList<>();
         int lineNo = 0;
-        for (String line : Files.readAllLines(file, StandardCharsets.UTF_8)) {
+        for (String line : boundedLines(file)) {
             lineNo++;
             String l = line.strip();
             if (l.isEmpty() || l.startsWith("#")) {
@@ -243,6 +243,41 @@ public final class RunFolderIngest {
             }
         }
         return rows;
+    }
+
+    /** The longest line of a data file read (a job line is under 200 characters). */
+    public static final int MAX_LINE_CHARS = 64 * 1024;
+
+    /**
+     * The lines of {@code file} (ended by LF, CR or CRLF, as {@code Files.readAllLines} reads them),
+     * refusing a line longer than {@link #MAX_LINE_CHARS}: a runaway file of gigabytes without a
+     * line end, read whole, would take the runner's memory with it.
+     */
+    static List<String> boundedLines(Path file) throws IOException {
+        List<String> lines = new ArrayList<>();
+        try (java.io.BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+            StringBuilder line = new StringBuilder();
+            boolean afterCr = false;
+            for (int c = in.read(); c != -1; c = in.read()) {
+                if (c == '\n' && afterCr) {
+                    afterCr = false;
+                    continue;
+                }
+                afterCr = c == '\r';
+                if (c == '\n' || c == '\r') {
+                    lines.add(line.toString());
+                    line.setLength(0);
+                } else if (line.length() == MAX_LINE_CHARS) {
+                    throw new IOException(file + ":" + (lines.size() + 1) + ": a line longer than " + MAX_LINE_CHARS + " characters");
+                } else {
+                    line.append((char) c);
+                }
+            }
+            if (line.length() > 0) {
+                lines.add(line.toString());
+            }
+        }
+        return lines;
     }
 
     static String encode(Histogram h) {

@@ -76,6 +76,19 @@ class RuntimeMisbehaviourTest extends FakeJvmHome {
     }
 
     /**
+     * A job file of 3 GB ending in one line without an end (sparse): read whole, it ended the runner
+     * with OutOfMemoryError; now refused at its first overlong line, the run's failure.
+     */
+    @Test
+    void aRunawayJobFileIsGarbageAndNotReadWhole() throws Exception {
+        Row r = matrix("hugejobs").get("fake-22");
+        assertEquals("failed", r.status(), r.toString());
+        assertTrue(r.failure().startsWith("garbage output: ") && r.failure().endsWith("odoData.txt:12: a line longer than "
+                + org.jmclbench.tooling.store.RunFolderIngest.MAX_LINE_CHARS + " characters"), r.failure());
+        assertNull(r.summary());
+    }
+
+    /**
      * A summary.json that claims jobs its job files do not hold (20 predict jobs released for 10
      * lines; a job file cut to 5 of its 10): the run was recorded ok with the summary's counts,
      * which no job backs; now failed, naming the file and both counts, nothing of it stored.

@@ -2,7 +2,10 @@
 # A fake runtime for the runner's tests: answers like a JVM to probes and, as the workload, does
 # what MODE says (ok, crash, hang, garbage, badjson, oom, badexit, wrongrun: a valid folder for
 # another particle count; unsupported: a count past the runtime's limits, exit 3; exitoom: a JVM's
-# exit 3 under -XX:+ExitOnOutOfMemoryError; limit-at-N: ok
+# exit 3 under -XX:+ExitOnOutOfMemoryError; sigstop: stops itself; flood: 3 GB of stderr, exit 1;
+# nosummary: a complete folder without summary.json; overclaim: a summary claiming 20 predict jobs for
+# 10 job lines; shortjobs: a job file cut to 5 of its 10 lines; segvmid: SIGSEGV after its whole
+# folder was written; hugesummary, hugejobs: a 3 GB summary.json, odoData.txt (sparse); orphan: an ok run that leaves a child running; limit-at-N: ok
 # up to N particles, unsupported above; gate: an ok run that first creates ../started beside its
 # bin/ and waits for ../open, so that a test can act while a matrix is surely mid-run). Tests copy
 # it with the placeholders replaced. Never a real measurement.
@@ -79,6 +82,14 @@ case $MODE in
         if [ "$p" -gt "${MODE#limit-at-}" ]; then
             echo "jmclbench: unsupported: --particles $p: the fake VM holds at most ${MODE#limit-at-} particles" >&2; exit 3
         fi ;;
+    sigstop)
+        kill -STOP $$ ;;
+    flood)
+        # gigabytes of stderr (a sparse file: no disk spent), then its last words at the end
+        echo "first line" >&2
+        truncate -s 3G "/proc/$$/fd/2"
+        printf "\njmclbench: failure: flooded its stderr\n" >> "/proc/$$/fd/2"
+        exit 1 ;;
     gate)
         here=$(cd "$(dirname "$0")/.." && pwd)
         touch "$here/started"
@@ -149,5 +160,21 @@ else
  "deviation": {"xy": {"mean": 0.003, "max": 0.01}, "x": {"mean": 0.001, "max": 0.002}, "y": {"mean": 0.002, "max": 0.003}, "angle": {"mean": 0.01, "max": 0.02}}}
 JSON
 fi
+case $MODE in
+    nosummary) rm "$leaf.partial/summary.json" ;;
+    hugejobs) truncate -s 3G "$leaf.partial/odoData.txt" ;;
+    hugesummary) truncate -s 3G "$leaf.partial/summary.json" ;;
+    overclaim) sed -i 's/"released": 10,/"released": 20,/' "$leaf.partial/summary.json" ;;
+    shortjobs) sed -i '/^[5-9] /d' "$leaf.partial/odoData.txt" ;;
+esac
 mv "$leaf.partial" "$leaf"
+case $MODE in
+    segvmid)
+        echo "#  SIGSEGV (0xb) at pc=0x0000deadbeef" >&2
+        kill -SEGV $$ ;;
+    orphan)
+        # a child that outlives the runtime with its output open
+        sleep @HANGMARK@ &
+        ;;
+esac
 exit 0

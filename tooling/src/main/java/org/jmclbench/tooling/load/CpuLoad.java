@@ -137,7 +137,7 @@ public final class CpuLoad implements AutoCloseable {
     }
 
     /** The executable {@code name} on the PATH, if any. */
-    static Optional<Path> onPath(String name) {
+    public static Optional<Path> onPath(String name) {
         String path = System.getenv("PATH");
         if (path == null) {
             return Optional.empty();

@@ -32,6 +32,10 @@ public final class ForkedRun {
     static final int UNSUPPORTED_EXIT = 3;
     static final int STDERR_TAIL_LINES = 20;
     static final int STDERR_TAIL_CHARS = 4000;
+    /** The largest summary.json read (a real one is about 10 KB: a few counts and quantiles per task). */
+    static final long MAX_SUMMARY_BYTES = 16L * 1024 * 1024;
+    /** How much of the end of stderr.txt is read for its tail. */
+    static final int TAIL_READ_BYTES = 64 * 1024;
 
     private static final ObjectMapper JSON = new ObjectMapper();
     /** The child in progress (a run, or the aot profile's training run), killed by the shutdown hook if the runner is interrupted (Ctrl-C). */
@@ -45,6 +49,7 @@ public final class ForkedRun {
             Process p = CURRENT.get();
             if (p != null) {
                 ProcessTree.kill(p);
+                ProcessTree.killSession(p.pid());
             }
         }, "jmclbench-kill-run"));
     }
@@ -60,7 +65,7 @@ public final class ForkedRun {
                                      java.util.Map<String, String> env) throws IOException {
         Path stdout = folder.resolve("stdout.txt");
         Path stderr = folder.resolve("stderr.txt");
-        ProcessBuilder pb = new ProcessBuilder(command);
+        ProcessBuilder pb = new ProcessBuilder(inOwnSession(command));
         pb.redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
         pb.redirectOutput(stdout.toFile());
         pb.redirectError(stderr.toFile());
@@ -91,6 +96,8 @@ public final class ForkedRun {
             ProcessTree.kill(p);
             CURRENT.set(null);
         }
+        // whatever the run left behind (a child that outlived it, re-parented) would overlap the next run
+        ProcessTree.killSession(p.pid());
         double wall = (System.nanoTime() - t0) / 1e9;
         String tail = tail(stderr);
         if (!finished) {
@@ -118,6 +125,12 @@ public final class ForkedRun {
             return new ForkOutcome(RunRow.FAILED, code, e.getMessage(), tail, wall, null, null, null);
         }
         Path summaryFile = leaf.resolve("summary.json");
+        long summaryBytes = Files.size(summaryFile);
+        if (summaryBytes > MAX_SUMMARY_BYTES) {
+            // read whole, a runaway one would take the runner's memory with it
+            return new ForkOutcome(RunRow.FAILED, code, "garbage output: summary.json is " + summaryBytes
+                    + " bytes, more than a summary's " + MAX_SUMMARY_BYTES, tail, wall, leaf, null, null);
+        }
         String text = org.jmclbench.tooling.runtime.ProcessRunner.readText(summaryFile);
         JsonNode summary;
         try {
@@ -132,6 +145,20 @@ public final class ForkedRun {
                     + SUMMARY_SCHEMA + " summary", tail, wall, leaf, null, null);
         }
         return new ForkOutcome(RunRow.OK, code, null, tail, wall, leaf, text, summary);
+    }
+
+    /**
+     * {@code command} started by {@code setsid}, which leaves the runner's session and then runs
+     * it in the same process (a child of the runner never leads a process group, so setsid does
+     * not fork): the session, numbered by the run's pid, holds everything the run starts, found
+     * and killed after it even when re-parented. Unchanged where setsid is not installed.
+     */
+    static List<String> inOwnSession(List<String> command) {
+        return org.jmclbench.tooling.load.CpuLoad.onPath("setsid").map(setsid -> {
+            List<String> c = new ArrayList<>(List.of(setsid.toString(), "--wait"));
+            c.addAll(command);
+            return c;
+        }).orElse(command);
     }
 
     static final String PID_FILE = "runner.pid";
@@ -164,6 +191,9 @@ public final class ForkedRun {
                     h.descendants().forEach(ProcessHandle::destroyForcibly);
                     h.destroyForcibly();
                     h.onExit().orTimeout(10, TimeUnit.SECONDS).exceptionally(e -> h).join();
+                    // and what it started in its session (only while the pid is surely the run's:
+                    // an old pid file's number may lead someone else's session by now)
+                    ProcessTree.killSession(pid);
                 }
             });
         } catch (IOException | RuntimeException ignored) {
@@ -240,10 +270,24 @@ public final class ForkedRun {
         return why + (tail.isBlank() ? "" : ": " + lastLine(tail));
     }
 
-    /** The last lines of a file (the end of a stack trace says most). */
+    /**
+     * The last lines of a file (the end of a stack trace says most), read from its last
+     * {@link #TAIL_READ_BYTES} only: a runtime that floods its stderr with gigabytes must not take
+     * the runner's memory with it.
+     */
     static String tail(Path file) {
-        try {
-            List<String> lines = org.jmclbench.tooling.runtime.ProcessRunner.readText(file).lines().toList();
+        try (java.nio.channels.FileChannel ch = java.nio.channels.FileChannel.open(file)) {
+            long size = ch.size();
+            long from = Math.max(0, size - TAIL_READ_BYTES);
+            java.nio.ByteBuffer buf = java.nio.ByteBuffer.allocate((int) (size - from));
+            while (buf.hasRemaining() && ch.read(buf, from + buf.position()) > 0) {
+                // read until the end seen above (the file may still grow: an orphan writing on)
+            }
+            String text = new String(buf.array(), 0, buf.position(), StandardCharsets.UTF_8);
+            List<String> lines = text.lines().toList();
+            if (from > 0 && lines.size() > 1) {
+                lines = lines.subList(1, lines.size()); // the first line read is cut
+            }
             String t = String.join("\n", lines.subList(Math.max(0, lines.size() - STDERR_TAIL_LINES), lines.size()));
             return t.length() > STDERR_TAIL_CHARS ? t.substring(t.length() - STDERR_TAIL_CHARS) : t;
         } catch (IOException e) {

@@ -59,8 +59,8 @@ public final class RunFolderIngest {
         flattenSummary(summary, d);
         d.areas.addAll(memoryAreas(summary));
         Map<String, List<Job>> jobs = new LinkedHashMap<>();
-        jobs.put("predict", readJobs(dir.resolve("odoData.txt")));
-        jobs.put("update", readJobs(dir.resolve("laserData.txt")));
+        jobs.put("predict", releasedJobs(dir.resolve("odoData.txt"), summary, "predict"));
+        jobs.put("update", releasedJobs(dir.resolve("laserData.txt"), summary, "update"));
         List<Job> all = new ArrayList<>();
         jobs.values().forEach(all::addAll);
         jobs.put("all", all);
@@ -187,6 +187,21 @@ public final class RunFolderIngest {
         }
     }
 
+    /**
+     * The job lines of {@code task}, which must be as many as summary.json says were released (one
+     * line a released job, docs/FORMATS.md section 3): a summary that claims jobs its job file does
+     * not hold (a runtime cut short, a file cut at a line end) would store counts no job backs.
+     */
+    static List<Job> releasedJobs(Path file, JsonNode summary, String task) throws IOException {
+        List<Job> jobs = readJobs(file);
+        JsonNode released = summary.path("tasks").path(task).path("released");
+        if (released.canConvertToLong() && released.asLong() != jobs.size()) {
+            throw new IOException(file + ": " + jobs.size() + " job lines, but summary.json says " + released.asLong()
+                    + " " + task + " jobs were released");
+        }
+        return jobs;
+    }
+
     static List<Job> readJobs(Path file) throws IOException {
         return readRows(file, 7, f -> new Job(Long.parseLong(f[0]), Long.parseLong(f[1]), Long.parseLong(f[2]),
                 Long.parseLong(f[3]), Long.parseLong(f[4]), f[5], Long.parseLong(f[6]),
@@ -211,7 +226,7 @@ public final class RunFolderIngest {
     private static <T> List<T> readRows(Path file, int columns, Function<String[], T> row) throws IOException {
         List<T> rows = new ArrayList<>();
         int lineNo = 0;
-        for (String line : Files.readAllLines(file, StandardCharsets.UTF_8)) {
+        for (String line : boundedLines(file)) {
             lineNo++;
             String l = line.strip();
             if (l.isEmpty() || l.startsWith("#")) {
@@ -228,6 +243,41 @@ public final class RunFolderIngest {
             }
         }
         return rows;
+    }
+
+    /** The longest line of a data file read (a job line is under 200 characters). */
+    public static final int MAX_LINE_CHARS = 64 * 1024;
+
+    /**
+     * The lines of {@code file} (ended by LF, CR or CRLF, as {@code Files.readAllLines} reads them),
+     * refusing a line longer than {@link #MAX_LINE_CHARS}: a runaway file of gigabytes without a
+     * line end, read whole, would take the runner's memory with it.
+     */
+    static List<String> boundedLines(Path file) throws IOException {
+        List<String> lines = new ArrayList<>();
+        try (java.io.BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+            StringBuilder line = new StringBuilder();
+            boolean afterCr = false;
+            for (int c = in.read(); c != -1; c = in.read()) {
+                if (c == '\n' && afterCr) {
+                    afterCr = false;
+                    continue;
+                }
+                afterCr = c == '\r';
+                if (c == '\n' || c == '\r') {
+                    lines.add(line.toString());
+                    line.setLength(0);
+                } else if (line.length() == MAX_LINE_CHARS) {
+                    throw new IOException(file + ":" + (lines.size() + 1) + ": a line longer than " + MAX_LINE_CHARS + " characters");
+                } else {
+                    line.append((char) c);
+                }
+            }
+            if (line.length() > 0) {
+                lines.add(line.toString());
+            }
+        }
+        return lines;
     }
 
     static String encode(Histogram h) {

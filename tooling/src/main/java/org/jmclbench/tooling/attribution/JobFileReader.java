@@ -11,11 +11,25 @@ import java.util.Set;
 
 import org.jmclbench.tooling.cli.BadUsageException;
 
+import com.fasterxml.jackson.databind.JsonNode;
+
 /** Reads job lines ({@code odoData.txt}, {@code laserData.txt}: docs/FORMATS.md section 3). */
 public final class JobFileReader {
     private static final Set<String> OUTCOMES = Set.of("done", "late", "skipped", "terminated");
 
     private JobFileReader() {
+    }
+
+    /**
+     * Why {@code task}'s job file, of {@code lines} job lines, disagrees with summary.json's count of
+     * its released jobs (one line a released job), or null when it agrees or the summary has no
+     * count: a file cut short, or a summary claiming jobs no line backs.
+     */
+    public static String releasedMismatch(Path file, int lines, JsonNode summary, String task) {
+        JsonNode released = summary.path("tasks").path(task).path("released");
+        return !released.canConvertToLong() || released.asLong() == lines ? null
+                : file + ": " + lines + " job lines, but summary.json says " + released.asLong() + " " + task
+                        + " jobs were released";
     }
 
     /** The jobs of one task from its job file; a malformed line is a {@link BadUsageException} naming file:line. */

@@ -69,10 +69,9 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
             }
             List<JobRecord> task = JobFileReader.read(p, f[1]);
             // one line a released job (docs/FORMATS.md): a file cut at a line end read as a run with fewer jobs
-            JsonNode released = summary.path("tasks").path(f[1]).path("released");
-            if (released.canConvertToLong() && released.asLong() != task.size()) {
-                throw new BadUsageException(p + ": " + task.size() + " job lines, but summary.json says " + released.asLong()
-                        + " " + f[1] + " jobs were released (a damaged run folder)");
+            String mismatch = JobFileReader.releasedMismatch(p, task.size(), summary, f[1]);
+            if (mismatch != null) {
+                throw new BadUsageException(mismatch + " (a damaged run folder)");
             }
             jobs.addAll(task);
         }

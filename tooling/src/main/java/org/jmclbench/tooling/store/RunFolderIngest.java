@@ -14,6 +14,7 @@ import java.util.Map;
 import java.util.function.Function;
 
 import org.HdrHistogram.Histogram;
+import org.jmclbench.tooling.attribution.JobFileReader;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -194,10 +195,9 @@ public final class RunFolderIngest {
      */
     static List<Job> releasedJobs(Path file, JsonNode summary, String task) throws IOException {
         List<Job> jobs = readJobs(file);
-        JsonNode released = summary.path("tasks").path(task).path("released");
-        if (released.canConvertToLong() && released.asLong() != jobs.size()) {
-            throw new IOException(file + ": " + jobs.size() + " job lines, but summary.json says " + released.asLong()
-                    + " " + task + " jobs were released");
+        String mismatch = JobFileReader.releasedMismatch(file, jobs.size(), summary, task);
+        if (mismatch != null) {
+            throw new IOException(mismatch);
         }
         return jobs;
     }

@@ -7,6 +7,7 @@ import java.util.Collection;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 import java.util.function.Function;
 import java.util.stream.Collectors;
@@ -267,7 +268,7 @@ public final class StoredRun {
 
     /** Whether the runs have more than one known value of {@code setting}. */
     private static boolean differ(Collection<StoredRun> runs, Function<StoredRun, Object> setting) {
-        return runs.stream().map(setting).filter(java.util.Objects::nonNull).distinct().count() > 1;
+        return runs.stream().map(setting).filter(Objects::nonNull).distinct().count() > 1;
     }
 
     /**

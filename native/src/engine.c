@@ -227,29 +227,36 @@ struct engine {
 	int64_t t0;
 	int64_t spin_ns;
 	int cpu_time;             /* the handlers read the thread CPU clock per job */
-	int *fifo;                /* released events waiting for the robot, in release order */
-	int head, tail;
-	int running;              /* event whose job is on the robot, or -1 */
+	struct jm_robot robot;    /* what the policy decides on (policy.h) */
 	int dispatch_done;
 	int failed;
-	jm_abort abort;           /* the job on the robot is asked to stop */
 	int dispatcher_policy, dispatcher_priority;
 };
 
-/* Under the lock: whether the handler of task may start the oldest released event now. */
+/* Under the lock: whether nothing is waiting and nothing more will be released. */
+static int drained(const struct engine *e)
+{
+	return e->dispatch_done && e->robot.head == e->robot.tail;
+}
+
+/* Under the lock: whether the handler of task may start the robot's next event now. */
 static int ready_for(const struct engine *e, enum jm_task task)
 {
-	return e->running < 0 && e->head < e->tail && e->tl->events[e->fifo[e->head]].task == task;
+	int k = jm_robot_next(&e->robot);
+
+	return k >= 0 && e->tl->events[k].task == task;
 }
 
 /* Under the lock: wakes whoever can make progress. */
 static void wake_next(struct engine *e)
 {
-	if (e->dispatch_done && e->head == e->tail) {
+	int k = jm_robot_next(&e->robot);
+
+	if (drained(e)) {
 		pthread_cond_signal(&e->cond[0]);
 		pthread_cond_signal(&e->cond[1]);
-	} else if (e->running < 0 && e->head < e->tail) {
-		pthread_cond_signal(&e->cond[e->tl->events[e->fifo[e->head]].task]);
+	} else if (k >= 0) {
+		pthread_cond_signal(&e->cond[e->tl->events[k].task]);
 	}
 }
 
@@ -266,29 +273,26 @@ static void *handler_main(void *arg)
 		int64_t seen;
 		int k, r;
 
-		while (!ready_for(e, h->task) && !(e->dispatch_done && e->head == e->tail))
+		while (!ready_for(e, h->task) && !drained(e))
 			pthread_cond_wait(&e->cond[h->task], &e->lock);
 		if (!ready_for(e, h->task))
 			break;
-		k = e->fifo[e->head++];
-		e->running = k;
-		atomic_store_explicit(&e->abort.requested, 0, memory_order_relaxed);
-		e->abort.seen_ns = -1;
+		k = jm_robot_start(&e->robot);
 		rec.t0 = e->t0;
 		pthread_mutex_unlock(&e->lock);
 
 		jm_recorder_start(&rec);
-		r = run_job(e->m, &e->tl->events[k], &e->abort);
+		r = run_job(e->m, &e->tl->events[k], &e->robot.abort);
 		jm_recorder_end(&rec);
 
 		pthread_mutex_lock(&e->lock);
 		j = &e->tl->jobs[k];
-		seen = e->abort.seen_ns; /* the next job resets it */
+		seen = e->robot.abort.seen_ns; /* the next job resets it */
 		if (r == JM_JOB_NOMEM)
 			e->failed = 1;
 		else if (r == JM_JOB_DONE)
 			record_commit(e->m, j); /* before the next job moves the particles */
-		e->running = -1;
+		jm_robot_end(&e->robot);
 		wake_next(e);
 		pthread_mutex_unlock(&e->lock);
 
@@ -318,7 +322,7 @@ static void *dispatcher_main(void *arg)
 {
 	struct engine *e = arg;
 	struct sched_param sp;
-	int k, latest = -1;
+	int k;
 
 	if (pthread_getschedparam(pthread_self(), &e->dispatcher_policy, &sp) == 0)
 		e->dispatcher_priority = sp.sched_priority;
@@ -338,30 +342,7 @@ static void *dispatcher_main(void *arg)
 		pthread_mutex_lock(&e->lock);
 		for (; k < end; k++) {
 			e->tl->jobs[k].wake_ns = wake - e->t0;
-			switch (e->policy) {
-			case JM_POLICY_SKIP:
-				/* a job on the robot, or one released and about to start: drop the new event */
-				if (e->running >= 0 || e->head < e->tail)
-					e->tl->jobs[k].outcome = JM_OUTCOME_SKIPPED;
-				else
-					e->fifo[e->tail++] = k;
-				break;
-			case JM_POLICY_TERMINATE:
-				if (e->running >= 0)
-					atomic_store_explicit(&e->abort.requested, 1, memory_order_relaxed);
-				/* the request of the superseded event's job (running, waiting or ended), as Java's gates */
-				if (latest >= 0 && e->tl->jobs[latest].abort_ns < 0)
-					e->tl->jobs[latest].abort_ns = wake - e->t0;
-				latest = k;
-				/* a released event superseded before it could start never will: terminated */
-				while (e->head < e->tail)
-					e->tl->jobs[e->fifo[e->head++]].outcome = JM_OUTCOME_TERMINATED;
-				e->fifo[e->tail++] = k;
-				break;
-			case JM_POLICY_QUEUE:
-				e->fifo[e->tail++] = k;
-				break;
-			}
+			jm_policy_release(e->policy, &e->robot, k, wake - e->t0);
 		}
 		wake_next(e);
 		pthread_mutex_unlock(&e->lock);
@@ -420,7 +401,7 @@ int jm_run_realtime(jm_mcl *m, jm_timeline *tl, enum jm_policy policy, int spin_
 	struct handler h[2];
 	pthread_t th[3];
 	pthread_attr_t attr;
-	int created = 0, ret = -1, i, pmin, pmax;
+	int created = 0, ret = -1, i, pmin, pmax, *waiting;
 
 	memset(&e, 0, sizeof(e));
 	e.m = m;
@@ -428,12 +409,10 @@ int jm_run_realtime(jm_mcl *m, jm_timeline *tl, enum jm_policy policy, int spin_
 	e.policy = policy;
 	e.spin_ns = (int64_t)spin_us * 1000;
 	e.cpu_time = cpu_time;
-	e.running = -1;
-	atomic_init(&e.abort.requested, 0);
-	e.abort.seen_ns = -1;
-	e.fifo = malloc(sizeof(int) * (size_t)(tl->n ? tl->n : 1));
-	if (!e.fifo)
+	waiting = malloc(sizeof(int) * (size_t)(tl->n ? tl->n : 1));
+	if (!waiting)
 		return -1;
+	jm_robot_init(&e.robot, waiting, tl->jobs);
 	pthread_mutex_init(&e.lock, NULL);
 	pthread_cond_init(&e.cond[0], NULL);
 	pthread_cond_init(&e.cond[1], NULL);
@@ -479,7 +458,7 @@ out:
 		/* no dispatcher: tell the handlers there is nothing to come */
 		pthread_mutex_lock(&e.lock);
 		e.dispatch_done = 1;
-		e.head = e.tail;
+		e.robot.head = e.robot.tail;
 		wake_next(&e);
 		pthread_mutex_unlock(&e.lock);
 	}
@@ -494,6 +473,6 @@ out:
 	pthread_cond_destroy(&e.cond[0]);
 	pthread_cond_destroy(&e.cond[1]);
 	pthread_mutex_destroy(&e.lock);
-	free(e.fifo);
+	free(waiting);
 	return ret;
 }

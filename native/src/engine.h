@@ -5,12 +5,11 @@
 #include <stdint.h>
 
 #include "dataset.h"
+#include "job.h"
 #include "mcl.h"
 #include "options.h"
 
 enum jm_task { JM_TASK_PREDICT = 0, JM_TASK_UPDATE = 1 };
-enum jm_outcome { JM_OUTCOME_PENDING, JM_OUTCOME_DONE, JM_OUTCOME_LATE, JM_OUTCOME_SKIPPED,
-		  JM_OUTCOME_TERMINATED };
 
 #define JM_PREDICT_DEADLINE_S 0.050
 #define JM_LAST_UPDATE_DEADLINE_S 0.250
@@ -24,18 +23,6 @@ typedef struct {
 	int64_t release_ns;   /* from the run start, time-scaled */
 	int64_t deadline_ns;  /* absolute from the run start */
 } jm_event;
-
-/* What happened to one event's job; preallocated, filled during the run, written after it. */
-typedef struct {
-	int64_t start_ns, end_ns, cpu_ns; /* -1 where there is no such time */
-	int64_t wake_ns;                  /* dispatcher wake-up for this release; -1 in ideal runs */
-	int64_t abort_ns;                 /* first abort request (terminate), -1 never; see jm_abort_from_ns */
-	int64_t seen_ns;                  /* when the job's poll first saw it, -1 never; see jm_abort_seen_from_ns */
-	int64_t release_ns, deadline_ns;  /* as recorded (ideal: release = start, deadline -1) */
-	enum jm_outcome outcome;
-	double ex, ey, et;                /* estimate committed by a completed job */
-	double cov[6];                    /* covariance committed by a completed update */
-} jm_job;
 
 /* Events in release order (odometry before laser at equal times) and their job records. */
 typedef struct {

@@ -247,10 +247,8 @@ static int summarise(const jm_run *r, int task, struct task_summary *t)
 		return -1;
 	if (r->opt->ideal)
 		t->miss = 0;
-	else if (r->opt->policy == JM_POLICY_QUEUE)
-		t->miss = s->late;
 	else
-		t->miss = s->skipped + s->terminated;
+		t->miss = jm_policy_misses(r->opt->policy, s->late, s->skipped, s->terminated);
 	return 0;
 }
 

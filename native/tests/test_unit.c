@@ -1,8 +1,8 @@
 /*
  * Unit tests of libjmcl: the generator against reference values (computed with the Python
  * lines in tests/reference.py), angles, bearings, likelihood, resampling on known weights,
- * termination, memory styles, the reader's and the option parser's rejections, statistics
- * and JSON escaping.
+ * termination, memory styles, the reader's and the option parser's rejections, statistics,
+ * JSON escaping and each overrun policy's rule.
  */
 #define _GNU_SOURCE
 #include <stdlib.h>
@@ -16,6 +16,7 @@
 #include "mcl.h"
 #include "options.h"
 #include "output.h"
+#include "policy.h"
 #include "rng.h"
 #include "stats.h"
 
@@ -761,6 +762,140 @@ static void test_json(void)
 	free(buf);
 }
 
+/*
+ * The robot's state after a step of test_policy_rules: the event on the robot (- none), the
+ * waiting ones, whether its job is asked to stop, per event its outcome (. pending, s skipped,
+ * t terminated) and its abort request time (- none).
+ */
+static void describe_robot(const struct jm_robot *r, int n, char *buf, size_t size)
+{
+	size_t len;
+	int i;
+
+	len = (size_t)snprintf(buf, size, "run=%d wait=[", r->running);
+	for (i = r->head; i < r->tail && len < size; i++)
+		len += (size_t)snprintf(buf + len, size - len, i > r->head ? ",%d" : "%d", r->fifo[i]);
+	if (len < size)
+		len += (size_t)snprintf(buf + len, size - len, "] abort=%d out=",
+					atomic_load(&r->abort.requested));
+	for (i = 0; i < n && len < size; i++) {
+		enum jm_outcome o = r->jobs[i].outcome;
+
+		buf[len++] = o == JM_OUTCOME_SKIPPED ? 's' : o == JM_OUTCOME_TERMINATED ? 't' :
+			     o == JM_OUTCOME_PENDING ? '.' : '?';
+	}
+	for (i = 0; i < n && len < size; i++) {
+		int64_t a = r->jobs[i].abort_ns;
+
+		len += (size_t)snprintf(buf + len, size - len, a < 0 ? "%s-" : "%s%" PRId64,
+					i ? "," : " req=", a);
+	}
+	if (len >= size)
+		buf[size - 1] = '\0';
+	else
+		buf[len] = '\0';
+}
+
+/*
+ * Each policy's rule (policy.h) on one scripted run, without threads or clocks: r releases the
+ * next event (event k at 10 (k + 1) ns), s starts the robot's next job if there is one, e ends
+ * the running job. The same script for every policy; each row says the state after each step.
+ * A policy of policy.h without a row here fails.
+ */
+#define RULE_SCRIPT "rrsrresreser"
+#define RULE_EVENTS 6
+static void test_policy_rules(void)
+{
+	static const char *const want[][sizeof(RULE_SCRIPT) - 1] = {
+		[JM_POLICY_SKIP] = {
+			/* r */ "run=-1 wait=[0] abort=0 out=...... req=-,-,-,-,-,-",
+			/* r: 0 waits to start */ "run=-1 wait=[0] abort=0 out=.s.... req=-,-,-,-,-,-",
+			/* s */ "run=0 wait=[] abort=0 out=.s.... req=-,-,-,-,-,-",
+			/* r: 0 runs */ "run=0 wait=[] abort=0 out=.ss... req=-,-,-,-,-,-",
+			/* r */ "run=0 wait=[] abort=0 out=.sss.. req=-,-,-,-,-,-",
+			/* e */ "run=-1 wait=[] abort=0 out=.sss.. req=-,-,-,-,-,-",
+			/* s: nothing waits */ "run=-1 wait=[] abort=0 out=.sss.. req=-,-,-,-,-,-",
+			/* r: idle robot */ "run=-1 wait=[4] abort=0 out=.sss.. req=-,-,-,-,-,-",
+			/* e: nothing ran */ "run=-1 wait=[4] abort=0 out=.sss.. req=-,-,-,-,-,-",
+			/* s */ "run=4 wait=[] abort=0 out=.sss.. req=-,-,-,-,-,-",
+			/* e */ "run=-1 wait=[] abort=0 out=.sss.. req=-,-,-,-,-,-",
+			/* r */ "run=-1 wait=[5] abort=0 out=.sss.. req=-,-,-,-,-,-",
+		},
+		[JM_POLICY_TERMINATE] = {
+			"run=-1 wait=[0] abort=0 out=...... req=-,-,-,-,-,-",
+			/* 0 superseded before it started: terminated, its request at 1's release */
+			"run=-1 wait=[1] abort=0 out=t..... req=20,-,-,-,-,-",
+			"run=1 wait=[] abort=0 out=t..... req=20,-,-,-,-,-",
+			/* the running job is asked to stop */
+			"run=1 wait=[2] abort=1 out=t..... req=20,30,-,-,-,-",
+			"run=1 wait=[3] abort=1 out=t.t... req=20,30,40,-,-,-",
+			"run=-1 wait=[3] abort=1 out=t.t... req=20,30,40,-,-,-",
+			/* a start clears the request */
+			"run=3 wait=[] abort=0 out=t.t... req=20,30,40,-,-,-",
+			"run=3 wait=[4] abort=1 out=t.t... req=20,30,40,50,-,-",
+			"run=-1 wait=[4] abort=1 out=t.t... req=20,30,40,50,-,-",
+			"run=4 wait=[] abort=0 out=t.t... req=20,30,40,50,-,-",
+			"run=-1 wait=[] abort=0 out=t.t... req=20,30,40,50,-,-",
+			/* an ended job's event is superseded too: its request, nothing to stop */
+			"run=-1 wait=[5] abort=0 out=t.t... req=20,30,40,50,60,-",
+		},
+		[JM_POLICY_QUEUE] = {
+			"run=-1 wait=[0] abort=0 out=...... req=-,-,-,-,-,-",
+			"run=-1 wait=[0,1] abort=0 out=...... req=-,-,-,-,-,-",
+			"run=0 wait=[1] abort=0 out=...... req=-,-,-,-,-,-",
+			"run=0 wait=[1,2] abort=0 out=...... req=-,-,-,-,-,-",
+			"run=0 wait=[1,2,3] abort=0 out=...... req=-,-,-,-,-,-",
+			"run=-1 wait=[1,2,3] abort=0 out=...... req=-,-,-,-,-,-",
+			"run=1 wait=[2,3] abort=0 out=...... req=-,-,-,-,-,-",
+			"run=1 wait=[2,3,4] abort=0 out=...... req=-,-,-,-,-,-",
+			"run=-1 wait=[2,3,4] abort=0 out=...... req=-,-,-,-,-,-",
+			"run=2 wait=[3,4] abort=0 out=...... req=-,-,-,-,-,-",
+			"run=-1 wait=[3,4] abort=0 out=...... req=-,-,-,-,-,-",
+			"run=-1 wait=[3,4,5] abort=0 out=...... req=-,-,-,-,-,-",
+		},
+	};
+	/* missCount from late 1, skipped 2, terminated 4 */
+	static const long want_misses[] = {
+		[JM_POLICY_SKIP] = 6, [JM_POLICY_TERMINATE] = 6, [JM_POLICY_QUEUE] = 1,
+	};
+	const int npolicies = (int)(sizeof(jm_policy_table) / sizeof(jm_policy_table[0]));
+	int p;
+
+	CHECK_INT((long long)(sizeof(want) / sizeof(want[0])), npolicies);
+	CHECK_INT((long long)(sizeof(want_misses) / sizeof(want_misses[0])), npolicies);
+	for (p = 0; p < npolicies && p < (int)(sizeof(want) / sizeof(want[0])); p++) {
+		jm_job jobs[RULE_EVENTS];
+		int fifo[RULE_EVENTS], next = 0, i;
+		struct jm_robot r;
+		char got[256];
+
+		for (i = 0; i < RULE_EVENTS; i++) {
+			jobs[i].outcome = JM_OUTCOME_PENDING;
+			jobs[i].abort_ns = -1;
+		}
+		jm_robot_init(&r, fifo, jobs);
+		for (i = 0; RULE_SCRIPT[i]; i++) {
+			if (RULE_SCRIPT[i] == 'r') {
+				jm_policy_release((enum jm_policy)p, &r, next, 10 * (int64_t)(next + 1));
+				next++;
+			} else if (RULE_SCRIPT[i] == 's') {
+				if (jm_robot_next(&r) >= 0)
+					jm_robot_start(&r);
+			} else {
+				jm_robot_end(&r);
+			}
+			describe_robot(&r, RULE_EVENTS, got, sizeof(got));
+			if (want[p][i] && !strcmp(got, want[p][i]))
+				jt_passed++;
+			else
+				JT_FAIL("%s, step %d (%c): got \"%s\", want \"%s\"", jm_policy_name((enum jm_policy)p),
+					i + 1, RULE_SCRIPT[i], got, want[p][i] ? want[p][i] : "(none)");
+		}
+		if (p < (int)(sizeof(want_misses) / sizeof(want_misses[0])))
+			CHECK_INT(jm_policy_misses((enum jm_policy)p, 1, 2, 4), want_misses[p]);
+	}
+}
+
 int main(void)
 {
 	if (jt_tempdir(tmpdir, sizeof(tmpdir), "unit"))
@@ -783,6 +918,7 @@ int main(void)
 	test_run_dir();
 	test_stats();
 	test_json();
+	test_policy_rules();
 	if (jm_remove_tree(tmpdir))
 		fprintf(stderr, "could not remove %s\n", tmpdir);
 	return jt_report();

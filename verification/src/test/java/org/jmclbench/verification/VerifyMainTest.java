@@ -127,9 +127,16 @@ class VerifyMainTest {
         assertJpfMissing(2, "jmclbench: verify: JPF_HOME=" + nowhere + ": no Java PathFinder build there (no such folder); "
                 + how, List.of(), nowhere.toString());
         Path partial = Files.createDirectories(dir.resolve("partial/build"));
-        Files.writeString(partial.resolve("jpf.jar"), "");
+        byte[] emptyJar = {'P', 'K', 5, 6, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+        Files.write(partial.resolve("jpf.jar"), emptyJar);
         assertJpfMissing(2, "jmclbench: verify: -Djpf.home=" + partial.getParent() + ": no Java PathFinder build there"
                 + " (no build/jpf-classes.jar); " + how, List.of("-Djpf.home=" + partial.getParent()), null);
+        // every file there, jpf.jar cut short
+        Files.write(partial.resolve("jpf-classes.jar"), emptyJar);
+        Files.writeString(partial.resolveSibling("site.properties"), "");
+        Files.write(partial.resolve("jpf.jar"), new byte[] {'P', 'K', 3, 4, 0, 0});
+        assertJpfMissing(2, "jmclbench: verify: -Djpf.home=" + partial.getParent() + ": no Java PathFinder build there"
+                + " (build/jpf.jar is not a whole jar); " + how, List.of("-Djpf.home=" + partial.getParent()), null);
         String home = System.getProperty("jpf.home");
         Assumptions.assumeTrue(home != null && Files.isRegularFile(Path.of(home, "build/jpf-classes.jar")), "no JPF build here for the -Djpf.java case");
         assertJpfMissing(2, "jmclbench: verify: -Djpf.java=" + nowhere + ": no such executable java",

@@ -2,6 +2,8 @@ package org.jmclbench.verification.jpf;
 
 import java.io.IOException;
 import java.io.Reader;
+import java.nio.ByteBuffer;
+import java.nio.channels.SeekableByteChannel;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
@@ -82,11 +84,35 @@ public record JpfHome(Path home, Path java) {
             return Files.exists(home) ? "not a folder" : "no such folder";
         }
         for (String f : BUILT) {
-            if (!Files.isRegularFile(home.resolve(f))) {
+            Path p = home.resolve(f);
+            if (!Files.isRegularFile(p)) {
                 return "no " + f;
+            }
+            if (f.endsWith(".jar") && !wholeJar(p)) {
+                return f + " is not a whole jar";
             }
         }
         return null;
+    }
+
+    /**
+     * Whether {@code jar} ends with the zip end record, as every jar the jar tool writes (no comment)
+     * does: one cut short (a full disk, a copy killed midway) does not, as build-jpf.sh checks too.
+     */
+    static boolean wholeJar(Path jar) {
+        try (SeekableByteChannel ch = Files.newByteChannel(jar)) {
+            if (ch.size() < 22) {
+                return false;
+            }
+            ByteBuffer end = ByteBuffer.allocate(4);
+            ch.position(ch.size() - 22);
+            while (end.hasRemaining() && ch.read(end) > 0) {
+                // the four bytes of the record's signature
+            }
+            return end.position() == 4 && end.get(0) == 'P' && end.get(1) == 'K' && end.get(2) == 5 && end.get(3) == 6;
+        } catch (IOException e) {
+            return false;
+        }
     }
 
     /** The java of the JDK that build-jpf.sh compiled with (BUILD-INFO's java= line), or null. */

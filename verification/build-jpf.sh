@@ -157,8 +157,6 @@ if built "$home"; then
     ! $pristine || echo "$pinned_mark" > "$home/PINNED"
     finish "$home"; exit 0
 fi
-# a damaged build under this key (never one in progress: that is $home.tmp.PID) is made again
-rm -rf "$home"
 
 jdk=$(java17_home)
 javac_=("$jdk/bin/javac" -nowarn -XDsuppressNotes -encoding UTF-8 -g -proc:none -J-Xmx1g)
@@ -227,6 +225,9 @@ printf 'commit=%s\nsource=%s\npatches=%s\nbuilt=%s\njava=%s\n' "${commit:-unknow
 mkdir -p "$cache"
 rm -rf "$home.tmp.$$"
 mv "$out" "$home.tmp.$$"
+# a damaged build under this key (never one in progress: that is a $home.tmp.PID) is replaced;
+# a whole one that another build made meanwhile is kept
+if [ -e "$home" ] && ! built "$home"; then rm -rf "$home"; fi
 mv -T "$home.tmp.$$" "$home" 2>/dev/null || { rm -rf "$home.tmp.$$"; }   # another build won the race
 say "done in $(( $(date +%s) - start )) s: $(cd "$home/build" && ls *.jar | tr '\n' ' ')"
 finish "$home"

@@ -261,7 +261,7 @@ public final class ForkedRun {
         return stopping.getAsBoolean() ? "the runner was stopped (" + stopSignal(code) + ")" : null;
     }
 
-    /** The signal a user or the system stops processes with that exit code {@code code} says, or null. */
+    /** The stop signal (what a user or the system stops processes with) that exit code {@code code} is a death by, or null. */
     private static String stopSignal(int code) {
         return switch (code) {
             case 128 + 1 -> "SIGHUP";

@@ -17,7 +17,8 @@
 # Usage: build-jpf.sh [--quiet] [--link PATH]
 #   prints the JPF home on stdout (progress on stderr), points <cache>/current at it, and
 #   --link PATH also points PATH at it. A JPF_CORE_SRC that is no jpf-core folder or tarball
-#   is bad input: one line naming it, exit 2 (a build that fails: exit 1).
+#   is bad input: one line naming it, exit 2; no JPF_CORE_SRC and no clone to be had (no network,
+#   no git): one line saying how to get the source, exit 3; a build that fails: exit 1.
 # JPF runs on JDK 17 only: JPF_JAVA_HOME, else JAVA_HOME when it is 17, else the Debian JDK 17.
 set -euo pipefail
 
@@ -49,6 +50,13 @@ finish() {
 say() { $quiet || echo "build-jpf: $*" >&2; }
 die() { echo "build-jpf: $*" >&2; exit 1; }
 bad_src() { echo "build-jpf: JPF_CORE_SRC=$JPF_CORE_SRC: $*" >&2; exit 2; }
+# JPF's source cannot be had: the one line says why and what to set (the launcher adds none of its own)
+no_src() {
+    echo "build-jpf: no Java PathFinder: JPF_CORE_SRC is not set${damaged:+, the build at $damaged is damaged,} and $*;" \
+        "set JPF_CORE_SRC to a jpf-core folder or" \
+        "tarball (jpf-core-${PINNED_COMMIT:0:7}.tar.gz)" >&2
+    exit 3
+}
 
 java17_home() {
     local h
@@ -70,12 +78,19 @@ for f in "$patches"/*.patch; do [ -f "$f" ] && patch_files+=("$f"); done
 # is used without cloning again, and a build with other patches (or none) is not.
 patch_hash=$(cat /dev/null "${patch_files[@]}" | sha256sum | cut -c1-12)
 pinned_mark="$PINNED_COMMIT patches $patch_hash"
-built() { [ -f "$1/build/jpf.jar" ] && [ -f "$1/build/jpf-classes.jar" ] && [ -f "$1/site.properties" ]; }
+# A whole jar ends with the zip end record (jar writes no comment): a build cut short (a full disk,
+# a copy killed midway) is no build; Maven's compile of verification failed on it in 400 lines.
+whole_jar() { [ "$(tail -c 22 "$1" 2>/dev/null | head -c 4 | od -An -tx1 | tr -d ' \n')" = 504b0506 ]; }
+built() { whole_jar "$1/build/jpf.jar" && whole_jar "$1/build/jpf-classes.jar" && [ -f "$1/site.properties" ]; }
+damaged=""
 if [ -z "${JPF_CORE_SRC:-}" ]; then
     for h in "$cache"/"${PINNED_COMMIT:0:7}"-*; do
-        if built "$h" && [ "$(cat "$h/PINNED" 2>/dev/null)" = "$pinned_mark" ]; then
-            say "cached (the pinned commit): $h"
-            finish "$h"; exit 0
+        if [ "$(cat "$h/PINNED" 2>/dev/null)" = "$pinned_mark" ]; then
+            if built "$h"; then
+                say "cached (the pinned commit): $h"
+                finish "$h"; exit 0
+            fi
+            damaged=$h
         fi
     done
 fi
@@ -102,12 +117,13 @@ if [ -n "${JPF_CORE_SRC:-}" ]; then
         bad_src "no such folder or file"
     fi
 else
-    command -v git >/dev/null || die "no JPF_CORE_SRC and no git to clone $UPSTREAM"
-    say "no JPF_CORE_SRC: cloning $UPSTREAM (branch java-17) at $PINNED_COMMIT"
-    git clone -q -b java-17 "$UPSTREAM" "$work/jpf-core" \
-        || die "cannot clone $UPSTREAM; set JPF_CORE_SRC to a jpf-core folder or tarball"
-    git -C "$work/jpf-core" -c advice.detachedHead=false checkout -q "$PINNED_COMMIT" \
-        || die "commit $PINNED_COMMIT not found in $UPSTREAM"
+    command -v git >/dev/null || no_src "there is no git to clone $UPSTREAM"
+    # git's own lines would precede ours: its last one goes into ours
+    git clone -q -b java-17 "$UPSTREAM" "$work/jpf-core" 2> "$work/git.log" \
+        || no_src "$UPSTREAM cannot be cloned ($(sed -n '/[^[:space:]]/h; ${x;p}' "$work/git.log"))"
+    say "no JPF_CORE_SRC: cloned $UPSTREAM (branch java-17)"
+    git -C "$work/jpf-core" -c advice.detachedHead=false checkout -q "$PINNED_COMMIT" 2> "$work/git.log" \
+        || no_src "commit $PINNED_COMMIT is not in $UPSTREAM"
     src=$work/jpf-core
     commit=$PINNED_COMMIT
     pristine=true
@@ -209,6 +225,9 @@ printf 'commit=%s\nsource=%s\npatches=%s\nbuilt=%s\njava=%s\n' "${commit:-unknow
 mkdir -p "$cache"
 rm -rf "$home.tmp.$$"
 mv "$out" "$home.tmp.$$"
+# a damaged build under this key (never one in progress: that is a $home.tmp.PID) is replaced;
+# a whole one that another build made meanwhile is kept
+if [ -e "$home" ] && ! built "$home"; then rm -rf "$home"; fi
 mv -T "$home.tmp.$$" "$home" 2>/dev/null || { rm -rf "$home.tmp.$$"; }   # another build won the race
 say "done in $(( $(date +%s) - start )) s: $(cd "$home/build" && ls *.jar | tr '\n' ' ')"
 finish "$home"

@@ -7,7 +7,8 @@
 # 10 job lines; shortjobs: a job file cut to 5 of its 10 lines; segvmid: SIGSEGV after its whole
 # folder was written; hugesummary, hugejobs: a 3 GB summary.json, odoData.txt (sparse); orphan: an ok run that leaves a child running; limit-at-N: ok
 # up to N particles, unsupported above; gate: an ok run that first creates ../started beside its
-# bin/ and waits for ../open, so that a test can act while a matrix is surely mid-run). Tests copy
+# bin/ and waits for ../open, so that a test can act while a matrix is surely mid-run; sigterm,
+# sigint, sighup: the runtime ends itself by that signal, as a JVM's own shutdown can). Tests copy
 # it with the placeholders replaced. Never a real measurement.
 MODE=@MODE@
 SLEEP=@SLEEP@
@@ -84,6 +85,11 @@ case $MODE in
         fi ;;
     sigstop)
         kill -STOP $$ ;;
+    sigterm|sigint|sighup)
+        kill -"${MODE^^}" $$
+        # still here: the signal was ignored when this shell started (SIGINT in a background job
+        # without job control), which bash cannot undo; the same status as a death by it
+        exit $((128 + $(kill -l "${MODE#sig}"))) ;;
     flood)
         # gigabytes of stderr (a sparse file: no disk spent), then its last words at the end
         echo "first line" >&2

@@ -176,7 +176,16 @@ public final class VerifyMain {
         }
         if (catalogs.stream().flatMap(c -> c.jpfChecks().stream()).anyMatch(c -> selected(c.id(), only))) {
             // A heap no JVM can reserve failed every JPF check (exit 1): it is the option that is wrong.
-            runner = new JpfRunner(JpfHome.locate(), classPath, logs, timeout, heap);
+            JpfHome jpf;
+            try {
+                jpf = JpfHome.locate();
+            } catch (JpfHome.MissingException e) {
+                // before the table and the results file: JPF's absence is no check's failure
+                System.err.println("jmclbench: verify: " + e.getMessage());
+                System.exit(e.given() ? CommandLines.EXIT_BAD_INPUT : 1);
+                return 1;
+            }
+            runner = new JpfRunner(jpf, classPath, logs, timeout, heap);
             String refused = runner.unstartable();
             if (refused != null) {
                 usage("--heap: " + heap + " MB: no JVM starts with it (" + refused + ")");

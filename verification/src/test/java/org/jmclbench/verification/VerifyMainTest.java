@@ -110,6 +110,79 @@ class VerifyMainTest {
                 "--only", "P2-static", "--logs", "file/logs");
     }
 
+    /**
+     * Java PathFinder not there, by a path the user gave: -Djpf.home or JPF_HOME naming no folder, or a
+     * folder with only part of a build (jpf.jar without the model classes), -Djpf.java naming no
+     * java: one line naming the path and how to get a build, exit 2, before any check and with no
+     * results file. Each was an IllegalStateException's stack trace, exit 1; the partial build ran
+     * the checks, each failing with no verdict, and wrote them to the results file.
+     */
+    @Test
+    void aJpfHomeOrJavaTheUserGaveThatIsNoBuildIsOneLineAndExit2() throws Exception {
+        String how = "verification/build-jpf.sh builds one (JPF_CORE_SRC: a jpf-core folder or tarball such as"
+                + " jpf-core-7ea25de.tar.gz; ./jmclbench verify runs it)";
+        Path nowhere = dir.resolve("nowhere");
+        assertJpfMissing(2, "jmclbench: verify: -Djpf.home=" + nowhere + ": no Java PathFinder build there (no such folder); "
+                + how, List.of("-Djpf.home=" + nowhere), null);
+        assertJpfMissing(2, "jmclbench: verify: JPF_HOME=" + nowhere + ": no Java PathFinder build there (no such folder); "
+                + how, List.of(), nowhere.toString());
+        Path partial = Files.createDirectories(dir.resolve("partial/build"));
+        byte[] emptyJar = {'P', 'K', 5, 6, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+        Files.write(partial.resolve("jpf.jar"), emptyJar);
+        assertJpfMissing(2, "jmclbench: verify: -Djpf.home=" + partial.getParent() + ": no Java PathFinder build there"
+                + " (no build/jpf-classes.jar); " + how, List.of("-Djpf.home=" + partial.getParent()), null);
+        // every file there, jpf.jar cut short
+        Files.write(partial.resolve("jpf-classes.jar"), emptyJar);
+        Files.writeString(partial.resolveSibling("site.properties"), "");
+        Files.write(partial.resolve("jpf.jar"), new byte[] {'P', 'K', 3, 4, 0, 0});
+        assertJpfMissing(2, "jmclbench: verify: -Djpf.home=" + partial.getParent() + ": no Java PathFinder build there"
+                + " (build/jpf.jar is not a whole jar); " + how, List.of("-Djpf.home=" + partial.getParent()), null);
+        String home = System.getProperty("jpf.home");
+        Assumptions.assumeTrue(home != null && Files.isRegularFile(Path.of(home, "build/jpf-classes.jar")), "no JPF build here for the -Djpf.java case");
+        assertJpfMissing(2, "jmclbench: verify: -Djpf.java=" + nowhere + ": no such executable java",
+                List.of("-Djpf.home=" + home, "-Djpf.java=" + nowhere), null);
+    }
+
+    /**
+     * Outside the launcher, with no jpf.home and no JPF_HOME, the default build missing: one line
+     * saying how to get one, exit 1 (nothing the user gave is wrong), no results file.
+     */
+    @Test
+    void noJpfBuildAtTheDefaultPlaceIsOneLine() throws Exception {
+        Path user = Files.createDirectories(dir.resolve("user"));
+        assertJpfMissing(1, "jmclbench: verify: no Java PathFinder build at " + user.resolve(".cache/jmclbench/jpf/current")
+                + " (no such folder): verification/build-jpf.sh builds one (JPF_CORE_SRC: a jpf-core folder or tarball"
+                + " such as jpf-core-7ea25de.tar.gz; ./jmclbench verify runs it), or set -Djpf.home / JPF_HOME to one",
+                List.of("-Duser.home=" + user), null);
+    }
+
+    /** Runs verify on one JPF check with its results file given, without the test's jpf.home, and expects {@code message} alone. */
+    private void assertJpfMissing(int exit, String message, List<String> props, String jpfHomeEnv) throws Exception {
+        Path out = dir.resolve("out.txt");
+        Path err = dir.resolve("err.txt");
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path")));
+        cmd.addAll(props);
+        cmd.addAll(List.of(VerifyMain.class.getName(), "--only", "mission-seeded-stray-allocation", "--out",
+                "results/verification.json"));
+        ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile()).redirectOutput(out.toFile())
+                .redirectError(err.toFile());
+        pb.environment().remove("JPF_HOME");
+        if (jpfHomeEnv != null) {
+            pb.environment().put("JPF_HOME", jpfHomeEnv);
+        }
+        Process p = pb.start();
+        if (!p.waitFor(120, TimeUnit.SECONDS)) {
+            p.descendants().forEach(ProcessHandle::destroyForcibly);
+            p.destroyForcibly();
+            throw new AssertionError("verify did not end");
+        }
+        assertEquals(exit, p.exitValue(), Files.readString(err));
+        assertEquals(List.of(message), Files.readAllLines(err, StandardCharsets.UTF_8));
+        assertEquals("", Files.readString(out), "nothing on stdout: no table header before the error");
+        assertFalse(Files.exists(dir.resolve("results/verification.json")), "no results file without JPF");
+    }
+
     private void assertBadInput(String message, String... args) throws Exception {
         Path out = dir.resolve("out.txt");
         Path err = dir.resolve("err.txt");

@@ -84,12 +84,14 @@ final class AotTrainer {
             }
             String interrupted = r.timedOut() ? null : ForkedRun.interruption(r.exitCode());
             if (interrupted != null) {
-                // Ctrl-C reaches the training JVM too: not a limit of the runtime, so no unsupported row
+                // the runner is stopping (Ctrl-C reaches the training JVM too, in the runner's process
+                // group): not a limit of the runtime, so no unsupported row; a training that ended
+                // itself by a signal is the runtime's and fails below as any other
                 throw new java.io.UncheckedIOException(new IOException("the AOT training run was interrupted (" + interrupted
                         + "); the run it trained for is not recorded: rerun the same command to resume"));
             }
             if (!r.ok() || !Files.isRegularFile(partial)) {
-                return new Result(List.of(), "aot: training run failed (" + (r.timedOut() ? "timed out" : "exit " + r.exitCode())
+                return new Result(List.of(), "aot: training run failed (" + (r.timedOut() ? "timed out" : ForkedRun.describeExit(r.exitCode(), ""))
                         + "): "
                         + lastLine(r.output()));
             }

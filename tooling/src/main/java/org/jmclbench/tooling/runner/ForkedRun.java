@@ -222,14 +222,47 @@ public final class ForkedRun {
     }
 
     /**
-     * Why a run that ended with {@code code} was interrupted rather than failed, or null: the runner
-     * is stopping (its hook killed the child), or the child got a signal only a user or the system
-     * sends (Ctrl-C reaches the whole process group), never one a runtime's own crash raises.
+     * How long a run ended by SIGHUP, SIGINT or SIGTERM waits for the runner's own stop to show: a
+     * signal sent to every process (a system shutdown's SIGTERM) may end the run before the runner's
+     * JVM has started its shutdown hook, which then sets {@code stopping} within milliseconds.
+     */
+    static final long STOP_GRACE_MS = 2000;
+
+    /**
+     * Why a run that ended with {@code code} was interrupted rather than failed, or null: only when
+     * the runner is stopping (its hook killed the child, or the signal that ended the child reached
+     * the runner too). Each run leads its own session, so a terminal's Ctrl-C reaches the runner
+     * alone; a runtime that ends itself by one of these signals has failed like any crash.
      */
     static String interruption(int code) {
-        if (stopping) {
+        return interruption(code, () -> stopping, STOP_GRACE_MS);
+    }
+
+    /** {@link #interruption(int)} with the runner's stopping flag and the grace given. */
+    static String interruption(int code, java.util.function.BooleanSupplier stopping, long graceMs) {
+        if (stopping.getAsBoolean()) {
             return "the runner was stopped";
         }
+        if (stopSignal(code) == null) {
+            return null;
+        }
+        long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(graceMs);
+        while (System.nanoTime() - end < 0) {
+            try {
+                Thread.sleep(20);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                break;
+            }
+            if (stopping.getAsBoolean()) {
+                return "the runner was stopped (" + stopSignal(code) + ")";
+            }
+        }
+        return stopping.getAsBoolean() ? "the runner was stopped (" + stopSignal(code) + ")" : null;
+    }
+
+    /** The stop signal (what a user or the system stops processes with) that exit code {@code code} is a death by, or null. */
+    private static String stopSignal(int code) {
         return switch (code) {
             case 128 + 1 -> "SIGHUP";
             case 128 + 2 -> "SIGINT";
@@ -257,6 +290,7 @@ public final class ForkedRun {
         if (code > 128 && code < 160) {
             int sig = code - 128;
             String name = switch (sig) {
+                case 1, 2, 15 -> stopSignal(code);
                 case 6 -> "SIGABRT (JVM crash?)";
                 case 9 -> "SIGKILL (out of memory killer?)";
                 case 11 -> "SIGSEGV (crash)";

@@ -107,6 +107,25 @@ class RuntimeMisbehaviourTest extends FakeJvmHome {
     }
 
     /**
+     * A runtime that ends itself by SIGTERM, SIGINT or SIGHUP (a JVM's own shutdown, a wrapper script
+     * signalling its group) while the runner is not stopping: each run was read as the user's Ctrl-C,
+     * ending the whole matrix with exit 1 and the runs after it never made; now each is that run's
+     * failure naming the signal, and the matrix goes on (exit 0, as for any failed run).
+     */
+    @Test
+    void aRuntimeEndingItselfBySignalIsItsFailureNotAnInterruption() throws Exception {
+        Map<String, Row> rows = matrix("sigterm", "sigint", "sighup");
+        for (String[] c : new String[][] {{"fake-22", "exit code 143: killed by SIGTERM"},
+                {"fake-23", "exit code 130: killed by SIGINT"}, {"fake-24", "exit code 129: killed by SIGHUP"}}) {
+            Row r = rows.get(c[0]);
+            assertEquals("failed", r.status(), r.toString());
+            assertEquals(c[1], r.failure());
+            assertNull(r.summary());
+            assertEquals(0, r.metrics(), "no metric of a failed run");
+        }
+    }
+
+    /**
      * A runtime that exits 0 with a good run but leaves a child running (holding its output open):
      * the child was re-parented and lived on beside the following runs, which must never overlap;
      * now everything left in the run's session is killed when the run ends.

@@ -42,9 +42,43 @@ class BuildJpfScriptTest {
     void aBuildOfOtherSourcesIsNotTakenForThePinnedCommit() throws Exception {
         fakeHome("7ea25de-0123456789ab"); // from a JPF_CORE_SRC folder at that commit, perhaps edited: no PINNED
         Result r = run();
-        assertEquals(1, r.exit, r.out);
-        assertTrue(r.err.contains("no JPF_CORE_SRC: cloning"), r.err);
-        assertTrue(r.err.contains("set JPF_CORE_SRC to a jpf-core folder or tarball"), r.err);
+        assertEquals(3, r.exit, r.out);
+        assertEquals(NO_SOURCE, r.err);
+    }
+
+    /** What build-jpf.sh says, alone, when it has no source and its clone fails (the stand-in git's line in it). */
+    private static final String NO_SOURCE = "build-jpf: no Java PathFinder: JPF_CORE_SRC is not set and"
+            + " https://github.com/javapathfinder/jpf-core cannot be cloned (fatal: unable to access (no network in this test));"
+            + " set JPF_CORE_SRC to a jpf-core folder or tarball (jpf-core-7ea25de.tar.gz)\n";
+
+    /**
+     * No JPF_CORE_SRC, no build in the cache and no network: one line saying how to get the source, and
+     * ./jmclbench verify ends with it alone, exit 1 (nothing the user gave is wrong). It was four lines:
+     * "cloning", git's, "cannot clone", and the launcher's own "cannot build Java PathFinder".
+     */
+    @Test
+    void noSourceAndNoCloneIsOneLineAndTheLauncherAddsNone() throws Exception {
+        Result r = run();
+        assertEquals(3, r.exit, r.err);
+        assertEquals(NO_SOURCE, r.err);
+        assertEquals("", r.out);
+        r = run(null, SCRIPT.getParent().getParent().resolve("jmclbench").toString(), "verify", "--help");
+        assertEquals(1, r.exit, r.err);
+        assertEquals(NO_SOURCE, r.err);
+    }
+
+    /**
+     * A build of the pinned commit whose jars were cut short (a full disk, a copy killed midway) is no
+     * build: it was used, and Maven's compile of verification failed on it in some 400 lines.
+     */
+    @Test
+    void aDamagedBuildOfThePinnedCommitIsNotUsed() throws Exception {
+        Path home = fakeHome("7ea25de-0123456789ab");
+        Files.writeString(home.resolve("PINNED"), PINNED + " patches " + patchHash() + "\n");
+        Files.write(home.resolve("build/jpf.jar"), new byte[] {'P', 'K', 3, 4, 0, 0}); // a jar's start, no end
+        Result r = run();
+        assertEquals(3, r.exit, r.err);
+        assertEquals(NO_SOURCE.replace("is not set and", "is not set, the build at " + home + " is damaged, and"), r.err);
     }
 
     @Test
@@ -53,8 +87,8 @@ class BuildJpfScriptTest {
         Path home = fakeHome("7ea25de-0123456789ab");
         Files.writeString(home.resolve("PINNED"), PINNED + "\n");
         Result r = run();
-        assertEquals(1, r.exit, r.out);
-        assertTrue(r.err.contains("no JPF_CORE_SRC: cloning"), r.err);
+        assertEquals(3, r.exit, r.out);
+        assertEquals(NO_SOURCE, r.err);
     }
 
     /** What build-jpf.sh marks a build with: the first 12 hex digits of the SHA-256 of jpf-patches/*.patch, in name order. */
@@ -103,11 +137,15 @@ class BuildJpfScriptTest {
     private Path fakeHome(String key) throws IOException {
         Path home = dir.resolve("cache/jpf").resolve(key);
         Files.createDirectories(home.resolve("build"));
-        for (String f : new String[] {"build/jpf.jar", "build/jpf-classes.jar", "site.properties"}) {
-            Files.writeString(home.resolve(f), "");
+        for (String f : new String[] {"build/jpf.jar", "build/jpf-classes.jar"}) {
+            Files.write(home.resolve(f), EMPTY_JAR);
         }
+        Files.writeString(home.resolve("site.properties"), "");
         return home;
     }
+
+    /** A whole jar with nothing in it: the zip end record alone. */
+    private static final byte[] EMPTY_JAR = {'P', 'K', 5, 6, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
 
     private record Result(int exit, String out, String err) {
     }

@@ -63,6 +63,12 @@ public final class ForkedRun {
      */
     public static ForkOutcome execute(List<String> command, Path folder, Path out, double timeoutS,
                                      java.util.Map<String, String> env) throws IOException {
+        return execute(command, folder, out, timeoutS, env, () -> stopping);
+    }
+
+    /** {@link #execute} with the runner's stopping flag given. */
+    static ForkOutcome execute(List<String> command, Path folder, Path out, double timeoutS,
+                               java.util.Map<String, String> env, java.util.function.BooleanSupplier stopping) throws IOException {
         Path stdout = folder.resolve("stdout.txt");
         Path stderr = folder.resolve("stderr.txt");
         ProcessBuilder pb = new ProcessBuilder(inOwnSession(command));
@@ -70,6 +76,10 @@ public final class ForkedRun {
         pb.redirectOutput(stdout.toFile());
         pb.redirectError(stderr.toFile());
         pb.environment().putAll(env);
+        // A run started once the shutdown hook has run would outlive the runner in its own session.
+        if (stopping.getAsBoolean()) {
+            throw notStarted();
+        }
         long t0 = System.nanoTime();
         Process p;
         try {
@@ -79,6 +89,13 @@ public final class ForkedRun {
                     null, null, null);
         }
         CURRENT.set(p);
+        // The hook sets the flag and then reads CURRENT: it kills p, or this sees the flag.
+        if (stopping.getAsBoolean()) {
+            ProcessTree.kill(p);
+            ProcessTree.killSession(p.pid());
+            CURRENT.set(null);
+            throw notStarted();
+        }
         writePidFile(folder, p);
         boolean finished;
         try {
@@ -199,6 +216,10 @@ public final class ForkedRun {
         } catch (IOException | RuntimeException ignored) {
             // a damaged pid file: nothing to kill
         }
+    }
+
+    private static IOException notStarted() {
+        return new IOException("the runner is stopping; the next run was not started: rerun the same command to resume");
     }
 
     /** The one complete run folder (no {@code .partial}) holding a summary.json under {@code out}. */

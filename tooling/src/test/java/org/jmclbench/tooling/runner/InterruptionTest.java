@@ -1,11 +1,20 @@
 package org.jmclbench.tooling.runner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /**
  * When a run that ended is an interruption (nothing recorded, the matrix stops) rather than the
@@ -59,5 +68,31 @@ class InterruptionTest {
         assertEquals("exit code 130: killed by SIGINT", ForkedRun.describeExit(130, ""));
         assertEquals("exit code 129: killed by SIGHUP", ForkedRun.describeExit(129, ""));
         assertEquals("exit code 139: killed by SIGSEGV (crash)", ForkedRun.describeExit(139, ""));
+    }
+
+    /** A runner already stopping starts no run: its shutdown hook has run and would not kill it. */
+    @Test
+    void aStoppingRunnerStartsNoRun(@TempDir Path dir) {
+        Path marker = dir.resolve("started");
+        IOException e = assertThrows(IOException.class, () -> ForkedRun.execute(
+                List.of("sh", "-c", "touch '" + marker + "'"), dir, dir.resolve("out"), 60, Map.of(), () -> true));
+        assertTrue(e.getMessage().contains("was not started"), e.getMessage());
+        assertFalse(Files.exists(marker));
+    }
+
+    /**
+     * The hook ran while the run was being started (it found no run to kill): the run is killed
+     * here, before anything waits on it, rather than outliving the runner in its own session.
+     */
+    @Test
+    void aRunStartedAsTheRunnerStopsIsKilled(@TempDir Path dir) {
+        String token = "jmclbench-started-as-stopping-" + ProcessHandle.current().pid();
+        IOException e = assertThrows(IOException.class, () -> ForkedRun.execute(
+                List.of("sh", "-c", "while :; do sleep 0.1; done # " + token), dir, dir.resolve("out"), 5, Map.of(),
+                stopsAfter(1)));
+        assertTrue(e.getMessage().contains("was not started"), e.getMessage());
+        assertFalse(ProcessHandle.allProcesses().anyMatch(h -> h.isAlive()
+                && h.info().commandLine().orElse("").contains(token)), "the run outlived the stop");
+        assertNull(ForkedRun.CURRENT.get());
     }
 }

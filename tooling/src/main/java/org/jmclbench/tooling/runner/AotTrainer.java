@@ -77,8 +77,9 @@ final class AotTrainer {
             long timeoutMs = (long) ((dataset.durationS() * 0.1 * 3 + 120) * 1000);
             ProcessRunner.Result r;
             try {
-                // the runner's shutdown hook kills the training as it kills a run: stopped, it ran on to its timeout
-                r = ProcessRunner.run(cmd, timeoutMs, ForkedRun.CURRENT::set);
+                // the runner's shutdown hook kills the training as it kills a run (stopped, it ran on to its timeout),
+                // and one started once the hook had run is killed at its start
+                r = ProcessRunner.run(cmd, timeoutMs, ForkedRun::adopt);
             } finally {
                 ForkedRun.CURRENT.set(null);
             }

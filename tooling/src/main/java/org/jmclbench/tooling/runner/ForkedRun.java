@@ -88,12 +88,7 @@ public final class ForkedRun {
             return new ForkOutcome(RunRow.FAILED, null, "cannot start " + command.get(0) + ": " + e.getMessage(), "", 0,
                     null, null, null);
         }
-        CURRENT.set(p);
-        // The hook sets the flag and then reads CURRENT: it kills p, or this sees the flag.
-        if (stopping.getAsBoolean()) {
-            ProcessTree.kill(p);
-            ProcessTree.killSession(p.pid());
-            CURRENT.set(null);
+        if (!adopt(p, stopping)) {
             throw notStarted();
         }
         writePidFile(folder, p);
@@ -216,6 +211,26 @@ public final class ForkedRun {
         } catch (IOException | RuntimeException ignored) {
             // a damaged pid file: nothing to kill
         }
+    }
+
+    /**
+     * Makes {@code p} (a run, or the aot profile's training run, just started) the child the shutdown
+     * hook kills; when the runner is already stopping, kills it here instead and returns false. The hook
+     * sets its flag and then reads {@link #CURRENT}: it kills p, or this sees the flag.
+     */
+    static void adopt(Process p) {
+        adopt(p, () -> stopping);
+    }
+
+    static boolean adopt(Process p, java.util.function.BooleanSupplier stopping) {
+        CURRENT.set(p);
+        if (!stopping.getAsBoolean()) {
+            return true;
+        }
+        ProcessTree.kill(p);
+        ProcessTree.killSession(p.pid());
+        CURRENT.set(null);
+        return false;
     }
 
     private static IOException notStarted() {

@@ -95,4 +95,17 @@ class InterruptionTest {
                 && h.info().commandLine().orElse("").contains(token)), "the run outlived the stop");
         assertNull(ForkedRun.CURRENT.get());
     }
+
+    /** The aot profile's training run is adopted as a run is: started as the runner stops, it is killed. */
+    @Test
+    void aChildAdoptedAsTheRunnerStopsIsKilled() throws Exception {
+        Process p = new ProcessBuilder("sleep", "600").start();
+        try {
+            assertFalse(ForkedRun.adopt(p, () -> true));
+            assertFalse(p.isAlive());
+            assertNull(ForkedRun.CURRENT.get());
+        } finally {
+            p.destroyForcibly();
+        }
+    }
 }

@@ -21,12 +21,20 @@ import org.jmclbench.tooling.store.StoreMerger;
  * of that release engine are in the cache): JDK 25+ an AOT cache ({@code -XX:AOTCacheOutput},
  * then {@code -XX:AOTCache} with {@code -XX:AOTMode=on} so that an unusable cache fails loudly),
  * JDK 13-24 a dynamic AppCDS archive ({@code -XX:ArchiveClassesAtExit}, then {@code -XX:SharedArchiveFile}).
- * Caches live in {@code <db dir>/aot/}; a training that fails makes the profile unsupported.
+ * Caches live in {@code <db dir>/aot/}; a training the runtime refuses makes the profile unsupported, one
+ * that crashes or hangs fails the run.
  */
 final class AotTrainer {
 
-    /** The JVM flags that use the trained cache, or why there is none. */
-    record Result(List<String> flags, String unsupported) {
+    /**
+     * The JVM flags that use the trained cache, or why there is none: {@code unsupported}, the runtime
+     * cannot make one (too old, refused the flags, wrote no cache); {@code failed}, its training run
+     * crashed or hung, a failure of the runtime under test as any run's would be.
+     */
+    record Result(List<String> flags, String unsupported, String failed) {
+        Result(List<String> flags, String unsupported) {
+            this(flags, unsupported, null);
+        }
     }
 
     private final Path dir;
@@ -92,9 +100,10 @@ final class AotTrainer {
                         + "); the run it trained for is not recorded: rerun the same command to resume"));
             }
             if (!r.ok() || !Files.isRegularFile(partial)) {
-                return new Result(List.of(), "aot: training run failed (" + (r.timedOut() ? "timed out" : ForkedRun.describeExit(r.exitCode(), ""))
-                        + "): "
-                        + lastLine(r.output()));
+                String why = "aot: training run failed (" + (r.timedOut() ? "timed out" : ForkedRun.describeExit(r.exitCode(), ""))
+                        + "): " + lastLine(r.output());
+                boolean crashed = r.timedOut() || r.exitCode() > 128;
+                return crashed ? new Result(List.of(), null, why) : new Result(List.of(), why);
             }
             Files.move(partial, cache, StandardCopyOption.ATOMIC_MOVE);
             return new Result(use, null);

@@ -141,6 +141,10 @@ public final class MatrixRunner {
         List<String> extra = List.of();
         if (support.supported() && run.runtime().isJvm() && run.profile().has(ProfileComponent.AOT)) {
             AotTrainer.Result a = aot.ensure(run.runtime(), plan, run.dataset(), run.policy());
+            if (a.failed() != null) {
+                return new Finished(record(run, RunRow.FAILED, null, a.failed(), null, startedAt, null, null, null,
+                        List.of()), RunDetails.empty());
+            }
             if (a.unsupported() != null) {
                 support = ProfileProbe.Support.no(a.unsupported());
             }

@@ -79,6 +79,11 @@ public final class EventSelection {
         }
     }
 
+    /** An event read and left out before it was put together (a pause phase or safepoint outside the run). */
+    public void skip() {
+        read++;
+    }
+
     /** One more (or, negative, fewer) partial event held by the reader. */
     public void hold(int n) throws IOException {
         held += n;

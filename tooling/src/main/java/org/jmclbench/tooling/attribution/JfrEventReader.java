@@ -80,10 +80,16 @@ public final class JfrEventReader {
                         if (selection.wanted(from, to)) {
                             phases.add(new Phase(e.getLong("gcId"), from, to, names.computeIfAbsent(e.getString("name"), k -> k)));
                             selection.hold(1);
+                        } else {
+                            selection.skip();
                         }
                     }
                     case "jdk.SafepointBegin" -> hold(selection, safepointBegin, e.getLong("safepointId"), at(clock, e.getStartTime()));
-                    case "jdk.SafepointEnd" -> hold(selection, safepointEnd, e.getLong("safepointId"), at(clock, e.getEndTime()));
+                    case "jdk.SafepointEnd" -> {
+                        if (!hold(selection, safepointEnd, e.getLong("safepointId"), at(clock, e.getEndTime()))) {
+                            selection.skip();
+                        }
+                    }
                     case "jdk.ExecuteVMOperation" -> {
                         long vs = at(clock, e.getStartTime());
                         if (selection.wanted(vs, vs) && !vmOperations.containsKey(vs)) {
@@ -141,11 +147,15 @@ public final class JfrEventReader {
         }
     }
 
-    /** One side of a safepoint, held until the recording is read (the other side may come first). */
-    private static void hold(EventSelection selection, Map<Long, Long> side, long safepointId, long at) throws IOException {
-        if (selection.wanted(at, at) && side.put(safepointId, at) == null) {
+    /** One side of a safepoint, held until the recording is read (the other side may come first); false when not wanted. */
+    private static boolean hold(EventSelection selection, Map<Long, Long> side, long safepointId, long at) throws IOException {
+        if (!selection.wanted(at, at)) {
+            return false;
+        }
+        if (side.put(safepointId, at) == null) {
             selection.hold(1);
         }
+        return true;
     }
 
     private static long at(RunClock clock, Instant t) {

@@ -89,6 +89,33 @@ class RuntimeMisbehaviourTest extends FakeJvmHome {
     }
 
     /**
+     * A good run of a JVM 10 whose GC log (the run's event capture) ends in a 64 MB line without an
+     * end: its attribution read the log whole (a multi-GB one ended the runner with OutOfMemoryError)
+     * and, finding no event in it, stored the run's misses as explained without a pause. Now the run
+     * stands, without attribution (no cause metric, no attribution row), and the runner says why.
+     */
+    @Test
+    void aRunawayGcLogLeavesTheRunWithoutAttributionNotTheRunnerDead() throws Exception {
+        Path runaway = Fixtures.fakeJava(dir, "runawaygclog", "runawaygclog", 0, null, 10);
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--datasets", "tiny", "--particles", "100", "--timeout", "15",
+                "--db", db.toString(), "--java", fake.toString(), "--java", runaway.toString());
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+        assertTrue(r.err().matches("(?s).*: no attribution: [^\\n]*gc\\.log:2: a line longer than "
+                + org.jmclbench.tooling.cli.BoundedLineReader.MAX_LINE_CHARS + " characters\\n.*"), r.err());
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
+             ResultSet rs = s.executeQuery("SELECT runtime, status,"
+                     + " (SELECT count(*) FROM metrics m WHERE m.run_key = runs.run_key AND m.metric LIKE 'cause.%'),"
+                     + " (SELECT count(*) FROM attributions a WHERE a.run_key = runs.run_key),"
+                     + " (SELECT count(*) FROM metrics m WHERE m.run_key = runs.run_key) FROM runs WHERE runtime = 'fake-10'")) {
+            assertTrue(rs.next(), "the run is recorded");
+            assertEquals("ok", rs.getString(2), "the run itself is good");
+            assertEquals(0, rs.getInt(3), "no cause metric");
+            assertEquals(0, rs.getInt(4), "no attribution row");
+            assertTrue(rs.getInt(5) > 0, "its own metrics are stored");
+        }
+    }
+
+    /**
      * A summary.json that claims jobs its job files do not hold (20 predict jobs released for 10
      * lines; a job file cut to 5 of its 10): the run was recorded ok with the summary's counts,
      * which no job backs; now failed, naming the file and both counts, nothing of it stored.

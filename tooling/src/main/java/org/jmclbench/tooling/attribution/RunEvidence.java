@@ -26,8 +26,9 @@ import org.jmclbench.tooling.cli.JsonFiles;
  *                    empty when none could be read
  * @param eventsRead  how many events were read, used or not
  * @param eventSource where the events came from, e.g. {@code JFR runs/ab12/recording.jfr}, or why there are none
- * @param eventProblem why the run's own event capture could not be read (its recording unreadable), or null:
- *                    the attribution then stands on its job lines alone, which explain notes and the matrix does not store
+ * @param eventProblem why the run's own event capture could not be read (its recording unreadable, no GC log beside
+ *                    it), or null: the attribution then stands on its job lines alone, which explain notes and the
+ *                    matrix does not store
  */
 public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<JobRecord> jobs, List<VmEvent> events,
         long eventsRead, String eventSource, String eventProblem) {
@@ -101,11 +102,14 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
                     // the user's file, not a run's recording cut short by a crash: the run explained without it, exit 0
                     throw BadUsageException.ofOption("--events", jfr + ": not a JFR recording JFR can read");
                 }
-                problem = "JFR " + jfr + " unreadable (the run may have crashed before dumping it)";
-                source = problem + (gcLog != null ? "; GC log " + gcLog : "");
+                source = "JFR " + jfr + " unreadable (the run may have crashed before dumping it)";
+                // with no GC log to read instead, the attribution stands on the job lines alone
+                problem = gcLog == null ? source : null;
+                source += gcLog != null ? "; GC log " + gcLog : "";
                 selection = EventSelection.forJobs(gcLog, jobs);
+                jfr = null;
             }
-            if (jfr == null || problem != null && gcLog != null) {
+            if (jfr == null && gcLog != null) {
                 readGcLog(gcLog, clock, selection);
             }
             events = selection.events();

@@ -53,8 +53,9 @@ public final class JfrEventReader {
     public static void read(Path recording, RunClock clock, EventSelection selection) throws IOException {
         List<Phase> phases = new ArrayList<>();
         Map<Long, Collection> collections = new HashMap<>();
-        Map<Long, Long> safepointBegin = new HashMap<>();
-        Map<Long, Long> safepointEnd = new HashMap<>();
+        Map<Long, Long> openBegin = new HashMap<>(); // a safepoint's side waiting for the other, by id
+        Map<Long, Long> openEnd = new HashMap<>();
+        List<long[]> safepoints = new ArrayList<>(); // {id, from, to} of those wanted, named when all is read
         TreeMap<Long, String> vmOperations = new TreeMap<>();
         Map<String, String> names = new HashMap<>(); // one copy of each repeated name
 
@@ -84,15 +85,15 @@ public final class JfrEventReader {
                             selection.skip();
                         }
                     }
-                    case "jdk.SafepointBegin" -> hold(selection, safepointBegin, e.getLong("safepointId"), at(clock, e.getStartTime()));
-                    case "jdk.SafepointEnd" -> {
-                        if (!hold(selection, safepointEnd, e.getLong("safepointId"), at(clock, e.getEndTime()))) {
-                            selection.skip();
-                        }
-                    }
+                    case "jdk.SafepointBegin" -> safepointSide(selection, openBegin, openEnd, true, e.getLong("safepointId"),
+                            at(clock, e.getStartTime()), safepoints, vmOperations);
+                    case "jdk.SafepointEnd" -> safepointSide(selection, openEnd, openBegin, false, e.getLong("safepointId"),
+                            at(clock, e.getEndTime()), safepoints, vmOperations);
                     case "jdk.ExecuteVMOperation" -> {
                         long vs = at(clock, e.getStartTime());
-                        if (selection.wanted(vs, vs) && !vmOperations.containsKey(vs)) {
+                        // held when wanted, or while a safepoint is open: it may name a safepoint that is
+                        if ((selection.wanted(vs, vs) || !openBegin.isEmpty() || !openEnd.isEmpty())
+                                && !vmOperations.containsKey(vs)) {
                             vmOperations.put(vs, names.computeIfAbsent(e.getString("operation"), k -> k));
                             selection.hold(1);
                         }
@@ -131,31 +132,44 @@ public final class JfrEventReader {
                         g.getValue().name() + " #" + g.getKey()));
             }
         }
-        for (Map.Entry<Long, Long> b : safepointBegin.entrySet()) {
-            Long end = safepointEnd.get(b.getKey());
-            if (end == null) {
-                continue; // the recording stopped inside this safepoint
+        // a side never paired is a safepoint the recording stopped inside: left out
+        for (long[] sp : safepoints) {
+            String op = "safepoint #" + sp[0];
+            Map.Entry<Long, String> v = vmOperations.ceilingEntry(sp[1]);
+            if (v != null && v.getKey() <= sp[2]) {
+                op = v.getValue() + " #" + sp[0];
             }
-            long from = b.getValue();
-            long to = end;
-            String op = "safepoint #" + b.getKey();
-            Map.Entry<Long, String> v = vmOperations.ceilingEntry(from);
-            if (v != null && v.getKey() <= to) {
-                op = v.getValue() + " #" + b.getKey();
-            }
-            selection.add(new VmEvent(VmEventKind.SAFEPOINT, from, Math.max(from, to), null, op));
+            selection.add(new VmEvent(VmEventKind.SAFEPOINT, sp[1], sp[2], null, op));
         }
     }
 
-    /** One side of a safepoint, held until the recording is read (the other side may come first); false when not wanted. */
-    private static boolean hold(EventSelection selection, Map<Long, Long> side, long safepointId, long at) throws IOException {
-        if (!selection.wanted(at, at)) {
-            return false;
+    /**
+     * One side of a safepoint: held until its other side comes (either may come first), then the
+     * safepoint kept for naming when it is wanted, else counted and the operations held only
+     * because it was open let go.
+     */
+    private static void safepointSide(EventSelection selection, Map<Long, Long> mine, Map<Long, Long> other, boolean begin,
+            long id, long at, List<long[]> safepoints, TreeMap<Long, String> vmOperations) throws IOException {
+        Long o = other.remove(id);
+        if (o == null) {
+            if (mine.put(id, at) == null) {
+                selection.hold(1);
+            }
+            return;
         }
-        if (side.put(safepointId, at) == null) {
+        selection.hold(-1);
+        long from = begin ? at : o;
+        long to = Math.max(from, begin ? o : at);
+        if (selection.wanted(from, to)) {
+            safepoints.add(new long[] {id, from, to});
             selection.hold(1);
+            return;
         }
-        return true;
+        selection.skip();
+        java.util.NavigableMap<Long, String> inside = vmOperations.subMap(from, true, to, true);
+        int before = inside.size();
+        inside.keySet().removeIf(vs -> !selection.wanted(vs, vs));
+        selection.hold(inside.size() - before);
     }
 
     private static long at(RunClock clock, Instant t) {

@@ -120,6 +120,35 @@ class RunawayCaptureTest {
                 "no pause meets the run: " + c.out());
     }
 
+    /**
+     * Keeping only the events that meet a missed job's window changes no attribution: each fixture's
+     * recording and GC log explain every job as they do with every event kept (a safepoint that began
+     * outside the windows and ended inside one was lost once, its two sides weighed one by one).
+     */
+    @Test
+    void theEventsKeptExplainEveryJobAsAllEventsDo(@TempDir Path tmp) throws Exception {
+        for (String jdk : Fixtures.JDKS) {
+            Path fx = Fixtures.dir(jdk);
+            RunClock clock = RunClock.fromText(fx.resolve("clock.txt"));
+            List<JobRecord> jobs = JobFileReader.read(fx.resolve("jobs.txt"), "predict");
+            for (String capture : List.of(JfrFlags.RECORDING, JfrFlags.GC_LOG)) {
+                Path run = Files.createDirectories(tmp.resolve(jdk + "-" + capture));
+                Files.copy(fx.resolve("jobs.txt"), run.resolve("odoData.txt"));
+                Files.writeString(run.resolve("laserData.txt"), "# index release_ns start_ns end_ns deadline_ns outcome cpu_ns\n");
+                Files.writeString(run.resolve("summary.json"), "{\"clock\": {\"runStartEpochNs\": " + clock.runStartEpochNs()
+                        + ", \"runStartNanoTime\": " + clock.runStartNanoTime() + ", \"jvmStartEpochMs\": " + clock.jvmStartEpochMs() + "}}");
+                Files.copy(fx.resolve(capture), run.resolve(capture));
+                List<VmEvent> all = capture.equals(JfrFlags.RECORDING) ? JfrEventReader.read(fx.resolve(capture), clock)
+                        : GcLogParser.parse(fx.resolve(capture), clock);
+                RunEvidence kept = RunEvidence.load(run);
+                assertTrue(kept.events().size() < all.size(), jdk + " " + capture + ": some event left out, or the test proves nothing");
+                assertEquals(all.size(), kept.eventsRead(), jdk + " " + capture + ": every event counted as read");
+                assertEquals(Attribution.attribute(jobs, all, Attribution.Settings.defaults()),
+                        kept.attribute(Attribution.Settings.defaults()), jdk + " " + capture);
+            }
+        }
+    }
+
     private record Child(int exit, String out, String err) {
     }
 

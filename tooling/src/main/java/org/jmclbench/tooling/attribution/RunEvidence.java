@@ -57,7 +57,7 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
             throw BadUsageException.ofOption("--events", eventsFile + ": no such file");
         }
         // Read as a GC log, any other text was a log of no events: the run explained without them, exit 0.
-        if (eventsFile != null && !eventsFile.getFileName().toString().endsWith(".jfr") && !GcLogParser.isGcLog(eventsFile)) {
+        if (eventsFile != null && !eventsFile.getFileName().toString().endsWith(".jfr") && !isGcLog(eventsFile)) {
             throw BadUsageException.ofOption("--events", eventsFile + ": neither a JFR recording (named .jfr) nor a GC log"
                     + " (no line of it is one a GC log writes)");
         }
@@ -138,6 +138,15 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
             throw new BadUsageException(e.getMessage());
         } catch (IOException | RuntimeException e) {
             return false;
+        }
+    }
+
+    /** Whether the file named with --events is a GC log; a runaway line before any GC line is bad input naming file:line. */
+    private static boolean isGcLog(Path eventsFile) {
+        try {
+            return GcLogParser.isGcLog(eventsFile);
+        } catch (IOException e) {
+            throw BadUsageException.ofOption("--events", String.valueOf(e.getMessage()));
         }
     }
 

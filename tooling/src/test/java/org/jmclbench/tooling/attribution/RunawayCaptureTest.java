@@ -58,6 +58,13 @@ class RunawayCaptureTest {
         String[] named = explain("--events", log.toString(), key.toString());
         assertEquals("2", named[0], named[1] + named[2]);
         assertTrue(named[2].contains(log + ":3: a line longer than"), named[2]);
+        // and one whose first line has no end, refused before it is known to be a GC log at all
+        Path endless = tmp.resolve("endless.log");
+        Files.writeString(endless, LONG_LINE);
+        String[] first = explain("--events", endless.toString(), key.toString());
+        assertEquals("2", first[0], first[1] + first[2]);
+        assertEquals("jmclbench: --events: " + endless + ":1: a line longer than " + BoundedLineReader.MAX_LINE_CHARS
+                + " characters\n", first[2]);
     }
 
     @Test

@@ -5,7 +5,9 @@
 # exit 3 under -XX:+ExitOnOutOfMemoryError; sigstop: stops itself; flood: 3 GB of stderr, exit 1;
 # nosummary: a complete folder without summary.json; overclaim: a summary claiming 20 predict jobs for
 # 10 job lines; shortjobs: a job file cut to 5 of its 10 lines; segvmid: SIGSEGV after its whole
-# folder was written; hugesummary, hugejobs: a 3 GB summary.json, odoData.txt (sparse); orphan: an ok run that leaves a child running; limit-at-N: ok
+# folder was written; hugesummary, hugejobs: a 3 GB summary.json, odoData.txt (sparse); runawaygclog
+# (a JVM 9 or 10): a good run whose GC log ends in a 64 MB line (sparse); badrecording (a JVM 11+):
+# a good run whose recording.jfr is no recording; orphan: an ok run that leaves a child running; limit-at-N: ok
 # up to N particles, unsupported above; gate: an ok run that first creates ../started beside its
 # bin/ and waits for ../open, so that a test can act while a matrix is surely mid-run; sigterm,
 # sigint, sighup: the runtime ends itself by that signal, as a JVM's own shutdown can). Tests copy
@@ -55,6 +57,8 @@ while [ $# -gt 0 ]; do
         --seed) seed=$2; shift ;;
         --engine) engine=$2; shift ;;
         --memory) memory=$2; shift ;;
+        -Xlog:gc*file=*) gclog=${1#*file=}; gclog=${gclog%%:*} ;;
+        -XX:StartFlightRecording=filename=*) recording=${1#*filename=}; recording=${recording%%,*} ;;
     esac
     shift
 done
@@ -170,6 +174,16 @@ case $MODE in
     nosummary) rm "$leaf.partial/summary.json" ;;
     hugejobs) truncate -s 3G "$leaf.partial/odoData.txt" ;;
     hugesummary) truncate -s 3G "$leaf.partial/summary.json" ;;
+    runawaygclog|badrecording)
+        # a good run with its clock, beside the capture its flags asked for: a GC log of one line, then
+        # one without an end (64 MB, sparse); a recording JFR cannot read
+        sed -i 's/"durationS": 0.5,/"clock": {"runStartEpochNs": 1795314543008098470, "runStartNanoTime": 1046451482579, "jvmStartEpochMs": 1795314541321}, "durationS": 0.5,/' "$leaf.partial/summary.json"
+        if [ "$MODE" = badrecording ]; then
+            echo "not a recording" > "$recording"
+        else
+            echo "[0.003s][1046451482579ns][info][gc] Using Serial" > "$gclog"
+            truncate -s 64M "$gclog"
+        fi ;;
     overclaim) sed -i 's/"released": 10,/"released": 20,/' "$leaf.partial/summary.json" ;;
     shortjobs) sed -i '/^[5-9] /d' "$leaf.partial/odoData.txt" ;;
 esac

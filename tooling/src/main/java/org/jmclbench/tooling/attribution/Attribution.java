@@ -96,6 +96,33 @@ public final class Attribution {
         return out;
     }
 
+    /**
+     * The stretches of the run whose runtime events the attribution of {@code jobs} reads: disjoint,
+     * sorted [start, end] pairs covering every missed or late job's window, its start delay and run,
+     * and those of the job that blocked it. An event that meets none of them changes no attribution.
+     */
+    public static List<long[]> windows(List<JobRecord> jobs) {
+        Attribution a = new Attribution(jobs, List.of(), Settings.defaults());
+        List<VmEvent> spans = new ArrayList<>();
+        for (JobRecord j : jobs) {
+            if (!j.missedOrLate()) {
+                continue;
+            }
+            JobRecord b = j.started() ? null : a.blocker(j);
+            JobRecord s = a.supersededBy(j);
+            long from = b != null ? Math.min(b.releaseNs(), j.releaseNs()) : j.releaseNs();
+            long to = Math.max(Math.max(j.releaseNs(), j.deadlineNs()), Math.max(j.startNs(), j.endNs()));
+            if (b != null) {
+                to = Math.max(to, Math.max(b.startNs(), b.endNs()));
+            }
+            if (s != null) {
+                to = Math.max(to, s.releaseNs());
+            }
+            spans.add(new VmEvent(VmEventKind.SAFEPOINT, from, to, null, ""));
+        }
+        return union(spans);
+    }
+
     /** How many jobs have each cause kind (a job counts once per kind), sorted by kind. */
     public static Map<String, Integer> countCauses(List<JobAttribution> attributions) {
         Map<String, Integer> counts = new TreeMap<>();

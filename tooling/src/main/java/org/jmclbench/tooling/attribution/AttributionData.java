@@ -35,9 +35,20 @@ public record AttributionData(List<Row> rows, List<MetricRow> metrics, String pa
     public record Row(String task, int jobIndex, String outcome, String causesJson) {
     }
 
-    /** Attributes the run in {@code dir} (a run folder or a folder holding one) for the store. */
+    /**
+     * Attributes the run in {@code dir} (a run folder or a folder holding one) for the store.
+     *
+     * @throws IOException       when its event capture is there but unreadable: attributed from its job
+     *                           lines alone, it would be stored as a run with no capture, its pauses told as
+     *                           {@code os} or {@code preemption}
+     * @throws BadUsageException when a file of it cannot be used (a runaway line, too many events)
+     */
     public static AttributionData of(Path dir) throws IOException, BadUsageException {
-        return of(RunEvidence.load(dir), Attribution.Settings.defaults(), WarmupSplit.DEFAULT_BOUNDARY_NS);
+        RunEvidence run = RunEvidence.load(dir);
+        if (run.eventProblem() != null) {
+            throw new IOException(run.eventProblem());
+        }
+        return of(run, Attribution.Settings.defaults(), WarmupSplit.DEFAULT_BOUNDARY_NS);
     }
 
     /** Attributes a loaded run. */
@@ -49,7 +60,7 @@ public record AttributionData(List<Row> rows, List<MetricRow> metrics, String pa
         }
         List<MetricRow> metrics = new ArrayList<>();
         metrics.add(new MetricRow("run", "cause.jobs", "count", attributions.size()));
-        metrics.add(new MetricRow("run", "cause.events", "count", run.events().size()));
+        metrics.add(new MetricRow("run", "cause.events", "count", run.eventsRead()));
         Map<String, Integer> primary = Attribution.countPrimaryCauses(attributions);
         for (Map.Entry<String, Integer> e : Attribution.countCauses(attributions).entrySet()) {
             metrics.add(new MetricRow("run", "cause." + e.getKey(), "count", e.getValue()));
@@ -69,10 +80,10 @@ public record AttributionData(List<Row> rows, List<MetricRow> metrics, String pa
     }
 
     private static String pausesJson(RunEvidence run) {
-        long end = run.jobs().stream().mapToLong(j -> Math.max(j.endNs(), j.releaseNs())).max().orElse(0);
+        long end = EventSelection.runEndNs(run.jobs());
         List<VmEvent> pauses = run.events().stream()
                 .filter(e -> e.kind() == VmEventKind.GC_PAUSE || e.kind() == VmEventKind.SAFEPOINT)
-                .filter(e -> e.endNs() >= 0 && e.startNs() <= end).toList();
+                .filter(e -> EventSelection.inRun(e.startNs(), e.endNs(), end)).toList();
         if (pauses.size() > MAX_PAUSES) {
             pauses = pauses.stream().sorted(Comparator.comparingLong(VmEvent::durationNs).reversed()).limit(MAX_PAUSES)
                     .sorted(Comparator.comparingLong(VmEvent::startNs)).toList();

@@ -1,8 +1,6 @@
 package org.jmclbench.tooling.attribution;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.OffsetDateTime;
 import java.time.format.DateTimeFormatter;
@@ -13,6 +11,8 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+
+import org.jmclbench.tooling.cli.BoundedLineReader;
 
 /**
  * Reads the GC log of a runtime without JDK Flight Recorder into {@link VmEvent}s on the run's
@@ -68,13 +68,15 @@ public final class GcLogParser {
      */
     public static boolean isGcLog(Path log) throws IOException {
         boolean text = false;
-        for (String line : (Iterable<String>) new String(Files.readAllBytes(log), StandardCharsets.UTF_8).lines()::iterator) {
-            if (line.isBlank()) {
-                continue;
-            }
-            text = true;
-            if (isGcLogLine(line)) {
-                return true;
+        try (BoundedLineReader r = new BoundedLineReader(log)) {
+            for (String line = r.readLine(); line != null; line = r.readLine()) {
+                if (line.isBlank()) {
+                    continue;
+                }
+                text = true;
+                if (isGcLogLine(line)) {
+                    return true;
+                }
             }
         }
         return !text;
@@ -103,19 +105,58 @@ public final class GcLogParser {
 
     /** Every pause and safepoint in the log, sorted by start. */
     public static List<VmEvent> parse(Path log, RunClock clock) throws IOException {
-        return parse(Files.readAllLines(log, StandardCharsets.UTF_8), clock);
+        EventSelection all = EventSelection.all(log);
+        parse(log, clock, all);
+        return all.events();
+    }
+
+    /**
+     * Reads the log line by line into {@code selection}, which keeps what it needs of it.
+     *
+     * @throws IOException naming file:line for a line longer than {@link BoundedLineReader#MAX_LINE_CHARS}
+     *                     (a runaway log), or the file when the selection holds too many events
+     */
+    public static void parse(Path log, RunClock clock, EventSelection selection) throws IOException {
+        Lines p = new Lines(clock);
+        List<VmEvent> found = new ArrayList<>();
+        try (BoundedLineReader r = new BoundedLineReader(log)) {
+            for (String line = r.readLine(); line != null; line = r.readLine()) {
+                p.read(line, found);
+                for (VmEvent e : found) {
+                    selection.add(e);
+                }
+                found.clear();
+            }
+        }
     }
 
     /** Every pause and safepoint in these log lines, sorted by start. */
     public static List<VmEvent> parse(List<String> lines, RunClock clock) {
         List<VmEvent> out = new ArrayList<>();
-        String collector = "GC";
-        String pendingSafepoint = null;
+        Lines p = new Lines(clock);
         for (String line : lines) {
+            p.read(line, out);
+        }
+        out.sort(Comparator.comparingLong(VmEvent::startNs));
+        return out;
+    }
+
+    /** What a line of the log means in the light of the lines before it (the collector, a safepoint entered). */
+    private static final class Lines {
+        private final RunClock clock;
+        private String collector = "GC";
+        private String pendingSafepoint;
+
+        Lines(RunClock clock) {
+            this.clock = clock;
+        }
+
+        /** Adds the events {@code line} ends to {@code out}. */
+        void read(String line, List<VmEvent> out) {
             if (line.startsWith("[")) {
                 Decorated d = Decorated.of(line);
                 if (d == null) {
-                    continue;
+                    return;
                 }
                 Matcher m;
                 if ((m = USING.matcher(d.message)).find() && d.tags.startsWith("gc")) {
@@ -136,8 +177,6 @@ public final class GcLogParser {
                 parseJdk8(line, clock, out);
             }
         }
-        out.sort(Comparator.comparingLong(VmEvent::startNs));
-        return out;
     }
 
     private static void parseJdk8(String line, RunClock clock, List<VmEvent> out) {

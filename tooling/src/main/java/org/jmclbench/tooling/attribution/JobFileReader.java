@@ -1,15 +1,13 @@
 package org.jmclbench.tooling.attribution;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 
 import org.jmclbench.tooling.cli.BadUsageException;
+import org.jmclbench.tooling.cli.BoundedLineReader;
 
 import com.fasterxml.jackson.databind.JsonNode;
 
@@ -35,11 +33,11 @@ public final class JobFileReader {
     /** The jobs of one task from its job file; a malformed line is a {@link BadUsageException} naming file:line. */
     public static List<JobRecord> read(Path file, String task) throws IOException, BadUsageException {
         List<JobRecord> jobs = new ArrayList<>();
-        try (BufferedReader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+        // bounded lines: a runaway job file without line ends is refused at its line, not read whole
+        try (BoundedLineReader r = new BoundedLineReader(file)) {
             String line;
-            int n = 0;
-            while ((line = r.readLine()) != null) {
-                n++;
+            while ((line = readLine(r)) != null) {
+                int n = r.lineNumber();
                 String t = line.trim();
                 if (t.isEmpty() || t.startsWith("#")) {
                     continue;
@@ -60,5 +58,14 @@ public final class JobFileReader {
             }
         }
         return jobs;
+    }
+
+    private static String readLine(BoundedLineReader r) throws IOException {
+        try {
+            return r.readLine();
+        } catch (IOException e) {
+            // the line too long: bad input like any other malformed line (its message names file:line)
+            throw new BadUsageException(e.getMessage());
+        }
     }
 }

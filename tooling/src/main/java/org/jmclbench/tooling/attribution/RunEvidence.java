@@ -22,11 +22,16 @@ import org.jmclbench.tooling.cli.JsonFiles;
  * @param summary     summary.json
  * @param clock       the run's clock, or null when summary.json has none (events cannot be placed)
  * @param jobs        every job of both tasks
- * @param events      the runtime's events on the run's timeline (empty when none could be read)
+ * @param events      the runtime's events on the run's timeline that the attribution uses ({@link EventSelection});
+ *                    empty when none could be read
+ * @param eventsRead  how many events were read, used or not
  * @param eventSource where the events came from, e.g. {@code JFR runs/ab12/recording.jfr}, or why there are none
+ * @param eventProblem why the run's own event capture could not be read (its recording unreadable, no GC log beside
+ *                    it), or null: the attribution then stands on its job lines alone, which explain notes and the
+ *                    matrix does not store
  */
 public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<JobRecord> jobs, List<VmEvent> events,
-        String eventSource) {
+        long eventsRead, String eventSource, String eventProblem) {
 
     /** Job file of each task, as FORMATS.md section 3 names them. */
     public static final String PREDICT_FILE = "odoData.txt";
@@ -52,7 +57,7 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
             throw BadUsageException.ofOption("--events", eventsFile + ": no such file");
         }
         // Read as a GC log, any other text was a log of no events: the run explained without them, exit 0.
-        if (eventsFile != null && !eventsFile.getFileName().toString().endsWith(".jfr") && !GcLogParser.isGcLog(eventsFile)) {
+        if (eventsFile != null && !eventsFile.getFileName().toString().endsWith(".jfr") && !isGcLog(eventsFile)) {
             throw BadUsageException.ofOption("--events", eventsFile + ": neither a JFR recording (named .jfr) nor a GC log"
                     + " (no line of it is one a GC log writes)");
         }
@@ -77,7 +82,9 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
         }
         RunClock clock = RunClock.fromSummary(summary);
         List<VmEvent> events = List.of();
+        long read = 0;
         String source;
+        String problem = null;
         boolean given = eventsFile != null;
         boolean givenJfr = given && eventsFile.getFileName().toString().endsWith(".jfr");
         Path jfr = given ? (givenJfr ? eventsFile : null) : findUp(runDir, JfrFlags.RECORDING);
@@ -87,26 +94,29 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
                     + "--events names another): only os, queued, preemption and compute can be told";
         } else if (clock == null) {
             source = "not used: summary.json has no \"clock\", so the runtime's events cannot be placed on the jobs' timeline";
-        } else if (jfr != null) {
-            events = readJfr(jfr, clock);
-            source = "JFR " + jfr;
-            if (events == null && givenJfr) {
-                // the user's file, not a run's recording cut short by a crash: the run explained without it, exit 0
-                throw BadUsageException.ofOption("--events", jfr + ": not a JFR recording JFR can read");
-            }
-            if (events == null) {
-                events = gcLog != null ? GcLogParser.parse(gcLog, clock) : List.of();
-                source = "JFR " + jfr + " unreadable (the run may have crashed before dumping it)"
-                        + (gcLog != null ? "; GC log " + gcLog : "");
-            }
         } else {
-            events = GcLogParser.parse(gcLog, clock);
-            source = "GC log " + gcLog;
+            EventSelection selection = EventSelection.forJobs(gcLog != null && jfr == null ? gcLog : jfr, jobs);
+            source = jfr != null ? "JFR " + jfr : "GC log " + gcLog;
+            if (jfr != null && !readJfr(jfr, clock, selection)) {
+                if (givenJfr) {
+                    // the user's file, not a run's recording cut short by a crash: the run explained without it, exit 0
+                    throw BadUsageException.ofOption("--events", jfr + ": not a JFR recording JFR can read");
+                }
+                source = "JFR " + jfr + " unreadable (the run may have crashed before dumping it)";
+                // with no GC log to read instead, the attribution stands on the job lines alone
+                problem = gcLog == null ? source : null;
+                source += gcLog != null ? "; GC log " + gcLog : "";
+                selection = EventSelection.forJobs(gcLog, jobs);
+                jfr = null;
+            }
+            if (jfr == null && gcLog != null) {
+                readGcLog(gcLog, clock, selection);
+            }
+            events = selection.events();
+            read = selection.read();
+            source += " (" + read + " events)";
         }
-        if ((jfr != null || gcLog != null) && clock != null) {
-            source += " (" + events.size() + " events)";
-        }
-        return new RunEvidence(runDir, summary, clock, List.copyOf(jobs), List.copyOf(events), source);
+        return new RunEvidence(runDir, summary, clock, List.copyOf(jobs), events, read, source, problem);
     }
 
     /** The attributions of this run's missed and late jobs. */
@@ -114,11 +124,38 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
         return Attribution.attribute(jobs, events, settings);
     }
 
-    private static List<VmEvent> readJfr(Path jfr, RunClock clock) {
+    /**
+     * Reads the recording into {@code selection}; false when JFR cannot read it (events read before
+     * it stopped are dropped with it: the caller starts afresh).
+     *
+     * @throws BadUsageException when it holds more events than the harness keeps
+     */
+    private static boolean readJfr(Path jfr, RunClock clock, EventSelection selection) {
         try {
-            return JfrEventReader.read(jfr, clock);
+            JfrEventReader.read(jfr, clock, selection);
+            return true;
+        } catch (EventSelection.TooManyEvents e) {
+            throw new BadUsageException(e.getMessage());
         } catch (IOException | RuntimeException e) {
-            return null;
+            return false;
+        }
+    }
+
+    /** Whether the file named with --events is a GC log; a runaway line before any GC line is bad input naming file:line. */
+    private static boolean isGcLog(Path eventsFile) {
+        try {
+            return GcLogParser.isGcLog(eventsFile);
+        } catch (IOException e) {
+            throw BadUsageException.ofOption("--events", String.valueOf(e.getMessage()));
+        }
+    }
+
+    /** Reads the GC log into {@code selection}; a runaway line or too many events is bad input naming file:line. */
+    private static void readGcLog(Path gcLog, RunClock clock, EventSelection selection) {
+        try {
+            GcLogParser.parse(gcLog, clock, selection);
+        } catch (IOException e) {
+            throw new BadUsageException(String.valueOf(e.getMessage()));
         }
     }
 

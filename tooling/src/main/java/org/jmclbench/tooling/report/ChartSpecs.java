@@ -30,15 +30,12 @@ final class ChartSpecs {
 
     /**
      * A figure of the page: its heading, caption, whether it is drawn per particle count (else
-     * over the sweep of one policy), whether its legend names each runtime once (its caption tells
-     * a runtime's several series apart: predict and update, latency and jitter, repetitions) and
-     * the method that builds its chart.
+     * over the sweep of one policy) and the method that builds its chart. Whether its legend names
+     * each runtime once is the chart's to say ({@link ChartSpec#legendPerRuntime}), which the page
+     * and the exported files both read.
      */
-    record Figure(String id, String heading, String caption, boolean perSetting, boolean legendPerRuntime,
+    record Figure(String id, String heading, String caption, boolean perSetting,
                   @JsonIgnore Function<Scope, ChartSpec> builder) {
-        Figure(String id, String heading, String caption, boolean perSetting, Function<Scope, ChartSpec> builder) {
-            this(id, heading, caption, perSetting, false, builder);
-        }
     }
 
     private static final String COMPLETION = "Every released job of every repetition merged: the fraction completed within "
@@ -63,7 +60,7 @@ final class ChartSpecs {
                     false, ChartSpecs::deviation),
             new Figure("latency-jitter", "Average task latency and release jitter vs particles", "Mean over the jobs that have "
                     + "the value, then over repetitions (ms), on a log particle axis. Solid: task latency (end \u2212 start), over "
-                    + "the completed jobs; dashed: release jitter (start \u2212 release), over the started jobs.", false, true, ChartSpecs::latencyJitter),
+                    + "the completed jobs; dashed: release jitter (start \u2212 release), over the started jobs.", false, ChartSpecs::latencyJitter),
             new Figure("memory", "Memory areas: peak bytes per engine and memory style", "The memory-model experiment at a "
                     + "glance: for each runtime, engine and memory style, the peak use of each memory area (bytes, log axis; the "
                     + "largest over the repetitions); the table gives the peaks and the mean bytes one release allocated in the area "
@@ -85,10 +82,10 @@ final class ChartSpecs {
             new Figure("latency-index", "Task latency vs event index", "Every job of the first repetition (down-sampled): "
                     + "predict (odometry, every 50 ms) as dots, update (laser) as triangles. The thesis\u2019s XY points graph. "
                     + "Shaded bands: the GC (red) and safepoint (violet) pauses of that repetition of the first runtime shown "
-                    + "that has some, placed on the event index through the jobs\u2019 release times.", true, true,
+                    + "that has some, placed on the event index through the jobs\u2019 release times.", true,
                     ChartSpecs::latencyIndex),
             new Figure("deviation-time", "Deviation over time, repeated runs", "Euclidean xy deviation (m) over the run, one "
-                    + "line per repetition (up to five) per runtime. The thesis\u2019s XY lines graph.", true, true,
+                    + "line per repetition (up to five) per runtime. The thesis\u2019s XY lines graph.", true,
                     ChartSpecs::deviationTime),
             new Figure("trajectory", "Estimated vs real trajectory", "On the playground (dashed frame, metres); black: ground "
                     + "truth; triangles: the beacons; one estimate per runtime (first repetition).", true, ChartSpecs::trajectory),
@@ -277,7 +274,8 @@ final class ChartSpecs {
         });
         return s.spec("latency-jitter", "Average task latency and release jitter vs particles", Kind.LINES, false,
                 new Axis("particles (log)", Scale.LOG, Format.NUMBER, null, null),
-                Axis.linear("time (ms, mean over repetitions; dashed: release jitter)"), null, series);
+                Axis.linear("time (ms, mean over repetitions; dashed: release jitter)"), null, series)
+                .withLegendPerRuntime(); // the caption tells latency from jitter: one entry a runtime
     }
 
     private static List<double[]> metricPoints(List<ReportModel.Cell> cells, Metric m) {
@@ -378,7 +376,9 @@ final class ChartSpecs {
             }
         }
         return s.spec("latency-index", "Task latency vs event index", Kind.LINES, false, Axis.linear("event index"),
-                Axis.linear("task latency (ms); dots: predict, triangles: update"), null, series).behind(bands, null);
+                Axis.linear("task latency (ms); dots: predict, triangles: update"), null, series).behind(bands, null)
+                .withLegendPerRuntime(); // the caption tells predict from update
+
     }
 
     static ChartSpec deviationTime(Scope s) {
@@ -391,7 +391,7 @@ final class ChartSpecs {
             }
         }
         return s.spec("deviation-time", "Deviation over time, repeated runs", Kind.LINES, false, Axis.linear("time (s)"),
-                Axis.linear("deviation xy (m)"), null, series);
+                Axis.linear("deviation xy (m)"), null, series).withLegendPerRuntime(); // the caption tells the repetitions apart
     }
 
     /** The ground truth, one estimate per runtime and the beacons, on the dataset's playground. */

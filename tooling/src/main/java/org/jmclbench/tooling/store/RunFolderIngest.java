@@ -2,7 +2,6 @@ package org.jmclbench.tooling.store;
 
 import java.io.IOException;
 import java.nio.ByteBuffer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -15,6 +14,7 @@ import java.util.function.Function;
 
 import org.HdrHistogram.Histogram;
 import org.jmclbench.tooling.attribution.JobFileReader;
+import org.jmclbench.tooling.cli.BoundedLineReader;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -246,38 +246,11 @@ public final class RunFolderIngest {
     }
 
     /** The longest line of a data file read (a job line is under 200 characters). */
-    public static final int MAX_LINE_CHARS = 64 * 1024;
+    public static final int MAX_LINE_CHARS = BoundedLineReader.MAX_LINE_CHARS;
 
-    /**
-     * The lines of {@code file} (ended by LF, CR or CRLF, as {@code Files.readAllLines} reads them),
-     * refusing a line longer than {@link #MAX_LINE_CHARS}: a runaway file of gigabytes without a
-     * line end, read whole, would take the runner's memory with it.
-     */
+    /** The lines of {@code file}, each of at most {@link #MAX_LINE_CHARS} characters ({@link BoundedLineReader}). */
     static List<String> boundedLines(Path file) throws IOException {
-        List<String> lines = new ArrayList<>();
-        try (java.io.BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            StringBuilder line = new StringBuilder();
-            boolean afterCr = false;
-            for (int c = in.read(); c != -1; c = in.read()) {
-                if (c == '\n' && afterCr) {
-                    afterCr = false;
-                    continue;
-                }
-                afterCr = c == '\r';
-                if (c == '\n' || c == '\r') {
-                    lines.add(line.toString());
-                    line.setLength(0);
-                } else if (line.length() == MAX_LINE_CHARS) {
-                    throw new IOException(file + ":" + (lines.size() + 1) + ": a line longer than " + MAX_LINE_CHARS + " characters");
-                } else {
-                    line.append((char) c);
-                }
-            }
-            if (line.length() > 0) {
-                lines.add(line.toString());
-            }
-        }
-        return lines;
+        return BoundedLineReader.readAll(file);
     }
 
     static String encode(Histogram h) {

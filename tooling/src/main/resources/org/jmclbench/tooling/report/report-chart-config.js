@@ -53,19 +53,18 @@
   /** One series of bars in the runtimes' colours: the categories name them, and no legend is drawn. */
   function oneSeriesInRuntimeColours(view) { return view.series.length === 1 && !!view.series[0].colors; }
   /**
-   * Whether the legend names each runtime once: the figure's caption tells its series apart
-   * (Figure.legendPerRuntime), or the chart says so for the page and the files alike (its +infinity
-   * marks, explained by their band: ChartSpec.legendPerRuntime).
+   * Whether the legend names each runtime once: the chart says so (ChartSpec.legendPerRuntime), for
+   * the page and the exported files alike.
    */
-  function perRuntime(f, spec) { return !!((f && f.legendPerRuntime) || (spec && spec.legendPerRuntime)); }
+  function perRuntime(spec) { return !!(spec && spec.legendPerRuntime); }
   /** The legend's entries: one per series, or one per runtime. */
-  function legendItems(f, spec, view) {
-    if (!perRuntime(f, spec)) { return view.series.length; }
+  function legendItems(spec, view) {
+    if (!perRuntime(spec)) { return view.series.length; }
     var seen = {};
     view.series.forEach(function (s) { seen[s.config || s.name] = true; });
     return Object.keys(seen).length;
   }
-  function chartConfig(spec, view, f) {
+  function chartConfig(spec, view) {
     var bars = spec.kind !== 'LINES', stacked = spec.kind === 'STACKED_BARS';
     // every bar keeps its label: Chart.js would skip every other one where they crowd, leaving bars
     // nobody can name (draw() makes a chart of many rows tall enough for them); many names under
@@ -87,7 +86,7 @@
     // the vertical axis's title runs along the plot's height: a long one ran off the chart's top
     o.scales.y.title.text = chartText.titleLines(String(o.scales.y.title.text), AXIS_TITLE_LINE);
     if (!bars) { o.parsing = false; }
-    if (perRuntime(f, spec)) { chartText.legendPerRuntime(o.plugins.legend); }
+    if (perRuntime(spec)) { chartText.legendPerRuntime(o.plugins.legend); }
     if (!spec.horizontal) {
       // the axes reach the intervals' ends, so that no error bar runs off the plot
       view.series.forEach(function (s) {

@@ -170,7 +170,8 @@
   }
   /**
    * A legend that names each runtime once, by its first series, and shows or hides all its series:
-   * for a figure whose caption tells a runtime's several series apart (Figure.legendPerRuntime).
+   * for a chart that says so (ChartSpec.legendPerRuntime: its caption tells a runtime's several series
+   * apart, or its +infinity marks are explained by their band).
    */
   function legendPerRuntime(legend) {
     function key(d) { return d.config || d.label; }

@@ -426,7 +426,7 @@
     if (charts[f.id]) { charts[f.id].destroy(); }
     var canvas = document.getElementById('chart-' + f.id);
     var rows = spec && spec.kind !== 'LINES' ? view.categories.length : 0;
-    var items = spec && !oneSeriesInRuntimeColours(view) ? legendItems(f, spec, view) : 0;
+    var items = spec && !oneSeriesInRuntimeColours(view) ? legendItems(spec, view) : 0;
     // many rows: a horizontal chart grows a line per row, a vertical one makes room for its turned
     // labels; a long legend (three entries a line across the page) may take half the box and no more,
     // so the box grows until it needs no more than that (Chart.js cuts a legend that needs more)
@@ -437,7 +437,7 @@
     // the page's width, where they ran under the axis title (the evaluation's breakdown chart)
     var wideNames = !!spec && spec.horizontal && widestName(view.categories) > NAMES_BESIDE;
     document.getElementById('figure-' + f.id).classList.toggle('crowded', rows > ROWS_IN_A_BOX || items > ROWS_IN_A_BOX || wideNames);
-    var config = spec ? chartConfig(spec, view, f) : { type: 'scatter', data: { datasets: [] },
+    var config = spec ? chartConfig(spec, view) : { type: 'scatter', data: { datasets: [] },
       // a figure of another policy (abort latency, breakdown load) has no chart where the table has runs
       options: { responsive: true, maintainAspectRatio: false, plugins: { title: { display: true,
         text: chartText.titleLines(f.heading + (settingHasRuns ? ': nothing to draw at this setting (the caption says where it is drawn)'

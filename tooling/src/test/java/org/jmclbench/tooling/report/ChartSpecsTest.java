@@ -362,6 +362,24 @@ class ChartSpecsTest {
     }
 
     @Test
+    void aChartWhoseCaptionTellsARuntimesSeriesApartNamesEachRuntimeOnceOnThePageAndInTheFiles() throws Exception {
+        // the figure said so (Figure.legendPerRuntime), which only the page read: the exported SVG and PNG of
+        // these charts named every series ("<config> task latency", "<config> release jitter"); the chart says it now
+        for (ChartSpec spec : List.of(chart("latency-jitter", "skip", null), chart("latency-index", "skip", 400),
+                chart("deviation-time", "skip", 400))) {
+            List<String> runtimes = spec.series().stream().map(ChartSpec.Series::config).distinct().toList();
+            assertTrue(spec.series().size() > runtimes.size(), spec.id() + ": several series a runtime, or the test proves nothing");
+            assertTrue(spec.legendPerRuntime(), spec.id() + ": the chart says it, for both renderers");
+            org.jfree.chart.LegendItemCollection items = ChartExporter.render(spec).getXYPlot().getLegendItems();
+            List<String> labels = new java.util.ArrayList<>();
+            for (int i = 0; i < items.getItemCount(); i++) {
+                labels.add(items.get(i).getLabel());
+            }
+            assertEquals(runtimes, labels, spec.id() + ": the exported legend names each runtime once");
+        }
+    }
+
+    @Test
     void latencyIndexCarriesThePausesOfEachRuntime() {
         ChartSpec li = chart("latency-index", "skip", 400);
         assertEquals(2 * 4, li.series().size(), "predict and update per runtime");

@@ -89,6 +89,51 @@ class RuntimeMisbehaviourTest extends FakeJvmHome {
     }
 
     /**
+     * A good run of a JVM 10 whose GC log (the run's event capture) ends in a 64 MB line without an
+     * end: its attribution read the log whole (a multi-GB one ended the runner with OutOfMemoryError)
+     * and, finding no event in it, stored the run's misses as explained without a pause. Now the run
+     * stands, without attribution (no cause metric, no attribution row), and the runner says why.
+     */
+    @Test
+    void aRunawayGcLogLeavesTheRunWithoutAttributionNotTheRunnerDead() throws Exception {
+        String err = runWithoutAttribution("runawaygclog", 10);
+        assertTrue(err.matches("(?s).*: no attribution: [^\\n]*gc\\.log:2: a line longer than "
+                + org.jmclbench.tooling.cli.BoundedLineReader.MAX_LINE_CHARS + " characters\\n.*"), err);
+    }
+
+    /**
+     * A good run of a JVM 11+ whose recording JFR cannot read: it was attributed from its job lines
+     * alone and stored as a run without capture ({@code cause.events} 0), its pauses told as other
+     * causes. Now the run stands without attribution.
+     */
+    @Test
+    void anUnreadableRecordingOfAGoodRunLeavesItWithoutAttribution() throws Exception {
+        String err = runWithoutAttribution("badrecording", 22);
+        assertTrue(err.matches("(?s).*: no attribution: JFR [^\\n]*recording\\.jfr unreadable[^\\n]*\\n.*"), err);
+    }
+
+    /** Runs a good runtime and {@code mode}'s; that run is ok, without attribution. Returns the matrix's stderr. */
+    private String runWithoutAttribution(String mode, int major) throws Exception {
+        Path runtime = Fixtures.fakeJava(dir, mode, mode, 0, null, major);
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--datasets", "tiny", "--particles", "100", "--timeout", "15",
+                "--db", db.toString(), "--java", fake.toString(), "--java", runtime.toString());
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
+             ResultSet rs = s.executeQuery("SELECT runtime, status,"
+                     + " (SELECT count(*) FROM metrics m WHERE m.run_key = runs.run_key AND m.metric LIKE 'cause.%'),"
+                     + " (SELECT count(*) FROM attributions a WHERE a.run_key = runs.run_key),"
+                     + " (SELECT count(*) FROM metrics m WHERE m.run_key = runs.run_key) FROM runs WHERE runtime = 'fake-"
+                     + major + "'")) {
+            assertTrue(rs.next(), "the run is recorded");
+            assertEquals("ok", rs.getString(2), "the run itself is good");
+            assertEquals(0, rs.getInt(3), "no cause metric");
+            assertEquals(0, rs.getInt(4), "no attribution row");
+            assertTrue(rs.getInt(5) > 0, "its own metrics are stored");
+        }
+        return r.err();
+    }
+
+    /**
      * A summary.json that claims jobs its job files do not hold (20 predict jobs released for 10
      * lines; a job file cut to 5 of its 10): the run was recorded ok with the summary's counts,
      * which no job backs; now failed, naming the file and both counts, nothing of it stored.

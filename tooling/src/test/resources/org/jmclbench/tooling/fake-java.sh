@@ -4,7 +4,8 @@
 # another particle count; unsupported: a count past the runtime's limits, exit 3; exitoom: a JVM's
 # exit 3 under -XX:+ExitOnOutOfMemoryError; sigstop: stops itself; flood: 3 GB of stderr, exit 1;
 # nosummary: a complete folder without summary.json; overclaim: a summary claiming 20 predict jobs for
-# 10 job lines; shortjobs: a job file cut to 5 of its 10 lines; segvmid: SIGSEGV after its whole
+# 10 job lines; shortjobs: a job file cut to 5 of its 10 lines; manyjobs, manyrows: 100,000 more job
+# lines, position rows than its 10 predict jobs; segvmid: SIGSEGV after its whole
 # folder was written; hugesummary, hugejobs: a 3 GB summary.json, odoData.txt (sparse); runawaygclog
 # (a JVM 9 or 10): a good run whose GC log ends in a 64 MB line (sparse); badrecording (a JVM 11+):
 # a good run whose recording.jfr is no recording; orphan: an ok run that leaves a child running; limit-at-N: ok
@@ -186,6 +187,11 @@ case $MODE in
         fi ;;
     overclaim) sed -i 's/"released": 10,/"released": 20,/' "$leaf.partial/summary.json" ;;
     shortjobs) sed -i '/^[5-9] /d' "$leaf.partial/odoData.txt" ;;
+    manyjobs|manyrows)
+        # job lines or position rows on and on, for 10 released predict jobs
+        f=$([ "$MODE" = manyjobs ] && echo odoData.txt || echo position.txt)
+        line=$(sed -n '$p' "$leaf.partial/$f")
+        yes "$line" | head -n 100000 >> "$leaf.partial/$f" ;;
 esac
 mv "$leaf.partial" "$leaf"
 case $MODE in

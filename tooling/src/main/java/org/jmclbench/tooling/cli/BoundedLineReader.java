@@ -8,8 +8,6 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 
 /**
  * The lines of a text file a runtime under test wrote (job lines, data files, a GC log), one at a
@@ -43,17 +41,6 @@ public final class BoundedLineReader implements Closeable {
         this.maxLineChars = maxLineChars;
         this.in = new InputStreamReader(Files.newInputStream(file), StandardCharsets.UTF_8.newDecoder()
                 .onMalformedInput(CodingErrorAction.REPLACE).onUnmappableCharacter(CodingErrorAction.REPLACE));
-    }
-
-    /** Every line of {@code file} (blank ones too), for a file whose every line is kept anyway. */
-    public static List<String> readAll(Path file) throws IOException {
-        List<String> lines = new ArrayList<>();
-        try (BoundedLineReader r = new BoundedLineReader(file)) {
-            for (String l = r.readLine(); l != null; l = r.readLine()) {
-                lines.add(l);
-            }
-        }
-        return lines;
     }
 
     /**

@@ -94,13 +94,13 @@ public final class RunFolderIngest {
         }
         Path deviation = dir.resolve("positionDeviation.txt");
         if (Files.isRegularFile(deviation)) {
-            List<double[]> rows = readNumbers(deviation, 5);
+            List<double[]> rows = readOdometryRows(deviation, 5, summary);
             d.series.add(new RunDetails.Series("deviation",
                     seriesJson(List.of("time", "dx", "dy", "dxy", "dtheta"), strided(rows))));
         }
         Path position = dir.resolve("position.txt");
         if (Files.isRegularFile(position)) {
-            d.series.add(new RunDetails.Series("trajectory", trajectory(readNumbers(position, 4),
+            d.series.add(new RunDetails.Series("trajectory", trajectory(readOdometryRows(position, 4, summary),
                     realFile != null && Files.isRegularFile(realFile) ? readNumbers(realFile, 4) : List.of())));
         }
         return d;
@@ -194,7 +194,13 @@ public final class RunFolderIngest {
      * not hold (a runtime cut short, a file cut at a line end) would store counts no job backs.
      */
     static List<Job> releasedJobs(Path file, JsonNode summary, String task) throws IOException {
-        List<Job> jobs = readJobs(file);
+        long released = released(summary, task);
+        // read no further than one line past the count: a runaway file of short lines is refused there
+        List<Job> jobs = readRows(file, 7, released + 1, RunFolderIngest::job);
+        if (jobs.size() > released) {
+            throw new IOException(file + ": more than " + released + " job lines, but summary.json says " + released + " "
+                    + task + " jobs were released");
+        }
         String mismatch = JobFileReader.releasedMismatch(file, jobs.size(), summary, task);
         if (mismatch != null) {
             throw new IOException(mismatch);
@@ -202,14 +208,38 @@ public final class RunFolderIngest {
         return jobs;
     }
 
-    static List<Job> readJobs(Path file) throws IOException {
-        return readRows(file, 7, f -> new Job(Long.parseLong(f[0]), Long.parseLong(f[1]), Long.parseLong(f[2]),
+    /** The jobs summary.json says {@code task} released, or Long.MAX_VALUE - 1 where it says none (no bound). */
+    private static long released(JsonNode summary, String task) {
+        JsonNode n = summary.path("tasks").path(task).path("released");
+        return n.canConvertToLong() && n.asLong() >= 0 ? Math.min(n.asLong(), Long.MAX_VALUE - 1) : Long.MAX_VALUE - 1;
+    }
+
+    private static Job job(String[] f) {
+        return new Job(Long.parseLong(f[0]), Long.parseLong(f[1]), Long.parseLong(f[2]),
                 Long.parseLong(f[3]), Long.parseLong(f[4]), f[5], Long.parseLong(f[6]),
-                f.length > 7 ? Long.parseLong(f[7]) : -1));
+                f.length > 7 ? Long.parseLong(f[7]) : -1);
+    }
+
+    /**
+     * The rows of a file of one row per odometry time (position.txt, positionDeviation.txt): at most
+     * as many as summary.json says predict jobs were released.
+     */
+    static List<double[]> readOdometryRows(Path file, int columns, JsonNode summary) throws IOException {
+        long released = released(summary, "predict");
+        List<double[]> rows = readNumbers(file, columns, released + 1);
+        if (rows.size() > released) {
+            throw new IOException(file + ": more than " + released + " rows, one an odometry time, but summary.json says "
+                    + released + " predict jobs were released");
+        }
+        return rows;
     }
 
     static List<double[]> readNumbers(Path file, int columns) throws IOException {
-        return readRows(file, columns, f -> {
+        return readNumbers(file, columns, Long.MAX_VALUE);
+    }
+
+    private static List<double[]> readNumbers(Path file, int columns, long maxRows) throws IOException {
+        return readRows(file, columns, maxRows, f -> {
             double[] r = new double[columns];
             for (int i = 0; i < columns; i++) {
                 r[i] = Double.parseDouble(f[i]);
@@ -220,26 +250,26 @@ public final class RunFolderIngest {
 
     /**
      * The rows of a whitespace-separated data file (blank and {@code #} lines skipped), each of at
-     * least {@code columns} fields, parsed by {@code row}; a short row or a bad number is an
-     * IOException naming file:line.
+     * least {@code columns} fields, parsed by {@code row}, read line by line and no further than
+     * {@code maxRows} rows; a short row or a bad number is an IOException naming file:line.
      */
-    private static <T> List<T> readRows(Path file, int columns, Function<String[], T> row) throws IOException {
+    private static <T> List<T> readRows(Path file, int columns, long maxRows, Function<String[], T> row) throws IOException {
         List<T> rows = new ArrayList<>();
-        int lineNo = 0;
-        for (String line : boundedLines(file)) {
-            lineNo++;
-            String l = line.strip();
-            if (l.isEmpty() || l.startsWith("#")) {
-                continue;
-            }
-            String[] f = l.split("\\s+");
-            if (f.length < columns) {
-                throw new IOException(file + ":" + lineNo + ": expected " + columns + " columns, found " + f.length);
-            }
-            try {
-                rows.add(row.apply(f));
-            } catch (NumberFormatException e) {
-                throw new IOException(file + ":" + lineNo + ": not a number: " + e.getMessage());
+        try (BoundedLineReader r = new BoundedLineReader(file)) {
+            for (String line = r.readLine(); line != null && rows.size() < maxRows; line = r.readLine()) {
+                String l = line.strip();
+                if (l.isEmpty() || l.startsWith("#")) {
+                    continue;
+                }
+                String[] f = l.split("\\s+");
+                if (f.length < columns) {
+                    throw new IOException(file + ":" + r.lineNumber() + ": expected " + columns + " columns, found " + f.length);
+                }
+                try {
+                    rows.add(row.apply(f));
+                } catch (NumberFormatException e) {
+                    throw new IOException(file + ":" + r.lineNumber() + ": not a number: " + e.getMessage());
+                }
             }
         }
         return rows;
@@ -247,11 +277,6 @@ public final class RunFolderIngest {
 
     /** The longest line of a data file read (a job line is under 200 characters). */
     public static final int MAX_LINE_CHARS = BoundedLineReader.MAX_LINE_CHARS;
-
-    /** The lines of {@code file}, each of at most {@link #MAX_LINE_CHARS} characters ({@link BoundedLineReader}). */
-    static List<String> boundedLines(Path file) throws IOException {
-        return BoundedLineReader.readAll(file);
-    }
 
     static String encode(Histogram h) {
         ByteBuffer buf = ByteBuffer.allocate(h.getNeededByteBufferCapacity());

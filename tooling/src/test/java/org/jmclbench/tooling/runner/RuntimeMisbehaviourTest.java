@@ -89,6 +89,24 @@ class RuntimeMisbehaviourTest extends FakeJvmHome {
     }
 
     /**
+     * A job file, or a file of one row per odometry time, that goes on far past the jobs summary.json
+     * says were released (a runtime looping on its writer): read no further than one row past the
+     * count, not whole (a multi-GB file of short lines would take the runner's memory), and the run's failure.
+     */
+    @Test
+    void rowsFarPastTheReleasedJobsAreGarbageReadNoFurtherThanOnePast() throws Exception {
+        Map<String, Row> rows = matrix("manyjobs", "manyrows");
+        Row jobs = rows.get("fake-22");
+        assertEquals("failed", jobs.status(), jobs.toString());
+        assertTrue(jobs.failure().endsWith("odoData.txt: more than 10 job lines, but summary.json says 10 predict jobs were released"),
+                jobs.failure());
+        Row position = rows.get("fake-23");
+        assertEquals("failed", position.status(), position.toString());
+        assertTrue(position.failure().endsWith("position.txt: more than 10 rows, one an odometry time, but summary.json says 10"
+                + " predict jobs were released"), position.failure());
+    }
+
+    /**
      * A good run of a JVM 10 whose GC log (the run's event capture) ends in a 64 MB line without an
      * end: its attribution read the log whole (a multi-GB one ended the runner with OutOfMemoryError)
      * and, finding no event in it, stored the run's misses as explained without a pause. Now the run

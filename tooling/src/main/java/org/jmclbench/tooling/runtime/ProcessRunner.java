@@ -60,7 +60,7 @@ public final class ProcessRunner {
                 ProcessTree.kill(p);
             }
             int code = finished ? p.exitValue() : -1;
-            return new Result(code, readText(out), readText(err), !finished);
+            return new Result(code, readEnds(out), readEnds(err), !finished);
         } catch (IOException e) {
             return new Result(127, "", String.valueOf(e.getMessage()), false);
         } catch (InterruptedException e) {
@@ -79,6 +79,34 @@ public final class ProcessRunner {
     public static String readText(Path p) throws IOException {
         try (java.io.InputStream in = Files.newInputStream(p)) {
             return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+    }
+
+    /** What of a child's output stream is kept: its first and last half of this. */
+    static final int MAX_OUTPUT_BYTES = 1024 * 1024;
+
+    /**
+     * A child's output, whole up to {@link #MAX_OUTPUT_BYTES}, else its beginning (where a version
+     * banner stands) and its end (where a crash says why), with what is left out between them said:
+     * a runtime under test that floods its output must not take the caller's memory with it.
+     */
+    static String readEnds(Path p) throws IOException {
+        try (java.nio.channels.FileChannel ch = java.nio.channels.FileChannel.open(p)) {
+            long size = ch.size();
+            if (size <= MAX_OUTPUT_BYTES) {
+                return readText(p);
+            }
+            int half = MAX_OUTPUT_BYTES / 2;
+            java.nio.ByteBuffer head = java.nio.ByteBuffer.allocate(half);
+            java.nio.ByteBuffer tail = java.nio.ByteBuffer.allocate(half);
+            while (head.hasRemaining() && ch.read(head, head.position()) > 0) {
+                // read on until the first half is full
+            }
+            while (tail.hasRemaining() && ch.read(tail, size - half + tail.position()) > 0) {
+                // the same for the last half
+            }
+            return new String(head.array(), 0, head.position(), StandardCharsets.UTF_8) + "\n[... " + (size - 2L * half)
+                    + " bytes left out ...]\n" + new String(tail.array(), 0, tail.position(), StandardCharsets.UTF_8);
         }
     }
 

@@ -345,8 +345,8 @@ public final class RtsjReplay {
             try {
                 if (policy.abortsJobInProgress()) {
                     aie.doInterruptible(this);
-                } else if (mayStart()) {
-                    lockAndRun(AbortSignal.NEVER); // no ATC where no job is aborted: no delivery point runs
+                } else {
+                    lockAndRun(AbortSignal.NEVER, true); // no ATC where no job is aborted: no delivery point runs
                 }
             } catch (Throwable e) {
                 failed(name, e);
@@ -366,7 +366,7 @@ public final class RtsjReplay {
                 running = -1;
                 return; // superseded before it started: never starts
             }
-            lockAndRun(design == RtsjDesign.ATOMIC ? DeliveryPoints.INSTANCE : AbortSignal.NEVER);
+            lockAndRun(design == RtsjDesign.ATOMIC ? DeliveryPoints.INSTANCE : AbortSignal.NEVER, false);
         }
 
         /** Whether the rule lets k start: neither refused nor asked to abort (superseded before it started). */
@@ -382,11 +382,17 @@ public final class RtsjReplay {
         /**
          * Takes the robot and runs the job (non-AI: no delivery point in here but those of the
          * atomic design's signal); the lock is released whatever ends the job. The thesis design
-         * holds the robot's monitor for the whole job.
+         * holds the robot's monitor for the whole job. {@code askRule}: with no ATC (the policy
+         * aborts no job in progress), the rule is asked once the robot's lock is held, as the scj
+         * mission asks it holding the robot: an event it superseded while it waited never starts.
+         * (Interruptible jobs ask before they wait, and a later release fires at them.)
          */
-        private void lockAndRun(AbortSignal signal) {
+        private void lockAndRun(AbortSignal signal, boolean askRule) {
             try {
                 busy.lock();
+                if (askRule && !mayStart()) {
+                    return; // superseded while it waited for the robot: never starts
+                }
                 recorder.started(now(clock));
                 started = true;
                 if (design == RtsjDesign.THESIS) {

@@ -35,20 +35,23 @@ import time
 SCJ = "scj-mission/src/main/java/org/jmclbench/scj/"
 MCL = "core-immortal/src/main/java/org/jmclbench/core/mcl/"
 RT = "rtsj-compat/src/main/java/org/jmclbench/rtsjcompat/"
+# the policies' rule, which the mission's JobGate asks
+POLICY = "core-immortal/src/main/java/org/jmclbench/core/policy/OverrunPolicy.java"
 
 # id, file, text, replacement, the bug in words
 MUTANTS = [
-    ("gate-skip-no-reservation", SCJ + "JobGate.java",
-     "            owner = j;\n", "",
+    ("gate-skip-no-reservation", POLICY,
+     "            s.reserved = k;\n", "",
      "skip: an admitted event does not reserve the robot, so a second one is admitted too"),
-    ("gate-terminate-latest-unset", SCJ + "JobGate.java",
-     "            latest = j; // the job in progress sees this at its next poll and aborts\n", "",
+    ("gate-terminate-latest-unset", POLICY,
+     "            s.latest = k; // the job in progress sees this at its next poll and aborts\n", "",
      "terminate: a release does not announce itself, so the job in progress is never asked to abort"),
-    ("gate-abort-any-policy", SCJ + "JobGate.java",
-     "return policy == OverrunPolicy.TERMINATE && latest != k;", "return latest != k;",
+    ("gate-abort-any-policy", POLICY,
+     "    public boolean abortRequested(State s, int k) {\n        return false;",
+     "    public boolean abortRequested(State s, int k) {\n        return s.latest != k;",
      "the abort request is not limited to terminate"),
-    ("gate-never-freed", SCJ + "JobGate.java",
-     "        if (owner == k) {\n            owner = FREE;\n        }\n", "",
+    ("gate-never-freed", POLICY,
+     "            if (s.reserved == k) {\n                s.reserved = State.FREE;\n            }\n", "",
      "skip: the robot is never freed after a job, so every later event is dropped"),
     ("gate-ended-early", SCJ + "JobGate.java",
      "boolean last = ended == events;", "boolean last = ended == events - 1;",

@@ -5,10 +5,11 @@ import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.core.timeline.Timeline;
 
 /**
- * The overrun policy's whole rule and state, shared by the handlers: which event may use the
- * robot, which job must abort, and how many events have ended (so that the last one ends the
- * mission). The handlers report facts (a release, its time, a job's end); every decision of
- * skip, terminate and queue is taken here.
+ * The mission's side of the overrun policy, shared by the handlers: it asks the policy's rule
+ * ({@link OverrunPolicy}, whose state it keeps and changes only under its monitor) which event
+ * may use the robot and which job must abort, decides the events of one instant together, and
+ * counts the events that have ended (so that the last one ends the mission). The handlers report
+ * facts (a release, its time, a job's end); no decision of a policy is taken here or in them.
  *
  * <p>Protocol per merged event k: at its release, {@link #admit(int)}, or for the periodic task
  * {@link #admitPeriodic(int, long)} (false: k is skipped); its job polls
@@ -34,6 +35,8 @@ public class JobGate {
     private static final byte DROPPED = 2;
 
     private final OverrunPolicy policy;
+    // the policy's state (skip's reservation, terminate's latest event); changed under this monitor
+    private final OverrunPolicy.State rule;
     private final int events;
     // each event's admission, taken once (for the events of one time, at the first release of them)
     private final byte[] decision;
@@ -41,29 +44,19 @@ public class JobGate {
     private Timeline timeline;
     // each event's scheduled release, ns from the mission start (with the timeline)
     private long[] releaseNs;
-    // skip: the event whose job holds (or, released but not started, has reserved) the robot
-    private int owner = FREE;
-    // terminate: the latest released event, the only one allowed to run; read by the polls
-    private volatile int latest = FREE;
     private int ended;
-    // skip: when the periodic task's previous job ended, ns from the mission start; written by
-    // that task's handler before its job frees the robot, read by whichever handler decides an instant
+    // when the periodic task's previous job ended, ns from the mission start; written by that
+    // task's handler before its job frees the robot, read by whichever handler decides an instant
     private long periodicEndNs = Long.MIN_VALUE;
-    // terminate: where abort requests are recorded (JobRecords.abortNs); null, not recorded
+    // where abort requests are recorded (JobRecords.abortNs); null, not recorded
     private JobRecords records;
 
+    /** Unordered: the robot's monitor, not the rule, orders the jobs that wait for it (no wait/notify). */
     public JobGate(OverrunPolicy policy, int events) {
         this.policy = policy;
+        this.rule = new OverrunPolicy.State(policy, false);
         this.events = events;
         this.decision = new byte[Math.max(0, events)];
-    }
-
-    /**
-     * Whether the gate has {@code policy}'s rule (skip, terminate, queue): one it lacks would run as
-     * queue, so the engines refuse it. A policy added to OverrunPolicy is added here with its rule.
-     */
-    public static boolean hasRule(OverrunPolicy policy) {
-        return policy == OverrunPolicy.SKIP || policy == OverrunPolicy.TERMINATE || policy == OverrunPolicy.QUEUE;
     }
 
     /**
@@ -81,7 +74,7 @@ public class JobGate {
     }
 
     /**
-     * Records terminate's abort requests in {@code r}: the job of the event a release supersedes is
+     * Records abort requests in {@code r} (terminate's): the job of the event a release supersedes is
      * asked to abort at that release's wake-up ({@code r.wakeNs}, set before {@link #admit(int)}),
      * a periodic job at its task's next release ({@link #periodicAbortRequested(int, long)}).
      */
@@ -90,7 +83,7 @@ public class JobGate {
     }
 
     /**
-     * At k's release: true hands k to its handler, false drops it (skip, the robot busy). The first
+     * At k's release: true hands k to its handler, false drops it (the policy's rule). The first
      * release of an instant decides every event of that time, in timeline order.
      */
     public synchronized boolean admit(int k) {
@@ -99,7 +92,7 @@ public class JobGate {
 
     /**
      * k's decision, taking those of its instant's events not yet decided; {@code busy}: the robot
-     * was busy at that instant whatever the owner says (skip drops them all).
+     * was busy at that instant whatever the rule's state says (skip drops them all).
      */
     private synchronized boolean admitAt(int k, boolean busy) {
         if (decision[k] == UNDECIDED) {
@@ -134,22 +127,18 @@ public class JobGate {
     }
 
     /**
-     * The policy's decision for event j, released at {@code requestNs}. Synchronized although only
-     * {@link #admitAt} calls it (re-entering the monitor it holds): the static P2 rule wants every
-     * access to {@code owner}, {@code latest} and {@code records} under the gate's monitor.
+     * The policy's decision for event j, released at {@code requestNs}, and the abort request of the
+     * event it supersedes. Synchronized although only {@link #admitAt} calls it (re-entering the
+     * monitor it holds): the static P2 rule wants every change of the rule's state and every access
+     * to {@code records} under the gate's monitor.
      */
     private synchronized boolean decide(int j, boolean busy, long requestNs) {
-        if (policy == OverrunPolicy.SKIP) {
-            if (busy || owner != FREE) {
-                return false;
-            }
-            owner = j;
-        } else if (policy == OverrunPolicy.TERMINATE) {
-            int superseded = latest;
-            latest = j; // the job in progress sees this at its next poll and aborts
-            if (superseded != FREE && records != null) {
-                records.requestAbort(superseded, requestNs);
-            }
+        if (!rule.admit(j, busy)) {
+            return false;
+        }
+        int superseded = rule.superseded();
+        if (superseded != FREE && records != null) {
+            records.requestAbort(superseded, requestNs);
         }
         return true;
     }
@@ -166,26 +155,27 @@ public class JobGate {
 
     /**
      * At the periodic task's release of k, scheduled at {@code releaseNs}: as {@link #admit(int)},
-     * and under skip also dropped when the task's own previous job ended after that time (it
-     * overran into this release: the robot was busy with it).
+     * with the robot judged busy when the task's own previous job ended after that time (it
+     * overran into this release); skip then drops it.
      */
     public boolean admitPeriodic(int k, long releaseNs) {
         return admitAt(k, overran(releaseNs));
     }
 
-    /** Skip: the periodic task's previous job ended after {@code releaseNs}, so it held the robot then. */
+    /** The periodic task's previous job ended after {@code releaseNs}, so it held the robot then. */
     private synchronized boolean overran(long releaseNs) {
-        boolean overran = policy == OverrunPolicy.SKIP && periodicEndNs > releaseNs; // through a local: see admitAt
+        boolean overran = periodicEndNs > releaseNs; // through a local: see admitAt
         return overran;
     }
 
     /**
      * When a periodic job must stop whatever the polls say, given its task's next release
-     * ({@code Long.MAX_VALUE}: none): terminate aborts it at that release, as a sensor release
-     * aborts an update; {@code Long.MAX_VALUE} (never) under the other policies.
+     * ({@code Long.MAX_VALUE}: none): a policy whose release aborts the job in progress
+     * (terminate) aborts it at that release, as a sensor release aborts an update (the periodic
+     * handler is not released while its job runs); {@code Long.MAX_VALUE} (never) under the others.
      */
     public long periodicAbortAtNs(long nextReleaseNs) {
-        return policy == OverrunPolicy.TERMINATE ? nextReleaseNs : Long.MAX_VALUE;
+        return policy.abortsJobInProgress() ? nextReleaseNs : Long.MAX_VALUE;
     }
 
     /**
@@ -196,16 +186,22 @@ public class JobGate {
         periodicEndNs = endNs;
     }
 
-    /** Polled by k's job: true asks it to stop and leave the robot unchanged (terminate only). */
-    public boolean abortRequested(int k) {
-        return policy == OverrunPolicy.TERMINATE && latest != k;
+    /**
+     * Whether k's job, holding the robot's monitor, may start (false: superseded before it started,
+     * it never starts). Lock-free, as the poll: the rule reads only volatile fields here.
+     */
+    public boolean mayStart(int k) {
+        return policy.start(rule, k) != OverrunPolicy.NEVER;
     }
 
-    /** k's job has ended, completed or not: the robot is free again (skip). */
+    /** Polled by k's job: true asks it to stop and leave the robot unchanged (the policy's rule). Lock-free. */
+    public boolean abortRequested(int k) {
+        return policy.abortRequested(rule, k);
+    }
+
+    /** k's job has ended, completed or not (or never started): the rule may free the robot (skip). */
     public synchronized void release(int k) {
-        if (owner == k) {
-            owner = FREE;
-        }
+        rule.ended(k);
     }
 
     /** Counts one ended event (done, late, skipped or terminated); true for the last of them. */

@@ -93,7 +93,7 @@ final class JobRunner implements AbortSignal {
         long end;
         boolean completed = false;
         synchronized (robot) {
-            if (abortRequested()) {
+            if (!gate.mayStart(k) || abortRequested()) {
                 end = nowNs(); // superseded before it had the robot
             } else {
                 start = nowNs();

@@ -17,8 +17,9 @@ import gov.nasa.jpf.vm.choice.ThreadChoiceFromSet;
  * monitors (JPF does) and, with this listener, at volatiles, and not at plain field accesses;
  * P2 (no data race) is the check that makes that reduction sound.
  *
- * <p>The mission's one volatile, the gate's latest admitted event, is what a job's abort poll
- * reads: without this point, a release never falls between a job's start and its poll.
+ * <p>The mission's volatiles are the policy rule's state ({@code OverrunPolicy.State}, which the
+ * gate keeps): the latest admitted event, what a job's abort poll reads (without this point, a
+ * release never falls between a job's start and its poll), and skip's reservation.
  *
  * <p>Configuration: {@code jmclbench.volatile.classes}, class-name prefixes of the code whose
  * volatile accesses break (default: the mission and the localizer, not the SCJ layer).

@@ -30,8 +30,8 @@ import java.util.Set;
  * one laser event at one instant (two jobs contend for the robot's locks).
  *
  * <p>One search per design and policy checks {@link #SEARCH}. The reduction is the mission
- * checks': JPF switches threads at the engine's monitors, its volatiles (the dispatcher's
- * {@code latest} and {@code running}, the tasks' FIFO indices), the robot's ReentrantLock and
+ * checks': JPF switches threads at the engine's monitors, its volatiles (the policy rule's
+ * {@code latest} and {@code reserved}, the dispatcher's {@code running}, the tasks' FIFO indices), the robot's ReentrantLock and
  * every point where a thread blocks or ends, not inside rtsj-compat (the RTSJ VM's part), nor at
  * plain field accesses.
  */

@@ -54,18 +54,6 @@ public final class JavaSeEngine implements Engine {
         }
     }
 
-    /**
-     * Refuses a policy of {@code OverrunPolicy} that {@code engine}'s own rule does not implement
-     * ({@code hasRule} false), which it would otherwise run as queue: an engine that does not
-     * decide through {@link PolicyGate} (rtsj, scj, hvm) names its policies beside its rule.
-     */
-    public static void checkPolicyRule(String engine, RunOptions o, boolean hasRule) throws BadInputException {
-        if (!hasRule) {
-            throw BadInputException.ofOption("--policy", "the " + engine + " engine has no rule for the policy '"
-                    + o.policy.label + "'");
-        }
-    }
-
     /** The options of an engine whose one memory area is the heap: no scoped style, no SCJ areas. */
     public static void checkHeapOptions(String engine, RunOptions o) throws BadInputException {
         if (o.memory == MclConfig.Memory.SCOPED) {

@@ -3,6 +3,7 @@ package org.jmclbench.workload.release;
 import java.util.Arrays;
 import java.util.Locale;
 import org.jmclbench.core.mcl.AbortSignal;
+import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 
 /**
@@ -97,7 +98,7 @@ public final class ReleaseAccuracyMain {
             deadline[k] = release[k] + periodUs * 1000L;
         }
         JobRecords records = Records.periodic(loops, periodUs / 1e6);
-        new ReleaseEngine(ReleaseSchedule.of(release, deadline, task), new SkipGate(), EMPTY_JOB,
+        new ReleaseEngine(ReleaseSchedule.of(release, deadline, task), PolicyGate.of(OverrunPolicy.SKIP), EMPTY_JOB,
                 records, cpu, spinUs * 1000L).run();
         return records;
     }

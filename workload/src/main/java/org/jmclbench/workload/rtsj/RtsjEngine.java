@@ -52,7 +52,6 @@ public final class RtsjEngine implements Engine {
     public void checkOptions(RunOptions o) throws BadInputException {
         JavaSeEngine.checkHeapOptions(name(), o);
         JavaSeEngine.checkReleaseLoopOptions(name(), o);
-        JavaSeEngine.checkPolicyRule(name(), o, RtsjReplay.hasRule(o.policy));
     }
 
     @Override

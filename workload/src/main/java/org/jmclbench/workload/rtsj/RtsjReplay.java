@@ -29,12 +29,15 @@ import org.jmclbench.workload.shim.RuntimeShim;
  * and fires its task's {@link AsyncEvent}; each task (predict, update) is a
  * {@link BoundAsyncEventHandler} whose logic takes the events released to it in order (RTSJ keeps
  * one pending fire per release). The job in progress holds the robot's {@link ReentrantLock} (the
- * thesis's). The policy is applied by the dispatcher at each release (those of one instant all
- * decided, in timeline order, before any is fired): skip drops the event while an admitted event
- * has not ended, started or not (the thesis's {@code isLocked()} counted only started jobs);
- * queue releases it to wait; terminate fires the
- * {@link AsynchronouslyInterruptedException} of the job in progress, and a job superseded before
- * it started never starts. Every event ends once: done, late, skipped or terminated.
+ * thesis's), whose order, not the rule, decides which waiting job takes it next. The dispatcher
+ * asks the policy's rule ({@link OverrunPolicy}) at each release (those of one instant all
+ * decided, in timeline order, before any is fired): a dropped event ends there (skip: while an
+ * admitted event has not ended, started or not; the thesis's {@code isLocked()} counted only
+ * started jobs); an admitted one is fired; and when the job in progress has its abort requested
+ * (terminate), the dispatcher fires its {@link AsynchronouslyInterruptedException}. Under a
+ * policy that aborts jobs in progress the jobs run in the AIE's {@code doInterruptible}. A job the
+ * rule will not start, or whose abort was requested before it started, never starts. Every event
+ * ends once: done, late, skipped or terminated.
  *
  * <p>Times in the records are ns from the release of time 0, read from RTSJ's real-time clock
  * (so that Java PathFinder runs this class on virtual time). A job's abort request
@@ -67,15 +70,12 @@ public final class RtsjReplay {
     /** Held by the job in progress: the thesis's test of whether a task is running. */
     private final ReentrantLock busy = new ReentrantLock();
     private final Task[] tasks = new Task[TASK_NAMES.length];
-    /** terminate: the latest released event, the only one that may run. */
-    private volatile int latest = -1;
     /**
-     * skip: the event that holds the robot from its release to its job's end, or -1. The thesis
-     * tested {@code busy.isLocked()}, busy only from a job's start: an event released while another
-     * waited to start queued behind it, and of two events at one instant both usually ran.
+     * The policy's state: changed by the dispatcher (admit) and by an event's handler (its job's
+     * end) only. Unordered: the robot's lock orders the waiting jobs.
      */
-    private volatile int reserved = -1;
-    /** The event whose job is in its doInterruptible (terminate), or -1. */
+    private final OverrunPolicy.State rule;
+    /** The event whose job is in its doInterruptible (a policy that aborts jobs in progress), or -1. */
     private volatile int running = -1;
     private volatile int ended;
     /** The first failure of a job or handler ("predict: ..."), or null. */
@@ -87,14 +87,6 @@ public final class RtsjReplay {
     private final AbsoluteTime mainClock = new AbsoluteTime();
 
     /**
-     * Whether this replay has {@code policy}'s rule: skip and terminate in the dispatcher's admit and
-     * the task's run, queue as neither; a policy added to OverrunPolicy needs its own here.
-     */
-    public static boolean hasRule(OverrunPolicy policy) {
-        return policy == OverrunPolicy.SKIP || policy == OverrunPolicy.TERMINATE || policy == OverrunPolicy.QUEUE;
-    }
-
-    /**
      * A replay of {@code schedule} under {@code policy}: each released event runs {@code job} on the
      * robot, its CPU time read from {@code cpuClock} ({@link RuntimeShim#cpuClock}).
      */
@@ -102,6 +94,7 @@ public final class RtsjReplay {
                       CpuClock cpuClock) {
         this.schedule = schedule;
         this.policy = policy;
+        this.rule = new OverrunPolicy.State(policy, false);
         this.design = design;
         this.job = job;
         this.records = records;
@@ -277,20 +270,20 @@ public final class RtsjReplay {
             }
         }
 
-        /** The policy's decision at k's release; a dropped event ends here. */
+        /**
+         * The policy's decision at k's release; a dropped event ends here. A job in progress whose
+         * abort that release requested is fired at (a job not started yet sees the request and never starts).
+         */
         private void admit(int k) {
-            if (policy == OverrunPolicy.SKIP) {
-                if (reserved >= 0) {
-                    records.wakeNs[k] = -1;
-                    records.outcome[k] = JobRecords.SKIPPED; // the robot is busy: dropped
-                    ended();
-                    return;
-                }
-                reserved = k;
-            } else if (policy == OverrunPolicy.TERMINATE) {
-                latest = k; // a job not started yet sees this and never starts
+            if (!rule.admit(k, false)) {
+                records.wakeNs[k] = -1;
+                records.outcome[k] = JobRecords.SKIPPED; // the robot is busy: dropped
+                ended();
+                return;
+            }
+            if (policy.abortsJobInProgress()) {
                 int r = running;
-                if (r >= 0) {
+                if (r >= 0 && policy.abortRequested(rule, r)) {
                     long fired = now(clock) - t0;
                     if (tasks[schedule.task(r)].aie.fire()) { // false: it ended meanwhile, nothing was asked of it
                         records.requestAbort(r, fired);
@@ -302,7 +295,7 @@ public final class RtsjReplay {
 
     /**
      * One task: its event, its bound handler, its AIE and the events released to it. The
-     * handler's logic runs one job per release; under terminate inside the AIE's
+     * handler's logic runs one job per release; under a policy that aborts jobs in progress inside the AIE's
      * {@code doInterruptible}, where {@link #run(AsynchronouslyInterruptedException)} is the
      * AI-enabled part (woven with delivery points) and the robot work happens in non-AI methods.
      */
@@ -350,10 +343,10 @@ public final class RtsjReplay {
             started = false;
             committed = false;
             try {
-                if (policy == OverrunPolicy.TERMINATE) {
+                if (policy.abortsJobInProgress()) {
                     aie.doInterruptible(this);
                 } else {
-                    lockAndRun(AbortSignal.NEVER); // no ATC outside terminate: no delivery point runs
+                    lockAndRun(AbortSignal.NEVER, true); // no ATC where no job is aborted: no delivery point runs
                 }
             } catch (Throwable e) {
                 failed(name, e);
@@ -368,12 +361,17 @@ public final class RtsjReplay {
          */
         @Override
         public void run(AsynchronouslyInterruptedException interrupt) throws AsynchronouslyInterruptedException {
-            running = k; // published before latest is read: a later release sees it and fires
-            if (latest != k) {
+            running = k; // published before the rule is asked: a later release sees it and fires
+            if (!mayStart()) {
                 running = -1;
                 return; // superseded before it started: never starts
             }
-            lockAndRun(design == RtsjDesign.ATOMIC ? DeliveryPoints.INSTANCE : AbortSignal.NEVER);
+            lockAndRun(design == RtsjDesign.ATOMIC ? DeliveryPoints.INSTANCE : AbortSignal.NEVER, false);
+        }
+
+        /** Whether the rule lets k start: neither refused nor asked to abort (superseded before it started). */
+        private boolean mayStart() {
+            return policy.start(rule, k) != OverrunPolicy.NEVER && !policy.abortRequested(rule, k);
         }
 
         @Override
@@ -384,11 +382,17 @@ public final class RtsjReplay {
         /**
          * Takes the robot and runs the job (non-AI: no delivery point in here but those of the
          * atomic design's signal); the lock is released whatever ends the job. The thesis design
-         * holds the robot's monitor for the whole job.
+         * holds the robot's monitor for the whole job. {@code askRule}: with no ATC (the policy
+         * aborts no job in progress), the rule is asked once the robot's lock is held, as the scj
+         * mission asks it holding the robot: an event it superseded while it waited never starts.
+         * (Interruptible jobs ask before they wait, and a later release fires at them.)
          */
-        private void lockAndRun(AbortSignal signal) {
+        private void lockAndRun(AbortSignal signal, boolean askRule) {
             try {
                 busy.lock();
+                if (askRule && !mayStart()) {
+                    return; // superseded while it waited for the robot: never starts
+                }
                 recorder.started(now(clock));
                 started = true;
                 if (design == RtsjDesign.THESIS) {
@@ -408,9 +412,7 @@ public final class RtsjReplay {
                 if (busy.isHeldByCurrentThread()) {
                     busy.unlock();
                 }
-                if (reserved == k) {
-                    reserved = -1; // skip: the robot is free for the next release
-                }
+                rule.ended(k); // skip: the robot is free for the next release
             }
         }
 

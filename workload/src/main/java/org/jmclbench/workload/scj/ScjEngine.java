@@ -3,7 +3,6 @@ package org.jmclbench.workload.scj;
 import java.io.IOException;
 
 import org.jmclbench.core.mcl.MclConfig;
-import org.jmclbench.scj.JobGate;
 import org.jmclbench.workload.BadInputException;
 import org.jmclbench.workload.RunFailure;
 import org.jmclbench.workload.RunOptions;
@@ -30,7 +29,6 @@ public class ScjEngine implements Engine {
                     + name() + " engine (preallocated|scoped)");
         }
         JavaSeEngine.checkReleaseLoopOptions(name(), o);
-        JavaSeEngine.checkPolicyRule(name(), o, JobGate.hasRule(o.policy));
     }
 
     /** A PeriodicEventHandler needs periodic odometry; the area sizes must fit the mission's areas. */

@@ -21,8 +21,8 @@ import java.nio.file.Path;
 import java.util.function.Consumer;
 
 /**
- * A seeded bug that is an edit of one shipped class, the rtsj engine's, the RTSJ layer's or the
- * SCJ mission's: the
+ * A seeded bug that is an edit of one shipped class, the rtsj engine's, the RTSJ layer's, the
+ * policies' rule or the SCJ mission's: the
  * class as the build made it (woven) is read from the class path, one method is edited with ASM
  * and the result is written to a folder of its own, which the check puts first on JPF's class
  * path. So the program checked is the shipped one with exactly that slip in it, and nothing of
@@ -96,8 +96,11 @@ public enum EngineMutant {
             }
         }
     }),
-    /** The dispatcher no longer publishes the latest release: every job thinks it was superseded. */
-    LATEST_LOST(EngineMutant.REPLAY, null, m -> {
+    /**
+     * The latest release is no longer published: every job thinks it was superseded. Terminate's
+     * rule (the second constant's body of OverrunPolicy), which the dispatcher's admit runs.
+     */
+    LATEST_LOST(EngineMutant.TERMINATE_RULE, null, m -> {
         if (m.name.equals("<init>")) {
             return;
         }
@@ -121,6 +124,7 @@ public enum EngineMutant {
     static final String ROBOT = "org/jmclbench/scj/Robot";
     static final String RUNNER = "org/jmclbench/scj/JobRunner";
     static final String REPLAY = "org/jmclbench/workload/rtsj/RtsjReplay";
+    static final String TERMINATE_RULE = "org/jmclbench/core/policy/OverrunPolicy$2";
     static final String TASK = REPLAY + "$Task";
     static final String AIE = "javax/realtime/AsynchronouslyInterruptedException";
 

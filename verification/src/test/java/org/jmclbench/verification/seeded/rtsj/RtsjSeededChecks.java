@@ -47,7 +47,7 @@ public final class RtsjSeededChecks {
         l.add(mutant(root, EngineMutant.ENDS_TWICE, Property.P5, "queue", "thesis",
                 replay + ".ended", "release that ends its event twice"));
         l.add(mutant(root, EngineMutant.LATEST_LOST, Property.P7, "terminate", "thesis",
-                replay + ".dispatch", "dispatcher that never publishes the latest release"));
+                replay + ".dispatch", "terminate rule that never records the latest release"));
         l.add(RtsjChecks.check("rtsj-seeded-commit-before-poll", EnumSet.of(Property.P3), "terminate", "atomic",
                 RtsjChecks.config(), Expectation.violation(Property.P3, CommitBeforePoll.class, "predict"),
                 CommitBeforePoll.class, "seeded job that applies its step before it polls"));

@@ -127,4 +127,17 @@ public final class Fixtures {
     static String withoutFuzzerLines(String err) {
         return err.replaceAll("(?m)^INFO: Instrumented [^\n]*\n", "");
     }
+
+    /** The first column of each row of {@code sql} on the SQLite file {@code db}, mapped to its second. */
+    public static java.util.Map<String, String> columns(Path db, String sql) throws java.sql.SQLException {
+        java.util.Map<String, String> m = new java.util.HashMap<>();
+        try (java.sql.Connection c = java.sql.DriverManager.getConnection("jdbc:sqlite:" + db);
+             java.sql.Statement s = c.createStatement();
+             java.sql.ResultSet rs = s.executeQuery(sql)) {
+            while (rs.next()) {
+                m.put(rs.getString(1), rs.getString(2));
+            }
+        }
+        return m;
+    }
 }

@@ -14,7 +14,6 @@ import java.sql.DriverManager;
 import java.sql.ResultSet;
 import java.sql.Statement;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
@@ -198,14 +197,7 @@ class DiskFullTest {
     }
 
     private static Map<String, String> startedAt(Path db) throws Exception {
-        Map<String, String> m = new HashMap<>();
-        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
-             ResultSet rs = s.executeQuery("SELECT run_key, started_at FROM runs")) {
-            while (rs.next()) {
-                m.put(rs.getString(1), rs.getString(2));
-            }
-        }
-        return m;
+        return Fixtures.columns(db, "SELECT run_key, started_at FROM runs");
     }
 
     private static String single(Path db, String sql) throws Exception {

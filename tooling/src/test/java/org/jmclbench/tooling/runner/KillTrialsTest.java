@@ -280,14 +280,7 @@ class KillTrialsTest {
 
     /** status -> failure of every committed run. */
     private static Map<String, String> statuses(Path db) throws Exception {
-        Map<String, String> m = new HashMap<>();
-        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db); Statement s = c.createStatement();
-             ResultSet rs = s.executeQuery("SELECT status, failure FROM runs")) {
-            while (rs.next()) {
-                m.put(rs.getString(1), rs.getString(2));
-            }
-        }
-        return m;
+        return Fixtures.columns(db, "SELECT status, failure FROM runs");
     }
 
     /** SQLite's verdict on the whole file ("ok" when none was written yet). */

@@ -6,11 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.sql.Connection;
-import java.sql.DriverManager;
-import java.sql.ResultSet;
-import java.sql.Statement;
-import java.util.HashMap;
 import java.util.Map;
 
 import org.jmclbench.tooling.Fixtures;
@@ -53,7 +48,7 @@ class LoadMatrixTest extends FakeJvmHome {
         Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--engines", "javase,scj,rtsj",
                 "--load", "alloc", "--load-alloc", "50,8", "--datasets", "tiny", "--db", store.toString());
         assertEquals(0, r.exitCode(), r.out() + r.err());
-        Map<String, String> statusByEngine = columns(store, "SELECT engine, status || coalesce(': ' || failure, '') FROM runs");
+        Map<String, String> statusByEngine = Fixtures.columns(store, "SELECT engine, status || coalesce(': ' || failure, '') FROM runs");
         assertEquals("ok", statusByEngine.get("javase"), statusByEngine.toString());
         for (String engine : new String[] {"scj", "rtsj"}) {
             assertEquals("unsupported: load alloc: the allocation load runs only in the Java SE engine (javase on a JVM)",
@@ -66,26 +61,13 @@ class LoadMatrixTest extends FakeJvmHome {
         Fixtures.CliResult r = Fixtures.cli("matrix", "--java", fake.toString(), "--load", "cpu,alloc",
                 "--load-alloc", "50,8", "--datasets", "tiny", "--db", db.toString());
         assertEquals(0, r.exitCode(), r.out() + r.err());
-        columns(db, "SELECT load, status FROM runs").forEach((load, status) -> assertEquals("ok", status, load));
-        Map<String, String> commands = columns(db, "SELECT load, command_json FROM runs");
+        Fixtures.columns(db, "SELECT load, status FROM runs").forEach((load, status) -> assertEquals("ok", status, load));
+        Map<String, String> commands = Fixtures.columns(db, "SELECT load, command_json FROM runs");
         assertEquals(2, commands.size(), commands.toString());
         assertTrue(commands.get("alloc").contains("\"--load-alloc\",\"50,8\""), commands.get("alloc"));
         assertTrue(commands.get("cpu").contains("\"--load-name\",\"cpu\""), commands.get("cpu"));
         assertTrue(commands.get("cpu").contains("-XX:StartFlightRecording=filename="), "JDK 11+: a JFR recording");
         assertTrue(ProcessHandle.current().descendants().noneMatch(p -> p.info().command().orElse("").endsWith("stress-ng")),
                 "no CPU hog outlives its run");
-    }
-
-    /** The first column of each row of {@code sql} mapped to its second. */
-    private static Map<String, String> columns(Path db, String sql) throws Exception {
-        Map<String, String> m = new HashMap<>();
-        try (Connection c = DriverManager.getConnection("jdbc:sqlite:" + db);
-             Statement s = c.createStatement();
-             ResultSet rs = s.executeQuery(sql)) {
-            while (rs.next()) {
-                m.put(rs.getString(1), rs.getString(2));
-            }
-        }
-        return m;
     }
 }

@@ -28,7 +28,7 @@ package org.jmclbench.core.policy;
  * by k's handler (the fields two threads meet at are volatile).
  *
  * <p>A new policy is one constant here with its {@code admit} and what it changes of the defaults
- * (never start, abort, hand the robot in order), a new code in {@link #ofCode} and {@link #ofLabel},
+ * (never start, abort, hand the robot in order, its missCount), a new code in {@link #ofCode} and {@link #ofLabel},
  * and its tests; the engines need no edit. Job code looks a policy up with {@link #ofCode(long)}
  * or {@link #ofLabel(String)}, never {@code values()}, which allocates a copy on every call.
  */
@@ -101,6 +101,12 @@ public enum OverrunPolicy {
                 s.turn = k + 1;
             }
         }
+
+        /** Queue drops nothing: a miss is a completion after the deadline. */
+        @Override
+        public int missCount(int late, int skipped, int terminated) {
+            return late;
+        }
     };
 
     /** {@link #start}: the job may take the robot now (if the engine's robot is free). */
@@ -154,6 +160,14 @@ public enum OverrunPolicy {
      */
     public boolean abortsJobInProgress() {
         return false;
+    }
+
+    /**
+     * The thesis's missCount of a real-time run's jobs under this policy, from their outcomes: by
+     * default the events it dropped or aborted (its test counted those, not lateness).
+     */
+    public int missCount(int late, int skipped, int terminated) {
+        return skipped + terminated;
     }
 
     /** Whether an admitted event may wait for the robot while another job holds it. By default: yes. */

@@ -31,6 +31,14 @@ class OverrunPolicyTest {
         }
     }
 
+    /** The thesis's missCount, as the C baseline's jm_policy_misses counts it: queue its late jobs, the others what they dropped or aborted. */
+    @Test
+    void missCountIsWhatEachPolicysTestCounted() {
+        assertEquals(5 + 7, OverrunPolicy.SKIP.missCount(3, 5, 7));
+        assertEquals(5 + 7, OverrunPolicy.TERMINATE.missCount(3, 5, 7));
+        assertEquals(3, OverrunPolicy.QUEUE.missCount(3, 5, 7));
+    }
+
     @Test
     void unknownCodesAndLabelsFindNothing() {
         int unused = 0; // the code after the highest, whatever policies there are

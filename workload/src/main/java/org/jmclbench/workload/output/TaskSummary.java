@@ -1,6 +1,5 @@
 package org.jmclbench.workload.output;
 
-import org.jmclbench.core.policy.OverrunPolicy;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.RunOptions;
 import org.jmclbench.workload.record.Samples;
@@ -43,13 +42,7 @@ public final class TaskSummary {
 
     static TaskSummary of(JobRecords r, int task, RunOptions o) {
         TaskSummary s = count(r, task);
-        if (o.ideal) {
-            s.missCount = 0;
-        } else if (o.policy == OverrunPolicy.QUEUE) {
-            s.missCount = s.late;
-        } else {
-            s.missCount = s.skipped + s.terminated;
-        }
+        s.missCount = o.ideal ? 0 : o.policy.missCount(s.late, s.skipped, s.terminated);
         return s;
     }
 

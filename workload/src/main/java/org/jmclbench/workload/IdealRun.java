@@ -6,6 +6,7 @@ import org.jmclbench.core.mcl.AbortSignal;
 import org.jmclbench.core.mcl.Localizer;
 import org.jmclbench.core.record.JobRecords;
 import org.jmclbench.workload.release.JobRecorder;
+import org.jmclbench.workload.release.LocalizerJob;
 import org.jmclbench.workload.release.ThreadCpuClock;
 
 /**
@@ -15,12 +16,11 @@ import org.jmclbench.workload.release.ThreadCpuClock;
  * deadlines are -1; every outcome is DONE. The loop allocates nothing.
  */
 public final class IdealRun {
-    private final Dataset dataset;
     private final Timeline timeline;
     private final Localizer localizer;
     private final JobRecords records;
     private final JobRecorder recorder;
-    private final double[] covariance = new double[6];
+    private final LocalizerJob job;
 
     /**
      * @param cpuClock the per-job CPU clock: {@link ThreadCpuClock#probe()}, which also makes its
@@ -28,11 +28,11 @@ public final class IdealRun {
      */
     public IdealRun(Dataset dataset, Timeline timeline, Localizer localizer, JobRecords records,
                     ThreadCpuClock cpuClock) {
-        this.dataset = dataset;
         this.timeline = timeline;
         this.localizer = localizer;
         this.records = records;
         this.recorder = new JobRecorder(records, cpuClock, 0);
+        this.job = new LocalizerJob(dataset, timeline, localizer, records);
         System.nanoTime(); // first call resolves what the clock needs: before the measured window
     }
 
@@ -44,8 +44,9 @@ public final class IdealRun {
 
     /** Replays the events up to warmupS seconds on a throwaway localizer, so that the JIT has compiled the jobs. */
     public static void warmup(Dataset dataset, Timeline timeline, Localizer throwaway, double warmupS) {
+        LocalizerJob job = new LocalizerJob(dataset, timeline, throwaway, null); // steps only: the warm-up records nothing
         for (int k = 0; k < timeline.size() && timeline.time(k) <= warmupS; k++) {
-            job(dataset, timeline, throwaway, k);
+            job.step(k, AbortSignal.NEVER);
         }
     }
 
@@ -54,33 +55,18 @@ public final class IdealRun {
         JobRecords r = records;
         r.clear();
         r.setInitialEstimate(localizer.estimateX(), localizer.estimateY(), localizer.estimateTheta());
-        boolean cov = r.cov != null;
         long t0 = System.nanoTime();
         JobRecorder recorder = this.recorder;
+        LocalizerJob job = this.job;
         recorder.runStart(t0);
         for (int k = 0; k < timeline.size(); k++) {
             recorder.start();
-            job(dataset, timeline, localizer, k);
+            job.step(k, AbortSignal.NEVER);
             recorder.end();
             recorder.record(k, true, -1); // deadline -1: done
             r.releaseNs[k] = r.startNs[k];
-            r.estX[k] = localizer.estimateX();
-            r.estY[k] = localizer.estimateY();
-            r.estTheta[k] = localizer.estimateTheta();
-            if (cov && timeline.task(k) == Timeline.UPDATE) {
-                localizer.covariance(covariance);
-                System.arraycopy(covariance, 0, r.cov, 6 * k, 6);
-            }
+            job.commitEstimate(k); // after the end: the ideal job's time is the step alone
         }
         r.durationNs = System.nanoTime() - t0;
-    }
-
-    private static void job(Dataset d, Timeline t, Localizer l, int k) {
-        int i = t.taskIndex(k);
-        if (t.task(k) == Timeline.PREDICT) {
-            l.predict(d.odoDx[i], d.odoDy[i], d.odoDtheta[i], AbortSignal.NEVER);
-        } else {
-            l.update(d.laserAngle[i], AbortSignal.NEVER);
-        }
     }
 }

@@ -39,22 +39,30 @@ public final class LocalizerJob implements EventJob {
 
     @Override
     public boolean run(int k, AbortSignal abort) {
-        int i = timeline.taskIndex(k);
-        boolean update = timeline.task(k) == Timeline.UPDATE;
-        boolean completed = update
-                ? localizer.update(laserAngle[i], abort)
-                : localizer.predict(odoDx[i], odoDy[i], odoDtheta[i], abort);
-        if (!completed) {
+        if (!step(k, abort)) {
             return false;
         }
+        commitEstimate(k);
+        return true;
+    }
+
+    /** Event k's predict or update alone, recording nothing; false when aborted. */
+    public boolean step(int k, AbortSignal abort) {
+        int i = timeline.taskIndex(k);
+        return timeline.task(k) == Timeline.UPDATE
+                ? localizer.update(laserAngle[i], abort)
+                : localizer.predict(odoDx[i], odoDy[i], odoDtheta[i], abort);
+    }
+
+    /** The localizer's estimate (and, after an update, its covariance) into the records as event k's. */
+    public void commitEstimate(int k) {
         JobRecords r = records;
         r.estX[k] = localizer.estimateX();
         r.estY[k] = localizer.estimateY();
         r.estTheta[k] = localizer.estimateTheta();
-        if (update && r.cov != null) {
+        if (r.cov != null && timeline.task(k) == Timeline.UPDATE) {
             localizer.covariance(covariance);
             System.arraycopy(covariance, 0, r.cov, 6 * k, 6);
         }
-        return true;
     }
 }

@@ -85,6 +85,12 @@ public final class AbortBoundMain {
         if (runDir != null) {
             Path s = runDir.resolve("summary.json");
             try {
+                long size = Files.size(s);
+                if (size > MAX_SUMMARY_BYTES) {
+                    // read whole, a runaway one would end this tool with OutOfMemoryError
+                    return bad(err, "--run: " + s + ": not a run's summary.json (" + size + " bytes, more than "
+                            + MAX_SUMMARY_BYTES + ")");
+                }
                 summary = new ObjectMapper().readTree(Files.readString(s));
             } catch (JsonProcessingException e) {
                 // Jackson's message puts the source and location on lines of their own
@@ -330,6 +336,9 @@ public final class AbortBoundMain {
     private static String ms(double ns) {
         return String.format(Locale.ROOT, "%.3f ms", ns / 1e6);
     }
+
+    /** The largest summary.json read (a run's is about 10 KB), as the runner's matrix takes it. */
+    static final long MAX_SUMMARY_BYTES = 16L * 1024 * 1024;
 
     private static int bad(PrintStream err, String message) {
         return CommandLines.bad(err, "abort-bound", message);

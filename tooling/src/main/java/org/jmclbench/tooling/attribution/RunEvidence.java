@@ -95,7 +95,7 @@ public record RunEvidence(Path runDir, JsonNode summary, RunClock clock, List<Jo
         } else if (clock == null) {
             source = "not used: summary.json has no \"clock\", so the runtime's events cannot be placed on the jobs' timeline";
         } else {
-            EventSelection selection = EventSelection.forJobs(gcLog != null && jfr == null ? gcLog : jfr, jobs);
+            EventSelection selection = EventSelection.forJobs(jfr != null ? jfr : gcLog, jobs);
             source = jfr != null ? "JFR " + jfr : "GC log " + gcLog;
             if (jfr != null && !readJfr(jfr, clock, selection)) {
                 if (givenJfr) {

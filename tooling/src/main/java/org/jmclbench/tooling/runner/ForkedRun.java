@@ -2,7 +2,6 @@ package org.jmclbench.tooling.runner;
 
 import java.io.File;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -349,11 +348,8 @@ public final class ForkedRun {
         try (java.nio.channels.FileChannel ch = java.nio.channels.FileChannel.open(file)) {
             long size = ch.size();
             long from = Math.max(0, size - TAIL_READ_BYTES);
-            java.nio.ByteBuffer buf = java.nio.ByteBuffer.allocate((int) (size - from));
-            while (buf.hasRemaining() && ch.read(buf, from + buf.position()) > 0) {
-                // read until the end seen above (the file may still grow: an orphan writing on)
-            }
-            String text = new String(buf.array(), 0, buf.position(), StandardCharsets.UTF_8);
+            // to the end seen above: the file may still grow (an orphan writing on)
+            String text = org.jmclbench.tooling.runtime.ProcessRunner.readSpan(ch, from, (int) (size - from));
             List<String> lines = text.lines().toList();
             if (from > 0 && lines.size() > 1) {
                 lines = lines.subList(1, lines.size()); // the first line read is cut

@@ -97,17 +97,21 @@ public final class ProcessRunner {
                 return readText(p);
             }
             int half = MAX_OUTPUT_BYTES / 2;
-            java.nio.ByteBuffer head = java.nio.ByteBuffer.allocate(half);
-            java.nio.ByteBuffer tail = java.nio.ByteBuffer.allocate(half);
-            while (head.hasRemaining() && ch.read(head, head.position()) > 0) {
-                // read on until the first half is full
-            }
-            while (tail.hasRemaining() && ch.read(tail, size - half + tail.position()) > 0) {
-                // the same for the last half
-            }
-            return new String(head.array(), 0, head.position(), StandardCharsets.UTF_8) + "\n[... " + (size - 2L * half)
-                    + " bytes left out ...]\n" + new String(tail.array(), 0, tail.position(), StandardCharsets.UTF_8);
+            return readSpan(ch, 0, half) + "\n[... " + (size - 2L * half) + " bytes left out ...]\n"
+                    + readSpan(ch, size - half, half);
         }
+    }
+
+    /**
+     * Up to {@code n} bytes of {@code ch} from {@code from} as UTF-8, malformed bytes replaced: fewer
+     * where the file ends first (a file still growing is read to the length asked, no further).
+     */
+    public static String readSpan(java.nio.channels.FileChannel ch, long from, int n) throws IOException {
+        java.nio.ByteBuffer buf = java.nio.ByteBuffer.allocate(n);
+        while (buf.hasRemaining() && ch.read(buf, from + buf.position()) > 0) {
+            // read on: a channel may return fewer bytes than asked
+        }
+        return new String(buf.array(), 0, buf.position(), StandardCharsets.UTF_8);
     }
 
     private static void deleteQuietly(Path p) {

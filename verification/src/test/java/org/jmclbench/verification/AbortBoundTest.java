@@ -163,16 +163,20 @@ class AbortBoundTest {
     /** A runaway summary.json (3 GB, sparse) is refused by its size, not read whole into memory. */
     @Test
     void aRunawaySummaryIsOneLineNotReadWhole(@TempDir Path run) throws Exception {
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        PrintStream e = new PrintStream(err, true, StandardCharsets.UTF_8);
-        PrintStream o = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
         Path summary = run.resolve("summary.json");
         try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(summary.toFile(), "rw")) {
             f.setLength(3L << 30);
         }
-        assertEquals(2, AbortBoundMain.run(new String[] {"--classes", "x", "--run", run.toString()}, o, e));
         assertEquals("jmclbench: abort-bound: --run: " + summary + ": not a run's summary.json (3221225472 bytes, more than 16777216)",
-                err.toString(StandardCharsets.UTF_8).strip());
+                refusal("--classes", "x", "--run", run.toString()));
+    }
+
+    /** What abort-bound says on stderr when it refuses {@code args} (exit 2). */
+    private static String refusal(String... args) {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream o = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+        assertEquals(2, AbortBoundMain.run(args, o, new PrintStream(err, true, StandardCharsets.UTF_8)));
+        return err.toString(StandardCharsets.UTF_8).strip();
     }
 
     /** A bound for a job no run has would stand beside no measurement: the workload's own refusal, one line. */

@@ -11,7 +11,8 @@
 # a good run whose recording.jfr is no recording; orphan: an ok run that leaves a child running; limit-at-N: ok
 # up to N particles, unsupported above; gate: an ok run that first creates ../started beside its
 # bin/ and waits for ../open, so that a test can act while a matrix is surely mid-run; sigterm,
-# sigint, sighup: the runtime ends itself by that signal, as a JVM's own shutdown can). Tests copy
+# sigint, sighup: the runtime ends itself by that signal, as a JVM's own shutdown can; aotflaky
+# (a JVM 25+): its first aot training run crashes, the next writes its cache). Tests copy
 # it with the placeholders replaced. Never a real measurement.
 MODE=@MODE@
 SLEEP=@SLEEP@
@@ -60,6 +61,7 @@ while [ $# -gt 0 ]; do
         --memory) memory=$2; shift ;;
         -Xlog:gc*file=*) gclog=${1#*file=}; gclog=${gclog%%:*} ;;
         -XX:StartFlightRecording=filename=*) recording=${1#*filename=}; recording=${recording%%,*} ;;
+        -XX:AOTCacheOutput=*) aotout=${1#*=} ;;
     esac
     shift
 done
@@ -101,6 +103,15 @@ case $MODE in
         truncate -s 3G "/proc/$$/fd/2"
         printf "\njmclbench: failure: flooded its stderr\n" >> "/proc/$$/fd/2"
         exit 1 ;;
+    aotflaky)
+        if [ -n "${aotout:-}" ]; then
+            here=$(cd "$(dirname "$0")/.." && pwd)
+            if [ ! -e "$here/trained-once" ]; then
+                touch "$here/trained-once"
+                kill -SEGV $$
+            fi
+            echo "fake aot cache" > "$aotout"
+        fi ;;
     gate)
         here=$(cd "$(dirname "$0")/.." && pwd)
         touch "$here/started"

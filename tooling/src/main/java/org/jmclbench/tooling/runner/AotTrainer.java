@@ -22,7 +22,7 @@ import org.jmclbench.tooling.store.StoreMerger;
  * then {@code -XX:AOTCache} with {@code -XX:AOTMode=on} so that an unusable cache fails loudly),
  * JDK 13-24 a dynamic AppCDS archive ({@code -XX:ArchiveClassesAtExit}, then {@code -XX:SharedArchiveFile}).
  * Caches live in {@code <db dir>/aot/}; a training the runtime refuses makes the profile unsupported, one
- * that crashes or hangs fails the run.
+ * that crashes or hangs fails the run it trained for (and the next run trains again).
  */
 final class AotTrainer {
 
@@ -51,7 +51,14 @@ final class AotTrainer {
     Result ensure(RuntimeInfo rt, LaunchPlan plan, Dataset dataset, String policy) {
         String id = rt.name() + "-" + policy + "-" + MachineInfo.sha256Hex(rt.realPath() + "\n" + rt.version() + "\n"
                 + String.join(" ", plan.jvmFlags())).substring(0, 12);
-        return done.computeIfAbsent(id, k -> train(k, rt, plan, dataset, policy));
+        Result r = done.get(id);
+        if (r == null) {
+            r = train(id, rt, plan, dataset, policy);
+            if (r.failed() == null) {
+                done.put(id, r); // a crash or hang is one run's failure: the next run trains again
+            }
+        }
+        return r;
     }
 
     private Result train(String id, RuntimeInfo rt, LaunchPlan plan, Dataset dataset, String policy) {

@@ -50,6 +50,26 @@ class RuntimeMisbehaviourTest extends FakeJvmHome {
     }
 
     /**
+     * A crashed aot training is the failure of the run it trained for, not of the runtime for the
+     * rest of the matrix: the next repetition trains again (the crash was kept, and one failed every
+     * repetition of that runtime and policy).
+     */
+    @Test
+    void aCrashedAotTrainingFailsOnlyTheRunItTrainedFor() throws Exception {
+        Path flaky = Fixtures.fakeJava(dir, "aotflaky", "aotflaky", 0, null, 25);
+        Fixtures.CliResult r = Fixtures.cli("matrix", "--datasets", "tiny", "--particles", "100", "--repeat", "2",
+                "--profiles", "aot", "--timeout", "15", "--db", db.toString(), "--java", flaky.toString());
+        assertEquals(0, r.exitCode(), r.out() + r.err());
+        // the first run (either repetition: the order is shuffled) met the crash, the other trained again
+        List<String> outcomes = new ArrayList<>(Fixtures.columns(db, "SELECT repetition, status || ': ' || coalesce(failure, '')"
+                + " FROM runs").values());
+        outcomes.sort(null);
+        assertEquals(2, outcomes.size(), outcomes.toString());
+        assertTrue(outcomes.get(0).startsWith("failed: aot: training run failed (exit code 139: killed by SIGSEGV"), outcomes.toString());
+        assertEquals("ok: ", outcomes.get(1), outcomes.toString());
+    }
+
+    /**
      * Gigabytes of stderr: the runner reads only the end of stderr.txt for the run's tail (it read
      * the whole file, and a 3 GB one ended the runner with OutOfMemoryError, losing the matrix).
      */

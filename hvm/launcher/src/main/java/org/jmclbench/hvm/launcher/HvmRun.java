@@ -10,6 +10,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.io.PrintStream;
+import java.io.RandomAccessFile;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.util.ArrayList;
@@ -50,6 +51,8 @@ public final class HvmRun {
     static final long TIMEOUT_MARGIN_S = 120;
     /** Sets another margin (seconds): a slower machine may need more, a test of a hang less. */
     static final String TIMEOUT_MARGIN_PROPERTY = "jmclbench.hvm.marginS";
+    /** How much of each end of hvm.log is read back (the file itself stays whole in the run folder). */
+    static final int LOG_END_BYTES = 256 * 1024;
     // icecap's message when an area cannot hold an allocation: "out of memory: 0x<area size>, 0x<bytes>"
     private static final Pattern OUT_OF_MEMORY = Pattern.compile("out of memory: 0x([0-9A-Fa-f]+), 0x([0-9A-Fa-f]+)");
 
@@ -90,7 +93,7 @@ public final class HvmRun {
                 throw new RunFailure("the HVM executable did not end within " + timeoutS + " s (hung); log: " + log);
             }
             long wallNs = System.nanoTime() - started;
-            String output = new String(Files.readAllBytes(log.toPath()), StandardCharsets.UTF_8);
+            String output = logEnds(log);
             String overflow = overflow(output, sizes);
             if (overflow != null) {
                 throw new RunFailure(overflow);
@@ -241,6 +244,29 @@ public final class HvmRun {
         try (InputStream is = new BufferedInputStream(new FileInputStream(f))) {
             return HvmResultFile.read(is, f.getPath(), d.timeline(), covariance, use);
         }
+    }
+
+    /**
+     * The log's first and last {@link #LOG_END_BYTES} (all of it when shorter), what lies between
+     * said in a line: icecap's overflow message and the lines a failure quotes stand at the end,
+     * and an executable that floods its output must not take the run's JVM with it.
+     */
+    static String logEnds(File log) throws IOException {
+        try (RandomAccessFile f = new RandomAccessFile(log, "r")) {
+            long size = f.length();
+            if (size <= 2L * LOG_END_BYTES) {
+                return new String(read(f, 0, (int) size), StandardCharsets.UTF_8);
+            }
+            return new String(read(f, 0, LOG_END_BYTES), StandardCharsets.UTF_8) + "\n[" + (size - 2L * LOG_END_BYTES)
+                    + " bytes of hvm.log left out]\n" + new String(read(f, size - LOG_END_BYTES, LOG_END_BYTES), StandardCharsets.UTF_8);
+        }
+    }
+
+    private static byte[] read(RandomAccessFile f, long from, int length) throws IOException {
+        byte[] b = new byte[length];
+        f.seek(from);
+        f.readFully(b);
+        return b;
     }
 
     private static String lastLines(String s, int n) {

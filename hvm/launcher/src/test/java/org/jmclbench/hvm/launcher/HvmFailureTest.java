@@ -154,6 +154,21 @@ class HvmFailureTest {
     }
 
     @Test
+    void aFloodedLogIsReadAtItsEndsOnly() throws Exception {
+        // hvm.log was read whole: 3 GB of output (here a sparse file) ended the run's JVM with
+        // "Required array size too large" instead of the run's one line
+        String flood = "truncate -s 3G /dev/stdout\nexec >> \"$(readlink /proc/$$/fd/1)\"\n";
+        homeWithExecutable(flood + "echo 'out of memory: 0x7d0, 0x1f40'\nexit 1");
+        assertEquals(1, run("--memory", "scoped", "--area-size", "update=2000"), err());
+        assertFailedWith("jmclbench: failure: memory area 'update' overflowed on the HVM");
+
+        homeWithExecutable(flood + "echo 'the last words'\nkill -SEGV $$");
+        assertEquals(1, run(), err());
+        assertFailedWith("jmclbench: failure: the HVM executable failed (exit status 139): ");
+        assertTrue(err().contains("the last words (log: "), err());
+    }
+
+    @Test
     void aFullMemoryAreaIsNamedAndTheRunsFailure() throws Exception {
         // icecap's words when an allocation does not fit: the area's size and the request, in hex (2000 = 0x7d0)
         homeWithExecutable("echo 'out of memory: 0x7d0, 0x1f40'\nexit 1");

@@ -106,6 +106,15 @@ final class CellAggregates {
     }
 
     /**
+     * Whether a run carries the attribution's rows: the matrix stores a run whose runtime left no
+     * evidence it could read (or more than it keeps) as ok without them.
+     */
+    static boolean attributed(StoredRun r) {
+        return r.metrics.keySet().stream().anyMatch(k -> k.equals("run/cause.jobs/count")
+                || k.startsWith("run/cause.") && k.endsWith("/primary"));
+    }
+
+    /**
      * Mean over the attributed repetitions of each cause's primary count. A run without
      * attribution rows counts as no evidence, not as zero causes, so it is left out.
      */
@@ -113,17 +122,15 @@ final class CellAggregates {
         Map<String, Double> sum = new TreeMap<>();
         int attributed = 0;
         for (StoredRun r : ok) {
-            boolean any = false;
+            if (!attributed(r)) {
+                continue;
+            }
+            attributed++;
             for (Map.Entry<String, Double> e : r.metrics.entrySet()) {
                 String k = e.getKey();
                 if (k.startsWith("run/cause.") && k.endsWith("/primary")) {
-                    String kind = k.substring("run/cause.".length(), k.length() - "/primary".length());
-                    sum.merge(kind, e.getValue(), Double::sum);
-                    any = true;
+                    sum.merge(k.substring("run/cause.".length(), k.length() - "/primary".length()), e.getValue(), Double::sum);
                 }
-            }
-            if (any || r.metrics.containsKey("run/cause.jobs/count")) {
-                attributed++;
             }
         }
         Map<String, Double> out = new LinkedHashMap<>();

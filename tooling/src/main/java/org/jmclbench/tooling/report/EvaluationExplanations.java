@@ -245,17 +245,19 @@ final class EvaluationExplanations extends EvaluationSections {
         // a cause recorded but never a job's primary one is no column and no "0.0" beside the blanks of causes not recorded
         List<String> kinds = at.stream().flatMap(c -> c.causes.entrySet().stream()).filter(e -> e.getValue() > 0)
                 .map(Map.Entry::getKey).distinct().sorted().toList();
-        List<String> header = new ArrayList<>(List.of("configuration"));
+        List<String> header = new ArrayList<>(List.of("configuration", "runs attributed"));
         header.addAll(kinds);
         List<List<String>> rows = new ArrayList<>();
         for (ReportModel.Cell c : at) {
-            List<String> row = new ArrayList<>(List.of(c.config));
+            List<String> row = new ArrayList<>(List.of(c.config, c.attributedRuns + " of " + c.ok));
             kinds.forEach(k -> row.add(c.causes.getOrDefault(k, 0.0) > 0 ? num(c.causes.get(k), 1) : ""));
             rows.add(row);
         }
         line(String.format(Locale.ROOT, "Table 12: at %d particles (policy skip), the missed or late jobs per run by primary cause, "
                 + "from the runtime's own events (JFR, GC log) aligned with the job records (docs/RUNNER.md, \"Why a deadline was "
-                + "missed\"); mean over the attributed repetitions; blank: no job had that primary cause.", count));
+                + "missed\"); mean over the attributed repetitions (runs attributed: a completed run whose runtime left no evidence the "
+                + "harness could read, or more than it keeps, is left out, not counted as missing nothing); blank: no job had that "
+                + "primary cause.", count));
         line("");
         table(header, rows);
         figure("causes-skip-" + count, "Figure 12: missed or late jobs per run by primary cause, " + count + " particles.",

@@ -212,6 +212,9 @@ public final class ReportModel {
         public List<Failure> failures = new ArrayList<>();
         /** Cause kind to the mean over repetitions of {@code run/cause.<kind>/primary} (jobs per run); empty without attribution. */
         public Map<String, Double> causes = new LinkedHashMap<>();
+        /** How many of the completed runs carry attribution rows: the runs {@link #causes} is a mean over. */
+        @JsonIgnore
+        public int attributedRuns;
         /** [start, end] event index of the first repetition's GC/safepoint pauses, and their kind. */
         @JsonIgnore
         public List<double[]> pauses = new ArrayList<>();
@@ -389,6 +392,7 @@ public final class ReportModel {
         }
         c.cpuTime = !ok.isEmpty() && ok.stream().allMatch(r -> r.summary().at("/engine/cpuTime").asText("").startsWith("used"));
         c.causes = CellAggregates.causes(ok);
+        c.attributedRuns = (int) ok.stream().filter(CellAggregates::attributed).count();
         c.deadlines = CellAggregates.deadlines(ok);
         c.memoryAreas = CellAggregates.memoryAreas(ok);
         if (ok.isEmpty()) {

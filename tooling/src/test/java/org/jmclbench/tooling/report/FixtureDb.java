@@ -89,6 +89,8 @@ public final class FixtureDb {
     /** Write deadlineMisses, missRatio and responseTimeReleasedNs in the summaries (a run before them has none). */
     public boolean deadlineAccounting = true;
     public int repetitions = 3;
+    /** Whether a run (configuration, repetition) has no attribution rows: its runtime left no evidence the harness could read. */
+    public java.util.function.BiPredicate<Config, Integer> unattributed = (cfg, rep) -> false;
     /** Per configuration id, a factor on its release jitter (1 where absent): a runtime slower to release, not to compute. */
     public java.util.Map<String, Double> jitterScale = java.util.Map.of();
     /** Length of the replayed timeline in seconds (odometry every 50 ms, laser about 3.6 per second). */
@@ -344,7 +346,9 @@ public final class FixtureDb {
                 i -> new double[] {i, i * 0.05, predict[i].latencyNs, predict[i].latencyNs + predict[i].jitterNs, 0});
         addSeries(series, key, "taskLatency.update", latencyColumns, update.length,
                 i -> new double[] {i, i / 3.6, update[i].latencyNs, update[i].latencyNs + update[i].jitterNs, 0});
-        addAttribution(metric, series, key, cfg, missCount, predict);
+        if (!unattributed.test(cfg, rep)) {
+            addAttribution(metric, series, key, cfg, missCount, predict);
+        }
         double phase = rng.nextDouble();
         addSeries(series, key, "deviation", List.of("time", "dx", "dy", "dxy", "dtheta"), predictJobs, i -> {
             double d = deviation * (1 + 0.8 * Math.sin(i * 0.02 + phase * 6));

@@ -70,6 +70,28 @@ record BreakdownLoad(Integer holds, Integer fails, String failedRuns, Late late)
     }
 
     /**
+     * The counts above {@code fails} at which some completed repetitions of {@code config} still had
+     * every job by its deadline ({@code 102400 held in 2 of 3 repetitions}), lowest first: its
+     * misses near the bracket are chance, and a repeated search may bracket it elsewhere, even more
+     * than a step away. Empty when nothing above held, or nothing failed.
+     */
+    static List<String> heldAbove(List<ReportModel.Cell> queueCells, String config, Integer fails) {
+        List<String> out = new java.util.ArrayList<>();
+        if (fails == null) {
+            return out;
+        }
+        queueCells.stream().filter(c -> c.config.equals(config) && c.policy.equals("queue") && c.particles > fails)
+                .sorted(Comparator.comparingInt(c -> c.particles)).forEach(c -> {
+                    ReportModel.Agg misses = c.metrics.get(Metric.MISS_COUNT.name());
+                    long held = misses == null || misses.values() == null ? 0 : java.util.Arrays.stream(misses.values()).filter(v -> v == 0).count();
+                    if (held > 0) {
+                        out.add(c.particles + " held in " + held + " of " + Counts.of(misses.n(), "repetition"));
+                    }
+                });
+        return out;
+    }
+
+    /**
      * How a count's runs failed, when some did and none completed without a late job: {@code 3 of 3
      * runs failed: the HVM executable failed (exit status 139)}, or {@code the runtime cannot run it:
      * the HVM holds at most 65,535 particles (...)} when every run was unsupported; null when a

@@ -404,6 +404,18 @@ public final class EvaluationDocument extends EvaluationSections {
                     + "), the bracket rests on those few jobs: a repeated search may place it a step higher or lower, so "
                     + "neither a difference between such brackets nor a ratio to C is a separated comparison.");
         }
+        List<String> notMonotone = new ArrayList<>();
+        loads.forEach((config, b) -> {
+            List<String> above = BreakdownLoad.heldAbove(data.cells(c -> c.policy.equals("queue")), config, b.fails());
+            if (!above.isEmpty()) {
+                notMonotone.add(config + " failed at " + b.fails() + ", yet above it " + String.join(", ", above));
+            }
+        });
+        if (!notMonotone.isEmpty()) {
+            line("");
+            line("Not monotone: " + String.join("; ", notMonotone) + ". Such misses near a bracket are chance: a repeated "
+                    + "search may bracket the load elsewhere, even more than a step away, so the bracket is no capacity to compare.");
+        }
         figure("breakdown-load", "Figure 1: the breakdown load per configuration (queue).",
                 () -> charts.write(ChartSpecs.sustained(scope(null, queue), "breakdown-load",
                         "Breakdown load: every job by its deadline (" + data.dataset + ", queue)", holds)));

@@ -43,6 +43,17 @@ class BreakdownLoadTest {
     }
 
     @Test
+    void countsThatHeldAboveTheFailingOneAreNamedWithTheirRepetitions() {
+        List<ReportModel.Cell> cells = List.of(cell("c", 400, 3, 0, 0), cell("c", 800, 3, 0, 1), cell("c", 1600, 3, 0, 0),
+                cell("c", 3200, 3, 0, 2), cell("c", 6400, 1, 0, 4), cell("jvm", 100, 3, 0, 2));
+        // 1600 held in every repetition, 3200 late in one of three, 6400 in its only one
+        assertEquals(List.of("1600 held in 3 of 3 repetitions", "3200 held in 2 of 3 repetitions"),
+                BreakdownLoad.heldAbove(cells, "c", 800));
+        assertEquals(List.of(), BreakdownLoad.heldAbove(cells, "jvm", 100), "nothing above the failing count");
+        assertEquals(List.of(), BreakdownLoad.heldAbove(cells, "c", null), "nothing failed");
+    }
+
+    @Test
     void aFailedRepetitionFailsItsCount() {
         assertFalse(BreakdownLoad.held(cell("c", 100, 2, 1, 0)));
         assertNull(BreakdownLoad.of(List.of(cell("c", 100, 2, 1, 0)), List.of("c")).get("c").holds());

@@ -539,6 +539,19 @@ class EvaluationDocumentTest {
             }
         }
         assertFalse(marginal.isEmpty() || marginal.size() == rows.size(), "the fixture should have both kinds: " + rows);
+        // a count above the bracket that held in some repetition is said, from the runs themselves
+        for (List<String> row : rows) {
+            int fails = Integer.parseInt(row.get(2).split(" ")[0]);
+            List<String> above = stored.stream().filter(r -> r.config().equals(row.get(0)) && r.particles > fails)
+                    .map(r -> r.particles).distinct().sorted().map(p -> {
+                        List<Double> late = stored.stream().filter(r -> r.config().equals(row.get(0)) && r.particles == p)
+                                .map(Metric.MISS_COUNT::of).toList();
+                        long held = late.stream().filter(v -> v == 0).count();
+                        return held == 0 ? null : p + " held in " + held + " of " + late.size() + " repetitions";
+                    }).filter(java.util.Objects::nonNull).toList();
+            assertEquals(!above.isEmpty(), d.contains(row.get(0) + " failed at " + fails + ", yet above it "
+                    + String.join(", ", above)), row.get(0) + ": " + above);
+        }
         assertTrue(d.contains("was late in one repetition by a job or two (" + String.join(", ", marginal) + "), the bracket rests"), d);
     }
 

@@ -424,7 +424,9 @@ public final class EvaluationDocument extends EvaluationSections {
                         + (e.getValue().failedRuns() == null ? "" : " (above it, at " + e.getValue().fails() + ", a limit of the runtime, not a deadline)"))
                 .collect(Collectors.joining(", ")) + " particles (2.1)"
                 + (marginal.isEmpty() ? "." : "; " + marginal.size() + " of " + loads.size()
-                        + " brackets rest on a job or two late in one repetition, so they are not separated comparisons."));
+                        + " brackets rest on a job or two late in one repetition, so they are not separated comparisons.")
+                + (notMonotone.isEmpty() ? "" : " " + notMonotone.size() + " of " + loads.size() + " are not monotone: a count "
+                        + "above the bracket held in some repetitions."));
     }
 
     private void scjCost() throws IOException {

@@ -540,6 +540,7 @@ class EvaluationDocumentTest {
         }
         assertFalse(marginal.isEmpty() || marginal.size() == rows.size(), "the fixture should have both kinds: " + rows);
         // a count above the bracket that held in some repetition is said, from the runs themselves
+        int notMonotone = 0;
         for (List<String> row : rows) {
             int fails = Integer.parseInt(row.get(2).split(" ")[0]);
             List<String> above = stored.stream().filter(r -> r.config().equals(row.get(0)) && r.particles > fails)
@@ -551,7 +552,9 @@ class EvaluationDocumentTest {
                     }).filter(java.util.Objects::nonNull).toList();
             assertEquals(!above.isEmpty(), d.contains(row.get(0) + " failed at " + fails + ", yet above it "
                     + String.join(", ", above)), row.get(0) + ": " + above);
+            notMonotone += above.isEmpty() ? 0 : 1;
         }
+        assertTrue(d.contains(" " + notMonotone + " of " + rows.size() + " are not monotone: a count above the bracket held"), d);
         assertTrue(d.contains("was late in one repetition by a job or two (" + String.join(", ", marginal) + "), the bracket rests"), d);
     }
 

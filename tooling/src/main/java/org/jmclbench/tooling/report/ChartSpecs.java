@@ -78,7 +78,8 @@ final class ChartSpecs {
             new Figure("causes", "Why deadlines were missed", "Jobs missed or late per run (mean over the attributed "
                     + "repetitions), split by each job\u2019s largest cause (the primary cause of ./jmclbench explain): gc, "
                     + "safepoint, jit, os, preemption, compute, queued, overlap, unknown. Runs without attribution evidence are "
-                    + "left out.", true, ChartSpecs::causes),
+                    + "left out; a runtime that left some says under its bar how many of its runs were attributed.", true,
+                    ChartSpecs::causes),
             new Figure("latency-index", "Task latency vs event index", "Every job of the first repetition (down-sampled): "
                     + "predict (odometry, every 50 ms) as dots, update (laser) as triangles. The thesis\u2019s XY points graph. "
                     + "Shaded bands: the GC (red) and safepoint (violet) pauses of that repetition of the first runtime shown "
@@ -357,8 +358,11 @@ final class ChartSpecs {
                         Style.BAR, null, values, null, null, null));
             }
         }
+        // a runtime that left some runs without evidence: its bar is a mean over fewer runs, and says so
+        List<Category> categories = rows.stream().map(c -> new Category(c.attributedRuns < c.ok
+                ? c.config + " (" + c.attributedRuns + " of " + c.ok + " runs attributed)" : c.config, c.config, c.engine)).toList();
         return s.spec("causes", "Why deadlines were missed", Kind.STACKED_BARS, true, Axis.linear("runtime/profile"),
-                Axis.linear("jobs missed or late per run, by primary cause (mean)").range(0.0, null), categories(rows), series);
+                Axis.linear("jobs missed or late per run, by primary cause (mean)").range(0.0, null), categories, series);
     }
 
     /** Every job of the first repetition, predict as dots and update as hollow triangles, with the runs' pauses as bands. */

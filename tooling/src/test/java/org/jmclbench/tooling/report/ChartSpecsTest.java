@@ -308,6 +308,18 @@ class ChartSpecsTest {
     }
 
     @Test
+    void aRuntimeWithRunsLeftUnattributedSaysSoUnderItsCauseBar() throws Exception {
+        FixtureDb f = ReportFixtures.mixed();
+        f.unattributed = (cfg, rep) -> cfg.runtime().equals("native") && rep == 2;
+        ReportModel m = model(f, "unattributed.db");
+        ChartSpec causes = m.charts.stream().filter(c -> c.id().equals("causes") && c.setting().policy().equals("skip")
+                && java.util.Objects.equals(c.setting().particles(), 400)).findFirst().orElseThrow();
+        List<String> labels = causes.categories().stream().map(ChartSpec.Category::label).toList();
+        assertTrue(labels.contains("native (2 of 3 runs attributed)"), labels.toString());
+        assertTrue(labels.contains("temurin-25/zgc"), "a runtime whose every run was attributed keeps its name: " + labels);
+    }
+
+    @Test
     void theSpectrumEndsAtOneMinusOneOverTheJobsMerged() {
         ChartSpec spectrum = chart("spectrum", "skip", 400);
         for (ChartSpec.Series s : spectrum.series()) {

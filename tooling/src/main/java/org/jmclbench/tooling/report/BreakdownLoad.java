@@ -1,5 +1,7 @@
 package org.jmclbench.tooling.report;
 
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -76,14 +78,14 @@ record BreakdownLoad(Integer holds, Integer fails, String failedRuns, Late late)
      * than a step away. Empty when nothing above held, or nothing failed.
      */
     static List<String> heldAbove(List<ReportModel.Cell> queueCells, String config, Integer fails) {
-        List<String> out = new java.util.ArrayList<>();
+        List<String> out = new ArrayList<>();
         if (fails == null) {
             return out;
         }
         queueCells.stream().filter(c -> c.config.equals(config) && c.policy.equals("queue") && c.particles > fails)
                 .sorted(Comparator.comparingInt(c -> c.particles)).forEach(c -> {
                     ReportModel.Agg misses = c.metrics.get(Metric.MISS_COUNT.name());
-                    long held = misses == null || misses.values() == null ? 0 : java.util.Arrays.stream(misses.values()).filter(v -> v == 0).count();
+                    long held = misses == null || misses.values() == null ? 0 : Arrays.stream(misses.values()).filter(v -> v == 0).count();
                     if (held > 0) {
                         out.add(c.particles + " held in " + held + " of " + Counts.of(misses.n(), "repetition"));
                     }

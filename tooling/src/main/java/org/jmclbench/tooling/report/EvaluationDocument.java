@@ -374,7 +374,8 @@ public final class EvaluationDocument extends EvaluationSections {
             return;
         }
         List<String> configs = data.order(queue.stream().map(c -> c.config).distinct().toList());
-        Map<String, BreakdownLoad> loads = BreakdownLoad.of(data.cells(c -> c.policy.equals("queue")), configs);
+        List<ReportModel.Cell> queueCells = data.cells(c -> c.policy.equals("queue"));
+        Map<String, BreakdownLoad> loads = BreakdownLoad.of(queueCells, configs);
         BreakdownLoad c0 = configs.stream().filter(c -> queue.stream().anyMatch(x -> x.config.equals(c) && data.isNative(x)))
                 .map(loads::get).findFirst().orElse(null);
         List<List<String>> rows = new ArrayList<>();
@@ -406,7 +407,7 @@ public final class EvaluationDocument extends EvaluationSections {
         }
         List<String> notMonotone = new ArrayList<>();
         loads.forEach((config, b) -> {
-            List<String> above = BreakdownLoad.heldAbove(data.cells(c -> c.policy.equals("queue")), config, b.fails());
+            List<String> above = BreakdownLoad.heldAbove(queueCells, config, b.fails());
             if (!above.isEmpty()) {
                 notMonotone.add(config + " failed at " + b.fails() + ", yet above it " + String.join(", ", above));
             }

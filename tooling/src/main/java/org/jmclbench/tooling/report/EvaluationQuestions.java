@@ -274,7 +274,10 @@ final class EvaluationQuestions extends EvaluationSections {
                 }
                 rows.add(loadRow(l));
                 if (idle != null) {
+                    // a load takes the CPU from the thread that releases as much as from the job: both are compared
                     line(pairSentence(idle, l, Metric.LATENCY_P99, "task latency p99"));
+                    line("");
+                    line(pairSentence(idle, l, Metric.JITTER_P99, "release jitter p99"));
                     line("");
                 }
             }

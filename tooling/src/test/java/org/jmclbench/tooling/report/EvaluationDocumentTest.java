@@ -641,6 +641,37 @@ class EvaluationDocumentTest {
         assertTrue(withheld, "the three-repetition store separates nothing");
     }
 
+    /**
+     * A load takes the CPU from the thread that releases a job as well as from the job, so section 2.8 compares
+     * both: here the cpu load makes native's releases eight times later and leaves temurin-25's alone.
+     */
+    @Test
+    void aLoadedMachineIsComparedOnItsReleaseJitterBesideItsLatency() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("temurin-25", "default", "25+36", 1.2, "ok")));
+        f.loads = List.of("none", "cpu");
+        f.jitterScale = Map.of("native [load cpu]", 8.0);
+        f.policies = List.of("skip");
+        f.particles = List.of(6400);
+        f.repetitions = Separation.MIN_REPETITIONS;
+        f.durationS = 6;
+        Path store = ReportFixtures.write(f, dir, "load.db");
+        String d = document(store, "load.db", dir.resolve("load"));
+        String section = d.substring(d.indexOf("### 2.8"), d.indexOf("### 2.9"));
+        for (String config : List.of("native", "temurin-25/default")) {
+            for (String metric : List.of("task latency p99", "release jitter p99")) {
+                String start = "At 6400 particles, policy skip, " + metric + ": " + config + " ";
+                assertTrue(section.lines().anyMatch(l -> l.startsWith(start) && l.contains(" against " + config + " [load cpu] ")),
+                        start + "... missing from " + section);
+            }
+        }
+        String jitter = section.lines().filter(l -> l.startsWith("At 6400 particles, policy skip, release jitter p99: native ")).findFirst().orElseThrow();
+        assertTrue(jitter.contains("): native lower than native [load cpu] (p "), jitter);
+        String unmoved = section.lines().filter(l -> l.startsWith("At 6400 particles, policy skip, release jitter p99: temurin-25/default ")).findFirst().orElseThrow();
+        assertTrue(unmoved.contains("): not separated"), unmoved);
+    }
+
     @Test
     void everyIntervalIsWrittenAsTheMethodSaysMeanAndItsBracket() {
         // the method gives `mean [low, high]`, a percentile-bootstrap interval: never a symmetric "±"

@@ -16,6 +16,7 @@ import java.util.Locale;
 import java.util.SplittableRandom;
 
 import org.HdrHistogram.Histogram;
+import org.jmclbench.tooling.store.StoredRun;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
@@ -91,7 +92,10 @@ public final class FixtureDb {
     public int repetitions = 3;
     /** Whether a run (configuration, repetition) has no attribution rows: its runtime left no evidence the harness could read. */
     public java.util.function.BiPredicate<Config, Integer> unattributed = (cfg, rep) -> false;
-    /** Per configuration id, a factor on its release jitter (1 where absent): a runtime slower to release, not to compute. */
+    /**
+     * Per configuration id, a factor on its release jitter (1 where absent): a runtime slower to release, not to
+     * compute. A key with a load label ({@code "native [load cpu]"}) scales only the runs beside that load.
+     */
     public java.util.Map<String, Double> jitterScale = java.util.Map.of();
     /** Length of the replayed timeline in seconds (odometry every 50 ms, laser about 3.6 per second). */
     public double durationS = 12.0;
@@ -252,7 +256,8 @@ public final class FixtureDb {
         int predictJobs = (int) (durationS / 0.05);
         int updateJobs = (int) (durationS * 3.6);
         double costMs = 0.004 * particles * cfg.speed() * (1 + 0.05 * rng.nextDouble());
-        double jitterFactor = jitterScale.getOrDefault(cfg.id(), 1.0);
+        double jitterFactor = jitterScale.getOrDefault(cfg.id() + ("none".equals(load) ? "" : StoredRun.loadLabel(load)),
+                jitterScale.getOrDefault(cfg.id(), 1.0));
         Job[] predict = jobs(rng, predictJobs, costMs * 0.3, cfg.speed(), periodMs, jitterFactor);
         Job[] update = jobs(rng, updateJobs, costMs, cfg.speed(), 1000 / 3.6, jitterFactor);
         Job[] all = concat(predict, update);

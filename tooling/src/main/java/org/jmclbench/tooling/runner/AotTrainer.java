@@ -108,7 +108,7 @@ final class AotTrainer {
             }
             if (!r.ok() || !Files.isRegularFile(partial)) {
                 String why = "aot: training run failed (" + (r.timedOut() ? "timed out" : ForkedRun.describeExit(r.exitCode(), ""))
-                        + "): " + lastLine(r.output());
+                        + "): " + ProcessRunner.lastLine(r.output());
                 boolean crashed = r.timedOut() || r.exitCode() > 128;
                 return crashed ? new Result(List.of(), null, why) : new Result(List.of(), why);
             }
@@ -125,17 +125,5 @@ final class AotTrainer {
                 }
             }
         }
-    }
-
-    /** The last line that says something (not the JVM's "Picked up JAVA_TOOL_OPTIONS" echo). */
-    private static String lastLine(String s) {
-        String[] l = s.strip().split("\n");
-        for (int i = l.length - 1; i >= 0; i--) {
-            String t = l[i].strip();
-            if (!t.isEmpty() && !t.startsWith("Picked up ")) {
-                return t.length() > 200 ? t.substring(0, 200) : t;
-            }
-        }
-        return "no message";
     }
 }

@@ -10,6 +10,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.stream.Stream;
 
+import org.jmclbench.tooling.runtime.ProcessRunner;
 import org.jmclbench.tooling.runtime.ProcessTree;
 import org.jmclbench.tooling.store.RunRow;
 
@@ -314,7 +315,7 @@ public final class ForkedRun {
     static String unsupportedReason(String tail) {
         String prefix = "jmclbench: unsupported: ";
         List<String> said = tail.lines().map(String::strip).filter(l -> l.startsWith(prefix)).toList();
-        return said.isEmpty() ? null : lastLine(said.get(said.size() - 1)).substring(prefix.length());
+        return said.isEmpty() ? null : ProcessRunner.lastLine(said.get(said.size() - 1)).substring(prefix.length());
     }
 
     static String describeExit(int code, String tail) {
@@ -334,9 +335,9 @@ public final class ForkedRun {
             return why + ": killed by " + name;
         }
         if (code == 2) {
-            return why + ": the workload rejected its input: " + lastLine(tail);
+            return why + ": the workload rejected its input: " + ProcessRunner.lastLine(tail);
         }
-        return why + (tail.isBlank() ? "" : ": " + lastLine(tail));
+        return why + (tail.isBlank() ? "" : ": " + ProcessRunner.lastLine(tail));
     }
 
     /**
@@ -359,12 +360,6 @@ public final class ForkedRun {
         } catch (IOException e) {
             return "";
         }
-    }
-
-    private static String lastLine(String text) {
-        String[] l = text.strip().split("\n");
-        String s = l[l.length - 1].strip();
-        return s.length() > 200 ? s.substring(0, 200) : s;
     }
 
     private static String firstLine(String s) {

@@ -75,7 +75,7 @@ public final class HvmRuntime {
                 continue;
             }
             String why = where + ": " + NAME + ": the HVM executable (" + mode + ") cannot be built: "
-                    + (r.timedOut() ? "no end after " + BUILD_TIMEOUT_MS / 60_000 + " min" : lastLine(r.output()))
+                    + (r.timedOut() ? "no end after " + BUILD_TIMEOUT_MS / 60_000 + " min" : ProcessRunner.lastLine(r.output()))
                     + " (./jmclbench doctor; docs/HVM.md)";
             if (!r.timedOut() && r.exitCode() == BAD_INPUT_EXIT) {
                 throw new BadUsageException(why);
@@ -99,10 +99,5 @@ public final class HvmRuntime {
             real = java;
         }
         return new RuntimeInfo(NAME, RuntimeKind.HVM, "icecap", VERSION, 0, java, real);
-    }
-
-    private static String lastLine(String s) {
-        String[] lines = s.trim().split("\n");
-        return lines.length == 0 ? "" : lines[lines.length - 1];
     }
 }

@@ -82,6 +82,26 @@ public final class ProcessRunner {
         }
     }
 
+    /** The longest last line {@link #lastLine} gives: a line of a binary flood can be megabytes. */
+    static final int MAX_LAST_LINE = 200;
+
+    /**
+     * The last line of a child's output that says something, for a one-line failure: blank lines,
+     * control characters (a flooded log's NUL padding) and the JVM's "Picked
+     * up JAVA_TOOL_OPTIONS" echo are passed over; cut at {@link #MAX_LAST_LINE} characters;
+     * "no message" when nothing is left.
+     */
+    public static String lastLine(String output) {
+        String[] lines = output.split("\n");
+        for (int i = lines.length - 1; i >= 0; i--) {
+            String t = lines[i].replaceAll("\\p{Cntrl}", "").strip();
+            if (!t.isEmpty() && !t.startsWith("Picked up ")) {
+                return t.length() > MAX_LAST_LINE ? t.substring(0, MAX_LAST_LINE) : t;
+            }
+        }
+        return "no message";
+    }
+
     /** What of a child's output stream is kept: its first and last half of this. */
     static final int MAX_OUTPUT_BYTES = 1024 * 1024;
 

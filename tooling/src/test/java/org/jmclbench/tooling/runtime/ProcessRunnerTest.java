@@ -30,4 +30,13 @@ class ProcessRunnerTest {
         assertEquals("one\n", r.stdout());
         assertEquals("two\n", r.stderr());
     }
+
+    /** A failure quotes the child's last line that says something, whatever padding follows it. */
+    @Test
+    void theLastLineSkipsPaddingAndTheJvmsEcho() {
+        assertEquals("died here", ProcessRunner.lastLine("started\ndied here\n\0\0\0\n   \n\n"));
+        assertEquals("Error: bad flag", ProcessRunner.lastLine("Error: bad flag\nPicked up JAVA_TOOL_OPTIONS: -Xss1m\n"));
+        assertEquals("no message", ProcessRunner.lastLine("\0\0\n\n"));
+        assertEquals("x".repeat(ProcessRunner.MAX_LAST_LINE), ProcessRunner.lastLine("x".repeat(5000)));
+    }
 }

@@ -13,7 +13,9 @@ import java.io.PrintStream;
 import java.io.RandomAccessFile;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Deque;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
@@ -269,13 +271,20 @@ public final class HvmRun {
         return b;
     }
 
+    /**
+     * The last {@code n} lines that say something, joined by " | ": blank lines and control
+     * characters (the NUL padding of a log written past a hole) are passed over.
+     */
     private static String lastLines(String s, int n) {
-        String[] lines = s.trim().split("\n");
-        StringBuilder b = new StringBuilder();
-        for (int i = Math.max(0, lines.length - n); i < lines.length; i++) {
-            b.append(b.length() == 0 ? "" : " | ").append(lines[i].trim());
+        Deque<String> said = new ArrayDeque<>();
+        String[] lines = s.split("\n");
+        for (int i = lines.length - 1; i >= 0 && said.size() < n; i--) {
+            String line = lines[i].replaceAll("\\p{Cntrl}", "").trim();
+            if (!line.isEmpty()) {
+                said.addFirst(line);
+            }
         }
-        return b.length() == 0 ? "(no output)" : b.toString();
+        return said.isEmpty() ? "(no output)" : String.join(" | ", said);
     }
 
     private static byte[] readAll(InputStream s) throws IOException {

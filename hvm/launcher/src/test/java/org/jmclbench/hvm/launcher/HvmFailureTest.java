@@ -169,6 +169,15 @@ class HvmFailureTest {
     }
 
     @Test
+    void aCrashQuotesTheLastLinesThatSaySomething() throws Exception {
+        // a log written past a hole holds a line of NULs: it was quoted as an empty " |  | " segment
+        homeWithExecutable("echo 'mission: predict released'\nprintf '\\0\\0\\0\\n\\n   \\n'\necho 'the last words'\nkill -SEGV $$");
+        assertEquals(1, run(), err());
+        assertFailedWith("jmclbench: failure: the HVM executable failed (exit status 139): HVM: starting the mission"
+                + " | mission: predict released | the last words (log: ");
+    }
+
+    @Test
     void aFullMemoryAreaIsNamedAndTheRunsFailure() throws Exception {
         // icecap's words when an allocation does not fit: the area's size and the request, in hex (2000 = 0x7d0)
         homeWithExecutable("echo 'out of memory: 0x7d0, 0x1f40'\nexit 1");

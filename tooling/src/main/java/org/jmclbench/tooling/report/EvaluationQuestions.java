@@ -70,6 +70,7 @@ final class EvaluationQuestions extends EvaluationSections {
             return;
         }
         List<List<String>> rows = new ArrayList<>();
+        List<ReportModel.Cell[]> pairs = new ArrayList<>();
         for (ReportModel.Cell f : data.order(fifo)) {
             ReportModel.ConfigInfo fi = data.info(f);
             ReportModel.Cell plain = data.cells(c -> c.ok > 0 && c.particles == f.particles && c.policy.equals(f.policy)
@@ -84,6 +85,7 @@ final class EvaluationQuestions extends EvaluationSections {
                         agg(c, Metric.JITTER_P99, 3), agg(c, Metric.LATENCY_P99, 3), data.info(c).execution() == null ? "?"
                                 : data.info(c).execution().scheduling() + ", priorities " + data.info(c).execution().priorities()));
             }
+            pairs.add(new ReportModel.Cell[] {plain, f});
             line(pairSentence(plain, f, Metric.JITTER_P99, "release jitter p99"));
             line("");
             Execution fe = fi.execution();
@@ -96,6 +98,10 @@ final class EvaluationQuestions extends EvaluationSections {
                 + "given; scheduling as the runs recorded it.");
         line("");
         table(List.of("configuration", "particles", "policy", "runs", "miss ratio", "jitter p99 (ms)", "latency p99 (ms)", "scheduling"), rows);
+        if (!pairs.isEmpty()) {
+            findings.add("Generic vs real-time scheduling, each fifo profile against its runtime's default (the pairs of Table 7): "
+                    + separatedPairs(pairs, Metric.JITTER_P99, "release jitter p99") + " (2.7).");
+        }
         ReportModel.Cell first = fifo.get(0);
         List<ReportModel.Cell> compared = data.cells(c -> c.ok > 0 && c.particles == first.particles && c.policy.equals(first.policy)
                 && EvaluationDocument.idle(c) && fifo.stream().anyMatch(f -> data.info(f).runtime().equals(data.info(c).runtime())
@@ -264,6 +270,7 @@ final class EvaluationQuestions extends EvaluationSections {
             return;
         }
         List<List<String>> rows = new ArrayList<>();
+        List<ReportModel.Cell[]> pairs = new ArrayList<>();
         List<String> bases = data.order(loaded.stream().map(c -> c.config.replace(StoredRun.loadLabel(c.loadCondition), "")).distinct().toList());
         for (String base : bases) {
             for (ReportModel.Cell l : data.order(loaded.stream().filter(c -> c.config.equals(base + StoredRun.loadLabel(c.loadCondition))).toList())) {
@@ -274,6 +281,7 @@ final class EvaluationQuestions extends EvaluationSections {
                 }
                 rows.add(loadRow(l));
                 if (idle != null) {
+                    pairs.add(new ReportModel.Cell[] {idle, l});
                     // a load takes the CPU from the thread that releases as much as from the job: both are compared
                     line(pairSentence(idle, l, Metric.LATENCY_P99, "task latency p99"));
                     line("");
@@ -286,6 +294,11 @@ final class EvaluationQuestions extends EvaluationSections {
                 + "alloc allocates in another JVM).");
         line("");
         table(List.of("configuration", "particles", "policy", "runs", "miss ratio", "latency p99 (ms)", "jitter p99 (ms)"), rows);
+        if (!pairs.isEmpty()) {
+            findings.add("An idle vs a loaded machine, each configuration beside a load against it idle (the pairs of Table 8): "
+                    + separatedPairs(pairs, Metric.JITTER_P99, "release jitter p99") + "; "
+                    + separatedPairs(pairs, Metric.LATENCY_P99, "task latency p99") + " (2.8).");
+        }
         ReportModel.Cell first = loaded.get(0);
         List<ReportModel.Cell> compared = data.cells(c -> c.ok > 0 && c.particles == first.particles && c.policy.equals(first.policy)
                 && bases.contains(c.config.replace(StoredRun.loadLabel(c.loadCondition), "")));
@@ -366,6 +379,38 @@ final class EvaluationQuestions extends EvaluationSections {
      * "At N particles, policy P, x: A ... against B ...", with whether the test separates them: the
      * two cells share their count and policy, and the sentence names both, as a table row would.
      */
+    /**
+     * What the test says of pairs of a configuration and its variant (another profile, a load) on {@code m}: the
+     * variants it separates above and below their base, each with the ratio of the means, and how many it does not,
+     * e.g. "release jitter p99 higher for native [load cpu] (10.63x); not separated for 2 of 3".
+     */
+    private static String separatedPairs(List<ReportModel.Cell[]> pairs, Metric m, String what) {
+        List<String> higher = new ArrayList<>();
+        List<String> lower = new ArrayList<>();
+        for (ReportModel.Cell[] p : pairs) {
+            Separation.Verdict v = separate(p[0], p[1], m).verdict();
+            String ratio = ratio(mean(p[1], m), mean(p[0], m));
+            String named = p[1].config + (ratio.isEmpty() ? "" : " (" + ratio + ")");
+            if (v == Separation.Verdict.A_LOWER) {
+                higher.add(named);
+            } else if (v == Separation.Verdict.B_LOWER) {
+                lower.add(named);
+            }
+        }
+        List<String> said = new ArrayList<>();
+        if (!higher.isEmpty()) {
+            said.add("higher for " + String.join(", ", higher));
+        }
+        if (!lower.isEmpty()) {
+            said.add("lower for " + String.join(", ", lower));
+        }
+        int unseparated = pairs.size() - higher.size() - lower.size();
+        if (unseparated > 0) {
+            said.add("not separated for " + unseparated + " of " + pairs.size());
+        }
+        return what + " " + String.join("; ", said);
+    }
+
     private static String pairSentence(ReportModel.Cell a, ReportModel.Cell b, Metric m, String what) {
         return String.format(Locale.ROOT, "At %d particles, policy %s, %s: %s %s ms against %s %s ms. %s", a.particles, a.policy,
                 what, a.config, agg(a, m, 3), b.config, agg(b, m, 3), separation(a, b, m));

@@ -585,8 +585,7 @@ class EvaluationDocumentTest {
         f.durationS = 6;
         Path store = ReportFixtures.write(f, dir, "scheduling-" + repetitions + ".db");
         Path out = dir.resolve("scheduling-" + repetitions);
-        String d = document(store, "scheduling.db", out);
-        return d.substring(d.indexOf("### 2.7"), d.indexOf("### 2.8"));
+        return document(store, "scheduling.db", out);
     }
 
     @Test
@@ -595,7 +594,12 @@ class EvaluationDocumentTest {
         boolean claimed = false;
         boolean withheld = false;
         for (int repetitions : List.of(3, 10)) {
-            String section = schedulingDocument(repetitions);
+            String d = schedulingDocument(repetitions);
+            String section = d.substring(d.indexOf("### 2.7"), d.indexOf("### 2.8"));
+            // the conclusions repeat the test's verdict on every pair: none with three runs a side
+            String finding = d.lines().filter(l -> l.startsWith("- Generic vs real-time scheduling")).findFirst().orElseThrow();
+            assertEquals(repetitions < Separation.MIN_REPETITIONS, finding.contains(": release jitter p99 not separated for 8 of 8 (2.7)."), finding);
+            assertEquals(repetitions >= Separation.MIN_REPETITIONS, finding.contains("release jitter p99 higher for temurin-25/fifo+pinned ("), finding);
             List<List<String>> rows = table(section, "Table 7:");
             // every sentence before the table speaks of one count and policy, and Table 7 has those rows
             List<String> sentences = section.substring(0, section.indexOf("Table 7:")).lines()
@@ -670,6 +674,10 @@ class EvaluationDocumentTest {
         assertTrue(jitter.contains("): native lower than native [load cpu] (p "), jitter);
         String unmoved = section.lines().filter(l -> l.startsWith("At 6400 particles, policy skip, release jitter p99: temurin-25/default ")).findFirst().orElseThrow();
         assertTrue(unmoved.contains("): not separated"), unmoved);
+        // and the conclusions say which pairs the test separates
+        String finding = d.lines().filter(l -> l.startsWith("- An idle vs a loaded machine")).findFirst().orElseThrow();
+        assertTrue(finding.contains("(the pairs of Table 8): release jitter p99 higher for native [load cpu] ("), finding);
+        assertTrue(finding.contains("x); not separated for 1 of 2; task latency p99 "), finding);
     }
 
     @Test

@@ -376,10 +376,6 @@ final class EvaluationQuestions extends EvaluationSections {
     }
 
     /**
-     * "At N particles, policy P, x: A ... against B ...", with whether the test separates them: the
-     * two cells share their count and policy, and the sentence names both, as a table row would.
-     */
-    /**
      * What the test says of pairs of a configuration and its variant (another profile, a load) on {@code m}: the
      * variants it separates above and below their base, each with the ratio of the means, and how many it does not,
      * e.g. "release jitter p99 higher for native [load cpu] (10.63x); not separated for 2 of 3".
@@ -411,6 +407,10 @@ final class EvaluationQuestions extends EvaluationSections {
         return what + " " + String.join("; ", said);
     }
 
+    /**
+     * "At N particles, policy P, x: A ... against B ...", with whether the test separates them: the
+     * two cells share their count and policy, and the sentence names both, as a table row would.
+     */
     private static String pairSentence(ReportModel.Cell a, ReportModel.Cell b, Metric m, String what) {
         return String.format(Locale.ROOT, "At %d particles, policy %s, %s: %s %s ms against %s %s ms. %s", a.particles, a.policy,
                 what, a.config, agg(a, m, 3), b.config, agg(b, m, 3), separation(a, b, m));

@@ -426,7 +426,7 @@ public final class EvaluationDocument extends EvaluationSections {
                 .collect(Collectors.joining(", ")) + " particles (2.1)"
                 + (marginal.isEmpty() ? "." : "; " + marginal.size() + " of " + loads.size()
                         + " brackets rest on a job or two late in one repetition, so they are not separated comparisons.")
-                + (notMonotone.isEmpty() ? "" : " " + notMonotone.size() + " of " + loads.size() + " are not monotone: a count "
+                + (notMonotone.isEmpty() ? "" : " " + notMonotone.size() + " of " + loads.size() + (notMonotone.size() == 1 ? " is" : " are") + " not monotone: a count "
                         + "above the bracket held in some repetitions."));
     }
 

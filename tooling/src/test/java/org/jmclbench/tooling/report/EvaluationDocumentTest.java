@@ -554,7 +554,8 @@ class EvaluationDocumentTest {
                     + String.join(", ", above)), row.get(0) + ": " + above);
             notMonotone += above.isEmpty() ? 0 : 1;
         }
-        assertTrue(d.contains(" " + notMonotone + " of " + rows.size() + " are not monotone: a count above the bracket held"), d);
+        assertTrue(d.contains(" " + notMonotone + " of " + rows.size() + (notMonotone == 1 ? " is" : " are")
+                + " not monotone: a count above the bracket held"), d);
         assertTrue(d.contains("was late in one repetition by a job or two (" + String.join(", ", marginal) + "), the bracket rests"), d);
     }
 

@@ -12,7 +12,8 @@
 # up to N particles, unsupported above; gate: an ok run that first creates ../started beside its
 # bin/ and waits for ../open, so that a test can act while a matrix is surely mid-run; sigterm,
 # sigint, sighup: the runtime ends itself by that signal, as a JVM's own shutdown can; aotflaky
-# (a JVM 25+): its first aot training run crashes, the next writes its cache). Tests copy
+# (a JVM 25+): its first aot training run crashes, the next writes its cache; idleheld: ok only
+# while some process holds /dev/cpu_dma_latency open, the noidle profile's request). Tests copy
 # it with the placeholders replaced. Never a real measurement.
 MODE=@MODE@
 SLEEP=@SLEEP@
@@ -112,6 +113,12 @@ case $MODE in
             fi
             echo "fake aot cache" > "$aotout"
         fi ;;
+    idleheld)
+        held=
+        for f in /proc/[0-9]*/fd/*; do
+            if [ "$(readlink "$f" 2>/dev/null)" = /dev/cpu_dma_latency ]; then held=1; break; fi
+        done
+        [ -n "$held" ] || { echo "jmclbench: failure: nobody holds /dev/cpu_dma_latency" >&2; exit 1; } ;;
     gate)
         here=$(cd "$(dirname "$0")/.." && pwd)
         touch "$here/started"

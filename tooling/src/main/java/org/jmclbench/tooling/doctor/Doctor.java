@@ -9,6 +9,7 @@ import java.util.TreeSet;
 import java.util.stream.Stream;
 
 import org.jmclbench.tooling.runtime.HvmRuntime;
+import org.jmclbench.tooling.runtime.IdleStateHold;
 import org.jmclbench.tooling.runtime.JmclbenchPaths;
 import org.jmclbench.tooling.runtime.ProcessRunner;
 import org.jmclbench.tooling.runtime.ProfileComponent;
@@ -17,7 +18,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 
 /**
  * Checks the machine the way rt-tests' tools and rtcheck do: kernel preemption model, RT throttling,
- * permission for SCHED_FIFO, memlock limit, CPU frequency governor, isolated CPUs, transparent huge
+ * permission for SCHED_FIFO, memlock limit, CPU frequency governor, CPU idle states, isolated CPUs, transparent huge
  * pages, clocksource, virtualisation and steal time, cyclictest. Files are read below {@code root}
  * (the real {@code /} normally; tests pass a fake tree).
  *
@@ -31,7 +32,7 @@ public record Doctor(Path root, boolean runCommands) {
     }
 
     public List<DoctorCheck> run() {
-        return List.of(preemptRt(), rtThrottling(), fifoPermission(), memlock(), governor(), isolatedCpus(),
+        return List.of(preemptRt(), rtThrottling(), fifoPermission(), memlock(), governor(), cpuIdle(), isolatedCpus(),
                 transparentHugePages(), clocksource(), virtualisation(), memory(), stealTime(), cyclictest(), hvm());
     }
 
@@ -136,6 +137,44 @@ public record Doctor(Path root, boolean runCommands) {
         }
         return DoctorCheck.warn("cpu-governor", String.join(",", governors),
                 "frequency scaling adds latency and drift: cpupower frequency-set -g performance");
+    }
+
+    /**
+     * Whether an idle CPU may sleep deeply: then a job released to it waits for it to wake, and on a
+     * VM a halted vCPU may also run the job slower when it is back. PM QoS ({@code noidle}) works
+     * through the cpuidle driver, so without one only the kernel's {@code idle=poll} keeps CPUs awake.
+     */
+    DoctorCheck cpuIdle() {
+        String driver = read("sys/devices/system/cpu/cpuidle/current_driver");
+        if (driver == null || driver.isEmpty() || driver.equals("none")) {
+            return DoctorCheck.warn("cpu-idle", "no cpuidle driver: an idle CPU halts",
+                    "the noidle profile needs a cpuidle driver; idle=poll on the kernel command line keeps the CPUs awake");
+        }
+        String governor = read("sys/devices/system/cpu/cpuidle/current_governor");
+        List<String> deep = new java.util.ArrayList<>();
+        boolean anyEnabled = false;
+        Path states = root.resolve("sys/devices/system/cpu/cpu0/cpuidle");
+        if (Files.isDirectory(states)) {
+            try (Stream<Path> s = Files.list(states)) {
+                for (Path state : s.filter(p -> p.getFileName().toString().matches("state\\d+")).sorted().toList()) {
+                    String name = readPath(state.resolve("name"));
+                    if (name != null && !name.equals("POLL")) {
+                        deep.add(name);
+                        anyEnabled |= !"1".equals(readPath(state.resolve("disable")));
+                    }
+                }
+            } catch (IOException ignored) {
+                // no states read: reported with the driver alone
+            }
+        }
+        String value = driver + (governor == null ? "" : " (governor " + governor + ")")
+                + (deep.isEmpty() ? "" : ": " + String.join(", ", deep));
+        if (!deep.isEmpty() && !anyEnabled) {
+            return DoctorCheck.pass("cpu-idle", value + ", all disabled");
+        }
+        return DoctorCheck.warn("cpu-idle", value,
+                "a job released to an idle CPU waits for it to wake: the noidle profile holds " + IdleStateHold.DEVICE
+                        + " at 0 during each run, as cyclictest does");
     }
 
     DoctorCheck isolatedCpus() {

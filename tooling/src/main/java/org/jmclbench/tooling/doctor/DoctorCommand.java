@@ -10,7 +10,7 @@ import picocli.CommandLine.Option;
 @Command(name = "doctor", mixinStandardHelpOptions = true,
         header = "Checks this machine for real-time measurement.",
         description = {"Checks this machine for real-time measurement (PREEMPT_RT, RT throttling, SCHED_FIFO permission, "
-                + "memlock, CPU governor, isolated CPUs, transparent huge pages, clocksource, virtualisation, memory, "
+                + "memlock, CPU governor, CPU idle states, isolated CPUs, transparent huge pages, clocksource, virtualisation, memory, "
                 + "steal time, cyclictest, the icecap HVM). The same checks are stored with every matrix. Exit code 0 whatever the findings."})
 public final class DoctorCommand implements Callable<Integer> {
 

@@ -22,7 +22,7 @@ final class MatrixOptions {
     static final List<Setting> SETTINGS = List.of(
             new Setting("runtimes", true, "LIST", "runtime names from `jvms`, `native`, `hvm`, `jvms` (all JVMs), `all` (default: all found)"),
             new Setting("java", true, "PATH", "a JVM by path (java executable or JDK folder), repeatable"),
-            new Setting("profiles", true, "LIST", "profiles, components joined by '+': default, serial, parallel, g1, zgc, shenandoah, epsilon, int, c1, pretouch, heap<N>m or heap<N>g (-Xmx), fifo, pinned, aot (default: default)"),
+            new Setting("profiles", true, "LIST", "profiles, components joined by '+': default, serial, parallel, g1, zgc, shenandoah, epsilon, int, c1, pretouch, heap<N>m or heap<N>g (-Xmx), fifo, pinned, noidle, aot (default: default)"),
             new Setting("policies", true, "LIST", String.join(", ", MatrixDefaults.KNOWN_POLICIES) + " (default: skip)"),
             new Setting("engines", true, "LIST", "engines of the JVM runs: " + String.join(", ", Engines.JVM_ENGINES)
                     + " (default: javase; native runs are engine native)"),

@@ -16,6 +16,7 @@ import org.jmclbench.tooling.attribution.AttributionData;
 import org.jmclbench.tooling.attribution.RunInstrumentation;
 import org.jmclbench.tooling.cli.CodeVersion;
 import org.jmclbench.tooling.runtime.HvmRuntime;
+import org.jmclbench.tooling.runtime.IdleStateHold;
 import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.runtime.LaunchPlan;
 import org.jmclbench.tooling.runtime.ProfileComponent;
@@ -163,11 +164,19 @@ public final class MatrixRunner {
             return new Finished(record(run, RunRow.UNSUPPORTED, null, support.reason(), null, startedAt, null, null,
                     null, List.of()), RunDetails.empty());
         }
+        IdleStateHold idle;
+        try {
+            idle = IdleStateHold.start(run.profile().has(ProfileComponent.NOIDLE), IdleStateHold.DEVICE);
+        } catch (IOException e) { // the probe found the device writable; something took it away since
+            return new Finished(record(run, RunRow.UNSUPPORTED, null, "noidle: " + e.getMessage(), null, startedAt,
+                    null, null, null, List.of()), RunDetails.empty());
+        }
         Files.createDirectories(folder);
         List<String> cmd;
         ForkOutcome o;
-        // Event capture and load (docs/FORMATS.md sections 3 and 5): the load ends with the run.
-        try (RunInstrumentation inst = RunInstrumentation.start(run.runtime().isJvm() ? run.runtime().major() : 0,
+        // Event capture and load (docs/FORMATS.md sections 3 and 5): the load ends with the run, so do
+        // the idle-state hold.
+        try (idle; RunInstrumentation inst = RunInstrumentation.start(run.runtime().isJvm() ? run.runtime().major() : 0,
                 run.load(), matrix.loadSettings(), folder, java.time.Duration.ofMillis((long) (matrix.timeoutFor(run) * 1000)))) {
             List<String> jvmFlags = new ArrayList<>(extra);
             jvmFlags.addAll(inst.jvmArgs());

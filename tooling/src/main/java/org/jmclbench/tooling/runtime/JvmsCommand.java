@@ -99,7 +99,7 @@ public final class JvmsCommand implements Callable<Integer> {
         }
         System.out.println();
         System.out.println("Profiles compose with '+', e.g. g1+pretouch+fifo+pinned or zgc+heap4g (any JVM's heap size: heap<N>m,"
-                + " heap<N>g); the native runtime takes only fifo and pinned,"
+                + " heap<N>g); the native runtime takes only fifo, pinned and noidle,"
                 + " the hvm runtime those, int (its interpreter) and hot (hot methods compiled to C); compiled to C otherwise.");
         return 0;
     }

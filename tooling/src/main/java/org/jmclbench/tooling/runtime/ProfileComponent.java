@@ -6,7 +6,8 @@ import java.util.Locale;
 import java.util.Optional;
 
 /**
- * One named building block of a runtime profile: a GC, a JIT mode, heap pre-touch, OS scheduling, AOT.
+ * One named building block of a runtime profile: a GC, a JIT mode, heap pre-touch, OS scheduling and
+ * power management, AOT.
  * {@link #appliesTo} says which runtime kinds take it: the others drop it from their profile. The
  * heap size, a number, is no constant here: {@link Profile#heapMb()}.
  */
@@ -28,6 +29,11 @@ public enum ProfileComponent {
     PRETOUCH(Category.HEAP, "pre-touched fixed heap (-Xms=-Xmx)", "-XX:+AlwaysPreTouch"),
     FIFO(Category.OS, "SCHED_FIFO priority " + ProfileComponent.FIFO_PRIORITY + " via chrt"),
     PINNED(Category.OS, "pinned to one CPU via taskset"),
+    /**
+     * No deep CPU idle states while the run lasts: {@code /dev/cpu_dma_latency} held at 0, as
+     * cyclictest does. A CPU that sleeps between jobs wakes late and, on a VM, may run the job slower.
+     */
+    NOIDLE(Category.OS, "CPUs kept out of deep idle states: " + IdleStateHold.DEVICE + " held at 0 (as cyclictest does)"),
     AOT(Category.AOT, "AOT cache (JDK 25+) or AppCDS archive (JDK 13+) trained on a short run");
 
     /** The heap of an Epsilon run: preallocated runs allocate little; allocating ones ~100 MB a minute. */

@@ -15,8 +15,8 @@ import java.util.Properties;
 /**
  * Decides whether a runtime supports a profile: the JVM is asked once per flag set
  * ({@code java <flags> -version}; answers cached in {@code <cache>/probes.properties} by the
- * executable's real path, size, modification time and flags) and the OS prefixes ({@code chrt},
- * {@code taskset}) are tried once per process. A rejected flag is "unsupported", never a crash.
+ * executable's real path, size, modification time and flags), the OS prefixes ({@code chrt},
+ * {@code taskset}) are tried once per process and {@code noidle} needs its device writable. A rejected flag is "unsupported", never a crash.
  */
 public final class ProfileProbe {
 
@@ -55,6 +55,12 @@ public final class ProfileProbe {
         LaunchPlan plan = LaunchPlan.of(runtime, effective, pinCpu);
         if (runtime.isJvm() && effective.has(ProfileComponent.AOT) && runtime.major() < 13) {
             return Support.no("aot: AppCDS dynamic archives need JDK 13 or newer, AOT caches JDK 25");
+        }
+        if (effective.has(ProfileComponent.NOIDLE)) {
+            String why = IdleStateHold.unavailable(IdleStateHold.DEVICE);
+            if (why != null) {
+                return Support.no(why);
+            }
         }
         if (!plan.prefix().isEmpty()) {
             Support s = prefixAnswers.computeIfAbsent(plan.prefix(), ProfileProbe::tryPrefix);

@@ -44,6 +44,10 @@ class DoctorTest {
         write("sys/devices/system/cpu/cpu0/cpufreq/scaling_governor", "performance\n");
         write("sys/devices/system/cpu/cpu1/cpufreq/scaling_governor", "performance\n");
         write("sys/devices/system/cpu/isolated", "1\n");
+        write("sys/devices/system/cpu/cpuidle/current_driver", "intel_idle\n");
+        cpuIdleState(0, "POLL", false);
+        cpuIdleState(1, "C1", true);
+        cpuIdleState(2, "C6", true);
         write("sys/kernel/mm/transparent_hugepage/enabled", "always madvise [never]\n");
         write("sys/devices/system/clocksource/clocksource0/current_clocksource", "tsc\n");
         write("proc/cpuinfo", "processor : 0\nflags : fpu vme sse\n");
@@ -61,6 +65,10 @@ class DoctorTest {
         write("proc/sys/kernel/sched_rt_runtime_us", "950000\n");
         write("proc/self/limits", "Max locked memory         8388608              8388608              bytes\n");
         write("sys/devices/system/cpu/isolated", "\n");
+        write("sys/devices/system/cpu/cpuidle/current_driver", "haltpoll\n");
+        write("sys/devices/system/cpu/cpuidle/current_governor", "haltpoll\n");
+        cpuIdleState(0, "POLL", false);
+        cpuIdleState(1, "haltpoll idle", false);
         write("sys/kernel/mm/transparent_hugepage/enabled", "[always] madvise never\n");
         write("sys/devices/system/clocksource/clocksource0/current_clocksource", "kvm-clock\n");
         write("proc/cpuinfo", "processor : 0\nflags : fpu vme hypervisor sse\n");
@@ -159,9 +167,33 @@ class DoctorTest {
         assertEquals("unknown", Doctor.stealShare(0, 0));
     }
 
+    /** A KVM guest's idle driver may halt a vCPU; a machine with its deep states disabled passes; no driver, no noidle. */
+    @Test
+    void idleStatesNameTheDriverAndWhatKeepsTheCpusAwake() throws Exception {
+        assertEquals("WARN no cpuidle driver: an idle CPU halts", verdict(new Doctor(root, false).cpuIdle()));
+        write("sys/devices/system/cpu/cpuidle/current_driver", "haltpoll\n");
+        write("sys/devices/system/cpu/cpuidle/current_governor", "haltpoll\n");
+        cpuIdleState(0, "POLL", false);
+        cpuIdleState(1, "haltpoll idle", false);
+        DoctorCheck vm = new Doctor(root, false).cpuIdle();
+        assertEquals("WARN haltpoll (governor haltpoll): haltpoll idle", verdict(vm));
+        assertTrue(vm.advice().contains("noidle profile holds /dev/cpu_dma_latency at 0"), vm.advice());
+        cpuIdleState(1, "haltpoll idle", true);
+        assertEquals("PASS haltpoll (governor haltpoll): haltpoll idle, all disabled", verdict(new Doctor(root, false).cpuIdle()));
+    }
+
+    private static String verdict(DoctorCheck c) {
+        return c.status() + " " + c.value();
+    }
+
+    private void cpuIdleState(int index, String name, boolean disabled) throws Exception {
+        write("sys/devices/system/cpu/cpu0/cpuidle/state" + index + "/name", name + "\n");
+        write("sys/devices/system/cpu/cpu0/cpuidle/state" + index + "/disable", disabled ? "1\n" : "0\n");
+    }
+
     /** Asserts that each of the machine's checks (all but memory) has {@code status}. */
     private static void assertEvery(String status, Map<String, String> s) {
-        for (String c : List.of("preempt-rt", "rt-throttling", "memlock", "cpu-governor", "isolated-cpus",
+        for (String c : List.of("preempt-rt", "rt-throttling", "memlock", "cpu-governor", "cpu-idle", "isolated-cpus",
                 "transparent-hugepages", "clocksource", "virtualisation", "steal-time")) {
             assertEquals(status, s.get(c), c + " in " + s);
         }

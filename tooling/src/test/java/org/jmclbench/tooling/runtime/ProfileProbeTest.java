@@ -102,6 +102,19 @@ class ProfileProbeTest {
         assertThrows(BadUsageException.class, () -> Profile.parse("fifo+fifo", "t"));
         assertEquals("zgc+fifo", Profile.parse(" zgc + fifo ", "t").name());
     }
+
+    /** noidle is an OS setting: every runtime kind keeps it, and it adds no flag and no prefix. */
+    @Test
+    void noidleIsKeptByEveryRuntimeAndLaunchesNothingOfItsOwn() {
+        Profile p = Profile.parse("g1+fifo+noidle", "t");
+        assertEquals("fifo+noidle", p.effectiveFor(RuntimeKind.NATIVE).name());
+        assertEquals("fifo+noidle", p.effectiveFor(RuntimeKind.HVM).name());
+        RuntimeInfo jvm = new RuntimeInfo("x-21", RuntimeKind.JVM, "x", "21", 21, Path.of("/j"), Path.of("/j"));
+        LaunchPlan plan = LaunchPlan.of(jvm, p, "1");
+        assertEquals(List.of("chrt", "-f", "80"), plan.prefix());
+        assertEquals(List.of("-XX:+UseG1GC"), plan.jvmFlags());
+        assertThrows(BadUsageException.class, () -> Profile.parse("noidle+noidle", "t"));
+    }
     @Test
     void heapSizeIsAProfileComponentOfJvmsOnly() {
         RuntimeInfo jvm = new RuntimeInfo("x-21", RuntimeKind.JVM, "x", "21", 21, Path.of("/j"), Path.of("/j"));

@@ -61,30 +61,31 @@ final class EvaluationQuestions extends EvaluationSections {
         findings.add(String.format(Locale.ROOT, "Per-task deadline accounting at %d particles: Table 2 (2.2).", n));
     }
 
-    /** The thesis's section 5.3: the same runtime under the default scheduler and under SCHED_FIFO pinned to one CPU. */
+    /**
+     * The thesis's section 5.3: the same runtime under the default scheduler and under SCHED_FIFO
+     * pinned to one CPU; beside it, where the store has it, the CPUs kept out of deep idle states
+     * ({@code noidle}), which separates the machine's wake-up from the runtime's release.
+     */
     void scheduling() throws IOException {
         line("### 2.7 Generic vs real-time scheduling (Table 7)");
         line("");
-        List<ReportModel.Cell> fifo = data.cells(c -> c.ok > 0 && data.info(c).profile() != null && data.info(c).profile().contains("fifo"));
-        if (absent(fifo, "The store has no run with a `fifo` profile, so generic and real-time scheduling are not compared here.")) {
+        List<ReportModel.Cell> fifo = data.cells(c -> c.ok > 0 && profileHas(c, "fifo"));
+        List<ReportModel.Cell> noidle = data.cells(c -> c.ok > 0 && EvaluationDocument.idle(c) && profileHas(c, "noidle")
+                && !profileHas(c, "fifo"));
+        if (absent(fifo.isEmpty() ? noidle : fifo, "The store has no run with a `fifo` profile, so generic and real-time "
+                + "scheduling are not compared here.")) {
             return;
         }
         List<List<String>> rows = new ArrayList<>();
         List<ReportModel.Cell[]> pairs = new ArrayList<>();
         for (ReportModel.Cell f : data.order(fifo)) {
             ReportModel.ConfigInfo fi = data.info(f);
-            ReportModel.Cell plain = data.cells(c -> c.ok > 0 && c.particles == f.particles && c.policy.equals(f.policy)
-                    && Objects.equals(c.engine, f.engine) && Objects.equals(c.memory, f.memory) && EvaluationDocument.idle(c)
-                    && data.info(c).runtime().equals(fi.runtime()) && !Objects.equals(data.info(c).profile(), fi.profile())
-                    && (data.info(c).profile() == null || !data.info(c).profile().contains("fifo"))).stream().findFirst().orElse(null);
+            ReportModel.Cell plain = defaultOf(f);
             if (plain == null) {
                 continue;
             }
-            for (ReportModel.Cell c : List.of(plain, f)) {
-                rows.add(List.of(c.config, String.valueOf(c.particles), c.policy, String.valueOf(c.ok), percent(c, "all"),
-                        agg(c, Metric.JITTER_P99, 3), agg(c, Metric.LATENCY_P99, 3), data.info(c).execution() == null ? "?"
-                                : data.info(c).execution().scheduling() + ", priorities " + data.info(c).execution().priorities()));
-            }
+            addRow(rows, plain);
+            addRow(rows, f);
             pairs.add(new ReportModel.Cell[] {plain, f});
             line(pairSentence(plain, f, Metric.JITTER_P99, "release jitter p99"));
             line("");
@@ -94,15 +95,42 @@ final class EvaluationQuestions extends EvaluationSections {
                 line("");
             }
         }
+        List<ReportModel.Cell[]> awake = new ArrayList<>();
+        for (ReportModel.Cell n : data.order(noidle)) {
+            ReportModel.Cell plain = defaultOf(n);
+            if (plain == null) {
+                continue;
+            }
+            if (awake.isEmpty()) {
+                line("An idle CPU may sleep in a deep state between jobs, and a job released to it waits for it to wake (on a "
+                        + "VM the host may also run it slower once awake). Under `noidle` the runner holds /dev/cpu_dma_latency "
+                        + "at 0 for the run, as cyclictest does, so each pair below shows how much of the default's release "
+                        + "jitter and task latency is the machine's power management rather than the runtime's.");
+                line("");
+            }
+            addRow(rows, plain);
+            addRow(rows, n);
+            awake.add(new ReportModel.Cell[] {plain, n});
+            line(pairSentence(plain, n, Metric.JITTER_P99, "release jitter p99"));
+            line("");
+            line(pairSentence(plain, n, Metric.LATENCY_P99, "task latency p99"));
+            line("");
+        }
         line("Table 7: each runtime under its default profile and under `fifo` (SCHED_FIFO priority 80) with `pinned` where "
-                + "given; scheduling as the runs recorded it.");
+                + "given" + (awake.isEmpty() ? "" : ", and with its CPUs kept out of deep idle states (`noidle`)")
+                + "; scheduling as the runs recorded it.");
         line("");
         table(List.of("configuration", "particles", "policy", "runs", "miss ratio", "jitter p99 (ms)", "latency p99 (ms)", "scheduling"), rows);
         if (!pairs.isEmpty()) {
             findings.add("Generic vs real-time scheduling, each fifo profile against its runtime's default (the pairs of Table 7): "
                     + separatedPairs(pairs, Metric.JITTER_P99, "release jitter p99") + " (2.7).");
         }
-        ReportModel.Cell first = fifo.get(0);
+        if (!awake.isEmpty()) {
+            findings.add("CPU idle states, each noidle profile against its runtime's default (Table 7): "
+                    + separatedPairs(awake, Metric.JITTER_P99, "release jitter p99") + "; "
+                    + separatedPairs(awake, Metric.LATENCY_P99, "task latency p99") + " (2.7).");
+        }
+        ReportModel.Cell first = (fifo.isEmpty() ? noidle : fifo).get(0);
         List<ReportModel.Cell> compared = data.cells(c -> c.ok > 0 && c.particles == first.particles && c.policy.equals(first.policy)
                 && EvaluationDocument.idle(c) && fifo.stream().anyMatch(f -> data.info(f).runtime().equals(data.info(c).runtime())
                 || data.isNative(c)));
@@ -113,6 +141,35 @@ final class EvaluationQuestions extends EvaluationSections {
                 + "%d particles, policy %s (mean [95%% CI], the interval cut at zero).", String.join(", ", profiles), first.particles,
                 first.policy), () -> charts.write(TaskCharts.conditions(scope(first.policy, first.particles, compared),
                 "scheduling", "Generic vs real-time scheduling", Metric.JITTER_P99, c -> data.info(c).profile()).withStem("scheduling")));
+    }
+
+    /** Whether the cell's profile has the component {@code id} ({@code fifo} in {@code fifo+pinned}). */
+    private boolean profileHas(ReportModel.Cell c, String id) {
+        String p = data.info(c).profile();
+        return p != null && java.util.Arrays.asList(p.split("\\+")).contains(id);
+    }
+
+    /** The same configuration as {@code c} under its runtime's default profile, idle, or null. */
+    private ReportModel.Cell defaultOf(ReportModel.Cell c) {
+        ReportModel.ConfigInfo ci = data.info(c);
+        return data.cells(d -> d.ok > 0 && d.particles == c.particles && d.policy.equals(c.policy)
+                && Objects.equals(d.engine, c.engine) && Objects.equals(d.memory, c.memory) && EvaluationDocument.idle(d)
+                && data.info(d).runtime().equals(ci.runtime()) && isDefault(data.info(d).profile())).stream().findFirst().orElse(null);
+    }
+
+    private static boolean isDefault(String profile) {
+        return profile == null || profile.isEmpty() || profile.equals("default");
+    }
+
+    /** Table 7's row of {@code c}, once (a default is the base of its fifo and its noidle pair). */
+    private void addRow(List<List<String>> rows, ReportModel.Cell c) {
+        if (rows.stream().anyMatch(r -> r.get(0).equals(c.config) && r.get(1).equals(String.valueOf(c.particles))
+                && r.get(2).equals(c.policy))) {
+            return;
+        }
+        rows.add(List.of(c.config, String.valueOf(c.particles), c.policy, String.valueOf(c.ok), percent(c, "all"),
+                agg(c, Metric.JITTER_P99, 3), agg(c, Metric.LATENCY_P99, 3), data.info(c).execution() == null ? "?"
+                        : data.info(c).execution().scheduling() + ", priorities " + data.info(c).execution().priorities()));
     }
 
     /**

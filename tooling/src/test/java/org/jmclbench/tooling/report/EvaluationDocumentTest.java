@@ -681,6 +681,47 @@ class EvaluationDocumentTest {
         assertTrue(finding.contains("x); not separated for 1 of 2; task latency p99 "), finding);
     }
 
+    /**
+     * noidle beside each runtime's default (section 2.7), on both metrics: here the CPUs kept awake
+     * make native's releases three times less late and its jobs a fifth faster, and leave temurin-25
+     * alone; the conclusions repeat the verdicts, and the fifo pairs are untouched by it.
+     */
+    @Test
+    void idleStatesHeldOffAreComparedWithTheDefaultOnJitterAndLatency() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("native", "noidle", "gcc 12.2.0", 0.8, "ok"),
+                new FixtureDb.Config("temurin-25", "default", "25+36", 1.2, "ok"),
+                new FixtureDb.Config("temurin-25", "noidle", "25+36", 1.2, "ok"),
+                new FixtureDb.Config("temurin-25", "fifo+pinned", "25+36", 1.2, "ok")));
+        f.jitterScale = Map.of("native/noidle", 0.3);
+        f.policies = List.of("skip");
+        f.particles = List.of(6400);
+        f.repetitions = Separation.MIN_REPETITIONS;
+        f.durationS = 6;
+        Path store = ReportFixtures.write(f, dir, "noidle.db");
+        String d = document(store, "noidle.db", dir.resolve("noidle"));
+        String section = d.substring(d.indexOf("### 2.7"), d.indexOf("### 2.8"));
+        for (String[] pair : List.of(new String[] {"native", "native/noidle"}, new String[] {"temurin-25/default", "temurin-25/noidle"})) {
+            for (String metric : List.of("task latency p99", "release jitter p99")) {
+                String start = "At 6400 particles, policy skip, " + metric + ": " + pair[0] + " ";
+                assertTrue(section.lines().anyMatch(l -> l.startsWith(start) && l.contains(" against " + pair[1] + " ")),
+                        start + "... against " + pair[1] + " missing from " + section);
+            }
+        }
+        // the fifo pair keeps the default as its base, not the noidle profile beside it
+        assertTrue(section.lines().anyMatch(l -> l.startsWith("At 6400 particles, policy skip, release jitter p99: temurin-25/default ")
+                && l.contains(" against temurin-25/fifo+pinned ")), section);
+        List<List<String>> rows = table(section, "Table 7:");
+        assertEquals(List.of("native", "native/noidle", "temurin-25/default", "temurin-25/fifo+pinned", "temurin-25/noidle"),
+                rows.stream().map(r -> r.get(0)).sorted().toList(), "each configuration once: " + rows);
+        assertTrue(section.contains("and with its CPUs kept out of deep idle states (`noidle`)"), section);
+        String finding = d.lines().filter(l -> l.startsWith("- CPU idle states")).findFirst().orElseThrow();
+        assertTrue(finding.contains("(Table 7): release jitter p99 lower for native/noidle ("), finding);
+        assertTrue(finding.contains("x); not separated for 1 of 2; task latency p99 lower for native/noidle ("), finding);
+        assertTrue(d.lines().anyMatch(l -> l.startsWith("- Generic vs real-time scheduling, each fifo profile")), d);
+    }
+
     @Test
     void everyIntervalIsWrittenAsTheMethodSaysMeanAndItsBracket() {
         // the method gives `mean [low, high]`, a percentile-bootstrap interval: never a symmetric "±"

@@ -97,6 +97,8 @@ public final class FixtureDb {
      * compute. A key with a load label ({@code "native [load cpu]"}) scales only the runs beside that load.
      */
     public java.util.Map<String, Double> jitterScale = java.util.Map.of();
+    /** Per configuration id, keyed as {@link #jitterScale}, a factor on its jobs' cost: a runtime faster or slower to compute. */
+    public java.util.Map<String, Double> costScale = java.util.Map.of();
     /** Length of the replayed timeline in seconds (odometry every 50 ms, laser about 3.6 per second). */
     public double durationS = 12.0;
     public long seed = 1;
@@ -255,9 +257,10 @@ public final class FixtureDb {
         double periodMs = 50;
         int predictJobs = (int) (durationS / 0.05);
         int updateJobs = (int) (durationS * 3.6);
-        double costMs = 0.004 * particles * cfg.speed() * (1 + 0.05 * rng.nextDouble());
-        double jitterFactor = jitterScale.getOrDefault(cfg.id() + ("none".equals(load) ? "" : StoredRun.loadLabel(load)),
-                jitterScale.getOrDefault(cfg.id(), 1.0));
+        String loaded = cfg.id() + ("none".equals(load) ? "" : StoredRun.loadLabel(load));
+        double costMs = 0.004 * particles * cfg.speed() * (1 + 0.05 * rng.nextDouble())
+                * costScale.getOrDefault(loaded, costScale.getOrDefault(cfg.id(), 1.0));
+        double jitterFactor = jitterScale.getOrDefault(loaded, jitterScale.getOrDefault(cfg.id(), 1.0));
         Job[] predict = jobs(rng, predictJobs, costMs * 0.3, cfg.speed(), periodMs, jitterFactor);
         Job[] update = jobs(rng, updateJobs, costMs, cfg.speed(), 1000 / 3.6, jitterFactor);
         Job[] all = concat(predict, update);

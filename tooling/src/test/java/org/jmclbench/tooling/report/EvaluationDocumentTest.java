@@ -684,11 +684,8 @@ class EvaluationDocumentTest {
     @Test
     void idleStatesHeldOffAreComparedWithTheDefaultOnJitterAndLatency() throws Exception {
         FixtureDb f = new FixtureDb();
-        f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
-                new FixtureDb.Config("native", "noidle", "gcc 12.2.0", 0.8, "ok"),
-                new FixtureDb.Config("temurin-25", "default", "25+36", 1.2, "ok"),
-                new FixtureDb.Config("temurin-25", "noidle", "25+36", 1.2, "ok"),
-                new FixtureDb.Config("temurin-25", "fifo+pinned", "25+36", 1.2, "ok")));
+        f.configs = defaultAndNoidle(0.8);
+        f.configs.add(new FixtureDb.Config("temurin-25", "fifo+pinned", "25+36", 1.2, "ok"));
         f.jitterScale = Map.of("native/noidle", 0.3);
         String d = comparisonDocument(f, "noidle");
         String section = d.substring(d.indexOf("### 2.7"), d.indexOf("### 2.8"));
@@ -720,10 +717,7 @@ class EvaluationDocumentTest {
     @Test
     void aLoadThatSpeedsJobsUpIsPutDownToIdleStatesOnlyWhereNoidleDoesTheSame() throws Exception {
         FixtureDb f = new FixtureDb();
-        f.configs = new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
-                new FixtureDb.Config("native", "noidle", "gcc 12.2.0", 1.0, "ok"),
-                new FixtureDb.Config("temurin-25", "default", "25+36", 1.2, "ok"),
-                new FixtureDb.Config("temurin-25", "noidle", "25+36", 1.2, "ok")));
+        f.configs = defaultAndNoidle(1.0);
         f.loads = List.of("none", "cpu");
         f.costScale = Map.of("native [load cpu]", 0.8, "native/noidle", 0.8, "temurin-25/default [load cpu]", 0.8);
         String d = comparisonDocument(f, "busy");
@@ -736,6 +730,14 @@ class EvaluationDocumentTest {
         assertTrue(explained.get(0).startsWith("native [load cpu]: task latency p99 is separated lower beside the load"), explained.get(0));
         String scheduling = d.substring(d.indexOf("### 2.7"), d.indexOf("### 2.8"));
         assertTrue(scheduling.contains("Figure 7: release jitter p99 per runtime under each of its profiles (default, noidle)"), scheduling);
+    }
+
+    /** native and temurin-25, each under its default profile and under noidle; native's noidle at {@code nativeNoidleSpeed}. */
+    private static List<FixtureDb.Config> defaultAndNoidle(double nativeNoidleSpeed) {
+        return new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("native", "noidle", "gcc 12.2.0", nativeNoidleSpeed, "ok"),
+                new FixtureDb.Config("temurin-25", "default", "25+36", 1.2, "ok"),
+                new FixtureDb.Config("temurin-25", "noidle", "25+36", 1.2, "ok")));
     }
 
     /** The document of {@code f}'s configurations at one comparison point: skip, 6400 particles, 10 runs a side. */

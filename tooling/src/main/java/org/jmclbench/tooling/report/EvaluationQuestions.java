@@ -98,13 +98,12 @@ final class EvaluationQuestions extends EvaluationSections {
                 line("");
             }
         }
-        List<ReportModel.Cell[]> awake = new ArrayList<>();
         for (ReportModel.Cell n : data.order(noidle)) {
             ReportModel.Cell plain = defaultOf(n);
             if (plain == null) {
                 continue;
             }
-            if (awake.isEmpty()) {
+            if (awakePairs.isEmpty()) {
                 line("An idle CPU may sleep in a deep state between jobs, and a job released to it waits for it to wake (on a "
                         + "VM the host may also run it slower once awake). Under `noidle` the runner holds /dev/cpu_dma_latency "
                         + "at 0 for the run, as cyclictest does, so each pair below shows how much of the default's release "
@@ -113,7 +112,6 @@ final class EvaluationQuestions extends EvaluationSections {
             }
             addRow(rows, plain);
             addRow(rows, n);
-            awake.add(new ReportModel.Cell[] {plain, n});
             awakePairs.add(new ReportModel.Cell[] {plain, n});
             line(pairSentence(plain, n, Metric.JITTER_P99, "release jitter p99"));
             line("");
@@ -121,7 +119,7 @@ final class EvaluationQuestions extends EvaluationSections {
             line("");
         }
         line("Table 7: each runtime under its default profile and under `fifo` (SCHED_FIFO priority 80) with `pinned` where "
-                + "given" + (awake.isEmpty() ? "" : ", and with its CPUs kept out of deep idle states (`noidle`)")
+                + "given" + (awakePairs.isEmpty() ? "" : ", and with its CPUs kept out of deep idle states (`noidle`)")
                 + "; scheduling as the runs recorded it.");
         line("");
         table(List.of("configuration", "particles", "policy", "runs", "miss ratio", "jitter p99 (ms)", "latency p99 (ms)", "scheduling"), rows);
@@ -129,10 +127,10 @@ final class EvaluationQuestions extends EvaluationSections {
             findings.add("Generic vs real-time scheduling, each fifo profile against its runtime's default (the pairs of Table 7): "
                     + separatedPairs(pairs, Metric.JITTER_P99, "release jitter p99") + " (2.7).");
         }
-        if (!awake.isEmpty()) {
+        if (!awakePairs.isEmpty()) {
             findings.add("CPU idle states, each noidle profile against its runtime's default (Table 7): "
-                    + separatedPairs(awake, Metric.JITTER_P99, "release jitter p99") + "; "
-                    + separatedPairs(awake, Metric.LATENCY_P99, "task latency p99") + " (2.7).");
+                    + separatedPairs(awakePairs, Metric.JITTER_P99, "release jitter p99") + "; "
+                    + separatedPairs(awakePairs, Metric.LATENCY_P99, "task latency p99") + " (2.7).");
         }
         List<ReportModel.Cell> variants = new ArrayList<>(fifo);
         variants.addAll(noidle);

@@ -13,7 +13,7 @@
 # bin/ and waits for ../open, so that a test can act while a matrix is surely mid-run; sigterm,
 # sigint, sighup: the runtime ends itself by that signal, as a JVM's own shutdown can; aotflaky
 # (a JVM 25+): its first aot training run crashes, the next writes its cache; idleheld: ok only
-# while some process holds /dev/cpu_dma_latency open, the noidle profile's request). Tests copy
+# while the runner's JVM holds /dev/cpu_dma_latency open, the noidle profile's request). Tests copy
 # it with the placeholders replaced. Never a real measurement.
 MODE=@MODE@
 SLEEP=@SLEEP@
@@ -114,8 +114,17 @@ case $MODE in
             echo "fake aot cache" > "$aotout"
         fi ;;
     idleheld)
+        # the runner's JVM must hold it, not just any process (tuned or a cyclictest may hold it for
+        # the whole machine): the nearest ancestor that is a java, past wrappers such as setsid,
+        # chrt or taskset that forked instead of exec'ing
+        runner= pid=$PPID
+        while [ -n "$pid" ] && [ "$pid" -gt 1 ]; do
+            exe=$(readlink "/proc/$pid/exe" 2>/dev/null || cat "/proc/$pid/comm" 2>/dev/null)
+            if [ "${exe##*/}" = java ]; then runner=$pid; break; fi
+            pid=$(awk '/^PPid:/ { print $2 }' "/proc/$pid/status" 2>/dev/null)
+        done
         held=
-        for f in /proc/[0-9]*/fd/*; do
+        for f in ${runner:+/proc/$runner/fd/*}; do
             if [ "$(readlink "$f" 2>/dev/null)" = /dev/cpu_dma_latency ]; then held=1; break; fi
         done
         [ -n "$held" ] || { echo "jmclbench: failure: nobody holds /dev/cpu_dma_latency" >&2; exit 1; } ;;

@@ -42,6 +42,9 @@ import picocli.CommandLine.Parameters;
                 "  compare --db X.db --a RUNTIME[/PROFILE][/ENGINE][/MEMORY] --b ...",
                 "                         two configurations of one database, e.g.",
                 "                         --a temurin-25 --b temurin-25/scj (Java SE vs SCJ)",
+                "                         or a row name of the report, with its load bracket:",
+                "                         --a 'native/default [load cpu]': the loaded runs only,",
+                "                         --a native/default: the idle runs only",
                 ""})
 public final class CompareCommand implements Callable<Integer> {
 
@@ -56,11 +59,12 @@ public final class CompareCommand implements Callable<Integer> {
     Path db;
 
     @Option(names = "--a", paramLabel = "RUNTIME[/PROFILE][/ENGINE][/MEMORY]",
-            description = "configuration A (with --db; with two databases: A's filter); ENGINE javase, scj, ...; MEMORY preallocated, allocating, scoped")
+            description = "configuration A (with --db; with two databases: A's filter); ENGINE javase, scj, ...; MEMORY preallocated, allocating, scoped;"
+                    + " or a row name as the report shows it, e.g. 'native/default [load cpu]' (the plain name: the idle runs)")
     String a;
 
     @Option(names = "--b", paramLabel = "RUNTIME[/PROFILE][/ENGINE][/MEMORY]",
-            description = "configuration B (with --db; with two databases: B's filter)")
+            description = "configuration B (with --db; with two databases: B's filter), named as --a")
     String b;
 
     @Option(names = "--policy", paramLabel = "POLICY", description = "only this policy (skip, terminate, queue)")

@@ -62,6 +62,41 @@ class CompareCommandTest {
         assertTrue(err.contains("say which: temurin-25/zgc, temurin-25/zgc [load cpu]"), err);
     }
 
+    /**
+     * A row name with its load bracket selects the runs beside that load only, and the plain name the
+     * idle runs only: loaded, noidle's jobs cost 3 times default's (task latency B/A about 2.9); idle,
+     * half (about 0.6). Pooled, both would read about 2.1, with 6 runs a side.
+     */
+    @Test
+    void aLoadBracketSelectsTheLoadedRunsAndThePlainNameTheIdleOnes() throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.policies = List.of("skip");
+        f.particles = List.of(400);
+        f.loads = List.of("none", "cpu");
+        f.configs = List.of(new FixtureDb.Config("native", "default", "gcc 12.2.0", 1.0, "ok"),
+                new FixtureDb.Config("native", "noidle", "gcc 12.2.0", 1.0, "ok"));
+        f.costScale = java.util.Map.of("native/noidle", 0.5, "native/default [load cpu]", 2.0, "native/noidle [load cpu]", 6.0);
+        Path db = ReportFixtures.write(f, dir, "bracket.db");
+        String loaded = run(0, "compare", "--db", db.toString(), "--a", "native/default [load cpu]",
+                "--b", "native/noidle [load cpu]")[0];
+        assertTrue(loaded.contains("A: native/default [load cpu]") && loaded.contains("B: native/noidle [load cpu]"), loaded);
+        assertEquals(2, line(loaded, "task latency mean").split("n=3 ", -1).length - 1, line(loaded, "task latency mean"));
+        assertTrue(ratio(loaded, "task latency mean") > 2.5, line(loaded, "task latency mean"));
+        String idle = run(0, "compare", "--db", db.toString(), "--a", "native/default", "--b", "native/noidle")[0];
+        assertEquals(2, line(idle, "task latency mean").split("n=3 ", -1).length - 1, line(idle, "task latency mean"));
+        assertTrue(ratio(idle, "task latency mean") < 1, line(idle, "task latency mean"));
+        String err = run(2, "compare", "--db", db.toString(), "--a", "native", "--b", "native/noidle [load cpu]")[1];
+        assertTrue(err.contains("--a: native has several configurations in " + db + ", say which: native/default, "
+                + "native/default [load cpu], native/noidle, native/noidle [load cpu]"), err);
+    }
+
+    /** The B/A column of a metric's line: the number after the two cells, each ending in n=N. */
+    private static double ratio(String table, String metric) {
+        String l = line(table, metric);
+        String afterCells = l.substring(l.lastIndexOf("n=")).replaceFirst("^n=\\d+\\s+", "");
+        return Double.parseDouble(afterCells.split("\\s+")[0]);
+    }
+
     @Test
     void runsAtTwoTimeScalesAreComparedByTheirRowNamesNeverPooled() throws Exception {
         // repetitions 7 to 10 made again by a second matrix at --time-scale 0.5 (telling no workload arguments, as the first)

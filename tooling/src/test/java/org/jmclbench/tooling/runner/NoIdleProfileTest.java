@@ -1,9 +1,14 @@
 package org.jmclbench.tooling.runner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
+import java.util.stream.Stream;
 
 import org.jmclbench.tooling.Fixtures;
 import org.jmclbench.tooling.runtime.IdleStateHold;
@@ -11,13 +16,40 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The noidle profile holds /dev/cpu_dma_latency open while its run lasts, and only then: the fake
- * runtime fails unless some process holds the device. Where the device is root's and we are not
+ * runtime fails unless the runner's JVM holds the device. Where the device is root's and we are not
  * root, the noidle run is unsupported, with the reason.
  */
 class NoIdleProfileTest extends FakeJvmHome {
 
     @Test
     void theDeviceIsHeldDuringANoidleRunAndNotOtherwise() throws Exception {
+        defaultFailsAndNoidleHolds();
+    }
+
+    /**
+     * Another process holding the device (tuned, a cyclictest left running) is not the runner's
+     * request: the default run still finds the device unheld by the runner.
+     */
+    @Test
+    void anotherProcessHoldingTheDeviceIsNotTheRunsHold() throws Exception {
+        assumeTrue(IdleStateHold.unavailable(IdleStateHold.DEVICE) == null,
+                "another process can hold " + IdleStateHold.DEVICE + " only where it is writable");
+        Process holder = new ProcessBuilder("bash", "-c", "exec 3>" + IdleStateHold.DEVICE + "; exec sleep 600")
+                .redirectErrorStream(true).start();
+        try {
+            long deadline = System.nanoTime() + 30_000_000_000L;
+            while (!holds(holder.pid()) && holder.isAlive() && System.nanoTime() < deadline) {
+                Thread.sleep(20);
+            }
+            assertTrue(holds(holder.pid()), "the holder never opened " + IdleStateHold.DEVICE);
+            defaultFailsAndNoidleHolds();
+            assertTrue(holds(holder.pid()), "the holder let go of " + IdleStateHold.DEVICE + " during the runs");
+        } finally {
+            holder.destroyForcibly().waitFor();
+        }
+    }
+
+    private void defaultFailsAndNoidleHolds() throws Exception {
         Path idle = Fixtures.fakeJava(dir, "idle", "idleheld", 0, null, 21);
         Fixtures.CliResult r = Fixtures.cli("matrix", "--datasets", "tiny", "--particles", "100", "--timeout", "15",
                 "--profiles", "default,noidle", "--db", db.toString(), "--java", idle.toString());
@@ -27,5 +59,24 @@ class NoIdleProfileTest extends FakeJvmHome {
                 outcomes.toString());
         String why = IdleStateHold.unavailable(IdleStateHold.DEVICE);
         assertEquals(why == null ? "ok: " : "unsupported: " + why, outcomes.get("noidle"), outcomes.toString());
+    }
+
+    /** Whether process {@code pid} has the device open. */
+    private static boolean holds(long pid) throws IOException {
+        Path fds = Path.of("/proc", Long.toString(pid), "fd");
+        if (!Files.isDirectory(fds)) {
+            return false;
+        }
+        try (Stream<Path> s = Files.list(fds)) {
+            return s.anyMatch(f -> {
+                try {
+                    return Files.readSymbolicLink(f).equals(IdleStateHold.DEVICE);
+                } catch (IOException e) {
+                    return false; // closed between the listing and the read
+                }
+            });
+        } catch (IOException e) {
+            return false; // the process ended
+        }
     }
 }

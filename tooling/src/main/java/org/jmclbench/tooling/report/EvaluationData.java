@@ -213,25 +213,27 @@ final class EvaluationData {
         return a.interval().text(decimals);
     }
 
-    /** {@link Separation}'s rule applied to two cells' per-run values of a metric. */
-    static Separation.Result separate(ReportModel.Cell a, ReportModel.Cell b, Metric m) {
+    /**
+     * {@link Separation}'s rule applied to two cells' per-run values of a metric. The sections test
+     * through {@link EvaluationSections#separate}, which keeps each test for section 2.14.
+     */
+    static Separation.Result separationOf(ReportModel.Cell a, ReportModel.Cell b, Metric m) {
         return Separation.of(values(a, m), values(b, m));
+    }
+
+    /**
+     * A test of two cells said in a sentence that names it, e.g. "Mann-Whitney U with the bootstrap
+     * interval of the ratio (docs/REPORT.md): native lower than temurin-25 (p &lt; 0.001, n = 10 vs
+     * 10)." or "...: not separated (p = 0.412, n = 10 vs 10)."
+     */
+    static String separationSentence(Separation.Result r, ReportModel.Cell a, ReportModel.Cell b) {
+        return "Mann-Whitney U with the bootstrap interval of the ratio (docs/REPORT.md): " + r.text(a.config, b.config) + ".";
     }
 
     /** The per-run values of a metric in a cell (none when the cell has no such metric). */
     static double[] values(ReportModel.Cell c, Metric m) {
         ReportModel.Agg x = c.metrics.get(m.name());
         return x == null || x.values() == null ? new double[0] : x.values();
-    }
-
-    /**
-     * Whether two cells differ in a metric, said in a sentence with the test behind it, e.g.
-     * "Mann-Whitney U with the bootstrap interval of the ratio (docs/REPORT.md): native lower than
-     * temurin-25 (p &lt; 0.001, n = 10 vs 10)." or "...: not separated (p = 0.412, n = 10 vs 10)."
-     */
-    static String separation(ReportModel.Cell a, ReportModel.Cell b, Metric m) {
-        return "Mann-Whitney U with the bootstrap interval of the ratio (docs/REPORT.md): "
-                + separate(a, b, m).text(a.config, b.config) + ".";
     }
 
     /**

@@ -181,7 +181,7 @@ final class EvaluationQuestions extends EvaluationSections {
      * cell {@code f} and its runtime's default {@code plain}: each effect claimed only where the
      * test separates the two (docs/REPORT.md), the effect on dropped jobs only under skip.
      */
-    private static String pinnedParagraph(ReportModel.Cell plain, ReportModel.Cell f, ReportModel.ConfigInfo fi) {
+    private String pinnedParagraph(ReportModel.Cell plain, ReportModel.Cell f, ReportModel.ConfigInfo fi) {
         String profile = fi.profile();
         StringBuilder t = new StringBuilder(String.format(Locale.ROOT, "At %d particles, policy %s, under %s every thread of %s "
                 + "runs at the one SCHED_FIFO priority (its thread priorities are not applied) on one CPU, and a FIFO thread runs "
@@ -377,7 +377,7 @@ final class EvaluationQuestions extends EvaluationSections {
     }
 
     /** Whether the test puts task latency p99 lower for the variant of {@code loaded} and of {@code awake} (null: no noidle pair). */
-    private static boolean lowerUnderBoth(ReportModel.Cell[] loaded, ReportModel.Cell[] awake) {
+    private boolean lowerUnderBoth(ReportModel.Cell[] loaded, ReportModel.Cell[] awake) {
         return awake != null && separate(loaded[0], loaded[1], Metric.LATENCY_P99).verdict() == Separation.Verdict.B_LOWER
                 && separate(awake[0], awake[1], Metric.LATENCY_P99).verdict() == Separation.Verdict.B_LOWER;
     }
@@ -459,7 +459,7 @@ final class EvaluationQuestions extends EvaluationSections {
      * variants it separates above and below their base, each with the ratio of the means, and how many it does not,
      * e.g. "release jitter p99 higher for native [load cpu] (10.63x); not separated for 2 of 3".
      */
-    private static String separatedPairs(List<ReportModel.Cell[]> pairs, Metric m, String what) {
+    private String separatedPairs(List<ReportModel.Cell[]> pairs, Metric m, String what) {
         List<String> higher = new ArrayList<>();
         List<String> lower = new ArrayList<>();
         for (ReportModel.Cell[] p : pairs) {
@@ -490,7 +490,7 @@ final class EvaluationQuestions extends EvaluationSections {
      * "At N particles, policy P, x: A ... against B ...", with whether the test separates them: the
      * two cells share their count and policy, and the sentence names both, as a table row would.
      */
-    private static String pairSentence(ReportModel.Cell a, ReportModel.Cell b, Metric m, String what) {
+    private String pairSentence(ReportModel.Cell a, ReportModel.Cell b, Metric m, String what) {
         return String.format(Locale.ROOT, "At %d particles, policy %s, %s: %s %s ms against %s %s ms. %s", a.particles, a.policy,
                 what, a.config, agg(a, m, 3), b.config, agg(b, m, 3), separation(a, b, m));
     }

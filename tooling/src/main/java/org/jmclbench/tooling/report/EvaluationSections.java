@@ -10,6 +10,8 @@ import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 
 import com.fasterxml.jackson.databind.JsonNode;
+
+import static org.jmclbench.tooling.report.EvaluationData.separationSentence;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
 /**
@@ -27,6 +29,8 @@ abstract class EvaluationSections {
     private final StringBuilder md;
     /** One line per claim, with its section, repeated by the conclusions. */
     final List<String> findings;
+    /** Every test of two cells the sections made, in order: section 2.14 makes each again on the previous evaluation. */
+    final List<Test> tests;
 
     EvaluationSections(EvaluationData data, Path document, Path figures, Path verificationFile) throws IOException {
         this.data = data;
@@ -39,6 +43,7 @@ abstract class EvaluationSections {
                 ? new ObjectMapper().readTree(verificationFile.toFile()) : null;
         this.md = new StringBuilder();
         this.findings = new ArrayList<>();
+        this.tests = new ArrayList<>();
     }
 
     /** Another writer of the same document: the same text, figures and findings. */
@@ -51,6 +56,23 @@ abstract class EvaluationSections {
         this.charts = document.charts;
         this.md = document.md;
         this.findings = document.findings;
+        this.tests = document.tests;
+    }
+
+    /** One test of two cells on a metric, as a section made it. */
+    record Test(ReportModel.Cell a, ReportModel.Cell b, Metric metric, Separation.Result result) {
+    }
+
+    /** {@link Separation}'s rule applied to two cells' per-run values of a metric, kept among the document's {@link #tests}. */
+    Separation.Result separate(ReportModel.Cell a, ReportModel.Cell b, Metric m) {
+        Separation.Result r = EvaluationData.separationOf(a, b, m);
+        tests.add(new Test(a, b, m, r));
+        return r;
+    }
+
+    /** Whether two cells differ in a metric, said in {@link EvaluationData#separationSentence}; the test is kept. */
+    String separation(ReportModel.Cell a, ReportModel.Cell b, Metric m) {
+        return separationSentence(separate(a, b, m), a, b);
     }
 
     /**

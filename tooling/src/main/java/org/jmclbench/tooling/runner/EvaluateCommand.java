@@ -1,8 +1,10 @@
 package org.jmclbench.tooling.runner;
 
+import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
@@ -26,6 +28,7 @@ import org.jmclbench.tooling.runtime.RuntimeDiscovery;
 import org.jmclbench.tooling.runtime.RuntimeKind;
 import org.jmclbench.tooling.store.ResultsDatabase;
 import org.jmclbench.tooling.store.StoreArchive;
+import org.jmclbench.tooling.store.StoredRuns;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -58,6 +61,11 @@ public final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--data", paramLabel = "FILE", description = "the evaluation's committed data: the store, compacted and gzipped, "
             + "written after a run and read by --no-run (default: evaluation/evaluation.db.gz)")
     Path data;
+
+    @Option(names = "--previous", paramLabel = "FILE", description = "the previous evaluation's data, on which the document repeats "
+            + "its tests (section 2.14); a run moves the --data it replaces there, unless that data holds no run the new store "
+            + "lacks (a resumed run) (default: previous.db.gz beside --data; with --no-run --db, none unless given)")
+    Path previous;
 
     @Option(names = "--out", paramLabel = "DIR", description = "figures folder; the document is EVALUATION.md beside it (default: docs/evaluation)")
     Path out = Path.of("docs", "evaluation");
@@ -141,9 +149,11 @@ public final class EvaluateCommand implements Callable<Integer> {
                 }
             }
         }
+        Path previousData = previous != null ? previous : noRun && this.db != null ? null : data.resolveSibling("previous.db.gz");
         // the verification's results travel with the data, so that the document's section on them is reproduced too
         Path verified = data.toAbsolutePath().resolveSibling("verification.json");
         if (!noRun) {
+            keepAsPrevious(Path.of(db), data, previousData, o);
             StoreArchive.write(Path.of(db), data);
             if (Files.isRegularFile(verification)) {
                 Files.copy(verification, verified, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
@@ -153,23 +163,21 @@ public final class EvaluateCommand implements Callable<Integer> {
             o.println("wrote the evaluation's data " + data + " (" + Files.size(data) / 1024 + " KiB)"
                     + (Files.isRegularFile(verified) ? " and " + verified.getFileName() : " (no verification results: run ./jmclbench verify first)"));
         }
-        // a missing or damaged store is refused where it is opened (exit 2, the file named)
-        if (noRun && this.db != null) {
-            EvaluationDocument.write(Path.of(db), Path.of(db).getFileName().toString(), document, out, m.cuts, verification);
-        } else {
-            // the document is always written from the committed data, so that --no-run on a fresh clone gives it byte for byte
-            Path scratch = Files.createTempDirectory("jmclbench-evaluation");
-            try {
+        Path scratch = Files.createTempDirectory("jmclbench-evaluation");
+        try {
+            EvaluationDocument.Previous before = new EvaluationDocument.Previous(previousData != null && Files.isRegularFile(previousData)
+                    ? StoreArchive.extract(previousData, Files.createDirectory(scratch.resolve("previous")), "--previous") : null,
+                    previousData == null ? null : label(home, previousData));
+            // a missing or damaged store is refused where it is opened (exit 2, the file named)
+            if (noRun && this.db != null) {
+                EvaluationDocument.write(Path.of(db), Path.of(db).getFileName().toString(), document, out, m.cuts, verification, before);
+            } else {
+                // the document is always written from the committed data, so that --no-run on a fresh clone gives it byte for byte
                 EvaluationDocument.write(StoreArchive.extract(data, scratch, "--data"), label(home, data), document, out, m.cuts,
-                        verified);
-            } finally {
-                try (var files = Files.list(scratch)) {
-                    for (Path f : files.toList()) {
-                        Files.delete(f);
-                    }
-                }
-                Files.delete(scratch);
+                        verified, before);
             }
+        } finally {
+            deleteTree(scratch);
         }
         o.println("wrote " + document + " and its figures in " + out);
         return 0;
@@ -198,6 +206,48 @@ public final class EvaluateCommand implements Callable<Integer> {
             String why = OutputPaths.whyNotAFolder(data.toAbsolutePath().getParent());
             if (why != null) {
                 throw BadUsageException.ofOption("--data", data + ": cannot write there (" + why + ")");
+            }
+        }
+        if (previous != null) {
+            if (previous.toAbsolutePath().normalize().equals(data.toAbsolutePath().normalize())) {
+                throw BadUsageException.ofOption("--previous", previous + ": the same file as --data (the previous evaluation is the one before it)");
+            }
+            if (Files.isDirectory(previous)) {
+                throw BadUsageException.ofOption("--previous", previous + ": a folder, not a file");
+            }
+            if (noRun && !Files.isRegularFile(previous)) {
+                throw BadUsageException.ofOption("--previous", previous + ": no such file");
+            }
+        }
+    }
+
+    /**
+     * Moves the evaluation's data that this run replaces to {@code previous}, so that the new document can repeat its
+     * tests on it; not when it holds no run the new store lacks (the same evaluation, resumed or run again).
+     */
+    private static void keepAsPrevious(Path db, Path data, Path previous, PrintStream o) throws IOException {
+        if (previous == null || !Files.isRegularFile(data)) {
+            return;
+        }
+        Path scratch = Files.createTempDirectory("jmclbench-evaluation");
+        try (StoredRuns before = StoredRuns.open(StoreArchive.extract(data, scratch, "--data"), "--data");
+             StoredRuns now = StoredRuns.open(db, "--db")) {
+            Set<List<String>> measured = new HashSet<>();
+            now.runs().forEach(r -> measured.add(List.of(r.runKey, String.valueOf(r.startedAt))));
+            if (measured.containsAll(before.runs().stream().map(r -> List.of(r.runKey, String.valueOf(r.startedAt))).toList())) {
+                return;
+            }
+        } finally {
+            deleteTree(scratch);
+        }
+        Files.move(data, previous, StandardCopyOption.REPLACE_EXISTING);
+        o.println("kept the evaluation's data it replaces as " + previous + " (section 2.14 repeats the tests on it)");
+    }
+
+    private static void deleteTree(Path dir) throws IOException {
+        try (var files = Files.walk(dir)) {
+            for (Path f : files.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                Files.delete(f);
             }
         }
     }

@@ -34,17 +34,19 @@ class EvaluationDataTest {
     @Test
     void theSeparationSentenceNamesTheTestAndNeverRanksThreeRuns() {
         // the Figure 3: C with 0.0 misses ranked above the HVM with 0.3, three runs each
-        String few = EvaluationData.separation(cell("native", 0, 0, 0), cell("hvm", 0, 0, 1), Metric.MISS_COUNT);
+        ReportModel.Cell c = cell("native", 0, 0, 0);
+        ReportModel.Cell hvm = cell("hvm", 0, 0, 1);
+        String few = EvaluationData.separationSentence(EvaluationData.separationOf(c, hvm, Metric.MISS_COUNT), c, hvm);
         assertTrue(few.startsWith("Mann-Whitney U with the bootstrap interval of the ratio (docs/REPORT.md): not separated: n too small to "
                 + "separate (p = "), few);
         assertTrue(few.endsWith(", n = 3 vs 3; 10 a side needed)."), few);
         double[] none = new double[10];
         double[] some = {5, 6, 7, 5, 6, 7, 5, 6, 7, 6};
-        Separation.Result r = EvaluationData.separate(cell("native", none), cell("temurin-25", some), Metric.MISS_COUNT);
+        Separation.Result r = EvaluationData.separationOf(cell("native", none), cell("temurin-25", some), Metric.MISS_COUNT);
         assertEquals(Separation.Verdict.A_LOWER, r.verdict());
         assertEquals("native lower than temurin-25 (p < 0.001, n = 10 vs 10)", r.text("native", "temurin-25"));
         assertEquals(Separation.Verdict.TOO_FEW,
-                EvaluationData.separate(cell("native", none), cell("x"), Metric.LATENCY_MEAN).verdict(), "no values: too few");
+                EvaluationData.separationOf(cell("native", none), cell("x"), Metric.LATENCY_MEAN).verdict(), "no values: too few");
     }
 
     @Test

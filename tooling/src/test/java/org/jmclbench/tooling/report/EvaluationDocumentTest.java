@@ -85,7 +85,7 @@ class EvaluationDocumentTest {
                   {"engine": "scj", "memory": "preallocated", "steps": null, "at": "C.d:2"}
                 ]}""");
         EvaluationDocument.write(db, "evaluation.db", dir.resolve("docs/EVALUATION.md"), dir.resolve("docs/evaluation"),
-                List.of("only match-quick"), verification);
+                List.of("only match-quick"), verification, new EvaluationDocument.Previous(null, "evaluation/previous.db.gz"));
         doc = Files.readString(dir.resolve("docs/EVALUATION.md"));
         String keep = System.getProperty("evaluation.keep"); // to look at the document and its figures
         if (keep != null) {
@@ -564,7 +564,13 @@ class EvaluationDocumentTest {
      * results) into {@code out}: EVALUATION.md and its figures in evaluation/.
      */
     private String document(Path store, String label, Path out) throws Exception {
-        EvaluationDocument.write(store, label, out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"));
+        return document(store, label, out, new EvaluationDocument.Previous(null, null));
+    }
+
+    /** {@link #document(Path, String, Path)} with the previous evaluation's data, which section 2.14 repeats the tests on. */
+    private String document(Path store, String label, Path out, EvaluationDocument.Previous previous) throws Exception {
+        EvaluationDocument.write(store, label, out.resolve("EVALUATION.md"), out.resolve("evaluation"), List.of(), dir.resolve("none.json"),
+                previous);
         return Files.readString(out.resolve("EVALUATION.md"));
     }
 
@@ -732,6 +738,82 @@ class EvaluationDocumentTest {
         assertTrue(scheduling.contains("Figure 7: release jitter p99 per runtime under each of its profiles (default, noidle)"), scheduling);
     }
 
+    /**
+     * Section 2.14 repeats every test of the document on the previous evaluation's data: on the very same data each
+     * verdict comes back, so every separated test held and none is missing; the conclusions say so.
+     */
+    @Test
+    void onTheSameDataEveryTestOfTheDocumentHolds() throws Exception {
+        Path now = noidleStore("same", 1);
+        String d = document(now, "same.db", dir.resolve("same"), new EvaluationDocument.Previous(now, "evaluation/previous.db.gz"));
+        Map<String, Integer> outcomes = outcomes(d);
+        int held = outcomes.get("separated the same way in both");
+        assertTrue(held > 0, "the noidle pairs are separated: " + outcomes);
+        assertEquals(held + outcomes.get("separated in neither"), outcomes.values().stream().mapToInt(Integer::intValue).sum(), outcomes.toString());
+        List<List<String>> listed = table(d, "The tests separated in either evaluation");
+        assertEquals(held, listed.size(), listed.toString());
+        assertTrue(listed.stream().allMatch(r -> r.get(4).equals(r.get(5)) && r.get(4).endsWith(", separated")), listed.toString());
+        assertTrue(listed.stream().anyMatch(r -> r.subList(0, 4).equals(List.of("native", "native/noidle", "skip, 6400 particles",
+                "release jitter p99"))), listed.toString());
+        assertTrue(d.contains("- Reproducibility: of the " + held + " tests separated in this evaluation, the previous one separated "
+                + held + " the same way, 0 the opposite way and 0 not at all, and did not run 0; it separated 0 others that this one "
+                + "does not (2.14)."), d);
+    }
+
+    /**
+     * A difference the previous evaluation did not show (native's noidle faster now, not before) is named as not
+     * reproduced, both ways round; a configuration the previous evaluation did not run leaves its tests without a
+     * verdict there. Without previous data the section says that no test was repeated.
+     */
+    @Test
+    void aDifferenceOnlyOneEvaluationSeparatesIsNamedAsNotReproduced() throws Exception {
+        Path now = noidleStore("now", 1);
+        FixtureDb f = new FixtureDb();
+        f.configs = defaultAndNoidle(1.0);
+        f.configs.removeIf(c -> c.id().equals("temurin-25/noidle"));
+        f.seed = 2;
+        Path before = comparisonStore(f, "before");
+        String d = document(now, "now.db", dir.resolve("now"), new EvaluationDocument.Previous(before, "evaluation/previous.db.gz"));
+        assertTrue(d.contains("data of the previous evaluation, `evaluation/previous.db.gz` (runs started "), d);
+        List<String> jitter = noidleJitterRow(d);
+        assertTrue(jitter.get(4).endsWith(", separated") && jitter.get(5).endsWith(", not separated"), jitter.toString());
+        assertEquals("separated in this evaluation only", jitter.get(6));
+        assertTrue(outcomes(d).get("not in the previous evaluation (a configuration or setting it did not run)") >= 2,
+                "temurin-25/noidle's latency and jitter tests: " + outcomes(d));
+
+        String reversed = document(before, "before.db", dir.resolve("reversed"), new EvaluationDocument.Previous(now, "now.db.gz"));
+        assertEquals("separated in the previous evaluation only", noidleJitterRow(reversed).get(6));
+        assertTrue(reversed.contains("others that this one does not (2.14)."), reversed);
+
+        String alone = document(now, "now.db", dir.resolve("alone"), new EvaluationDocument.Previous(null, "evaluation/previous.db.gz"));
+        assertTrue(alone.contains("**No previous evaluation.** There is no earlier evaluation's data at `evaluation/previous.db.gz`"), alone);
+        assertFalse(alone.contains("Table 14:"), alone);
+        assertTrue(alone.contains("- Reproducibility: no previous evaluation to repeat the tests on (2.14)."), alone);
+    }
+
+    /** Table 14: how many of the document's tests had each outcome. */
+    private static Map<String, Integer> outcomes(String d) {
+        Map<String, Integer> out = new java.util.LinkedHashMap<>();
+        table(d, "Table 14:").forEach(r -> out.put(r.get(0), Integer.parseInt(r.get(1))));
+        return out;
+    }
+
+    /** The row of native against native/noidle on release jitter p99 in 2.14's list of separated tests. */
+    private static List<String> noidleJitterRow(String d) {
+        return table(d, "The tests separated in either evaluation").stream()
+                .filter(r -> r.subList(0, 2).equals(List.of("native", "native/noidle")) && r.get(3).equals("release jitter p99"))
+                .findFirst().orElseThrow(() -> new AssertionError("no native/noidle jitter row in " + d));
+    }
+
+    /** A store of {@link #defaultAndNoidle} where native's noidle releases on time and computes faster. */
+    private Path noidleStore(String name, long seed) throws Exception {
+        FixtureDb f = new FixtureDb();
+        f.configs = defaultAndNoidle(0.8);
+        f.jitterScale = Map.of("native/noidle", 0.3);
+        f.seed = seed;
+        return comparisonStore(f, name);
+    }
+
     /** native and temurin-25, each under its default profile and under noidle; native's noidle at {@code nativeNoidleSpeed}. */
     private static List<FixtureDb.Config> defaultAndNoidle(double nativeNoidleSpeed) {
         return new ArrayList<>(List.of(new FixtureDb.Config("native", "", "gcc 12.2.0", 1.0, "ok"),
@@ -742,11 +824,16 @@ class EvaluationDocumentTest {
 
     /** The document of {@code f}'s configurations at one comparison point: skip, 6400 particles, 10 runs a side. */
     private String comparisonDocument(FixtureDb f, String name) throws Exception {
+        return document(comparisonStore(f, name), name + ".db", dir.resolve(name));
+    }
+
+    /** The store of {@code f}'s configurations at one comparison point: skip, 6400 particles, 10 runs a side. */
+    private Path comparisonStore(FixtureDb f, String name) throws Exception {
         f.policies = List.of("skip");
         f.particles = List.of(6400);
         f.repetitions = Separation.MIN_REPETITIONS;
         f.durationS = 6;
-        return document(ReportFixtures.write(f, dir, name + ".db"), name + ".db", dir.resolve(name));
+        return ReportFixtures.write(f, dir, name + ".db");
     }
 
     @Test

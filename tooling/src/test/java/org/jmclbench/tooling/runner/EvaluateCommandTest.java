@@ -1,5 +1,6 @@
 package org.jmclbench.tooling.runner;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -319,6 +320,7 @@ class EvaluateCommandTest {
             assertEquals(4, store.runs().size());
         }
         assertTrue(doc.contains("from `evaluation/evaluation.db.gz`"), "the document names the committed data it is written from");
+        assertFalse(Files.exists(dir.resolve("evaluation/previous.db.gz")), "a resumed run is the same evaluation: nothing kept as previous");
         // the resume rewrote the document and its data (with the machine's doctor report of now: steal time varies)
         String resumed = Files.readString(dir.resolve("docs/EVALUATION.md"));
 
@@ -334,6 +336,12 @@ class EvaluateCommandTest {
                 assertEquals(-1L, Files.mismatch(figure, again.resolve(figure.getFileName())), figure.getFileName() + " differs");
             }
         }
+
+        // a new evaluation (a new store) keeps the data it replaces, and its document repeats its tests on it
+        byte[] first = Files.readAllBytes(data);
+        assertEquals(0, JmclbenchCli.execute(args));
+        assertArrayEquals(first, Files.readAllBytes(dir.resolve("evaluation/previous.db.gz")));
+        assertTrue(Files.readString(dir.resolve("docs/EVALUATION.md")).contains("data of the previous evaluation, `evaluation/previous.db.gz`"));
     }
 
     /**
@@ -365,6 +373,10 @@ class EvaluateCommandTest {
                 "--out", out.toString(), "--verification", none.toString(), "--data", aFile.resolve("e.db.gz").toString()},
             {"--no-run: cannot be combined with --dry-run", "--out", out.toString(), "--verification", none.toString(),
                 "--dry-run", "--no-run"},
+            {"--previous: " + data + ": the same file as --data", "--out", out.toString(), "--verification", none.toString(),
+                "--previous", data.toString()},
+            {"--previous: " + aFile.getParent() + ": a folder, not a file", "--out", out.toString(), "--verification", none.toString(),
+                "--previous", aFile.getParent().toString()},
         };
         for (String[] r : refused) {
             for (boolean dryRun : new boolean[] {false, true}) {
@@ -411,6 +423,11 @@ class EvaluateCommandTest {
                 "--out", dir.resolve("docs/evaluation").toString());
         assertEquals(2, r.exitCode());
         assertTrue(r.err().contains("no such file"), r.err());
+        Path gone = dir.resolve("gone.db.gz");
+        r = Fixtures.cli("evaluate", "--no-run", "--matrix", f.toString(), "--data", data.toString(), "--previous", gone.toString(),
+                "--out", dir.resolve("docs/evaluation").toString());
+        assertEquals(2, r.exitCode());
+        assertEquals("jmclbench: --previous: " + gone + ": no such file", r.err().strip());
     }
 
     /** The committed document is what the committed data gives (once the evaluation has been run and its data committed). */

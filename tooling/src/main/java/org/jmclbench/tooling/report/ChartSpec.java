@@ -12,7 +12,8 @@ import com.fasterxml.jackson.annotation.JsonInclude;
  *
  * @param id         the figure it fills ({@code misses}, {@code spectrum}, ...; {@link ChartSpecs#FIGURES})
  * @param stem       the exported file's name without extension
- * @param setting    where in the store the chart is (particles null: a chart over the particle sweep)
+ * @param setting    where in the store the chart is (particles null: a chart over the particle sweep; null: a
+ *                   chart of no one setting, the evaluation's tests across settings, say)
  * @param kind       bars, stacked bars or x/y lines and marks
  * @param horizontal bars drawn across (categories on the vertical axis)
  * @param x          the category axis of bar charts, the x axis of lines
@@ -38,11 +39,11 @@ public record ChartSpec(String id, String stem, Setting setting, String title, K
     }
 
     /**
-     * Whether nothing drawn belongs to a runtime: no series and no bar category names one (the
-     * playground's beacons alone, say), so the chart says nothing of any run.
+     * Whether a chart of a setting draws nothing that belongs to a runtime: no series and no bar
+     * category names one (the playground's beacons alone, say), so the chart says nothing of any run.
      */
     boolean aboutNoRuntime() {
-        return series.stream().noneMatch(s -> s.config() != null)
+        return setting != null && series.stream().noneMatch(s -> s.config() != null)
                 && (categories == null || categories.stream().noneMatch(c -> c.config() != null));
     }
 

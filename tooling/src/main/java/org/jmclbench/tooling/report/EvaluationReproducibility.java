@@ -58,8 +58,8 @@ final class EvaluationReproducibility extends EvaluationSections {
         this.previousSource = previousSource;
     }
 
-    void section() {
-        line("### 2.14 Do the findings hold? This evaluation against the previous one (Table 14)");
+    void section() throws java.io.IOException {
+        line("### 2.14 Do the findings hold? This evaluation against the previous one (Table 14, Figure 14)");
         line("");
         if (previous == null || previous.dataset == null) {
             line("**No previous evaluation.** " + (previousSource == null
@@ -87,6 +87,11 @@ final class EvaluationReproducibility extends EvaluationSections {
         line("");
         table(List.of("outcome", "tests"), counts.entrySet().stream()
                 .map(e -> List.of(e.getKey().text, String.valueOf(e.getValue()))).toList());
+        ChartSpec ratios = ratios(retests);
+        if (ratios != null) {
+            figure(ratios.stem(), "Figure 14: each test's ratio of the means B/A in this evaluation against the previous one, "
+                    + "coloured by what the rule said of it; on the diagonal a ratio came back unchanged.", () -> charts.write(ratios));
+        }
         List<Retest> separated = retests.stream()
                 .filter(r -> r.test().result().separated() || r.outcome() == Outcome.BEFORE_ONLY).toList();
         if (!separated.isEmpty()) {
@@ -104,6 +109,48 @@ final class EvaluationReproducibility extends EvaluationSections {
                 + "separated %d the same way, %d the opposite way and %d not at all, and did not run %d; it separated %d others "
                 + "that this one does not (2.14).", separatedNow, counts.get(Outcome.HELD), counts.get(Outcome.OPPOSITE),
                 counts.get(Outcome.NOW_ONLY), absent, counts.get(Outcome.BEFORE_ONLY)));
+    }
+
+    /**
+     * Figure 14: one mark per test that both evaluations made, x the previous ratio B/A, y this one's (log
+     * both, a ratio of 0 or infinity left out), coloured by its outcome; the diagonal is the same ratio
+     * twice. Null when no test has a ratio in both.
+     */
+    static ChartSpec ratios(List<Retest> retests) {
+        List<ChartSpec.Series> series = new ArrayList<>();
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = 0;
+        for (Outcome o : Outcome.values()) {
+            List<double[]> points = new ArrayList<>();
+            List<String> notes = new ArrayList<>();
+            for (Retest r : retests) {
+                double now = r.test().result().ratio().ratio();
+                double before = r.before() == null ? Double.NaN : r.before().ratio().ratio();
+                if (r.outcome() != o || !(now > 0 && now < Double.POSITIVE_INFINITY && before > 0 && before < Double.POSITIVE_INFINITY)) {
+                    continue;
+                }
+                points.add(new double[] {before, now});
+                notes.add(r.test().b().config + " / " + r.test().a().config + ", " + r.test().metric().label + ": "
+                        + num(before, 2) + "x before, " + num(now, 2) + "x now");
+                lo = Math.min(lo, Math.min(before, now));
+                hi = Math.max(hi, Math.max(before, now));
+            }
+            if (!points.isEmpty()) {
+                series.add(new ChartSpec.Series(o.text, null, null, Palette.OUTCOME_COLORS.get(o.name()),
+                        ChartSpec.Style.marks("circle", 4, null), points, null, null, null, notes));
+            }
+        }
+        if (series.isEmpty()) {
+            return null;
+        }
+        series.add(new ChartSpec.Series("the same ratio in both", null, null, "#000000", ChartSpec.Style.line(1).dashed(4f, 4f),
+                List.of(new double[] {lo, lo}, new double[] {hi, hi}), null, null, null, null));
+        ChartSpec.Axis before = new ChartSpec.Axis("B/A in the previous evaluation (ratio of the means)", ChartSpec.Scale.LOG,
+                ChartSpec.Format.NUMBER, null, null);
+        ChartSpec.Axis now = new ChartSpec.Axis("B/A in this evaluation (ratio of the means)", ChartSpec.Scale.LOG,
+                ChartSpec.Format.NUMBER, null, null);
+        return new ChartSpec("reproducibility", "reproducibility", null,
+                "The document's tests in two evaluations", ChartSpec.Kind.LINES, false, before, now, null, series, List.of(), null, false);
     }
 
     /** The document's tests, each pair and metric once (in either order), with the same test on the previous data. */

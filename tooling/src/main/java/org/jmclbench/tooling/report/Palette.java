@@ -37,6 +37,13 @@ final class Palette {
     static final Map<String, String> AREA_COLORS = orderedMap("heap", "#7f7f7f", "immortal", "#393b79", "mission", "#2ca02c");
     static final List<String> PRIVATE_COLORS = List.of("#ff7f0e", "#e377c2", "#17becf", "#bcbd22", "#8c564b", "#9467bd");
 
+    /**
+     * What the rule said of a test in two evaluations (section 2.14): held green, not reproduced
+     * orange and purple, reversed red, never separated grey.
+     */
+    static final Map<String, String> OUTCOME_COLORS = orderedMap("HELD", "#2ca02c", "NOW_ONLY", "#ff7f0e",
+            "BEFORE_ONLY", "#9467bd", "OPPOSITE", "#d62728", "NEITHER", "#7f7f7f");
+
     /** A pause band: its kind's cause colour, see-through. */
     static String bandColor(String kind) {
         String c = CAUSE_COLORS.getOrDefault(kind, "#7f7f7f");

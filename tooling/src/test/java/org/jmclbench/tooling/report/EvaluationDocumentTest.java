@@ -755,6 +755,11 @@ class EvaluationDocumentTest {
         assertTrue(listed.stream().allMatch(r -> r.get(4).equals(r.get(5)) && r.get(4).endsWith(", separated")), listed.toString());
         assertTrue(listed.stream().anyMatch(r -> r.subList(0, 4).equals(List.of("native", "native/noidle", "skip, 6400 particles",
                 "release jitter p99"))), listed.toString());
+        // Figure 14 draws each test's two ratios: here only outcomes of a verdict that came back
+        assertTrue(d.contains("*Figure 14: each test's ratio of the means B/A in this evaluation against the previous one"), d);
+        String figure = Files.readString(dir.resolve("same/evaluation/reproducibility.svg"));
+        assertTrue(figure.contains("separated the same way in both") && figure.contains("the same ratio in both"), "legend");
+        assertFalse(figure.contains("evaluation only") || figure.contains("opposite") || figure.contains("nothing to draw"), "legend");
         assertTrue(d.contains("- Reproducibility: of the " + held + " tests separated in this evaluation, the previous one separated "
                 + held + " the same way, 0 the opposite way and 0 not at all, and did not run 0; it separated 0 others that this one "
                 + "does not (2.14)."), d);
@@ -787,7 +792,8 @@ class EvaluationDocumentTest {
 
         String alone = document(now, "now.db", dir.resolve("alone"), new EvaluationDocument.Previous(null, "evaluation/previous.db.gz"));
         assertTrue(alone.contains("**No previous evaluation.** There is no earlier evaluation's data at `evaluation/previous.db.gz`"), alone);
-        assertFalse(alone.contains("Table 14:"), alone);
+        assertFalse(alone.contains("Table 14:") || alone.contains("Figure 14:"), alone);
+        assertTrue(Files.readString(dir.resolve("now/evaluation/reproducibility.svg")).contains("separated in this evaluation only"));
         assertTrue(alone.contains("- Reproducibility: no previous evaluation to repeat the tests on (2.14)."), alone);
     }
 

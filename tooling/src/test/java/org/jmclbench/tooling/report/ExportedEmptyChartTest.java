@@ -47,4 +47,15 @@ class ExportedEmptyChartTest {
         new ChartExporter(dir).write(drawn);
         assertFalse(Files.readString(dir.resolve("with-estimate.svg")).contains("nothing to draw"));
     }
+
+    @Test
+    void aChartOfNoSettingWhoseMarksNameNoRuntimeIsNoEmptyChart(@TempDir Path dir) throws Exception {
+        // the evaluation's tests in two evaluations (Figure 14): marks of pairs of configurations, coloured by outcome
+        ChartSpec.Series held = new ChartSpec.Series("separated the same way in both", null, null, "#2ca02c",
+                ChartSpec.Style.marks("circle", 4, null), List.of(new double[] {0.5, 0.6}, new double[] {2, 2.1}), null, null, null, null);
+        ChartSpec tests = new ChartSpec("reproducibility", "tests", null, "t", ChartSpec.Kind.LINES, false,
+                ChartSpec.Axis.linear("before"), ChartSpec.Axis.linear("now"), null, List.of(held), List.of(), null, false);
+        new ChartExporter(dir).write(tests);
+        assertFalse(Files.readString(dir.resolve("tests.svg")).contains("nothing to draw"));
+    }
 }

@@ -58,7 +58,13 @@ final class EvaluationReproducibility extends EvaluationSections {
         this.previousSource = previousSource;
     }
 
-    void section() throws java.io.IOException {
+    /**
+     * Writes section 2.14.
+     *
+     * @return for the threats to validity, how many of the tests separated in either evaluation the other did not
+     *         separate the same way, e.g. "7 of the 23 tests ..."; null without previous data
+     */
+    String section() throws java.io.IOException {
         line("### 2.14 Do the findings hold? This evaluation against the previous one (Table 14, Figure 14)");
         line("");
         if (previous == null || previous.dataset == null) {
@@ -68,7 +74,7 @@ final class EvaluationReproducibility extends EvaluationSections {
                             + "replaces there)") + ", so no test above is repeated on another day's runs.");
             line("");
             findings.add("Reproducibility: no previous evaluation to repeat the tests on (2.14).");
-            return;
+            return null;
         }
         List<Retest> retests = retests();
         Map<Outcome, Integer> counts = new LinkedHashMap<>();
@@ -109,6 +115,8 @@ final class EvaluationReproducibility extends EvaluationSections {
                 + "separated %d the same way, %d the opposite way and %d not at all, and did not run %d; it separated %d others "
                 + "that this one does not (2.14).", separatedNow, counts.get(Outcome.HELD), counts.get(Outcome.OPPOSITE),
                 counts.get(Outcome.NOW_ONLY), absent, counts.get(Outcome.BEFORE_ONLY)));
+        int either = counts.get(Outcome.HELD) + counts.get(Outcome.NOW_ONLY) + counts.get(Outcome.BEFORE_ONLY) + counts.get(Outcome.OPPOSITE);
+        return (either - counts.get(Outcome.HELD)) + " of the " + either + " tests that either evaluation separated";
     }
 
     /**

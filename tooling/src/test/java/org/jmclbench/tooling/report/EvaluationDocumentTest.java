@@ -760,6 +760,8 @@ class EvaluationDocumentTest {
         String figure = Files.readString(dir.resolve("same/evaluation/reproducibility.svg"));
         assertTrue(figure.contains("separated the same way in both") && figure.contains("the same ratio in both"), "legend");
         assertFalse(figure.contains("evaluation only") || figure.contains("opposite") || figure.contains("nothing to draw"), "legend");
+        assertTrue(d.contains("- **From one evaluation to the next**: 0 of the " + held + " tests that either evaluation separated (this "
+                + "one or the previous) were not separated the same way by the other (2.14, Figure 14)"), d);
         assertTrue(d.contains("- Reproducibility: of the " + held + " tests separated in this evaluation, the previous one separated "
                 + held + " the same way, 0 the opposite way and 0 not at all, and did not run 0; it separated 0 others that this one "
                 + "does not (2.14)."), d);
@@ -783,8 +785,13 @@ class EvaluationDocumentTest {
         List<String> jitter = noidleJitterRow(d);
         assertTrue(jitter.get(4).endsWith(", separated") && jitter.get(5).endsWith(", not separated"), jitter.toString());
         assertEquals("separated in this evaluation only", jitter.get(6));
-        assertTrue(outcomes(d).get("not in the previous evaluation (a configuration or setting it did not run)") >= 2,
-                "temurin-25/noidle's latency and jitter tests: " + outcomes(d));
+        Map<String, Integer> o = outcomes(d);
+        assertTrue(o.get("not in the previous evaluation (a configuration or setting it did not run)") >= 2,
+                "temurin-25/noidle's latency and jitter tests: " + o);
+        int held = o.get("separated the same way in both");
+        int either = held + o.get("separated in this evaluation only") + o.get("separated in the previous evaluation only")
+                + o.get("separated the opposite way");
+        assertTrue(d.contains("- **From one evaluation to the next**: " + (either - held) + " of the " + either + " tests that "), d);
 
         String reversed = document(before, "before.db", dir.resolve("reversed"), new EvaluationDocument.Previous(now, "now.db.gz"));
         assertEquals("separated in the previous evaluation only", noidleJitterRow(reversed).get(6));
@@ -792,7 +799,7 @@ class EvaluationDocumentTest {
 
         String alone = document(now, "now.db", dir.resolve("alone"), new EvaluationDocument.Previous(null, "evaluation/previous.db.gz"));
         assertTrue(alone.contains("**No previous evaluation.** There is no earlier evaluation's data at `evaluation/previous.db.gz`"), alone);
-        assertFalse(alone.contains("Table 14:") || alone.contains("Figure 14:"), alone);
+        assertFalse(alone.contains("Table 14:") || alone.contains("Figure 14:") || alone.contains("From one evaluation"), alone);
         assertTrue(Files.readString(dir.resolve("now/evaluation/reproducibility.svg")).contains("separated in this evaluation only"));
         assertTrue(alone.contains("- Reproducibility: no previous evaluation to repeat the tests on (2.14)."), alone);
     }

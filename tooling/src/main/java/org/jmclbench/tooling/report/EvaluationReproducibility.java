@@ -1,6 +1,7 @@
 package org.jmclbench.tooling.report;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -47,6 +48,8 @@ final class EvaluationReproducibility extends EvaluationSections {
 
     private final EvaluationData previous;
     private final String previousSource;
+    /** The previous evaluation's cells with a completed run, by {@link #key}. */
+    private final Map<String, ReportModel.Cell> previousCells = new HashMap<>();
 
     /**
      * @param previous the previous evaluation's data, or null when there is none
@@ -56,6 +59,9 @@ final class EvaluationReproducibility extends EvaluationSections {
         super(document);
         this.previous = previous;
         this.previousSource = previousSource;
+        if (previous != null) {
+            previous.model.cells.stream().filter(c -> c.ok > 0).forEach(c -> previousCells.putIfAbsent(key(c), c));
+        }
     }
 
     /**
@@ -170,19 +176,15 @@ final class EvaluationReproducibility extends EvaluationSections {
             if (byPair.containsKey(key) || byPair.containsKey(reversed)) {
                 continue;
             }
-            ReportModel.Cell a = previousCell(t.a());
-            ReportModel.Cell b = previousCell(t.b());
+            ReportModel.Cell a = previousCells.get(key(t.a()));
+            ReportModel.Cell b = previousCells.get(key(t.b()));
             Separation.Result before = a == null || b == null ? null : separationOf(a, b, t.metric());
             byPair.put(key, new Retest(t, before, Outcome.of(t.result(), before)));
         }
         return new ArrayList<>(byPair.values());
     }
 
-    /** The previous evaluation's cell of the same configuration and setting, with a completed run; null when it has none. */
-    private ReportModel.Cell previousCell(ReportModel.Cell c) {
-        return previous.model.cells.stream().filter(p -> p.ok > 0 && key(p).equals(key(c))).findFirst().orElse(null);
-    }
-
+    /** A cell's configuration and setting, which name the same cell in two evaluations. */
     private static String key(ReportModel.Cell c) {
         return c.config + " | " + c.dataset + " | " + c.policy + " | " + c.particles;
     }

@@ -10,9 +10,9 @@ import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
 
 import static org.jmclbench.tooling.report.EvaluationData.separationSentence;
-import com.fasterxml.jackson.databind.ObjectMapper;
 
 /**
  * What the evaluation's section writers share: the numbers ({@link EvaluationData}), the

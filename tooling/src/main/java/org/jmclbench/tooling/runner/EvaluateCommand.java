@@ -156,7 +156,7 @@ public final class EvaluateCommand implements Callable<Integer> {
             keepAsPrevious(Path.of(db), data, previousData, o);
             StoreArchive.write(Path.of(db), data);
             if (Files.isRegularFile(verification)) {
-                Files.copy(verification, verified, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                Files.copy(verification, verified, StandardCopyOption.REPLACE_EXISTING);
             } else {
                 Files.deleteIfExists(verified);
             }

@@ -128,6 +128,25 @@ public final class Fixtures {
         return err.replaceAll("(?m)^INFO: Instrumented [^\n]*\n", "");
     }
 
+    /**
+     * How many of process {@code pid}'s file descriptors ({@code "self"}: this JVM's) point at {@code file}, read from
+     * Linux's /proc/PID/fd; 0 once the process has ended.
+     */
+    public static long openDescriptors(String pid, Path file) throws IOException {
+        Path real = file.toRealPath();
+        try (java.util.stream.Stream<Path> fds = Files.list(Path.of("/proc", pid, "fd"))) {
+            return fds.filter(fd -> {
+                try {
+                    return Files.readSymbolicLink(fd).equals(real);
+                } catch (IOException e) {
+                    return false; // closed meanwhile, or the listing's own descriptor
+                }
+            }).count();
+        } catch (java.nio.file.NoSuchFileException e) {
+            return 0; // the process ended
+        }
+    }
+
     /** The first column of each row of {@code sql} on the SQLite file {@code db}, mapped to its second. */
     public static java.util.Map<String, String> columns(Path db, String sql) throws java.sql.SQLException {
         java.util.Map<String, String> m = new java.util.HashMap<>();

@@ -5,10 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
-import java.util.stream.Stream;
 
 import org.jmclbench.tooling.Fixtures;
 import org.jmclbench.tooling.runtime.IdleStateHold;
@@ -63,20 +61,6 @@ class NoIdleProfileTest extends FakeJvmHome {
 
     /** Whether process {@code pid} has the device open. */
     private static boolean holds(long pid) throws IOException {
-        Path fds = Path.of("/proc", Long.toString(pid), "fd");
-        if (!Files.isDirectory(fds)) {
-            return false;
-        }
-        try (Stream<Path> s = Files.list(fds)) {
-            return s.anyMatch(f -> {
-                try {
-                    return Files.readSymbolicLink(f).equals(IdleStateHold.DEVICE);
-                } catch (IOException e) {
-                    return false; // closed between the listing and the read
-                }
-            });
-        } catch (IOException e) {
-            return false; // the process ended
-        }
+        return Fixtures.openDescriptors(Long.toString(pid), IdleStateHold.DEVICE) > 0;
     }
 }

@@ -7,8 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.stream.Stream;
 
+import org.jmclbench.tooling.Fixtures;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -24,9 +24,9 @@ class IdleStateHoldTest {
         Files.createFile(device);
         try (IdleStateHold hold = IdleStateHold.start(true, device)) {
             assertArrayEquals(new byte[4], Files.readAllBytes(device));
-            assertEquals(1, openDescriptorsOf(device), "the request lasts as long as the file is open");
+            assertEquals(1, Fixtures.openDescriptors("self", device), "the request lasts as long as the file is open");
         }
-        assertEquals(0, openDescriptorsOf(device));
+        assertEquals(0, Fixtures.openDescriptors("self", device));
     }
 
     @Test
@@ -43,19 +43,5 @@ class IdleStateHoldTest {
         assertEquals("noidle: " + device + " does not exist (no PM QoS in this kernel)", IdleStateHold.unavailable(device));
         Files.createFile(device);
         assertNull(IdleStateHold.unavailable(device));
-    }
-
-    /** How many of this process's file descriptors point at {@code file} (Linux's /proc/self/fd). */
-    private static long openDescriptorsOf(Path file) throws Exception {
-        Path real = file.toRealPath();
-        try (Stream<Path> fds = Files.list(Path.of("/proc/self/fd"))) {
-            return fds.filter(fd -> {
-                try {
-                    return Files.readSymbolicLink(fd).equals(real);
-                } catch (Exception e) {
-                    return false; // closed meanwhile, or the listing's own descriptor
-                }
-            }).count();
-        }
     }
 }
